@@ -1,0 +1,91 @@
+# lixel: an OpenGL ES 2.0 shadow renderer for fill-rate-limited boards.
+#   make          build build/lixel
+#   make run      render the default scene to out/default.png (installs Debian packages first)
+#   make check    build and run every test (installs Debian packages first)
+#   make install  PREFIX=/usr/local DESTDIR=
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+BINDIR = $(PREFIX)/bin
+MANDIR = $(PREFIX)/share/man/man1
+CC ?= cc
+PKG_CONFIG ?= pkg-config
+BUILD ?= build
+
+# GL entry points are loaded at run time (src/gl_api.h); glesv2 gives only headers.
+GL_PKGS = osmesa egl glesv2 libpng
+CFLAGS ?= -O2 -g
+WARN = -Wall -Wextra
+CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
+LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng 2>/dev/null) -lpthread -lm
+
+# Pure geometry: never includes a GL header, so the unit tests link it alone.
+CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
+	src/shadow_method.c src/method_none.c src/method_uniform.c src/reference.c src/metrics.c \
+	src/configs.c src/json.c
+GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/platform.c src/platform_osmesa.c \
+	src/platform_egl.c src/renderer.c src/render_job.c src/png_out.c
+SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
+
+CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
+GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
+
+TESTS = test_linalg test_depth_rgba test_atlas test_scene test_uniform test_reference test_render
+TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
+
+.PHONY: all run check deps deps-check install uninstall clean asan
+
+all: $(BUILD)/lixel
+
+deps:
+	@sh tools/install-deps.sh build
+
+deps-check:
+	@sh tools/install-deps.sh check
+
+$(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-shaders.sh | $(BUILD)
+	sh tools/embed-shaders.sh $(SHADERS) > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/shaders_embedded.o: $(BUILD)/shaders_embedded.c src/shaders.h
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LIBS_GL) -o $@
+
+$(BUILD):
+	mkdir -p $(BUILD)/tests
+
+run: deps
+	@$(MAKE) --no-print-directory $(BUILD)/lixel
+	@mkdir -p out
+	$(BUILD)/lixel render --method uniform --out out/default.png --measure
+
+# Unit tests link only the pure geometry; render tests link the GL side too.
+$(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(WARN) $(CFLAGS) $< \
+		$(if $(filter test_render,$*),$(GL_OBJ),) $(CORE_OBJ) \
+		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL),-lpthread -lm) -o $@
+
+check: deps-check
+	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS)
+	@sh tests/run-tests.sh $(BUILD)
+
+# The same tests under AddressSanitizer and UBSan, in their own build directory.
+asan: deps-check
+	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
+		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%)
+	@ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
+
+install: $(BUILD)/lixel
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
+	install -m 755 $(BUILD)/lixel $(DESTDIR)$(BINDIR)/lixel
+	install -m 644 docs/lixel.1 $(DESTDIR)$(MANDIR)/lixel.1
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/lixel $(DESTDIR)$(MANDIR)/lixel.1
+
+clean:
+	rm -rf build build-asan out

@@ -1,0 +1,27 @@
+#version 100
+// Main pass. LX_MAPS (0 to 3) shadow maps are looked up; the loader defines it.
+uniform mat4 u_view_proj;
+uniform vec3 u_offset; // object translation in world space
+#if LX_MAPS > 0
+uniform mat4 u_shadow_tex[LX_MAPS]; // atlas (s, t, depth, q) <- world
+varying vec4 v_shadow[LX_MAPS];
+#endif
+attribute vec3 a_position;
+attribute vec3 a_normal;
+attribute vec3 a_face_normal;
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec3 v_face_normal;
+
+void main()
+{
+	vec4 world = vec4(a_position + u_offset, 1.0);
+	v_world = world.xyz;
+	v_normal = a_normal;
+	v_face_normal = a_face_normal;
+#if LX_MAPS > 0
+	for (int i = 0; i < LX_MAPS; i++)
+		v_shadow[i] = u_shadow_tex[i] * world;
+#endif
+	gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,14 @@
+/* Convex volumes as point sets, GL-free: the receiver volume of a view is the view
+ * frustum clipped to the scene's bounding box. */
+#ifndef LX_CONVEX_H
+#define LX_CONVEX_H
+#include "linalg.h"
+
+#define LX_CONVEX_MAX_POINTS 256
+
+/* Vertices of the intersection of the frustum with corners fc[8] (near face 0-3 then
+ * far face 4-7, both in the same winding) and the box [bmin, bmax]. Returns the count
+ * (0 when they do not meet). Duplicates are possible and harmless. */
+int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int max_out);
+
+#endif

@@ -1,0 +1,44 @@
+#include "depth_rgba.h"
+#include <math.h>
+
+uint32_t lx_depth_code(double d)
+{
+	float f = (float)d;
+	if (!(f >= 0.0f)) /* negative or NaN: NaN means no valid depth, treat as far */
+		return isnan(f) ? LX_DEPTH_MAX_CODE : 0u;
+	if (f >= 1.0f)
+		return LX_DEPTH_MAX_CODE;
+	float n = floorf(f * 16777215.0f);
+	if (n > 16777215.0f)
+		n = 16777215.0f;
+	return (uint32_t)n;
+}
+
+static uint8_t to_unorm8(float value, enum lx_unorm_conversion conv)
+{
+	float x = fminf(fmaxf(value, 0.0f), 1.0f) * 255.0f;
+	return (uint8_t)(conv == LX_UNORM_ROUND ? floorf(x + 0.5f) : floorf(x));
+}
+
+void lx_depth_encode_rgba8(double d, enum lx_unorm_conversion conv, uint8_t out[4])
+{
+	float n = (float)lx_depth_code(d);
+	float hi = floorf(n / 65536.0f);
+	float rem = n - hi * 65536.0f;
+	float mid = floorf(rem / 256.0f);
+	float lo = rem - mid * 256.0f;
+	out[0] = to_unorm8((hi + 0.25f) / 255.0f, conv);
+	out[1] = to_unorm8((mid + 0.25f) / 255.0f, conv);
+	out[2] = to_unorm8((lo + 0.25f) / 255.0f, conv);
+	out[3] = to_unorm8(1.0f, conv);
+}
+
+uint32_t lx_depth_decode_code(const uint8_t in[4])
+{
+	return ((uint32_t)in[0] << 16) | ((uint32_t)in[1] << 8) | in[2];
+}
+
+double lx_depth_decode_rgba8(const uint8_t in[4])
+{
+	return lx_depth_decode_code(in) / (double)LX_DEPTH_MAX_CODE;
+}

@@ -1,0 +1,32 @@
+/* One frame's pure geometry: the camera for a view size, where every object is at
+ * time t, and the bounds every shadow method works from. GL-free. */
+#ifndef LX_FRAME_H
+#define LX_FRAME_H
+#include "mesh.h"
+
+struct lx_view {
+	int width, height;
+	vec3 eye;
+	double near, far, fovy; /* fovy in radians */
+	mat4 view, proj, view_proj, inv_view_proj;
+};
+
+struct lx_frame {
+	const struct lx_scene *scene;
+	const struct lx_scene_meshes *meshes;
+	double time;
+	struct lx_view view;
+	struct lx_light light;
+	int object_count;
+	vec3 offset[LX_MAX_PLANES + LX_MAX_CASTERS]; /* object translation at time t */
+	vec3 bmin[LX_MAX_PLANES + LX_MAX_CASTERS], bmax[LX_MAX_PLANES + LX_MAX_CASTERS]; /* world bounds */
+	vec3 scene_min, scene_max;
+};
+
+/* Sets up the frame; false with a reason when the camera is degenerate. The near and
+ * far planes are fitted to the scene bounds (far reaches the farthest corner; near is
+ * the distance to the bounds, at least far / 1000). */
+bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
+		    int width, int height, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,133 @@
+#include "gl_program.h"
+#include "shaders.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *lx_shader_text(const char *name)
+{
+	for (const struct lx_shader_file *f = lx_shader_files; f->name; f++)
+		if (!strcmp(f->name, name))
+			return f->text;
+	return NULL;
+}
+
+struct text {
+	char *s;
+	size_t len, cap;
+	bool oom;
+};
+
+static void append(struct text *t, const char *s, size_t n)
+{
+	if (t->oom)
+		return;
+	if (t->len + n + 1 > t->cap) {
+		size_t cap = (t->len + n + 1) * 2;
+		char *p = realloc(t->s, cap);
+		if (!p) {
+			t->oom = true;
+			return;
+		}
+		t->s = p;
+		t->cap = cap;
+	}
+	memcpy(t->s + t->len, s, n);
+	t->len += n;
+	t->s[t->len] = 0;
+}
+
+/* The file's text with defines after line 1 and includes expanded (one level). */
+static char *assemble(const char *name, const char *defines, char *err, size_t errlen)
+{
+	const char *src = lx_shader_text(name);
+	if (!src) {
+		snprintf(err, errlen, "%s: no such shader file is built in", name);
+		return NULL;
+	}
+	struct text t = {0};
+	const char *line = src;
+	int n = 0;
+	while (*line) {
+		const char *eol = strchr(line, '\n');
+		size_t len = eol ? (size_t)(eol - line + 1) : strlen(line);
+		static const char tag[] = "//!include ";
+		if (!strncmp(line, tag, sizeof tag - 1)) {
+			char inc[64];
+			size_t m = len - (sizeof tag - 1);
+			while (m && (line[sizeof tag - 2 + m] == '\n' || line[sizeof tag - 2 + m] == '\r'))
+				m--;
+			snprintf(inc, sizeof inc, "%.*s", (int)m, line + sizeof tag - 1);
+			const char *body = lx_shader_text(inc);
+			if (!body) {
+				snprintf(err, errlen, "%s:%d: included file '%s' is not built in", name, n + 1, inc);
+				free(t.s);
+				return NULL;
+			}
+			append(&t, body, strlen(body));
+		} else
+			append(&t, line, len);
+		if (n++ == 0 && defines)
+			append(&t, defines, strlen(defines));
+		line += len;
+	}
+	if (t.oom) {
+		free(t.s);
+		snprintf(err, errlen, "%s: out of memory", name);
+		return NULL;
+	}
+	return t.s;
+}
+
+static GLuint compile(GLenum type, const char *name, const char *defines, char *err, size_t errlen)
+{
+	char *src = assemble(name, defines, err, errlen);
+	if (!src)
+		return 0;
+	GLuint sh = lx_gl.CreateShader(type);
+	const char *srcs[1] = {src};
+	lx_gl.ShaderSource(sh, 1, srcs, NULL);
+	lx_gl.CompileShader(sh);
+	free(src);
+	GLint ok = 0;
+	lx_gl.GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+	if (!ok) {
+		char log[2048] = "";
+		lx_gl.GetShaderInfoLog(sh, sizeof log, NULL, log);
+		snprintf(err, errlen, "%s: compile error: %s", name, log);
+		lx_gl.DeleteShader(sh);
+		return 0;
+	}
+	return sh;
+}
+
+GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen)
+{
+	GLuint vs = compile(GL_VERTEX_SHADER, vert, defines, err, errlen);
+	if (!vs)
+		return 0;
+	GLuint fs = compile(GL_FRAGMENT_SHADER, frag, defines, err, errlen);
+	if (!fs) {
+		lx_gl.DeleteShader(vs);
+		return 0;
+	}
+	GLuint prog = lx_gl.CreateProgram();
+	lx_gl.AttachShader(prog, vs);
+	lx_gl.AttachShader(prog, fs);
+	lx_gl.BindAttribLocation(prog, LX_ATTR_POSITION, "a_position");
+	lx_gl.BindAttribLocation(prog, LX_ATTR_NORMAL, "a_normal");
+	lx_gl.BindAttribLocation(prog, LX_ATTR_FACE_NORMAL, "a_face_normal");
+	lx_gl.LinkProgram(prog);
+	lx_gl.DeleteShader(vs); /* flagged for deletion; freed with the program */
+	lx_gl.DeleteShader(fs);
+	GLint ok = 0;
+	lx_gl.GetProgramiv(prog, GL_LINK_STATUS, &ok);
+	if (!ok) {
+		char log[2048] = "";
+		lx_gl.GetProgramInfoLog(prog, sizeof log, NULL, log);
+		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, log);
+		lx_gl.DeleteProgram(prog);
+		return 0;
+	}
+	return prog;
+}

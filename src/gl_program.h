@@ -1,0 +1,14 @@
+/* Compiling and linking GLSL ES programs from the embedded shader files. */
+#ifndef LX_GL_PROGRAM_H
+#define LX_GL_PROGRAM_H
+#include "gl_api.h"
+#include <stddef.h>
+
+/* Attribute locations shared by every program. */
+enum { LX_ATTR_POSITION = 0, LX_ATTR_NORMAL = 1, LX_ATTR_FACE_NORMAL = 2 };
+
+/* Builds a program from two embedded files with the given "#define" lines (may be
+ * NULL). On failure returns 0 and writes "FILE: compile|link error: driver log". */
+GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,221 @@
+#include "linalg.h"
+#include <math.h>
+#include <string.h>
+
+double v3_len(vec3 a) { return sqrt(v3_dot(a, a)); }
+
+bool v3_normalize(vec3 a, vec3 *out)
+{
+	double l = v3_len(a);
+	if (!(l > 1e-300) || !isfinite(l))
+		return false;
+	*out = v3_scale(a, 1.0 / l);
+	return true;
+}
+
+bool v3_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+mat4 m4_identity(void)
+{
+	mat4 r = {{0}};
+	r.m[0] = r.m[5] = r.m[10] = r.m[15] = 1.0;
+	return r;
+}
+
+mat4 m4_mul(const mat4 *a, const mat4 *b)
+{
+	mat4 r;
+	for (int c = 0; c < 4; c++)
+		for (int row = 0; row < 4; row++) {
+			double s = 0;
+			for (int k = 0; k < 4; k++)
+				s += a->m[k * 4 + row] * b->m[c * 4 + k];
+			r.m[c * 4 + row] = s;
+		}
+	return r;
+}
+
+vec4 m4_mul_v4(const mat4 *a, vec4 v)
+{
+	const double *m = a->m;
+	return (vec4){m[0] * v.x + m[4] * v.y + m[8] * v.z + m[12] * v.w,
+		      m[1] * v.x + m[5] * v.y + m[9] * v.z + m[13] * v.w,
+		      m[2] * v.x + m[6] * v.y + m[10] * v.z + m[14] * v.w,
+		      m[3] * v.x + m[7] * v.y + m[11] * v.z + m[15] * v.w};
+}
+
+vec4 m4_mul_point(const mat4 *a, vec3 p) { return m4_mul_v4(a, (vec4){p.x, p.y, p.z, 1.0}); }
+
+bool lx_solve(int n, double *a, double *b, double eps)
+{
+	double big = 0;
+	for (int i = 0; i < n * n; i++)
+		big = fmax(big, fabs(a[i]));
+	if (!(big > 0) || !isfinite(big))
+		return false;
+	for (int c = 0; c < n; c++) {
+		int p = c;
+		for (int r = c + 1; r < n; r++)
+			if (fabs(a[r * n + c]) > fabs(a[p * n + c]))
+				p = r;
+		if (!(fabs(a[p * n + c]) > eps * big))
+			return false;
+		if (p != c) {
+			for (int k = 0; k < n; k++) {
+				double t = a[c * n + k];
+				a[c * n + k] = a[p * n + k];
+				a[p * n + k] = t;
+			}
+			double t = b[c];
+			b[c] = b[p];
+			b[p] = t;
+		}
+		for (int r = c + 1; r < n; r++) {
+			double f = a[r * n + c] / a[c * n + c]; /* pivot checked above */
+			if (f == 0)
+				continue;
+			for (int k = c; k < n; k++)
+				a[r * n + k] -= f * a[c * n + k];
+			b[r] -= f * b[c];
+		}
+	}
+	for (int r = n - 1; r >= 0; r--) {
+		double s = b[r];
+		for (int k = r + 1; k < n; k++)
+			s -= a[r * n + k] * b[k];
+		b[r] = s / a[r * n + r];
+	}
+	return true;
+}
+
+bool m4_invert(const mat4 *a, mat4 *out)
+{
+	/* Solve for each column of the identity; 4 small solves are plenty fast. */
+	mat4 r;
+	for (int c = 0; c < 4; c++) {
+		double A[16], b[4] = {0, 0, 0, 0};
+		for (int row = 0; row < 4; row++)
+			for (int k = 0; k < 4; k++)
+				A[row * 4 + k] = a->m[k * 4 + row];
+		b[c] = 1.0;
+		if (!lx_solve(4, A, b, 1e-300))
+			return false;
+		for (int row = 0; row < 4; row++)
+			r.m[c * 4 + row] = b[row];
+	}
+	if (!m4_finite(&r))
+		return false;
+	*out = r;
+	return true;
+}
+
+bool m4_finite(const mat4 *a)
+{
+	for (int i = 0; i < 16; i++)
+		if (!isfinite(a->m[i]))
+			return false;
+	return true;
+}
+
+mat4 m4_translate(vec3 t)
+{
+	mat4 r = m4_identity();
+	r.m[12] = t.x;
+	r.m[13] = t.y;
+	r.m[14] = t.z;
+	return r;
+}
+
+bool m4_look_at(vec3 eye, vec3 at, vec3 up, mat4 *out)
+{
+	vec3 f, s, u;
+	if (!v3_normalize(v3_sub(at, eye), &f) || !v3_normalize(v3_cross(f, up), &s))
+		return false;
+	u = v3_cross(s, f);
+	mat4 r = m4_identity();
+	r.m[0] = s.x, r.m[4] = s.y, r.m[8] = s.z;
+	r.m[1] = u.x, r.m[5] = u.y, r.m[9] = u.z;
+	r.m[2] = -f.x, r.m[6] = -f.y, r.m[10] = -f.z;
+	r.m[12] = -v3_dot(s, eye);
+	r.m[13] = -v3_dot(u, eye);
+	r.m[14] = v3_dot(f, eye);
+	*out = r;
+	return true;
+}
+
+bool m4_perspective(double fovy, double aspect, double n, double f, mat4 *out)
+{
+	if (!(fovy > 0 && fovy < M_PI && aspect > 0 && n > 0 && f > n) || !isfinite(f))
+		return false;
+	double t = 1.0 / tan(fovy / 2); /* fovy < pi so tan is finite and > 0 */
+	mat4 r = {{0}};
+	r.m[0] = t / aspect;
+	r.m[5] = t;
+	r.m[10] = (f + n) / (n - f);
+	r.m[11] = -1.0;
+	r.m[14] = 2.0 * f * n / (n - f);
+	*out = r;
+	return true;
+}
+
+bool m4_ortho(double l, double r_, double b, double t, double n, double f, mat4 *out)
+{
+	if (!(r_ > l && t > b && f > n))
+		return false;
+	mat4 r = m4_identity();
+	r.m[0] = 2.0 / (r_ - l);
+	r.m[5] = 2.0 / (t - b);
+	r.m[10] = -2.0 / (f - n);
+	r.m[12] = -(r_ + l) / (r_ - l);
+	r.m[13] = -(t + b) / (t - b);
+	r.m[14] = -(f + n) / (f - n);
+	*out = r;
+	return true;
+}
+
+bool m4_frustum(double l, double r_, double b, double t, double n, double f, mat4 *out)
+{
+	if (!(r_ > l && t > b && n > 0 && f > n) || !isfinite(f))
+		return false;
+	mat4 r = {{0}};
+	r.m[0] = 2 * n / (r_ - l);
+	r.m[5] = 2 * n / (t - b);
+	r.m[8] = (r_ + l) / (r_ - l);
+	r.m[9] = (t + b) / (t - b);
+	r.m[10] = -(f + n) / (f - n);
+	r.m[11] = -1.0;
+	r.m[14] = -2 * f * n / (f - n);
+	*out = r;
+	return true;
+}
+
+mat3 m3_mul(const mat3 *a, const mat3 *b)
+{
+	mat3 r;
+	for (int c = 0; c < 3; c++)
+		for (int row = 0; row < 3; row++) {
+			double s = 0;
+			for (int k = 0; k < 3; k++)
+				s += a->m[k * 3 + row] * b->m[c * 3 + k];
+			r.m[c * 3 + row] = s;
+		}
+	return r;
+}
+
+bool m3_invert(const mat3 *a, mat3 *out)
+{
+	mat3 r;
+	for (int c = 0; c < 3; c++) {
+		double A[9], b[3] = {0, 0, 0};
+		for (int row = 0; row < 3; row++)
+			for (int k = 0; k < 3; k++)
+				A[row * 3 + k] = a->m[k * 3 + row];
+		b[c] = 1.0;
+		if (!lx_solve(3, A, b, 1e-14))
+			return false;
+		for (int row = 0; row < 3; row++)
+			r.m[c * 3 + row] = b[row];
+	}
+	*out = r;
+	return true;
+}

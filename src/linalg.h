@@ -1,0 +1,53 @@
+/* Vectors and 4x4 matrices in double precision.
+ * Matrices are column-major (m[col*4 + row]) like GL, so they upload without a
+ * transpose; every constructor states when it can fail instead of dividing by 0. */
+#ifndef LX_LINALG_H
+#define LX_LINALG_H
+#include <stdbool.h>
+
+typedef struct { double x, y, z; } vec3;
+typedef struct { double x, y, z, w; } vec4;
+typedef struct { double m[16]; } mat4;
+typedef struct { double m[9]; } mat3; /* column-major too */
+
+static inline vec3 v3(double x, double y, double z) { return (vec3){x, y, z}; }
+static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 v3_scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline double v3_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline vec3 v3_cross(vec3 a, vec3 b)
+{
+	return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+double v3_len(vec3 a);
+/* Unit vector; false (and *out untouched) when |a| is too small to normalise. */
+bool v3_normalize(vec3 a, vec3 *out);
+bool v3_finite(vec3 a);
+
+mat4 m4_identity(void);
+mat4 m4_mul(const mat4 *a, const mat4 *b);
+vec4 m4_mul_v4(const mat4 *a, vec4 v);
+vec4 m4_mul_point(const mat4 *a, vec3 p); /* w = 1 */
+/* Inverse by Gaussian elimination with partial pivoting; false when singular
+ * (pivot below 1e-300 relative to the matrix's largest element). */
+bool m4_invert(const mat4 *a, mat4 *out);
+bool m4_finite(const mat4 *a);
+mat4 m4_translate(vec3 t);
+/* View matrix looking from eye to at; false if eye == at or up is parallel to the view. */
+bool m4_look_at(vec3 eye, vec3 at, vec3 up, mat4 *out);
+/* GL perspective (fovy in radians); false unless 0 < fovy < pi, aspect > 0, 0 < n < f. */
+bool m4_perspective(double fovy, double aspect, double n, double f, mat4 *out);
+/* GL orthographic; false when any extent is empty. */
+bool m4_ortho(double l, double r, double b, double t, double n, double f, mat4 *out);
+
+/* GL off-centre perspective (glFrustum); false unless l < r, b < t, 0 < n < f. */
+bool m4_frustum(double l, double r, double b, double t, double n, double f, mat4 *out);
+
+mat3 m3_mul(const mat3 *a, const mat3 *b);
+bool m3_invert(const mat3 *a, mat3 *out);
+
+/* Solve A x = b (n x n, row-major A, n <= 16) with partial pivoting.
+ * Returns false when a pivot falls below eps times the largest |A_ij|. */
+bool lx_solve(int n, double *a, double *b, double eps);
+
+#endif

@@ -1,0 +1,369 @@
+/* lixel: command line. `lixel render` draws one frame and reports its figures. */
+#include "configs.h"
+#include "platform.h"
+#include "json.h"
+#include "render_job.h"
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define LIXEL_VERSION "0.1.0"
+
+static void usage(FILE *f)
+{
+	fprintf(f, "usage: lixel COMMAND [OPTIONS]\n"
+		   "\n"
+		   "An OpenGL ES 2.0 shadow renderer for fill-rate-limited boards, measuring its\n"
+		   "shadows against an exact ray-cast reference.\n"
+		   "\n"
+		   "commands:\n"
+		   "  render     render one frame to a PNG and print its figures\n"
+		   "\n"
+		   "  lixel render --help    options of render\n"
+		   "  lixel --version        the version\n");
+}
+
+static void render_usage(FILE *f)
+{
+	fprintf(f,
+		"usage: lixel render [OPTIONS]\n"
+		"\n"
+		"Renders one frame of the scene with a shadow method into a PNG and prints the\n"
+		"frame's figures (median frame time over the timed frames, light-matrix set-up).\n"
+		"\n"
+		"  --method NAME        shadow method: %s (default uniform)\n"
+		"  --scene FILE         scene file (docs/scene-format.md); default: the built-in scene\n"
+		"  --config NAME        a named view/light configuration applied to the scene:\n",
+		lx_shadow_method_names());
+	for (int i = 0; i < lx_config_count; i++)
+		fprintf(f, "                         %-12s %s\n", lx_configs[i].name, lx_configs[i].summary);
+	fprintf(f,
+		"  --size WxH           image size in pixels (default 1024x768)\n"
+		"  --eye X,Y,Z          camera position in metres\n"
+		"  --at X,Y,Z           point the camera looks at\n"
+		"  --fov DEG            vertical field of view, in (0, 180) degrees\n"
+		"  --light X,Y,Z        point light at this position\n"
+		"  --light-dir X,Y,Z    directional light travelling along this direction\n"
+		"  --time SECONDS       animation time: where the bouncing casters are (default 0)\n"
+		"  --platform NAME      GL platform: %s (default osmesa)\n"
+		"  --out FILE.png       the shaded image (default lixel.png)\n"
+		"  --decision-out FILE.png  the per-pixel shadow decision: shadowed red, lit tinted by object\n"
+		"  --measure            compare with the exact reference ray caster and compute the\n"
+		"                       sampling figures of each plane of interest\n"
+		"  --json               print one JSON object on stdout instead of text\n"
+		"  --frames N           timed frames after 3 warm-up frames (default 10)\n"
+		"  --bias CODES         depth bias in 24-bit depth codes (default %g)\n"
+		"  --mediump            use the shaders' mediump path (11-bit depth) as boards without\n"
+		"                       fragment highp do\n"
+		"  -h, --help           this text\n"
+		"\n"
+		"Exit status: 0 rendered; 1 the GL platform failed; 2 bad input (nothing written).\n",
+		lx_platform_names(), LX_DEFAULT_BIAS_CODES);
+}
+
+static int bad(const char *opt, const char *expected, const char *got)
+{
+	fprintf(stderr, "lixel: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
+	return 2;
+}
+
+static bool parse_double(const char *s, double *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(s, &end);
+	if (end == s || *end || errno == ERANGE || !isfinite(v))
+		return false;
+	*out = v;
+	return true;
+}
+
+static bool parse_triple(const char *s, vec3 *out)
+{
+	char buf[256];
+	if (strlen(s) >= sizeof buf)
+		return false;
+	strcpy(buf, s);
+	char *a = buf, *b = strchr(a, ','), *c;
+	if (!b)
+		return false;
+	*b++ = 0;
+	c = strchr(b, ',');
+	if (!c)
+		return false;
+	*c++ = 0;
+	return parse_double(a, &out->x) && parse_double(b, &out->y) && parse_double(c, &out->z);
+}
+
+static bool parse_size(const char *s, int *w, int *h)
+{
+	char *end;
+	errno = 0;
+	long a = strtol(s, &end, 10);
+	if (end == s || *end != 'x' || errno)
+		return false;
+	const char *t = end + 1;
+	long b = strtol(t, &end, 10);
+	if (end == t || *end || errno)
+		return false;
+	if (a < 1 || b < 1 || a > 16384 || b > 16384)
+		return false;
+	*w = (int)a;
+	*h = (int)b;
+	return true;
+}
+
+static void print_text(const struct lx_render_report *r, const char *out)
+{
+	printf("lixel: wrote %s (%dx%d, method %s, %s on %s)\n", out, r->width, r->height, r->method, r->platform,
+	       r->caps.renderer);
+	printf("frame: %.3f ms median (min %.3f, max %.3f): shadow passes %.3f ms, main pass %.3f ms; set-up %.1f us\n",
+	       r->frame_ms, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us);
+	printf("atlas: %dx%d, %ld lixels", r->atlas.width, r->atlas.height, lx_atlas_lixels(&r->atlas));
+	for (int i = 0; i < r->result.map_count; i++) {
+		const struct lx_region *g = &r->atlas.regions[r->result.maps[i].region];
+		printf("; %s %dx%d at (%d, %d)%s", g->name, g->w, g->h, g->x, g->y,
+		       r->result.maps[i].rendered ? "" : " (not rendered)");
+	}
+	printf("\n");
+	for (int i = 0; i < r->result.warning_count; i++)
+		printf("warning: %s\n", r->result.warnings[i]);
+	if (r->measured) {
+		const struct lx_mismatch *m = &r->mismatch;
+		printf("mismatch: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels\n",
+		       m->mismatch_pct, m->compared, m->false_shadow_pct, m->missing_shadow_pct, m->silhouette);
+		for (int p = 0; p < r->plane_count; p++) {
+			const struct lx_plane_report *pr = &r->planes[p];
+			if (!pr->present)
+				printf("plane %s: not measured (not visible or no map serves it)\n", pr->name);
+			else
+				printf("plane %s: %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g\n",
+				       pr->name, pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max);
+		}
+	}
+}
+
+static void print_json(const struct lx_render_report *r)
+{
+	struct lx_json j;
+	lx_json_begin(&j, stdout);
+	lx_json_object(&j);
+	lx_json_key(&j, "method"), lx_json_string(&j, r->method);
+	lx_json_key(&j, "platform"), lx_json_string(&j, r->platform);
+	lx_json_key(&j, "renderer"), lx_json_string(&j, r->caps.renderer);
+	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, r->width), lx_json_int(&j, r->height), lx_json_end(&j);
+	lx_json_key(&j, "lixels"), lx_json_int(&j, lx_atlas_lixels(&r->atlas));
+	lx_json_key(&j, "atlas"), lx_json_array(&j), lx_json_int(&j, r->atlas.width), lx_json_int(&j, r->atlas.height),
+		lx_json_end(&j);
+	lx_json_key(&j, "maps");
+	lx_json_array(&j);
+	for (int i = 0; i < r->result.map_count; i++) {
+		const struct lx_region *g = &r->atlas.regions[r->result.maps[i].region];
+		lx_json_object(&j);
+		lx_json_key(&j, "name"), lx_json_string(&j, g->name);
+		lx_json_key(&j, "x"), lx_json_int(&j, g->x);
+		lx_json_key(&j, "y"), lx_json_int(&j, g->y);
+		lx_json_key(&j, "w"), lx_json_int(&j, g->w);
+		lx_json_key(&j, "h"), lx_json_int(&j, g->h);
+		lx_json_key(&j, "rendered"), lx_json_bool(&j, r->result.maps[i].rendered);
+		lx_json_end(&j);
+	}
+	lx_json_end(&j);
+	lx_json_key(&j, "frame_ms"), lx_json_number(&j, r->frame_ms);
+	lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
+	lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
+	lx_json_key(&j, "shadow_ms"), lx_json_number(&j, r->shadow_ms);
+	lx_json_key(&j, "main_ms"), lx_json_number(&j, r->main_ms);
+	lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
+	lx_json_key(&j, "fragment_highp"), lx_json_bool(&j, r->caps.fragment_highp);
+	lx_json_key(&j, "warnings");
+	lx_json_array(&j);
+	for (int i = 0; i < r->result.warning_count; i++)
+		lx_json_string(&j, r->result.warnings[i]);
+	lx_json_end(&j);
+	if (r->measured) {
+		const struct lx_mismatch *m = &r->mismatch;
+		lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, m->mismatch_pct);
+		lx_json_key(&j, "false_shadow_pct"), lx_json_number(&j, m->false_shadow_pct);
+		lx_json_key(&j, "missing_shadow_pct"), lx_json_number(&j, m->missing_shadow_pct);
+		lx_json_key(&j, "compared_pixels"), lx_json_int(&j, m->compared);
+		lx_json_key(&j, "silhouette_pixels"), lx_json_int(&j, m->silhouette);
+		lx_json_key(&j, "planes");
+		lx_json_object(&j);
+		for (int p = 0; p < r->plane_count; p++) {
+			const struct lx_plane_report *pr = &r->planes[p];
+			if (!pr->present)
+				continue;
+			lx_json_key(&j, pr->name);
+			lx_json_object(&j);
+			lx_json_key(&j, "pixels"), lx_json_int(&j, pr->s.pixels);
+			lx_json_key(&j, "lpp_median"), lx_json_number(&j, pr->s.lpp_median);
+			lx_json_key(&j, "m_median"), lx_json_number(&j, pr->s.m_median);
+			lx_json_key(&j, "m_max"), lx_json_number(&j, pr->s.m_max);
+			lx_json_key(&j, "aniso_max"), lx_json_number(&j, pr->s.aniso_max);
+			lx_json_key(&j, "lpp_spread"), lx_json_number(&j, pr->s.lpp_min > 0 ? pr->s.lpp_max / pr->s.lpp_min : NAN);
+			lx_json_key(&j, "degenerate_pixels"), lx_json_int(&j, pr->s.degenerate);
+			lx_json_end(&j);
+		}
+		lx_json_end(&j);
+	}
+	lx_json_end(&j);
+}
+
+static int cmd_render(int argc, char **argv)
+{
+	struct lx_render_job job = {.method = "uniform", .platform = "osmesa", .width = 1024, .height = 768,
+				    .warmup_frames = 3, .timed_frames = 10, .bias_codes = LX_DEFAULT_BIAS_CODES,
+				    .reference_threads = 2, .out_png = "lixel.png"};
+	const char *scene_file = NULL, *config = NULL;
+	bool json = false, have_eye = false, have_at = false, have_fov = false, have_light = false, have_dir = false;
+	vec3 eye = {0}, at = {0}, light = {0}, dir = {0};
+	double fov = 0;
+	for (int i = 0; i < argc; i++) {
+		const char *a = argv[i];
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			render_usage(stdout);
+			return 0;
+		}
+		if (!strcmp(a, "--measure")) {
+			job.measure = true;
+			continue;
+		}
+		if (!strcmp(a, "--json")) {
+			json = true;
+			continue;
+		}
+		if (!strcmp(a, "--mediump")) {
+			job.force_mediump = true;
+			continue;
+		}
+		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
+							 "--at", "--fov", "--light", "--light-dir", "--time",
+							 "--platform", "--out", "--decision-out", "--frames", "--bias"};
+		bool known = false;
+		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+			known |= !strcmp(a, with_value[k]);
+		if (!known) {
+			fprintf(stderr, "lixel render: unknown option '%s' (see lixel render --help)\n", a);
+			return 2;
+		}
+		if (i + 1 >= argc)
+			return bad(a, "a value", NULL);
+		const char *v = argv[++i];
+		double d;
+		if (!strcmp(a, "--method")) {
+			if (!lx_shadow_method_find(v))
+				return bad(a, lx_shadow_method_names(), v);
+			job.method = v;
+		} else if (!strcmp(a, "--scene"))
+			scene_file = v;
+		else if (!strcmp(a, "--config")) {
+			if (!lx_config_find(v))
+				return bad(a, "a configuration named in lixel render --help", v);
+			config = v;
+		} else if (!strcmp(a, "--size")) {
+			if (!parse_size(v, &job.width, &job.height))
+				return bad(a, "WxH with W and H from 1 to 16384", v);
+		} else if (!strcmp(a, "--eye")) {
+			if (!parse_triple(v, &eye))
+				return bad(a, "three numbers X,Y,Z", v);
+			have_eye = true;
+		} else if (!strcmp(a, "--at")) {
+			if (!parse_triple(v, &at))
+				return bad(a, "three numbers X,Y,Z", v);
+			have_at = true;
+		} else if (!strcmp(a, "--fov")) {
+			if (!parse_double(v, &fov) || !(fov > 0 && fov < 180))
+				return bad(a, "degrees in (0, 180)", v);
+			have_fov = true;
+		} else if (!strcmp(a, "--light")) {
+			if (!parse_triple(v, &light))
+				return bad(a, "three numbers X,Y,Z", v);
+			have_light = true;
+		} else if (!strcmp(a, "--light-dir")) {
+			if (!parse_triple(v, &dir) || !v3_normalize(dir, &dir))
+				return bad(a, "three numbers X,Y,Z, not all zero", v);
+			have_dir = true;
+		} else if (!strcmp(a, "--time")) {
+			if (!parse_double(v, &job.time))
+				return bad(a, "seconds (a number)", v);
+		} else if (!strcmp(a, "--platform")) {
+			if (strcmp(v, "osmesa") && strcmp(v, "egl"))
+				return bad(a, lx_platform_names(), v);
+			job.platform = v;
+		} else if (!strcmp(a, "--out"))
+			job.out_png = v;
+		else if (!strcmp(a, "--decision-out"))
+			job.decision_png = v;
+		else if (!strcmp(a, "--frames")) {
+			if (!parse_double(v, &d) || d < 1 || d > 100000 || d != floor(d))
+				return bad(a, "a whole number of frames from 1 to 100000", v);
+			job.timed_frames = (int)d;
+		} else if (!strcmp(a, "--bias")) {
+			if (!parse_double(v, &job.bias_codes) || job.bias_codes < 0 || job.bias_codes > 16777215)
+				return bad(a, "depth codes from 0 to 16777215", v);
+		}
+	}
+	if (have_light && have_dir) {
+		fprintf(stderr, "lixel render: --light and --light-dir: expected one of them, got both\n");
+		return 2;
+	}
+	char err[512];
+	if (scene_file) {
+		if (!lx_scene_load(scene_file, &job.scene, err, sizeof err)) {
+			fprintf(stderr, "lixel: %s\n", err);
+			return 2;
+		}
+	} else
+		lx_scene_default(&job.scene);
+	if (config)
+		lx_config_apply(lx_config_find(config), &job.scene);
+	if (have_eye)
+		job.scene.camera.eye = eye;
+	if (have_at)
+		job.scene.camera.at = at;
+	if (have_fov)
+		job.scene.camera.fovy_deg = fov;
+	if (have_light)
+		job.scene.light = (struct lx_light){.directional = false, .position = light, .direction = v3(0, -1, 0)};
+	if (have_dir)
+		job.scene.light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = dir};
+	mat4 check;
+	if (!m4_look_at(job.scene.camera.eye, job.scene.camera.at, job.scene.camera.up, &check)) {
+		fprintf(stderr, "lixel render: --eye/--at: expected a camera whose eye differs from at and does not look along up\n");
+		return 2;
+	}
+	struct lx_render_report rep;
+	int status = lx_render_run(&job, &rep, err, sizeof err);
+	if (status) {
+		fprintf(stderr, "lixel: %s\n", err);
+		return status;
+	}
+	if (json)
+		print_json(&rep);
+	else
+		print_text(&rep, job.out_png);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	if (argc < 2) {
+		usage(stderr);
+		return 2;
+	}
+	if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "help")) {
+		usage(stdout);
+		return 0;
+	}
+	if (!strcmp(argv[1], "--version")) {
+		printf("lixel %s\n", LIXEL_VERSION);
+		return 0;
+	}
+	if (!strcmp(argv[1], "render"))
+		return cmd_render(argc - 2, argv + 2);
+	fprintf(stderr, "lixel: unknown command '%s', expected render (see lixel --help)\n", argv[1]);
+	return 2;
+}

@@ -1,0 +1,18 @@
+/* No shadows: the baseline every other method's frame time is compared with. */
+#include "shadow_method.h"
+
+static int none_regions(struct lx_region_request *out)
+{
+	(void)out;
+	return 0;
+}
+
+static void none_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+{
+	(void)f;
+	(void)atlas;
+	out->map_count = 0;
+}
+
+const struct lx_shadow_method lx_method_none = {
+	.name = "none", .summary = "no shadows (the baseline)", .regions = none_regions, .build = none_build};

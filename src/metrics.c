@@ -1,0 +1,156 @@
+#include "metrics.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
+			 const uint8_t *shadow, long pixels, struct lx_mismatch *out)
+{
+	memset(out, 0, sizeof(*out));
+	for (long i = 0; i < pixels; i++) {
+		if (ref_object[i] == LX_NO_OBJECT && object[i] == LX_NO_OBJECT)
+			continue; /* background in both */
+		if (ref_object[i] != object[i]) {
+			out->silhouette++;
+			continue;
+		}
+		out->compared++;
+		if (shadow[i] && !ref_shadow[i])
+			out->false_shadow++;
+		else if (!shadow[i] && ref_shadow[i])
+			out->missing_shadow++;
+	}
+	if (out->compared) {
+		out->false_shadow_pct = 100.0 * out->false_shadow / out->compared;
+		out->missing_shadow_pct = 100.0 * out->missing_shadow / out->compared;
+		out->mismatch_pct = 100.0 * (out->false_shadow + out->missing_shadow) / out->compared;
+	}
+}
+
+/* rows of a 3x4 "viewport" map from clip (x, y, z, w) to (px * w, py * w, w) */
+static void viewport_rows(double x0, double y0, double w, double h, double r[12])
+{
+	double v[12] = {w / 2, 0, 0, x0 + w / 2, 0, h / 2, 0, y0 + h / 2, 0, 0, 0, 1};
+	memcpy(r, v, sizeof v);
+}
+
+/* (3x4 rows) * (4x4 column-major) * (4x3 plane basis) -> 3x3 column-major */
+static mat3 project_plane(const double vp[12], const mat4 *m, const struct lx_plane *p)
+{
+	double basis[4][3] = {{p->edge1.x, p->edge2.x, p->corner.x},
+			      {p->edge1.y, p->edge2.y, p->corner.y},
+			      {p->edge1.z, p->edge2.z, p->corner.z},
+			      {0, 0, 1}};
+	double mb[4][3];
+	for (int r = 0; r < 4; r++)
+		for (int c = 0; c < 3; c++) {
+			double s = 0;
+			for (int k = 0; k < 4; k++)
+				s += m->m[k * 4 + r] * basis[k][c];
+			mb[r][c] = s;
+		}
+	mat3 out;
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 3; c++) {
+			double s = 0;
+			for (int k = 0; k < 4; k++)
+				s += vp[r * 4 + k] * mb[k][c];
+			out.m[c * 3 + r] = s;
+		}
+	return out;
+}
+
+bool lx_plane_homography(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+			 int plane, mat3 *h)
+{
+	const struct lx_plane *p = &f->scene->planes[plane];
+	const struct lx_region *g = &atlas->regions[map->region];
+	double vs[12], vl[12];
+	viewport_rows(0, 0, f->view.width, f->view.height, vs);
+	viewport_rows(0, 0, g->w, g->h, vl);
+	mat3 screen = project_plane(vs, &f->view.view_proj, p), light = project_plane(vl, &map->light_clip, p), inv;
+	if (!m3_invert(&screen, &inv))
+		return false;
+	*h = m3_mul(&light, &inv);
+	return true;
+}
+
+bool lx_homography_jacobian(const mat3 *hm, double x, double y, double *s_max, double *s_min)
+{
+	const double *h = hm->m; /* column-major: h[c * 3 + r] */
+	double wq = h[2] * x + h[5] * y + h[8];
+	double scale = fabs(h[2] * x) + fabs(h[5] * y) + fabs(h[8]);
+	if (!(fabs(wq) > 1e-12 * scale))
+		return false;
+	double u = (h[0] * x + h[3] * y + h[6]) / wq, v = (h[1] * x + h[4] * y + h[7]) / wq;
+	double a = (h[0] - u * h[2]) / wq, b = (h[3] - u * h[5]) / wq;
+	double c = (h[1] - v * h[2]) / wq, d = (h[4] - v * h[5]) / wq;
+	/* closed-form singular values of [[a, b], [c, d]] */
+	double e = (a + d) / 2, fq = (a - d) / 2, g = (c + b) / 2, hh = (c - b) / 2;
+	double q = sqrt(e * e + hh * hh), r = sqrt(fq * fq + g * g);
+	*s_max = q + r;
+	*s_min = fabs(q - r);
+	return isfinite(*s_max) && isfinite(*s_min);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static double median(double *v, long n)
+{
+	qsort(v, (size_t)n, sizeof(double), cmp_double);
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
+{
+	memset(out, 0, sizeof(*out));
+	int w = f->view.width, hgt = f->view.height;
+	mat3 h;
+	if (!lx_plane_homography(f, atlas, map, plane, &h))
+		return false;
+	long n = 0;
+	for (long i = 0; i < (long)w * hgt; i++)
+		n += ref_object[i] == plane;
+	if (!n)
+		return false;
+	double *lpp = malloc((size_t)n * sizeof(double)), *m = malloc((size_t)n * sizeof(double));
+	if (!lpp || !m) {
+		free(lpp);
+		free(m);
+		return false;
+	}
+	long k = 0;
+	out->lpp_min = INFINITY;
+	for (int y = 0; y < hgt; y++)
+		for (int x = 0; x < w; x++) {
+			if (ref_object[(long)y * w + x] != plane)
+				continue;
+			double smax, smin;
+			/* s_min below 1e-12 lixels per pixel: a lixel spans the whole screen or more */
+			if (!lx_homography_jacobian(&h, x + 0.5, y + 0.5, &smax, &smin) || !(smin > 1e-12)) {
+				out->degenerate++;
+				continue;
+			}
+			lpp[k] = smax * smin;
+			m[k] = 1.0 / smin;
+			out->lpp_min = fmin(out->lpp_min, lpp[k]);
+			out->lpp_max = fmax(out->lpp_max, lpp[k]);
+			out->m_max = fmax(out->m_max, m[k]);
+			out->aniso_max = fmax(out->aniso_max, smax / smin);
+			k++;
+		}
+	out->pixels = k;
+	if (k) {
+		out->lpp_median = median(lpp, k);
+		out->m_median = median(m, k);
+	} else
+		out->lpp_min = 0;
+	free(lpp);
+	free(m);
+	return k > 0;
+}

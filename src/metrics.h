@@ -1,0 +1,41 @@
+/* The accuracy metrics of docs/measuring (shared notes): shadow mismatch against the
+ * exact reference, and the sampling figures of a map on a plane computed exactly from
+ * the matrices. GL-free. */
+#ifndef LX_METRICS_H
+#define LX_METRICS_H
+#include "reference.h"
+#include "shadow_method.h"
+#include <stdint.h>
+
+struct lx_mismatch {
+	long compared;       /* receiver pixels where both agree on the visible object */
+	long silhouette;     /* pixels where they disagree on the visible object */
+	long false_shadow;   /* renderer shadowed, reference lit */
+	long missing_shadow; /* renderer lit, reference shadowed */
+	double mismatch_pct, false_shadow_pct, missing_shadow_pct; /* of compared; 0 when none compared */
+};
+
+void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
+			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
+
+struct lx_plane_sampling {
+	long pixels;     /* pixels of the plane the figures cover */
+	long degenerate; /* pixels skipped: the map's projection is singular there */
+	double lpp_median, lpp_min, lpp_max, m_median, m_max, aniso_max;
+};
+
+/* The Jacobian figures of the screen-to-lixel homography of `map` on plane `plane`, over
+ * the pixels whose visible object (from the reference) is that plane. Returns false
+ * (figures zeroed) when the plane covers no pixel. */
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out);
+
+/* The 3x3 homography from window pixel (x, y, 1) (GL window coordinates) to the map's
+ * lixel coordinates (u, v, 1) for points on the plane; false when the plane is seen
+ * edge-on (no homography). */
+bool lx_plane_homography(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+			 int plane, mat3 *h);
+/* Singular values of the Jacobian of homography h at (x, y); false where w' ~ 0. */
+bool lx_homography_jacobian(const mat3 *h, double x, double y, double *s_max, double *s_min);
+
+#endif

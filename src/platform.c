@@ -1,0 +1,34 @@
+#include "platform.h"
+#include "gl_api.h"
+#include <stdio.h>
+#include <string.h>
+
+const char *lx_platform_names(void) { return "osmesa|egl"; }
+
+struct lx_platform *lx_platform_create(const char *name, char *err, size_t errlen)
+{
+	struct lx_platform *p;
+	if (!strcmp(name, "osmesa"))
+		p = lx_platform_osmesa_create(err, errlen);
+	else if (!strcmp(name, "egl"))
+		p = lx_platform_egl_surfaceless_create(err, errlen);
+	else {
+		snprintf(err, errlen, "unknown platform '%s', expected %s", name, lx_platform_names());
+		return NULL;
+	}
+	if (!p)
+		return NULL;
+	const char *missing = NULL;
+	if (!lx_gl_load(p->get_proc, &missing)) {
+		snprintf(err, errlen, "%s: the GL entry point %s is missing", name, missing);
+		lx_platform_destroy(p);
+		return NULL;
+	}
+	return p;
+}
+
+void lx_platform_destroy(struct lx_platform *p)
+{
+	if (p)
+		p->destroy(p);
+}

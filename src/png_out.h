@@ -1,0 +1,12 @@
+/* Writing RGBA images as PNG through libpng. */
+#ifndef LX_PNG_OUT_H
+#define LX_PNG_OUT_H
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Writes rows given bottom to top (as GL reads them) as a top-down PNG. The file is
+ * written under a temporary name and renamed, so a failure leaves nothing behind. */
+bool lx_png_write(const char *path, const uint8_t *rgba, int width, int height, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,273 @@
+#include "reference.h"
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct tri {
+	vec3 a, e1, e2, n; /* vertex, two edges, unit face normal */
+	int object;
+};
+
+struct node {
+	vec3 lo, hi;
+	int first, count; /* leaf: triangles [first, first + count); inner: count = 0, first = right child */
+};
+
+struct lx_raycaster {
+	struct tri *tris;
+	int ntris;
+	struct node *nodes;
+	int nnodes;
+	double scale; /* scene size, for relative epsilons */
+};
+
+static vec3 vmin(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static vec3 vmax(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+
+static vec3 centroid(const struct tri *t) { return v3_add(t->a, v3_scale(v3_add(t->e1, t->e2), 1.0 / 3)); }
+
+static int build(struct lx_raycaster *rc, int first, int count)
+{
+	int idx = rc->nnodes++;
+	struct node *n = &rc->nodes[idx];
+	n->lo = v3(INFINITY, INFINITY, INFINITY);
+	n->hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	vec3 clo = n->lo, chi = n->hi;
+	for (int i = first; i < first + count; i++) {
+		const struct tri *t = &rc->tris[i];
+		vec3 b = v3_add(t->a, t->e1), c = v3_add(t->a, t->e2);
+		n->lo = vmin(n->lo, vmin(t->a, vmin(b, c)));
+		n->hi = vmax(n->hi, vmax(t->a, vmax(b, c)));
+		vec3 m = centroid(t);
+		clo = vmin(clo, m);
+		chi = vmax(chi, m);
+	}
+	if (count <= 4) {
+		n->first = first;
+		n->count = count;
+		return idx;
+	}
+	vec3 ext = v3_sub(chi, clo);
+	int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+	double split = ((&clo.x)[axis] + (&chi.x)[axis]) / 2;
+	int mid = first;
+	for (int i = first; i < first + count; i++) {
+		vec3 m = centroid(&rc->tris[i]);
+		if ((&m.x)[axis] < split) {
+			struct tri t = rc->tris[i];
+			rc->tris[i] = rc->tris[mid];
+			rc->tris[mid++] = t;
+		}
+	}
+	if (mid == first || mid == first + count) /* all centroids coincide: split in half */
+		mid = first + count / 2;
+	build(rc, first, mid - first);
+	int right = build(rc, mid, first + count - mid);
+	n = &rc->nodes[idx]; /* nodes is preallocated, the pointer stays valid; re-take for clarity */
+	n->first = right;
+	n->count = 0;
+	return idx;
+}
+
+struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f)
+{
+	struct lx_raycaster *rc = calloc(1, sizeof(*rc));
+	if (!rc)
+		return NULL;
+	for (int id = 0; id < f->meshes->count; id++)
+		rc->ntris += f->meshes->mesh[id].vertex_count / 3;
+	rc->tris = malloc((size_t)rc->ntris * sizeof(struct tri));
+	rc->nodes = malloc((size_t)(2 * rc->ntris + 1) * sizeof(struct node));
+	if (!rc->tris || !rc->nodes) {
+		lx_raycaster_destroy(rc);
+		return NULL;
+	}
+	int k = 0;
+	for (int id = 0; id < f->meshes->count; id++) {
+		const struct lx_mesh *m = &f->meshes->mesh[id];
+		for (int i = 0; i < m->vertex_count; i += 3) {
+			vec3 p[3];
+			/* the same float vertices the GL draws, translated in double */
+			for (int j = 0; j < 3; j++) {
+				const float *v = m->v + (size_t)(i + j) * LX_VERTEX_FLOATS;
+				p[j] = v3_add(v3(v[0], v[1], v[2]), f->offset[id]);
+			}
+			struct tri *t = &rc->tris[k++];
+			t->a = p[0];
+			t->e1 = v3_sub(p[1], p[0]);
+			t->e2 = v3_sub(p[2], p[0]);
+			t->n = v3(0, 0, 0);
+			v3_normalize(v3_cross(t->e1, t->e2), &t->n); /* meshes hold no degenerate triangles */
+			t->object = id;
+		}
+	}
+	rc->scale = v3_len(v3_sub(f->scene_max, f->scene_min)) + 1e-300;
+	if (rc->ntris)
+		build(rc, 0, rc->ntris);
+	return rc;
+}
+
+void lx_raycaster_destroy(struct lx_raycaster *rc)
+{
+	if (!rc)
+		return;
+	free(rc->tris);
+	free(rc->nodes);
+	free(rc);
+}
+
+int lx_raycaster_object(const struct lx_raycaster *rc, int tri) { return tri >= 0 ? rc->tris[tri].object : LX_NO_OBJECT; }
+
+/* Moller-Trumbore; edges count as inside so neighbouring triangles leave no crack. */
+static bool hit_tri(const struct tri *t, vec3 o, vec3 d, double tmin, double tmax, double *tout)
+{
+	vec3 p = v3_cross(d, t->e2);
+	double det = v3_dot(t->e1, p);
+	if (fabs(det) < 1e-300) /* ray parallel to the triangle */
+		return false;
+	double inv = 1.0 / det;
+	vec3 s = v3_sub(o, t->a);
+	double u = v3_dot(s, p) * inv;
+	if (u < 0 || u > 1)
+		return false;
+	vec3 q = v3_cross(s, t->e1);
+	double v = v3_dot(d, q) * inv;
+	if (v < 0 || u + v > 1)
+		return false;
+	double tt = v3_dot(t->e2, q) * inv;
+	if (!(tt > tmin && tt < tmax))
+		return false;
+	*tout = tt;
+	return true;
+}
+
+static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double tmax)
+{
+	for (int k = 0; k < 3; k++) {
+		double oo = (&o.x)[k], iv = (&inv.x)[k];
+		double t0 = ((&n->lo.x)[k] - oo) * iv, t1 = ((&n->hi.x)[k] - oo) * iv;
+		if (t0 > t1) {
+			double t = t0;
+			t0 = t1;
+			t1 = t;
+		}
+		/* NaN from 0 * inf (ray in the slab's plane) must not reject: fmax/fmin skip NaN */
+		tmin = fmax(tmin, t0);
+		tmax = fmin(tmax, t1);
+		if (tmin > tmax)
+			return false;
+	}
+	return true;
+}
+
+static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, bool any, int skip,
+		    double *tbest)
+{
+	if (!rc->ntris)
+		return -1;
+	vec3 inv = v3(1.0 / d.x, 1.0 / d.y, 1.0 / d.z); /* +-inf for axis-parallel rays is what the slab test wants */
+	int stack[128], sp = 0, best = -1;
+	stack[sp++] = 0;
+	while (sp) {
+		const struct node *n = &rc->nodes[stack[--sp]];
+		if (!hit_box(n, o, inv, tmin, tmax))
+			continue;
+		if (n->count) {
+			for (int i = n->first; i < n->first + n->count; i++) {
+				double t;
+				if (i != skip && hit_tri(&rc->tris[i], o, d, tmin, tmax, &t)) {
+					best = i;
+					tmax = t;
+					if (any)
+						return best;
+				}
+			}
+		} else if (sp + 2 <= 128) {
+			stack[sp++] = n->first;
+			stack[sp++] = (int)(n - rc->nodes) + 1;
+		}
+	}
+	*tbest = tmax;
+	return best;
+}
+
+int lx_raycast_first(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, double *t)
+{
+	return traverse(rc, o, d, tmin, tmax, false, -1, t);
+}
+
+bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip)
+{
+	double t;
+	return traverse(rc, o, d, tmin, tmax, true, skip, &t) >= 0;
+}
+
+bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri)
+{
+	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p);
+	if (!(v3_dot(rc->tris[tri].n, to_light) > 0))
+		return true; /* faces away from the light (or the light lies in its plane) */
+	/* For a point light the segment ends at the light (s = 1); start a hair off the surface. */
+	double len = v3_len(to_light);
+	double smin = 1e-9 * rc->scale / len; /* len > 0: the dot product above was positive */
+	double smax = light->directional ? INFINITY : 1.0;
+	return lx_raycast_any(rc, p, to_light, smin, smax, tri);
+}
+
+struct job {
+	const struct lx_frame *f;
+	const struct lx_raycaster *rc;
+	int16_t *object;
+	uint8_t *shadowed;
+	int row0, row_step;
+};
+
+static void *run_rows(void *arg)
+{
+	struct job *j = arg;
+	const struct lx_view *v = &j->f->view;
+	for (int y = j->row0; y < v->height; y += j->row_step)
+		for (int x = 0; x < v->width; x++) {
+			double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
+			vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
+			vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+			/* inside the frustum w > 0 for both */
+			vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
+			vec3 d = v3_sub(pf, pn);
+			size_t i = (size_t)y * v->width + x;
+			double t;
+			int tri = lx_raycast_first(j->rc, pn, d, 0.0, 1.0, &t);
+			j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
+			j->shadowed[i] = tri >= 0 && lx_reference_shadowed(j->rc, &j->f->light, v3_add(pn, v3_scale(d, t)), tri);
+		}
+	return NULL;
+}
+
+bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+{
+	struct lx_raycaster *rc = lx_raycaster_create(f);
+	if (!rc)
+		return false;
+	if (threads < 1)
+		threads = 1;
+	if (threads > 16)
+		threads = 16;
+	pthread_t th[16];
+	struct job jobs[16];
+	int started = 0;
+	for (int i = 0; i < threads; i++) {
+		jobs[i] = (struct job){f, rc, object, shadowed, i, threads};
+		if (i > 0 && pthread_create(&th[i], NULL, run_rows, &jobs[i]) == 0)
+			started |= 1 << i;
+	}
+	run_rows(&jobs[0]);
+	for (int i = 1; i < threads; i++) {
+		if (started & (1 << i))
+			pthread_join(th[i], NULL);
+		else
+			run_rows(&jobs[i]); /* thread could not start: do its rows here */
+	}
+	lx_raycaster_destroy(rc);
+	return true;
+}

@@ -1,0 +1,31 @@
+/* The exact reference: a CPU ray caster in double precision over the very triangles
+ * the renderer draws. For every pixel centre it finds the visible triangle and calls
+ * the point lit or shadowed, with no resolution and no bias. GL-free.
+ *
+ * The shadow rule is the renderer's, stated exactly: a point on a triangle that faces
+ * away from the light is shadowed (the meshes are closed, or planes whose back is
+ * unlit); otherwise it is shadowed when the segment to the light (the ray against the
+ * light direction, for a directional light) hits any other triangle. */
+#ifndef LX_REFERENCE_H
+#define LX_REFERENCE_H
+#include "frame.h"
+#include <stdint.h>
+
+#define LX_NO_OBJECT (-1)
+
+struct lx_raycaster;
+
+struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f);
+void lx_raycaster_destroy(struct lx_raycaster *rc);
+/* Nearest hit with t in (tmin, tmax); returns the triangle index or -1. */
+int lx_raycast_first(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, double *t);
+bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip);
+int lx_raycaster_object(const struct lx_raycaster *rc, int tri);
+/* Whether world point p on triangle tri is in shadow. */
+bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri);
+
+/* Per pixel, rows bottom to top as GL reads them: the visible object id (or
+ * LX_NO_OBJECT) and 1 where shadowed. Arrays of width*height. Uses `threads` threads. */
+bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads);
+
+#endif

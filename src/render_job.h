@@ -1,0 +1,54 @@
+/* One render, end to end: scene + view + light -> light matrices -> atlas layout ->
+ * GL passes -> image -> measurements. Used by `lixel render` and by the tests. */
+#ifndef LX_RENDER_JOB_H
+#define LX_RENDER_JOB_H
+#include "gl_caps.h"
+#include "metrics.h"
+#include "shadow_method.h"
+
+struct lx_render_job {
+	const char *method;   /* a name lx_shadow_method_find() knows */
+	const char *platform; /* "osmesa" or "egl" */
+	struct lx_scene scene;
+	int width, height;
+	double time;
+	int warmup_frames, timed_frames;
+	bool measure;        /* compare with the exact reference, compute the plane figures */
+	bool keep_pixels;    /* keep the per-pixel arrays in the report (tests) */
+	bool force_mediump;  /* take the shaders' mediump path */
+	double bias_codes;   /* depth bias in 24-bit codes */
+	int reference_threads;
+	const char *out_png; /* shaded image, or NULL */
+	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
+};
+
+struct lx_plane_report {
+	char name[LX_NAME_MAX];
+	bool present; /* the plane covers pixels and a map serves it */
+	struct lx_plane_sampling s;
+};
+
+struct lx_render_report {
+	char method[16], platform[16];
+	struct lx_gl_caps caps;
+	int width, height;
+	struct lx_atlas atlas;
+	struct lx_shadow_result result;
+	double frame_ms, frame_ms_min, frame_ms_max, shadow_ms, main_ms, setup_us;
+	bool measured;
+	struct lx_mismatch mismatch;
+	int plane_count;
+	struct lx_plane_report planes[LX_MAX_PLANES];
+	/* with keep_pixels: width * height each, rows bottom to top; free with lx_render_report_free */
+	int16_t *ref_object, *object;
+	uint8_t *ref_shadow, *shadow;
+};
+
+/* Returns 0 on success; 2 for bad input (err says what), 1 for a failure of the
+ * platform or GL (err says what). */
+int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen);
+void lx_render_report_free(struct lx_render_report *rep);
+/* The default bias: a few 24-bit codes, enough for the rounding of interpolated depth. */
+#define LX_DEFAULT_BIAS_CODES 64.0
+
+#endif

@@ -1,0 +1,312 @@
+#include "renderer.h"
+#include "gl_api.h"
+#include "gl_program.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef GL_DEPTH_COMPONENT24_OES
+#define GL_DEPTH_COMPONENT24_OES 0x81A6
+#endif
+
+struct main_program {
+	GLuint prog;
+	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
+};
+
+struct lx_renderer {
+	struct lx_renderer_desc d;
+	int objects;
+	GLuint vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
+	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
+	GLuint atlas_tex, atlas_fbo, atlas_depth;
+	GLuint target_color, target_depth, target_fbo;
+	GLuint shadow_prog;
+	GLint shadow_light_clip;
+	struct main_program shaded, decision;
+	float bias_uniform;
+};
+
+static void to_float(const mat4 *m, float out[16])
+{
+	for (int i = 0; i < 16; i++)
+		out[i] = (float)m->m[i];
+}
+
+static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *depth_rb, int w, int h, bool depth24,
+			char *err, size_t errlen, const char *what)
+{
+	lx_gl.GenRenderbuffers(1, depth_rb);
+	lx_gl.BindRenderbuffer(GL_RENDERBUFFER, *depth_rb);
+	lx_gl.RenderbufferStorage(GL_RENDERBUFFER, depth24 ? GL_DEPTH_COMPONENT24_OES : GL_DEPTH_COMPONENT16, w, h);
+	lx_gl.GenFramebuffers(1, fbo);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, *fbo);
+	if (color_tex)
+		lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_tex, 0);
+	else
+		lx_gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb);
+	lx_gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth_rb);
+	GLenum st = lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+	if (st != GL_FRAMEBUFFER_COMPLETE) {
+		snprintf(err, errlen, "GL: the %s framebuffer (%dx%d) is incomplete (status 0x%x)", what, w, h, st);
+		return false;
+	}
+	return true;
+}
+
+static bool main_program(struct main_program *p, int maps, bool decision, bool mediump, char *err, size_t errlen)
+{
+	char defines[160];
+	snprintf(defines, sizeof defines, "#define LX_MAPS %d\n%s%s", maps, decision ? "#define LX_DECISION 1\n" : "",
+		 mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
+	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
+	if (!p->prog)
+		return false;
+	p->view_proj = lx_gl.GetUniformLocation(p->prog, "u_view_proj");
+	p->offset = lx_gl.GetUniformLocation(p->prog, "u_offset");
+	p->shadow_tex = lx_gl.GetUniformLocation(p->prog, "u_shadow_tex");
+	p->region = lx_gl.GetUniformLocation(p->prog, "u_region");
+	p->bias = lx_gl.GetUniformLocation(p->prog, "u_bias");
+	p->light = lx_gl.GetUniformLocation(p->prog, "u_light");
+	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
+	p->object_id = lx_gl.GetUniformLocation(p->prog, "u_object_id");
+	p->atlas = lx_gl.GetUniformLocation(p->prog, "u_atlas");
+	return true;
+}
+
+struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
+{
+	const struct lx_gl_caps *caps = d->caps;
+	if (d->width > caps->max_renderbuffer_size || d->height > caps->max_renderbuffer_size ||
+	    d->width > caps->max_viewport[0] || d->height > caps->max_viewport[1]) {
+		snprintf(err, errlen, "size %dx%d exceeds the GL's limit (renderbuffer %d, viewport %dx%d)", d->width,
+			 d->height, caps->max_renderbuffer_size, caps->max_viewport[0], caps->max_viewport[1]);
+		return NULL;
+	}
+	if (d->map_count > 3) {
+		snprintf(err, errlen, "a method returned %d maps; the main pass handles at most 3", d->map_count);
+		return NULL;
+	}
+	struct lx_renderer *r = calloc(1, sizeof(*r));
+	if (!r) {
+		snprintf(err, errlen, "out of memory");
+		return NULL;
+	}
+	r->d = *d;
+	r->objects = d->meshes->count;
+	bool mediump = d->force_mediump || !caps->fragment_highp;
+	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
+	r->bias_uniform = (float)(mediump ? (d->bias_codes / 8192.0 > 1 ? d->bias_codes / 8192.0 : 1.0) : d->bias_codes);
+
+	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
+					  mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
+	if (!r->shadow_prog || !main_program(&r->shaded, d->map_count, false, mediump, err, errlen) ||
+	    !main_program(&r->decision, d->map_count, true, mediump, err, errlen)) {
+		lx_renderer_destroy(r);
+		return NULL;
+	}
+	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
+
+	lx_gl.GenBuffers(r->objects, r->vbo);
+	for (int i = 0; i < r->objects; i++) {
+		const struct lx_mesh *m = &d->meshes->mesh[i];
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[i]);
+		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
+				 GL_STATIC_DRAW);
+		r->vertices[i] = m->vertex_count;
+	}
+
+	/* The atlas: RGBA8, NEAREST (depths must not be blended), CLAMP_TO_EDGE (NPOT in ES 2.0). */
+	lx_gl.GenTextures(1, &r->atlas_tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->atlas->width, d->atlas->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, d->atlas->width, d->atlas->height,
+			 caps->depth24, err, errlen, "atlas")) {
+		lx_renderer_destroy(r);
+		return NULL;
+	}
+	/* Everything, guard bands included, starts as "far"; passes only ever clear and
+	 * draw inside their own region, so the guards keep this value. */
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.Viewport(0, 0, d->atlas->width, d->atlas->height);
+	lx_gl.ClearColor(1, 1, 1, 1);
+	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+	/* RGBA8 renderbuffers are an extension in ES 2.0 (OES_rgb8_rgba8); an RGBA texture is core. */
+	GLuint tex;
+	lx_gl.GenTextures(1, &tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, tex);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->width, d->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	r->target_color = tex;
+	if (!framebuffer(&r->target_fbo, tex, 0, &r->target_depth, d->width, d->height, caps->depth24, err, errlen,
+			 "main target")) {
+		lx_renderer_destroy(r);
+		return NULL;
+	}
+	GLenum e = lx_gl.GetError();
+	if (e != GL_NO_ERROR) {
+		snprintf(err, errlen, "GL error 0x%x while setting up the renderer", e);
+		lx_renderer_destroy(r);
+		return NULL;
+	}
+	return r;
+}
+
+void lx_renderer_destroy(struct lx_renderer *r)
+{
+	if (!r)
+		return;
+	if (r->objects)
+		lx_gl.DeleteBuffers(r->objects, r->vbo);
+	lx_gl.DeleteTextures(1, &r->atlas_tex);
+	lx_gl.DeleteTextures(1, &r->target_color);
+	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
+	lx_gl.DeleteRenderbuffers(1, &r->target_depth);
+	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
+	lx_gl.DeleteFramebuffers(1, &r->target_fbo);
+	if (r->shadow_prog)
+		lx_gl.DeleteProgram(r->shadow_prog);
+	if (r->shaded.prog)
+		lx_gl.DeleteProgram(r->shaded.prog);
+	if (r->decision.prog)
+		lx_gl.DeleteProgram(r->decision.prog);
+	free(r);
+}
+
+static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
+{
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[id]);
+	const GLsizei stride = LX_VERTEX_FLOATS * sizeof(float);
+	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, stride, (const void *)0);
+	if (normals) {
+		lx_gl.VertexAttribPointer(LX_ATTR_NORMAL, 3, GL_FLOAT, GL_FALSE, stride, (const void *)(3 * sizeof(float)));
+		lx_gl.VertexAttribPointer(LX_ATTR_FACE_NORMAL, 3, GL_FLOAT, GL_FALSE, stride,
+					  (const void *)(6 * sizeof(float)));
+	}
+}
+
+void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
+{
+	bool any = false;
+	for (int i = 0; i < res->map_count; i++)
+		any |= res->maps[i].rendered;
+	if (!any)
+		return;
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
+	lx_gl.UseProgram(r->shadow_prog);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
+	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	lx_gl.Enable(GL_DEPTH_TEST);
+	lx_gl.Enable(GL_SCISSOR_TEST);
+	/* Back faces only (second-depth shadow maps): lit front faces never compare against
+	 * themselves, so there is no acne; the meshes are closed or are planes. */
+	lx_gl.Enable(GL_CULL_FACE);
+	lx_gl.CullFace(GL_FRONT);
+	lx_gl.ClearColor(1, 1, 1, 1);
+	for (int m = 0; m < res->map_count; m++) {
+		const struct lx_shadow_map *map = &res->maps[m];
+		if (!map->rendered)
+			continue;
+		const struct lx_region *g = &r->d.atlas->regions[map->region];
+		lx_gl.Viewport(g->x, g->y, g->w, g->h);
+		lx_gl.Scissor(g->x, g->y, g->w, g->h);
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		for (int id = 0; id < r->objects; id++) {
+			mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
+			float lcf[16];
+			to_float(&lc, lcf);
+			lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
+			bind_mesh(r, id, false);
+			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+		}
+	}
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.Disable(GL_CULL_FACE);
+}
+
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			   bool decision)
+{
+	const struct main_program *p = decision ? &r->decision : &r->shaded;
+	const struct lx_atlas *atlas = r->d.atlas;
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
+	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.Disable(GL_CULL_FACE); /* planes are seen from both sides, as the reference sees them */
+	lx_gl.Enable(GL_DEPTH_TEST);
+	if (decision)
+		lx_gl.ClearColor(0, 0, 0, 1);
+	else
+		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
+	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	lx_gl.UseProgram(p->prog);
+	float vp[16];
+	to_float(&f->view.view_proj, vp);
+	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
+	const struct lx_light *L = &f->light;
+	if (L->directional)
+		lx_gl.Uniform4f(p->light, (float)L->direction.x, (float)L->direction.y, (float)L->direction.z, 0);
+	else
+		lx_gl.Uniform4f(p->light, (float)L->position.x, (float)L->position.y, (float)L->position.z, 1);
+	if (r->d.map_count > 0) {
+		float tex[3][16], region[3][4];
+		for (int m = 0; m < r->d.map_count; m++) {
+			const struct lx_shadow_map *map = &res->maps[m];
+			mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
+			to_float(&t, tex[m]);
+			if (map->rendered) {
+				const struct lx_region *g = &atlas->regions[map->region];
+				region[m][0] = (float)g->x / atlas->width;
+				region[m][1] = (float)g->y / atlas->height;
+				region[m][2] = (float)(g->x + g->w) / atlas->width;
+				region[m][3] = (float)(g->y + g->h) / atlas->height;
+			} else { /* an empty box: every lookup misses and reads lit */
+				region[m][0] = region[m][1] = 2;
+				region[m][2] = region[m][3] = -1;
+			}
+		}
+		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
+		lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
+		lx_gl.Uniform1f(p->bias, r->bias_uniform);
+		lx_gl.Uniform1i(p->atlas, 0);
+		lx_gl.ActiveTexture(GL_TEXTURE0);
+		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	}
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	const struct lx_scene *s = r->d.scene;
+	for (int id = 0; id < r->objects; id++) {
+		vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+		lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+		lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+		lx_gl.Uniform1f(p->object_id, (float)id);
+		bind_mesh(r, id, true);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+	}
+}
+
+void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)
+{
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
+	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+	lx_gl.ReadPixels(0, 0, r->d.width, r->d.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
+{
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
+	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+	lx_gl.ReadPixels(0, 0, r->d.atlas->width, r->d.atlas->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void lx_renderer_finish(void) { lx_gl.Finish(); }

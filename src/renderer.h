@@ -1,0 +1,35 @@
+/* The GL passes: shadow passes into atlas regions, then the main pass into an
+ * off-screen target. Knows nothing of the platform underneath. */
+#ifndef LX_RENDERER_H
+#define LX_RENDERER_H
+#include "gl_caps.h"
+#include "shadow_method.h"
+#include <stdint.h>
+
+struct lx_renderer;
+
+struct lx_renderer_desc {
+	const struct lx_scene *scene;
+	const struct lx_scene_meshes *meshes;
+	const struct lx_atlas *atlas;
+	const struct lx_gl_caps *caps;
+	int map_count; /* maps the method returns per frame */
+	int width, height;
+	bool force_mediump; /* take the fragment shaders' mediump path even where highp exists */
+	double bias_codes;  /* depth bias in 24-bit depth codes */
+};
+
+struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen);
+void lx_renderer_destroy(struct lx_renderer *r);
+/* Shadow passes for the rendered maps; then the main pass, shaded or (decision) the
+ * per-pixel shadow decision. */
+void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res);
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			   bool decision);
+/* The main target's pixels, RGBA, rows bottom to top (width * height * 4 bytes). */
+void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba);
+/* The atlas texture's texels, RGBA (atlas width * height * 4 bytes). */
+void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba);
+void lx_renderer_finish(void);
+
+#endif

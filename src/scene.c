@@ -1,0 +1,384 @@
+#include "scene.h"
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const shape_names[LX_SHAPE_COUNT] = {"sphere", "box", "cylinder", "cone"};
+
+const char *lx_shape_name(enum lx_shape s) { return s < LX_SHAPE_COUNT ? shape_names[s] : "?"; }
+
+double lx_caster_bottom(const struct lx_caster *c, double t)
+{
+	/* period > 0 is enforced by the parser and the default scene */
+	return c->low + (c->high - c->low) * fabs(sin(M_PI * t / c->period + c->phase));
+}
+
+vec3 lx_caster_position(const struct lx_caster *c, double t) { return v3(c->x, lx_caster_bottom(c, t), c->z); }
+
+vec3 lx_plane_normal(const struct lx_plane *p)
+{
+	vec3 n = v3(0, 1, 0);
+	v3_normalize(v3_cross(p->edge1, p->edge2), &n);
+	return n;
+}
+
+static void add_plane(struct lx_scene *s, const char *name, vec3 corner, vec3 e1, vec3 e2, vec3 color)
+{
+	struct lx_plane *p = &s->planes[s->plane_count++];
+	snprintf(p->name, sizeof p->name, "%s", name);
+	p->corner = corner, p->edge1 = e1, p->edge2 = e2, p->color = color;
+}
+
+static void add_caster(struct lx_scene *s, enum lx_shape shape, vec3 size, double x, double z, double period,
+		       double phase, vec3 color)
+{
+	s->casters[s->caster_count++] = (struct lx_caster){
+		.shape = shape, .size = size, .x = x, .z = z, .low = 0.3, .high = 2.0,
+		.period = period, .phase = phase, .color = color};
+}
+
+void lx_scene_default(struct lx_scene *s)
+{
+	memset(s, 0, sizeof(*s));
+	/* floor y = 0 over x, z in [-5, 5], facing +y; wall z = -5 facing +z */
+	add_plane(s, "floor", v3(-5, 0, 5), v3(10, 0, 0), v3(0, 0, -10), v3(0.80, 0.78, 0.72));
+	add_plane(s, "wall", v3(-5, 0, -5), v3(10, 0, 0), v3(0, 5, 0), v3(0.70, 0.74, 0.82));
+	add_caster(s, LX_SPHERE, v3(0.6, 0.6, 0.6), -1.3, 0.4, 1.7, 0.0, v3(0.85, 0.25, 0.2));
+	add_caster(s, LX_BOX, v3(0.8, 0.8, 0.8), 1.4, -0.6, 2.3, 0.9, v3(0.25, 0.55, 0.85));
+	add_caster(s, LX_CYLINDER, v3(0.35, 1.1, 0.35), 0.4, 1.6, 1.9, 2.1, v3(0.3, 0.75, 0.35));
+	add_caster(s, LX_CONE, v3(0.5, 1.0, 0.5), -0.3, -2.0, 2.9, 0.5, v3(0.9, 0.7, 0.2));
+	s->light = (struct lx_light){.directional = false, .position = v3(2.5, 6, 3), .direction = v3(0, -1, 0)};
+	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
+}
+
+/* ---- scene file parser ---- */
+
+struct parser {
+	const char *file;
+	int line;
+	char *tok[64];
+	int ntok, pos;
+	char *err;
+	size_t errlen;
+};
+
+static bool fail(struct parser *p, const char *fmt, ...)
+{
+	char msg[256];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	snprintf(p->err, p->errlen, "%s:%d: %s", p->file, p->line, msg);
+	return false;
+}
+
+static const char *peek(struct parser *p) { return p->pos < p->ntok ? p->tok[p->pos] : NULL; }
+
+static bool number(struct parser *p, const char *what, double *out)
+{
+	const char *t = peek(p);
+	if (!t)
+		return fail(p, "expected a number for %s, got end of line", what);
+	char *end;
+	errno = 0;
+	double v = strtod(t, &end);
+	if (end == t || *end || errno == ERANGE || !isfinite(v))
+		return fail(p, "expected a number for %s, got '%s'", what, t);
+	p->pos++;
+	*out = v;
+	return true;
+}
+
+static bool triple(struct parser *p, const char *what, vec3 *out)
+{
+	return number(p, what, &out->x) && number(p, what, &out->y) && number(p, what, &out->z);
+}
+
+static bool positive(struct parser *p, const char *what, double *out)
+{
+	if (!number(p, what, out))
+		return false;
+	if (!(*out > 0))
+		return fail(p, "expected %s > 0, got %g", what, *out);
+	return true;
+}
+
+static bool color(struct parser *p, vec3 *c)
+{
+	if (!triple(p, "color (three values in [0, 1])", c))
+		return false;
+	if (c->x < 0 || c->x > 1 || c->y < 0 || c->y > 1 || c->z < 0 || c->z > 1)
+		return fail(p, "expected color components in [0, 1]");
+	return true;
+}
+
+static bool parse_camera(struct parser *p, struct lx_scene *s)
+{
+	bool eye = false, at = false;
+	while (peek(p)) {
+		const char *k = p->tok[p->pos++];
+		if (!strcmp(k, "eye")) {
+			if (!triple(p, "camera eye", &s->camera.eye))
+				return false;
+			eye = true;
+		} else if (!strcmp(k, "at")) {
+			if (!triple(p, "camera at", &s->camera.at))
+				return false;
+			at = true;
+		} else if (!strcmp(k, "up")) {
+			if (!triple(p, "camera up", &s->camera.up))
+				return false;
+		} else if (!strcmp(k, "fov")) {
+			if (!number(p, "camera fov (degrees)", &s->camera.fovy_deg))
+				return false;
+			if (!(s->camera.fovy_deg > 0 && s->camera.fovy_deg < 180))
+				return fail(p, "expected camera fov in (0, 180) degrees, got %g", s->camera.fovy_deg);
+		} else
+			return fail(p, "expected eye, at, up or fov after 'camera', got '%s'", k);
+	}
+	if (!eye || !at)
+		return fail(p, "expected 'camera eye X Y Z at X Y Z [up X Y Z] [fov DEG]'");
+	mat4 m;
+	if (!m4_look_at(s->camera.eye, s->camera.at, s->camera.up, &m))
+		return fail(p, "expected a camera whose eye differs from at and whose up is not along the view");
+	return true;
+}
+
+static bool parse_light(struct parser *p, struct lx_scene *s)
+{
+	const char *k = peek(p);
+	if (!k)
+		return fail(p, "expected 'point X Y Z' or 'directional DX DY DZ' after 'light'");
+	p->pos++;
+	if (!strcmp(k, "point")) {
+		s->light.directional = false;
+		if (!triple(p, "light position", &s->light.position))
+			return false;
+	} else if (!strcmp(k, "directional")) {
+		s->light.directional = true;
+		vec3 d;
+		if (!triple(p, "light direction", &d))
+			return false;
+		if (!v3_normalize(d, &s->light.direction))
+			return fail(p, "expected a non-zero light direction");
+	} else
+		return fail(p, "expected 'point' or 'directional' after 'light', got '%s'", k);
+	return true;
+}
+
+static bool parse_plane(struct parser *p, struct lx_scene *s)
+{
+	if (s->plane_count == LX_MAX_PLANES)
+		return fail(p, "expected at most %d planes", LX_MAX_PLANES);
+	struct lx_plane pl = {.color = v3(0.8, 0.8, 0.8)};
+	const char *name = peek(p);
+	if (!name || !isalpha((unsigned char)name[0]) || strlen(name) >= LX_NAME_MAX)
+		return fail(p, "expected a plane name (a word of 1 to %d characters) after 'plane'", LX_NAME_MAX - 1);
+	p->pos++;
+	for (int i = 0; i < s->plane_count; i++)
+		if (!strcmp(s->planes[i].name, name))
+			return fail(p, "expected a new plane name, '%s' is already defined", name);
+	strcpy(pl.name, name);
+	int have = 0;
+	while (peek(p)) {
+		const char *k = p->tok[p->pos++];
+		if (!strcmp(k, "corner")) {
+			if (!triple(p, "plane corner", &pl.corner))
+				return false;
+			have |= 1;
+		} else if (!strcmp(k, "edge1")) {
+			if (!triple(p, "plane edge1", &pl.edge1))
+				return false;
+			have |= 2;
+		} else if (!strcmp(k, "edge2")) {
+			if (!triple(p, "plane edge2", &pl.edge2))
+				return false;
+			have |= 4;
+		} else if (!strcmp(k, "color")) {
+			if (!color(p, &pl.color))
+				return false;
+		} else
+			return fail(p, "expected corner, edge1, edge2 or color in a plane, got '%s'", k);
+	}
+	if (have != 7)
+		return fail(p, "expected 'plane NAME corner X Y Z edge1 X Y Z edge2 X Y Z [color R G B]'");
+	vec3 n = v3_cross(pl.edge1, pl.edge2);
+	if (!(v3_len(n) > 1e-9 * (1 + v3_len(pl.edge1) * v3_len(pl.edge2))))
+		return fail(p, "expected plane edges that are non-zero and not parallel");
+	s->planes[s->plane_count++] = pl;
+	return true;
+}
+
+static bool parse_caster(struct parser *p, struct lx_scene *s, enum lx_shape shape)
+{
+	if (s->caster_count == LX_MAX_CASTERS)
+		return fail(p, "expected at most %d casters", LX_MAX_CASTERS);
+	struct lx_caster c = {.shape = shape, .low = 0.3, .high = 2.0, .period = 2.0, .color = v3(0.7, 0.7, 0.7)};
+	bool size = false, at = false;
+	double r = 0, h = 0;
+	while (peek(p)) {
+		const char *k = p->tok[p->pos++];
+		if (shape != LX_BOX && !strcmp(k, "radius")) {
+			if (!positive(p, "radius", &r))
+				return false;
+			size = shape == LX_SPHERE || h > 0;
+		} else if ((shape == LX_CYLINDER || shape == LX_CONE) && !strcmp(k, "height")) {
+			if (!positive(p, "height", &h))
+				return false;
+			size = r > 0;
+		} else if (shape == LX_BOX && !strcmp(k, "size")) {
+			if (!positive(p, "box size x", &c.size.x) || !positive(p, "box size y", &c.size.y) ||
+			    !positive(p, "box size z", &c.size.z))
+				return false;
+			size = true;
+		} else if (!strcmp(k, "at")) {
+			if (!number(p, "position x", &c.x) || !number(p, "position z", &c.z))
+				return false;
+			at = true;
+		} else if (!strcmp(k, "bounce")) {
+			if (!number(p, "bounce low", &c.low) || !number(p, "bounce high", &c.high))
+				return false;
+			if (!(c.low <= c.high))
+				return fail(p, "expected bounce LOW HIGH with LOW <= HIGH");
+		} else if (!strcmp(k, "period")) {
+			if (!positive(p, "period (seconds)", &c.period))
+				return false;
+		} else if (!strcmp(k, "phase")) {
+			if (!number(p, "phase (radians)", &c.phase))
+				return false;
+		} else if (!strcmp(k, "color")) {
+			if (!color(p, &c.color))
+				return false;
+		} else
+			return fail(p, "unexpected '%s' in a %s", k, lx_shape_name(shape));
+	}
+	if (shape != LX_BOX)
+		c.size = v3(r, shape == LX_SPHERE ? r : h, r);
+	if (!size || !at)
+		return fail(p, "expected %s", shape == LX_SPHERE ? "'sphere radius R at X Z'" :
+					       shape == LX_BOX	  ? "'box size SX SY SZ at X Z'" :
+									    "'cylinder|cone radius R height H at X Z'");
+	s->casters[s->caster_count++] = c;
+	return true;
+}
+
+bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char *err, size_t errlen)
+{
+	memset(s, 0, sizeof(*s));
+	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
+	struct parser p = {.file = name, .err = err, .errlen = errlen};
+	bool light = false, camera = false;
+	const char *line = text;
+	while (*line) {
+		p.line++;
+		const char *eol = strchr(line, '\n');
+		size_t len = eol ? (size_t)(eol - line) : strlen(line);
+		char buf[1024];
+		if (len >= sizeof buf)
+			return fail(&p, "expected a line shorter than %zu characters", sizeof buf);
+		memcpy(buf, line, len);
+		buf[len] = 0;
+		line = eol ? eol + 1 : line + len;
+		char *hash = strchr(buf, '#');
+		if (hash)
+			*hash = 0;
+		p.ntok = p.pos = 0;
+		for (char *t = strtok(buf, " \t\r"); t; t = strtok(NULL, " \t\r")) {
+			if (p.ntok == 64)
+				return fail(&p, "expected at most 64 words on a line");
+			p.tok[p.ntok++] = t;
+		}
+		if (!p.ntok)
+			continue;
+		const char *k = p.tok[p.pos++];
+		bool ok;
+		if (!strcmp(k, "camera")) {
+			if (camera)
+				return fail(&p, "expected one camera line, found a second");
+			camera = ok = parse_camera(&p, s);
+		} else if (!strcmp(k, "light")) {
+			if (light)
+				return fail(&p, "expected one light line, found a second");
+			light = ok = parse_light(&p, s);
+		} else if (!strcmp(k, "plane"))
+			ok = parse_plane(&p, s);
+		else if (!strcmp(k, "sphere"))
+			ok = parse_caster(&p, s, LX_SPHERE);
+		else if (!strcmp(k, "box"))
+			ok = parse_caster(&p, s, LX_BOX);
+		else if (!strcmp(k, "cylinder"))
+			ok = parse_caster(&p, s, LX_CYLINDER);
+		else if (!strcmp(k, "cone"))
+			ok = parse_caster(&p, s, LX_CONE);
+		else
+			return fail(&p, "expected camera, light, plane, sphere, box, cylinder or cone, got '%s'", k);
+		if (!ok)
+			return false;
+		if (peek(&p))
+			return fail(&p, "unexpected '%s' at the end of the line", peek(&p));
+	}
+	if (!light) {
+		p.line++;
+		return fail(&p, "expected a 'light point X Y Z' or 'light directional DX DY DZ' line");
+	}
+	if (s->plane_count == 0 && s->caster_count == 0) {
+		p.line++;
+		return fail(&p, "expected at least one plane or caster");
+	}
+	return true;
+}
+
+bool lx_scene_load(const char *path, struct lx_scene *s, char *err, size_t errlen)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f) {
+		snprintf(err, errlen, "%s: cannot open scene file: %s", path, strerror(errno));
+		return false;
+	}
+	char *text = NULL;
+	size_t cap = 0, len = 0;
+	for (;;) {
+		if (len + 4096 + 1 > cap) {
+			if (cap > (1u << 24)) {
+				free(text);
+				fclose(f);
+				snprintf(err, errlen, "%s: expected a scene file under 16 MiB", path);
+				return false;
+			}
+			cap = cap ? cap * 2 : 8192;
+			char *t = realloc(text, cap);
+			if (!t) {
+				free(text);
+				fclose(f);
+				snprintf(err, errlen, "%s: out of memory", path);
+				return false;
+			}
+			text = t;
+		}
+		size_t n = fread(text + len, 1, 4096, f);
+		len += n;
+		if (n < 4096)
+			break;
+	}
+	bool rd_err = ferror(f);
+	fclose(f);
+	if (rd_err) {
+		free(text);
+		snprintf(err, errlen, "%s: cannot read scene file", path);
+		return false;
+	}
+	text[len] = 0;
+	if (memchr(text, 0, len)) {
+		free(text);
+		snprintf(err, errlen, "%s:1: expected a text file, found a NUL byte", path);
+		return false;
+	}
+	bool ok = lx_scene_parse(text, path, s, err, errlen);
+	free(text);
+	return ok;
+}

@@ -1,0 +1,65 @@
+/* The scene: planes of interest, bouncing shadow casters, one light, the camera.
+ * GL-free. Distances in metres. A scene comes from lx_scene_default() or from a
+ * text file (format in docs/scene-format.md) through lx_scene_load(). */
+#ifndef LX_SCENE_H
+#define LX_SCENE_H
+#include "linalg.h"
+#include <stdbool.h>
+#include <stddef.h>
+
+#define LX_MAX_PLANES 8
+#define LX_MAX_CASTERS 32
+#define LX_NAME_MAX 16
+
+/* A plane of interest: the parallelogram corner + s*edge1 + t*edge2, s, t in [0, 1].
+ * Its lit side faces along normalize(edge1 x edge2). */
+struct lx_plane {
+	char name[LX_NAME_MAX];
+	vec3 corner, edge1, edge2;
+	vec3 color;
+};
+
+enum lx_shape { LX_SPHERE, LX_BOX, LX_CYLINDER, LX_CONE, LX_SHAPE_COUNT };
+
+/* A caster standing at (x, bottom(t), z); bottom(t) = low + (high - low) * |sin(pi t / period + phase)|. */
+struct lx_caster {
+	enum lx_shape shape;
+	vec3 size; /* sphere: radius in x; box: x, y, z extents; cylinder, cone: radius in x, height in y */
+	double x, z;
+	double low, high, period, phase;
+	vec3 color;
+};
+
+struct lx_light {
+	bool directional;
+	vec3 position;  /* point light */
+	vec3 direction; /* directional: the direction light travels, unit length */
+};
+
+struct lx_camera {
+	vec3 eye, at, up;
+	double fovy_deg;
+};
+
+struct lx_scene {
+	int plane_count, caster_count;
+	struct lx_plane planes[LX_MAX_PLANES];
+	struct lx_caster casters[LX_MAX_CASTERS];
+	struct lx_light light;
+	struct lx_camera camera;
+};
+
+void lx_scene_default(struct lx_scene *s);
+/* Loads a scene file. On error returns false with "FILE:LINE: what was expected" in err
+ * and leaves *s unspecified. */
+bool lx_scene_load(const char *path, struct lx_scene *s, char *err, size_t errlen);
+bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char *err, size_t errlen);
+
+double lx_caster_bottom(const struct lx_caster *c, double t);
+vec3 lx_caster_position(const struct lx_caster *c, double t);
+vec3 lx_plane_normal(const struct lx_plane *p); /* unit; planes are validated non-degenerate */
+const char *lx_shape_name(enum lx_shape s);
+/* Object ids: planes 0..plane_count-1, then casters. */
+static inline int lx_scene_object_count(const struct lx_scene *s) { return s->plane_count + s->caster_count; }
+
+#endif

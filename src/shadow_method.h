@@ -1,0 +1,49 @@
+/* The interface every shadow method implements, GL-free.
+ *
+ * A method names the atlas regions it needs (with their lixel budgets) once, then per
+ * frame turns the frame's geometry into one light matrix per region: world space to
+ * the region's clip space, where x, y in [-1, 1] cover the region and z in [-1, 1]
+ * spans the depth stored. A region whose map is not needed this frame is marked not
+ * rendered: it gets no pass and every lookup into it reads "lit". */
+#ifndef LX_SHADOW_METHOD_H
+#define LX_SHADOW_METHOD_H
+#include "atlas.h"
+#include "frame.h"
+
+#define LX_MAX_MAPS 4
+#define LX_MAX_WARNINGS 8
+#define LX_WARNING_MAX 160
+
+struct lx_shadow_map {
+	int region; /* index into the atlas */
+	bool rendered;
+	mat4 light_clip; /* world -> region clip space */
+};
+
+struct lx_shadow_result {
+	int map_count;
+	struct lx_shadow_map maps[LX_MAX_MAPS];
+	int warning_count;
+	char warnings[LX_MAX_WARNINGS][LX_WARNING_MAX];
+};
+
+struct lx_shadow_method {
+	const char *name;
+	const char *summary;
+	/* Region requests (at most LX_MAX_MAPS); returns the count. */
+	int (*regions)(struct lx_region_request *out);
+	/* Fills one map per region, in the order regions() gave them. */
+	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out);
+};
+
+const struct lx_shadow_method *lx_shadow_method_find(const char *name);
+/* The list of method names, separated by '|', for help and error messages. */
+const char *lx_shadow_method_names(void);
+
+void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* World -> (atlas texture s, t, depth in [0, 1], q): the matrix the main pass samples
+ * with. Region clip x, y in [-1, 1] land on the region's lixels in the atlas. */
+mat4 lx_shadow_texture_matrix(const struct lx_atlas *atlas, int region, const mat4 *light_clip);
+
+#endif
