@@ -6,6 +6,7 @@ precision mediump float;
 #endif
 // Main pass: shading and the shadow decision. With LX_DECISION defined it writes the
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255.
+// With no maps (method none) nothing is shadowed.
 //!include depth_rgba.glsl
 uniform vec4 u_light; // xyz: position (w = 1) or direction of travel (w = 0)
 uniform vec3 u_color;
@@ -39,11 +40,10 @@ void main()
 {
 	vec3 to_light = u_light.w > 0.5 ? u_light.xyz - v_world : -u_light.xyz;
 	float shadowed = 0.0;
+#if LX_MAPS > 0
 	if (dot(v_face_normal, to_light) <= 0.0) {
 		shadowed = 1.0; // faces away from the light
-	}
-#if LX_MAPS > 0
-	else {
+	} else {
 		// the first map that holds the point decides
 		for (int i = 0; i < LX_MAPS; i++) {
 			float r = lookup(v_shadow[i], u_region[i]);

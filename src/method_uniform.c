@@ -102,7 +102,7 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 	/* Extents in light space; for a point light x, y are tangents (x/depth, y/depth). */
 	const double tmax = tan(MAX_HALF_ANGLE_DEG * M_PI / 180);
 	struct extent re = empty_extent(), ce = empty_extent();
-	bool clamped = false;
+	bool clamped = false, receivers_behind = false;
 	for (int i = 0; i < nrec; i++) {
 		vec4 p = m4_mul_point(&lview, rec[i]);
 		double depth = -p.z;
@@ -111,7 +111,7 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 		else if (depth > tiny)
 			grow(&re, p.x / depth, p.y / depth, depth);
 		else
-			clamped = true;
+			receivers_behind = true;
 	}
 	bool casters_unbounded = false;
 	int ncasters = 0;
@@ -132,8 +132,14 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 				casters_unbounded = true; /* a box reaching behind the light projects everywhere */
 		}
 	}
-	if (ncasters == 0 || re.x0 > re.x1)
+	if (ncasters == 0 || re.z0 > re.z1)
 		return; /* nothing casts, or no receiver is in front of the light */
+	if (receivers_behind) {
+		/* The light is inside the receiver volume: the volume's front part reaches the
+		 * light's own plane, so its projection is unbounded; only casters bound it. */
+		re.x0 = re.y0 = -INFINITY;
+		re.x1 = re.y1 = INFINITY;
+	}
 	struct extent e = re;
 	if (!casters_unbounded) {
 		e.x0 = fmax(re.x0, ce.x0), e.x1 = fmin(re.x1, ce.x1);
@@ -145,7 +151,9 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 	if (znear > zfar)
 		return; /* every caster lies beyond every receiver */
 	if (!L->directional) {
-		if (e.x0 < -tmax || e.x1 > tmax || e.y0 < -tmax || e.y1 > tmax || clamped) {
+		/* Receivers behind the light can only be shadowed by casters behind it too:
+		 * the segment from the light to such a receiver never enters the front half-space. */
+		if (e.x0 < -tmax || e.x1 > tmax || e.y0 < -tmax || e.y1 > tmax || (receivers_behind && casters_unbounded)) {
 			clamped = true;
 			e.x0 = fmax(e.x0, -tmax), e.x1 = fmin(e.x1, tmax);
 			e.y0 = fmax(e.y0, -tmax), e.y1 = fmin(e.y1, tmax);

@@ -157,6 +157,7 @@ static bool parse_light(struct parser *p, struct lx_scene *s)
 	p->pos++;
 	if (!strcmp(k, "point")) {
 		s->light.directional = false;
+		s->light.direction = v3(0, -1, 0); /* unused for a point light; kept canonical */
 		if (!triple(p, "light position", &s->light.position))
 			return false;
 	} else if (!strcmp(k, "directional")) {

@@ -1,0 +1,102 @@
+#include "linalg.h"
+#include "test_util.h"
+
+static mat4 random_matrix(uint64_t *s)
+{
+	mat4 m;
+	for (int i = 0; i < 16; i++)
+		m.m[i] = test_rand(s) * 2 - 1;
+	return m;
+}
+
+static void inverse_times_matrix_is_identity(void **state)
+{
+	(void)state;
+	uint64_t s = 42;
+	for (int k = 0; k < 200; k++) {
+		mat4 a = random_matrix(&s), inv;
+		assert_true(m4_invert(&a, &inv));
+		mat4 p = m4_mul(&a, &inv);
+		for (int i = 0; i < 16; i++)
+			assert_near(p.m[i], (i % 5 == 0) ? 1.0 : 0.0, 1e-8);
+	}
+}
+
+static void singular_matrices_are_refused(void **state)
+{
+	(void)state;
+	mat4 a = m4_identity(), inv;
+	a.m[10] = 0; /* a zero row and column */
+	assert_false(m4_invert(&a, &inv));
+	mat4 z = {{0}};
+	assert_false(m4_invert(&z, &inv));
+	double A[4] = {1, 2, 2, 4}, b[2] = {1, 1};
+	assert_false(lx_solve(2, A, b, 1e-12));
+}
+
+static void solver_pivots(void **state)
+{
+	(void)state;
+	/* a zero in the first pivot position needs a row swap */
+	double A[9] = {0, 1, 1, 1, 0, 1, 1, 1, 0}, b[3] = {2, 2, 2};
+	assert_true(lx_solve(3, A, b, 1e-12));
+	for (int i = 0; i < 3; i++)
+		assert_near(b[i], 1.0, 1e-12);
+}
+
+static void look_at_maps_eye_to_origin_and_view_to_minus_z(void **state)
+{
+	(void)state;
+	mat4 v;
+	assert_true(m4_look_at(v3(1, 2, 3), v3(1, 2, -7), v3(0, 1, 0), &v));
+	vec4 e = m4_mul_point(&v, v3(1, 2, 3)), a = m4_mul_point(&v, v3(1, 2, -7));
+	assert_near(e.x, 0, 1e-12); assert_near(e.y, 0, 1e-12); assert_near(e.z, 0, 1e-12);
+	assert_near(a.x, 0, 1e-12); assert_near(a.y, 0, 1e-12); assert_near(a.z, -10, 1e-12);
+	assert_false(m4_look_at(v3(0, 0, 0), v3(0, 0, 0), v3(0, 1, 0), &v));
+	assert_false(m4_look_at(v3(0, 0, 0), v3(0, 5, 0), v3(0, 1, 0), &v)); /* looking along up */
+}
+
+static void projections_map_near_and_far_to_unit_cube(void **state)
+{
+	(void)state;
+	mat4 p;
+	assert_true(m4_perspective(1.0, 1.5, 0.5, 40, &p));
+	vec4 n = m4_mul_point(&p, v3(0, 0, -0.5)), f = m4_mul_point(&p, v3(0, 0, -40));
+	assert_near(n.z / n.w, -1, 1e-12);
+	assert_near(f.z / f.w, 1, 1e-12);
+	assert_true(m4_frustum(-1, 3, -2, 1, 0.5, 10, &p));
+	vec4 c = m4_mul_point(&p, v3(3, 1, -0.5)); /* the near plane's top right corner */
+	assert_near(c.x / c.w, 1, 1e-12); assert_near(c.y / c.w, 1, 1e-12); assert_near(c.z / c.w, -1, 1e-12);
+	assert_true(m4_ortho(-1, 3, -2, 1, -4, 10, &p));
+	c = m4_mul_point(&p, v3(-1, -2, 4));
+	assert_near(c.x, -1, 1e-12); assert_near(c.y, -1, 1e-12); assert_near(c.z, -1, 1e-12);
+	/* degenerate parameters are refused, not divided by */
+	assert_false(m4_perspective(0, 1, 0.1, 10, &p));
+	assert_false(m4_perspective(1, 1, 0, 10, &p));
+	assert_false(m4_perspective(1, 1, 1, 1, &p));
+	assert_false(m4_frustum(1, 1, -1, 1, 0.1, 10, &p));
+	assert_false(m4_ortho(0, 1, 0, 1, 2, 2, &p));
+}
+
+static void normalize_guards_zero(void **state)
+{
+	(void)state;
+	vec3 o = v3(7, 7, 7);
+	assert_false(v3_normalize(v3(0, 0, 0), &o));
+	assert_near(o.x, 7, 0);
+	assert_true(v3_normalize(v3(3, 0, 4), &o));
+	assert_near(o.x, 0.6, 1e-15);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(inverse_times_matrix_is_identity),
+		cmocka_unit_test(singular_matrices_are_refused),
+		cmocka_unit_test(solver_pivots),
+		cmocka_unit_test(look_at_maps_eye_to_origin_and_view_to_minus_z),
+		cmocka_unit_test(projections_map_near_and_far_to_unit_cube),
+		cmocka_unit_test(normalize_guards_zero),
+	};
+	return cmocka_run_group_tests_name("linalg", tests, NULL, NULL);
+}

@@ -1,0 +1,176 @@
+#include "metrics.h"
+#include "reference.h"
+#include "test_util.h"
+#include <stdlib.h>
+#include <string.h>
+
+/* A 10 m floor and one box, 1 m wide with its bottom at 1 m, centred at the origin. */
+static void box_scene(struct lx_scene *s, struct lx_light light)
+{
+	char err[256];
+	const char *text = "light point 0 5 0\n"
+			   "camera eye 0 6 0.001 at 0 0 0 fov 60\n"
+			   "plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10\n"
+			   "box size 1 1 1 at 0 0 bounce 1 1\n";
+	if (!lx_scene_parse(text, "box.scene", s, err, sizeof err))
+		fail_msg("%s", err);
+	s->light = light;
+}
+
+static void shadows_fall_where_geometry_says(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	/* light straight above at 5 m: the box (y from 1 to 2, x, z in [-0.5, 0.5]) casts a
+	 * square of half-width 0.5 * 5 / (5 - 2) = 0.8333 on the floor */
+	box_scene(&s, (struct lx_light){.position = {0, 5, 0}});
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 64, 64, err, sizeof err));
+	struct lx_raycaster *rc = lx_raycaster_create(&f);
+	assert_non_null(rc);
+	double t;
+	int tri = lx_raycast_first(rc, v3(0.8, 3, 0), v3(0, -1, 0), 0, 10, &t);
+	assert_true(tri >= 0);
+	assert_int_equal(lx_raycaster_object(rc, tri), 0); /* the floor */
+	assert_near(t, 3, 1e-12);
+	assert_true(lx_reference_shadowed(rc, &s.light, v3(0.80, 0, 0.0), tri));
+	assert_true(lx_reference_shadowed(rc, &s.light, v3(0.83, 0, 0.83), tri));
+	assert_false(lx_reference_shadowed(rc, &s.light, v3(0.84, 0, 0.0), tri));
+	assert_false(lx_reference_shadowed(rc, &s.light, v3(3, 0, -3), tri));
+	/* the top of the box is lit, its bottom faces away from the light */
+	tri = lx_raycast_first(rc, v3(0.1, 4, 0.1), v3(0, -1, 0), 0, 10, &t);
+	assert_int_equal(lx_raycaster_object(rc, tri), 1);
+	assert_near(t, 2, 1e-12);
+	assert_false(lx_reference_shadowed(rc, &s.light, v3(0.1, 2, 0.1), tri));
+	tri = lx_raycast_first(rc, v3(0.1, -1, 0.1), v3(0, 1, 0), 0, 10, &t);
+	assert_int_equal(lx_raycaster_object(rc, tri), 0); /* the floor is hit first from below */
+	/* a point light below the floor: the floor's top faces away and is shadowed */
+	struct lx_light under = {.position = {0, -1, 0}};
+	tri = lx_raycast_first(rc, v3(3, 3, 3), v3(0, -1, 0), 0, 10, &t);
+	assert_true(lx_reference_shadowed(rc, &under, v3(3, 0, 3), tri));
+	/* a directional light at 45 degrees moves the shadow by the height */
+	struct lx_light dir = {.directional = true};
+	v3_normalize(v3(1, -1, 0), &dir.direction);
+	tri = lx_raycast_first(rc, v3(1.5, 3, 0), v3(0, -1, 0), 0, 10, &t);
+	assert_true(lx_reference_shadowed(rc, &dir, v3(1.5, 0, 0), tri)); /* x in [0.5, 2.5] is shadowed */
+	assert_false(lx_reference_shadowed(rc, &dir, v3(0.45, 0, 0), tri));
+	assert_false(lx_reference_shadowed(rc, &dir, v3(2.6, 0, 0), tri));
+	lx_raycaster_destroy(rc);
+	lx_meshes_free(&m);
+}
+
+static void reference_image_is_deterministic_across_threads(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 96, 72, err, sizeof err));
+	long n = 96 * 72;
+	int16_t *o1 = malloc(n * sizeof(int16_t)), *o2 = malloc(n * sizeof(int16_t));
+	uint8_t *s1 = malloc(n), *s2 = malloc(n);
+	assert_true(lx_reference_image(&f, o1, s1, 1));
+	assert_true(lx_reference_image(&f, o2, s2, 3));
+	assert_memory_equal(o1, o2, n * sizeof(int16_t));
+	assert_memory_equal(s1, s2, n);
+	long floor = 0, shadowed = 0;
+	for (long i = 0; i < n; i++)
+		floor += o1[i] == 0, shadowed += s1[i];
+	assert_true(floor > n / 4);    /* the floor fills much of the default view */
+	assert_true(shadowed > n / 50); /* and shadows fall on it */
+	free(o1), free(o2), free(s1), free(s2);
+	lx_meshes_free(&m);
+}
+
+static void mismatch_counts_each_kind(void **state)
+{
+	(void)state;
+	const int16_t ref_o[8] = {-1, 0, 0, 0, 0, 1, 1, -1};
+	const uint8_t ref_s[8] = {0, 1, 0, 1, 0, 0, 1, 0};
+	const int16_t o[8] = {-1, 0, 0, 0, 0, 1, 0, 2};
+	const uint8_t s[8] = {0, 1, 1, 0, 0, 0, 1, 0};
+	struct lx_mismatch mm;
+	lx_mismatch_compare(ref_o, ref_s, o, s, 8, &mm);
+	assert_int_equal(mm.compared, 5);
+	assert_int_equal(mm.silhouette, 2);
+	assert_int_equal(mm.false_shadow, 1);
+	assert_int_equal(mm.missing_shadow, 1);
+	assert_near(mm.mismatch_pct, 40, 1e-12);
+	assert_near(mm.false_shadow_pct, 20, 1e-12);
+}
+
+static void jacobian_of_known_homographies(void **state)
+{
+	(void)state;
+	double smax, smin;
+	/* a similarity: rotation by 30 degrees and scale 2 */
+	double c = 2 * cos(M_PI / 6), s = 2 * sin(M_PI / 6);
+	mat3 h = {{c, s, 0, -s, c, 0, 5, 7, 1}};
+	assert_true(lx_homography_jacobian(&h, 10, 20, &smax, &smin));
+	assert_near(smax, 2, 1e-12);
+	assert_near(smin, 2, 1e-12);
+	/* anisotropic scale */
+	mat3 a = {{3, 0, 0, 0, 0.5, 0, 0, 0, 1}};
+	assert_true(lx_homography_jacobian(&a, 1, 1, &smax, &smin));
+	assert_near(smax, 3, 1e-12);
+	assert_near(smin, 0.5, 1e-12);
+	/* a projective map u = x / (x + 1): du/dx = 1 / (x + 1)^2, v = y / (x + 1) */
+	mat3 p = {{1, 0, 1, 0, 1, 0, 0, 0, 1}};
+	assert_true(lx_homography_jacobian(&p, 1, 0, &smax, &smin));
+	assert_near(smax, 0.5, 1e-12);
+	assert_near(smin, 0.25, 1e-12);
+	/* w' = 0: refused, not divided by */
+	mat3 z = {{1, 0, 1, 0, 1, 0, 0, 0, 0}};
+	assert_false(lx_homography_jacobian(&z, 0, 0, &smax, &smin));
+}
+
+/* The homography from the matrices agrees with projecting points by hand. */
+static void plane_homography_matches_projection(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 200, 150, err, sizeof err));
+	struct lx_region_request req[] = {{"m", 300, 200}};
+	struct lx_atlas atlas;
+	assert_true(lx_atlas_layout(&atlas, req, 1, 1, 2048, err, sizeof err));
+	struct lx_shadow_map map = {.region = 0, .rendered = true};
+	mat4 v, p;
+	assert_true(m4_look_at(v3(1, 8, 2), v3(0, 0, 0), v3(0, 1, 0), &v));
+	assert_true(m4_perspective(1.2, 1.5, 1, 20, &p));
+	map.light_clip = m4_mul(&p, &v);
+	mat3 h;
+	assert_true(lx_plane_homography(&f, &atlas, &map, 0, &h));
+	vec3 pts[] = {{0, 0, 0}, {1.5, 0, -2}, {-2, 0, 1}};
+	for (int i = 0; i < 3; i++) {
+		vec4 c = m4_mul_point(&f.view.view_proj, pts[i]), l = m4_mul_point(&map.light_clip, pts[i]);
+		double x = (c.x / c.w + 1) * 100, y = (c.y / c.w + 1) * 75;
+		double u = (l.x / l.w + 1) * 150, w = (l.y / l.w + 1) * 100;
+		double hw = h.m[2] * x + h.m[5] * y + h.m[8];
+		assert_near((h.m[0] * x + h.m[3] * y + h.m[6]) / hw, u, 1e-8);
+		assert_near((h.m[1] * x + h.m[4] * y + h.m[7]) / hw, w, 1e-8);
+	}
+	lx_meshes_free(&m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(shadows_fall_where_geometry_says),
+		cmocka_unit_test(reference_image_is_deterministic_across_threads),
+		cmocka_unit_test(mismatch_counts_each_kind),
+		cmocka_unit_test(jacobian_of_known_homographies),
+		cmocka_unit_test(plane_homography_matches_projection),
+	};
+	return cmocka_run_group_tests_name("reference", tests, NULL, NULL);
+}

@@ -1,0 +1,184 @@
+#include "mesh.h"
+#include "scene.h"
+#include "test_util.h"
+#include <stdio.h>
+#include <string.h>
+
+#ifndef LX_TEST_DATA
+#define LX_TEST_DATA "tests/data"
+#endif
+
+static void default_scene_is_the_specified_one(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_default(&s);
+	assert_int_equal(s.plane_count, 2);
+	assert_string_equal(s.planes[0].name, "floor");
+	assert_string_equal(s.planes[1].name, "wall");
+	vec3 nf = lx_plane_normal(&s.planes[0]), nw = lx_plane_normal(&s.planes[1]);
+	assert_near(nf.y, 1, 1e-12);
+	assert_near(nw.z, 1, 1e-12);
+	assert_near(s.planes[1].corner.z, -5, 0);
+	assert_false(s.light.directional);
+	assert_near(s.light.position.x, 2.5, 0); assert_near(s.light.position.y, 6, 0); assert_near(s.light.position.z, 3, 0);
+	assert_near(s.camera.eye.y, 2, 0); assert_near(s.camera.eye.z, 6, 0); assert_near(s.camera.at.y, 0.8, 0);
+	assert_near(s.camera.fovy_deg, 60, 0);
+	/* a sphere of radius 0.6 and at least three other shapes */
+	assert_true(s.caster_count >= 4);
+	assert_int_equal(s.casters[0].shape, LX_SPHERE);
+	assert_near(s.casters[0].size.x, 0.6, 0);
+	bool shapes[LX_SHAPE_COUNT] = {false};
+	for (int i = 0; i < s.caster_count; i++)
+		shapes[s.casters[i].shape] = true;
+	for (int k = 0; k < LX_SHAPE_COUNT; k++)
+		assert_true(shapes[k]);
+	/* they bounce between 0.3 and 2 inside x, z in [-3, 3], reaching both ends */
+	for (int i = 0; i < s.caster_count; i++) {
+		const struct lx_caster *c = &s.casters[i];
+		double lo = 1e9, hi = -1e9;
+		for (double t = 0; t < 60; t += 0.001) {
+			double b = lx_caster_bottom(c, t);
+			lo = fmin(lo, b), hi = fmax(hi, b);
+		}
+		assert_true(lo >= 0.3 - 1e-12 && lo < 0.31);
+		assert_true(hi <= 2.0 + 1e-12 && hi > 1.99);
+		assert_true(c->x - c->size.x >= -3 && c->x + c->size.x <= 3);
+		assert_true(c->z - c->size.z >= -3 && c->z + c->size.z <= 3);
+	}
+}
+
+static void scene_file_matches_the_built_in_scene(void **state)
+{
+	(void)state;
+	struct lx_scene a, b;
+	char err[256];
+	lx_scene_default(&a);
+	if (!lx_scene_load(LX_TEST_DATA "/default.scene", &b, err, sizeof err))
+		fail_msg("%s", err);
+	assert_int_equal(a.plane_count, b.plane_count);
+	assert_int_equal(a.caster_count, b.caster_count);
+	assert_memory_equal(a.planes, b.planes, sizeof a.planes);
+	for (int i = 0; i < a.caster_count; i++) {
+		assert_int_equal(a.casters[i].shape, b.casters[i].shape);
+		assert_memory_equal(&a.casters[i].size, &b.casters[i].size, sizeof(vec3));
+		assert_near(a.casters[i].x, b.casters[i].x, 0);
+		assert_near(a.casters[i].period, b.casters[i].period, 0);
+		assert_near(a.casters[i].phase, b.casters[i].phase, 0);
+	}
+	assert_memory_equal(&a.light, &b.light, sizeof a.light);
+	assert_memory_equal(&a.camera, &b.camera, sizeof a.camera);
+}
+
+struct bad_case {
+	const char *text;
+	int line;
+	const char *expect; /* a fragment of the message */
+};
+
+static void malformed_files_name_the_line_and_what_was_expected(void **state)
+{
+	(void)state;
+	static const struct bad_case cases[] = {
+		{"light point 1 2\n", 1, "expected a number for light position"},
+		{"light point 1 2 three\n", 1, "got 'three'"},
+		{"light spot 1 2 3\n", 1, "expected 'point' or 'directional'"},
+		{"light directional 0 0 0\n", 1, "non-zero light direction"},
+		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 2 0 0\n", 2, "not parallel"},
+		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0\n", 2, "expected 'plane NAME"},
+		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 1\nplane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 1\n",
+		 3, "already defined"},
+		{"light point 0 5 0\n\n# comment\nsphere radius -1 at 0 0\n", 4, "radius > 0"},
+		{"light point 0 5 0\nsphere radius 1\n", 2, "'sphere radius R at X Z'"},
+		{"light point 0 5 0\nbox size 1 1 1 at 0 0 bounce 2 1\n", 2, "LOW <= HIGH"},
+		{"light point 0 5 0\ncone radius 1 height 1 at 0 0 wobble 3\n", 2, "unexpected 'wobble'"},
+		{"light point 0 5 0\nteapot at 0 0\n", 2, "got 'teapot'"},
+		{"light point 0 5 0\ncamera eye 0 0 0 at 0 0 0\n", 2, "eye differs from at"},
+		{"light point 0 5 0\ncamera eye 0 1 5 at 0 0 0 fov 180\n", 2, "fov in (0, 180)"},
+		{"light point 0 5 0\nlight point 0 5 0\n", 2, "second"},
+		{"plane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a 'light point"},
+		{"light point 0 5 0\n", 2, "at least one plane or caster"},
+		{"light point 0 5 0\nsphere radius 1e999 at 0 0\n", 2, "got '1e999'"},
+		{"light point 0 5 0\nsphere radius nan at 0 0\n", 2, "got 'nan'"},
+		{"light point 0 5 0\nsphere radius 1 at 0 0 color 2 0 0\n", 2, "color components in [0, 1]"},
+		{"light point 0 5 0 extra\n", 1, "unexpected 'extra'"},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct lx_scene s;
+		char err[256], prefix[64];
+		if (lx_scene_parse(cases[i].text, "bad.scene", &s, err, sizeof err))
+			fail_msg("case %zu parsed but should not have: %s", i, cases[i].text);
+		snprintf(prefix, sizeof prefix, "bad.scene:%d: ", cases[i].line);
+		if (strncmp(err, prefix, strlen(prefix)) || !strstr(err, cases[i].expect))
+			fail_msg("case %zu: got \"%s\", expected \"%s...%s\"", i, err, prefix, cases[i].expect);
+		assert_null(strchr(err, '\n')); /* one line */
+	}
+}
+
+static void missing_and_binary_files(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	char err[256];
+	assert_false(lx_scene_load(LX_TEST_DATA "/no-such-file.scene", &s, err, sizeof err));
+	assert_non_null(strstr(err, "no-such-file.scene: cannot open"));
+	assert_false(lx_scene_load(LX_TEST_DATA, &s, err, sizeof err)); /* a directory */
+}
+
+static void directional_light_and_defaults(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	char err[256];
+	const char *text = "light directional 0 -2 0\nbox size 1 2 3 at 0.5 -0.5\n";
+	if (!lx_scene_parse(text, "ok.scene", &s, err, sizeof err))
+		fail_msg("%s", err);
+	assert_true(s.light.directional);
+	assert_near(s.light.direction.y, -1, 1e-15);
+	assert_int_equal(s.caster_count, 1);
+	assert_near(s.casters[0].size.z, 3, 0);
+	assert_near(s.camera.fovy_deg, 60, 0);
+}
+
+/* The shadow rule (back faces are shadowed) needs closed, outward-facing meshes. */
+static void caster_meshes_are_closed_and_outward(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_scene_meshes m;
+	assert_true(lx_meshes_build(&s, &m));
+	assert_int_equal(m.count, s.plane_count + s.caster_count);
+	for (int id = s.plane_count; id < m.count; id++) {
+		const struct lx_mesh *me = &m.mesh[id];
+		vec3 c = v3_scale(v3_add(me->bmin, me->bmax), 0.5);
+		double area_normal[3] = {0, 0, 0}; /* a closed surface's vector area is zero */
+		for (int i = 0; i < me->vertex_count; i += 3) {
+			const float *a = me->v + (size_t)i * LX_VERTEX_FLOATS, *b = a + LX_VERTEX_FLOATS, *d = b + LX_VERTEX_FLOATS;
+			vec3 pa = v3(a[0], a[1], a[2]), pb = v3(b[0], b[1], b[2]), pd = v3(d[0], d[1], d[2]);
+			vec3 n = v3_cross(v3_sub(pb, pa), v3_sub(pd, pa));
+			vec3 centroid = v3_scale(v3_add(pa, v3_add(pb, pd)), 1.0 / 3);
+			if (!(v3_dot(n, v3_sub(centroid, c)) > 0))
+				fail_msg("object %d (%s): triangle %d faces inwards", id, lx_shape_name(s.casters[id - s.plane_count].shape), i / 3);
+			/* the stored face normal agrees with the winding */
+			assert_true(v3_dot(n, v3(a[6], a[7], a[8])) > 0);
+			area_normal[0] += n.x, area_normal[1] += n.y, area_normal[2] += n.z;
+		}
+		for (int k = 0; k < 3; k++)
+			assert_near(area_normal[k], 0, 1e-5);
+	}
+	lx_meshes_free(&m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(default_scene_is_the_specified_one),
+		cmocka_unit_test(scene_file_matches_the_built_in_scene),
+		cmocka_unit_test(malformed_files_name_the_line_and_what_was_expected),
+		cmocka_unit_test(missing_and_binary_files),
+		cmocka_unit_test(directional_light_and_defaults),
+		cmocka_unit_test(caster_meshes_are_closed_and_outward),
+	};
+	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
+}

@@ -1,0 +1,222 @@
+#include "configs.h"
+#include "shadow_method.h"
+#include "test_util.h"
+#include <stdio.h>
+#include <string.h>
+
+struct setup {
+	struct lx_scene scene;
+	struct lx_scene_meshes meshes;
+	struct lx_frame frame;
+	struct lx_atlas atlas;
+	struct lx_shadow_result res;
+};
+
+static void build(struct setup *s, const char *method)
+{
+	struct lx_region_request req[LX_MAX_MAPS];
+	const struct lx_shadow_method *m = lx_shadow_method_find(method);
+	assert_non_null(m);
+	char err[256];
+	assert_true(lx_meshes_build(&s->scene, &s->meshes));
+	if (!lx_frame_setup(&s->frame, &s->scene, &s->meshes, 0.4, 640, 480, err, sizeof err))
+		fail_msg("%s", err);
+	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(req), 1, 2048, err, sizeof err));
+	memset(&s->res, 0, sizeof s->res);
+	m->build(&s->frame, &s->atlas, &s->res);
+}
+
+static bool in_receivers(const struct lx_frame *f, vec3 p)
+{
+	vec4 c = m4_mul_point(&f->view.view_proj, p);
+	double e = 1e-9;
+	return c.w > 0 && fabs(c.x) <= c.w && fabs(c.y) <= c.w && fabs(c.z) <= c.w && p.x >= f->scene_min.x - e &&
+	       p.x <= f->scene_max.x + e && p.y >= f->scene_min.y - e && p.y <= f->scene_max.y + e &&
+	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
+}
+
+/* Every shadow that can fall on a receiver is captured: for caster points c and
+ * receiver points r on the same light ray beyond c, c lands inside the map's x, y
+ * and depth range, and r within its depth range. Returns the number of pairs checked. */
+static long check_coverage(const struct setup *s, uint64_t *seed, int samples)
+{
+	const struct lx_frame *f = &s->frame;
+	const struct lx_shadow_map *map = &s->res.maps[0];
+	long checked = 0;
+	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
+	for (int id = s->scene.plane_count; id < f->object_count; id++)
+		for (int k = 0; k < samples; k++) {
+			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
+				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
+				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
+			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
+			if (!v3_normalize(dir, &dir))
+				continue;
+			for (int j = 1; j <= 40; j++) {
+				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
+				if (!in_receivers(f, r))
+					continue;
+				if (!map->rendered)
+					fail_msg("a caster point can shadow a visible receiver but the map is not rendered");
+				vec4 pc = m4_mul_point(&map->light_clip, c), pr = m4_mul_point(&map->light_clip, r);
+				assert_true(pc.w > 0 && pr.w > 0);
+				double x = pc.x / pc.w, y = pc.y / pc.w, zc = pc.z / pc.w, zr = pr.z / pr.w;
+				if (!(fabs(x) <= 1 + 1e-9 && fabs(y) <= 1 + 1e-9))
+					fail_msg("light (%g, %g, %g)%s: caster point (%g, %g, %g) shadows (%g, %g, %g) but maps outside: (%g, %g); %s",
+						 f->light.position.x, f->light.position.y, f->light.position.z,
+						 f->light.directional ? " directional" : "", c.x, c.y, c.z, r.x, r.y, r.z, x, y,
+						 s->res.warning_count ? s->res.warnings[0] : "no warning");
+				if (!(zc >= -1 - 1e-9 && zr <= 1 + 1e-9 && zc <= zr + 1e-9))
+					fail_msg("depths: caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)", zc, zr);
+				checked++;
+			}
+		}
+	return checked;
+}
+
+static void cleanup(struct setup *s) { lx_meshes_free(&s->meshes); }
+
+static void every_configuration_covers_every_shadow(void **state)
+{
+	(void)state;
+	uint64_t seed = 1234;
+	for (int i = 0; i < lx_config_count; i++) {
+		struct setup s;
+		lx_scene_default(&s.scene);
+		lx_config_apply(&lx_configs[i], &s.scene);
+		build(&s, "uniform");
+		assert_int_equal(s.res.map_count, 1);
+		assert_true(m4_finite(&s.res.maps[0].light_clip));
+		long n = check_coverage(&s, &seed, 300);
+		print_message("%-12s rendered %d, %ld caster/receiver pairs checked, %d warnings%s%s\n", lx_configs[i].name,
+			      s.res.maps[0].rendered, n, s.res.warning_count, s.res.warning_count ? ": " : "",
+			      s.res.warning_count ? s.res.warnings[0] : "");
+		cleanup(&s);
+	}
+}
+
+static void random_lights(void **state)
+{
+	(void)state;
+	uint64_t seed = 77;
+	int rendered = 0, too_wide = 0;
+	for (int i = 0; i < 300; i++) {
+		struct setup s;
+		lx_scene_default(&s.scene);
+		if (i % 3 == 0) {
+			vec3 d = v3(test_rand(&seed) * 2 - 1, -0.05 - test_rand(&seed), test_rand(&seed) * 2 - 1);
+			s.scene.light = (struct lx_light){.directional = true};
+			assert_true(v3_normalize(d, &s.scene.light.direction));
+		} else
+			s.scene.light = (struct lx_light){
+				.position = v3(test_rand(&seed) * 16 - 8, 2.5 + test_rand(&seed) * 8, test_rand(&seed) * 16 - 8)};
+		build(&s, "uniform");
+		assert_true(m4_finite(&s.res.maps[0].light_clip));
+		/* The documented fallback for a point light among the casters: one frustum
+		 * cannot see more than 150 degrees, so coverage is not promised there. */
+		bool wide = s.res.warning_count && strstr(s.res.warnings[0], "150 degrees");
+		if (wide) {
+			print_message("light %d at (%g, %g, %g): %s\n", i, s.scene.light.position.x, s.scene.light.position.y,
+				      s.scene.light.position.z, s.res.warnings[0]);
+			too_wide++;
+		} else
+			check_coverage(&s, &seed, 40);
+		rendered += s.res.maps[0].rendered;
+		cleanup(&s);
+	}
+	assert_true(rendered > 250);
+	assert_true(too_wide <= 15);
+}
+
+/* Degenerate and extreme cases: finite matrices, a documented warning, no crash. */
+static void extremes_stay_finite(void **state)
+{
+	(void)state;
+	struct {
+		const char *what;
+		struct lx_light light;
+		vec3 eye, at;
+		double scale;
+		bool expect_warning;
+	} cases[] = {
+		{"light on the floor plane", {.position = {0, 0, 0}}, {0, 2, 6}, {0, 0.8, 0}, 1, true},
+		{"light inside the scene", {.position = {0, 1.0, 0.5}}, {0, 2, 6}, {0, 0.8, 0}, 1, true},
+		{"grazing directional light", {.directional = true, .direction = {0, 0, -1}}, {0, 2, 6}, {0, 0.8, 0}, 1, false},
+		{"directional light from below", {.directional = true, .direction = {0, 1, 0}}, {0, 2, 6}, {0, 0.8, 0}, 1, false},
+		{"camera looking away", {.position = {2.5, 6, 3}}, {0, 2, 6}, {0, 2, 20}, 1, false},
+		{"huge scene", {.position = {2.5, 6, 3}}, {0, 2, 6}, {0, 0.8, 0}, 1e4, false},
+		{"tiny scene", {.position = {2.5, 6, 3}}, {0, 2, 6}, {0, 0.8, 0}, 1e-4, false},
+	};
+	uint64_t seed = 5;
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s;
+		lx_scene_default(&s.scene);
+		double k = cases[i].scale;
+		for (int p = 0; p < s.scene.plane_count; p++) {
+			s.scene.planes[p].corner = v3_scale(s.scene.planes[p].corner, k);
+			s.scene.planes[p].edge1 = v3_scale(s.scene.planes[p].edge1, k);
+			s.scene.planes[p].edge2 = v3_scale(s.scene.planes[p].edge2, k);
+		}
+		for (int c = 0; c < s.scene.caster_count; c++) {
+			struct lx_caster *ca = &s.scene.casters[c];
+			ca->size = v3_scale(ca->size, k), ca->x *= k, ca->z *= k, ca->low *= k, ca->high *= k;
+		}
+		s.scene.light = cases[i].light;
+		s.scene.light.position = v3_scale(s.scene.light.position, k);
+		s.scene.camera.eye = v3_scale(cases[i].eye, k);
+		s.scene.camera.at = v3_scale(cases[i].at, k);
+		build(&s, "uniform");
+		if (!m4_finite(&s.res.maps[0].light_clip))
+			fail_msg("%s: non-finite light matrix", cases[i].what);
+		long n = check_coverage(&s, &seed, cases[i].expect_warning ? 0 : 200);
+		print_message("%-30s rendered %d, %ld pairs, warnings: %s\n", cases[i].what, s.res.maps[0].rendered, n,
+			      s.res.warning_count ? s.res.warnings[0] : "none");
+		if (cases[i].expect_warning)
+			assert_true(s.res.warning_count > 0);
+		cleanup(&s);
+	}
+}
+
+static void none_has_no_maps(void **state)
+{
+	(void)state;
+	struct setup s;
+	lx_scene_default(&s.scene);
+	build(&s, "none");
+	assert_int_equal(s.res.map_count, 0);
+	assert_int_equal(s.atlas.count, 0);
+	cleanup(&s);
+}
+
+/* The texture matrix sends region clip space onto the region's texels. */
+static void texture_matrix_lands_in_the_region(void **state)
+{
+	(void)state;
+	struct lx_region_request req[] = {{"a", 100, 50}, {"b", 30, 70}};
+	struct lx_atlas a;
+	char err[128];
+	assert_true(lx_atlas_layout(&a, req, 2, 1, 2048, err, sizeof err));
+	mat4 id = m4_identity();
+	for (int r = 0; r < 2; r++) {
+		mat4 t = lx_shadow_texture_matrix(&a, r, &id);
+		vec4 lo = m4_mul_v4(&t, (vec4){-1, -1, -1, 1}), hi = m4_mul_v4(&t, (vec4){1, 1, 1, 1});
+		assert_near(lo.x * a.width, a.regions[r].x, 1e-9);
+		assert_near(lo.y * a.height, a.regions[r].y, 1e-9);
+		assert_near(hi.x * a.width, a.regions[r].x + a.regions[r].w, 1e-9);
+		assert_near(hi.y * a.height, a.regions[r].y + a.regions[r].h, 1e-9);
+		assert_near(lo.z, 0, 1e-15);
+		assert_near(hi.z, 1, 1e-15);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(every_configuration_covers_every_shadow),
+		cmocka_unit_test(random_lights),
+		cmocka_unit_test(extremes_stay_finite),
+		cmocka_unit_test(none_has_no_maps),
+		cmocka_unit_test(texture_matrix_lands_in_the_region),
+	};
+	return cmocka_run_group_tests_name("uniform", tests, NULL, NULL);
+}

@@ -1,0 +1,27 @@
+/* Shared helpers for the cmocka tests. */
+#ifndef LX_TEST_UTIL_H
+#define LX_TEST_UTIL_H
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#define assert_near(a, b, eps)                                                                          \
+	do {                                                                                            \
+		double a_ = (a), b_ = (b), e_ = (eps);                                                  \
+		if (!(fabs(a_ - b_) <= e_))                                                             \
+			fail_msg("%s = %.17g, expected %s = %.17g within %g", #a, a_, #b, b_, e_);       \
+	} while (0)
+
+/* xorshift: reproducible random numbers for sweeps */
+static inline double test_rand(uint64_t *s)
+{
+	*s ^= *s << 13;
+	*s ^= *s >> 7;
+	*s ^= *s << 17;
+	return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+#endif
