@@ -1,0 +1,85 @@
+#!/bin/sh
+# Command-line tests of lixel: help, bad input (exit 2, one line, nothing written),
+# and good runs on both platforms with their JSON.
+# Usage: tests/cli.sh path/to/lixel
+set -u
+lixel=${1:?usage: cli.sh path/to/lixel}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); }
+no() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# expect_bad "what" ARGS...: exit status 2, exactly one line on stderr, no image.
+expect_bad() {
+  what=$1; shift
+  rm -f "$tmp/out.png"
+  "$lixel" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+  st=$?
+  lines=$(wc -l <"$tmp/stderr")
+  if [ "$st" -ne 2 ]; then no "$what: exit status $st, expected 2"; return; fi
+  if [ "$lines" -ne 1 ]; then no "$what: $lines lines on stderr, expected 1:"; cat "$tmp/stderr"; return; fi
+  if [ -e "$tmp/out.png" ] || ls "$tmp"/out.png.tmp* >/dev/null 2>&1; then no "$what: an image was written"; return; fi
+  ok
+}
+
+"$lixel" --help >"$tmp/help" 2>&1 && grep -q "render" "$tmp/help" && ok || no "lixel --help"
+"$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
+for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json; do
+  grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
+done
+
+out="--out $tmp/out.png"
+expect_bad "no command"
+expect_bad "unknown command" frobnicate
+expect_bad "unknown method" render --method psm $out
+expect_bad "size 0x0" render --size 0x0 $out
+expect_bad "size words" render --size wide $out
+expect_bad "word for a number" render --fov wide $out
+expect_bad "fov out of range" render --fov 180 $out
+expect_bad "two numbers for a point" render --eye 1,2 $out
+expect_bad "light and light-dir" render --light 1,2,3 --light-dir 0,-1,0 $out
+expect_bad "zero light direction" render --light-dir 0,0,0 $out
+expect_bad "eye equals at" render --eye 1,1,1 --at 1,1,1 $out
+expect_bad "unknown platform" render --platform vulkan $out
+expect_bad "unknown config" render --config sideways $out
+expect_bad "missing value" render --size
+expect_bad "unknown option" render --shadows $out
+expect_bad "unreadable scene" render --scene "$tmp/none.scene" $out
+printf 'light point 0 5 0\nsphere radius 0.5 at 0 0 colour 1 0 0\n' >"$tmp/bad.scene"
+expect_bad "malformed scene" render --scene "$tmp/bad.scene" $out
+grep -q "bad.scene:2: " "$tmp/stderr" && ok || no "malformed scene message lacks file:line: $(cat "$tmp/stderr")"
+
+for platform in osmesa egl; do
+  rm -f "$tmp/out.png"
+  if "$lixel" render --platform $platform --method uniform --measure --json --size 96x64 --frames 2 \
+      --out "$tmp/out.png" >"$tmp/json" 2>"$tmp/stderr"; then
+    ok
+    for key in '"method": "uniform"' "\"platform\": \"$platform\"" '"renderer"' '"size": \[96, 64\]' '"lixels": 262144' \
+        '"maps": \[{"name": "uniform"' '"rendered": true' '"frame_ms"' '"setup_us"' '"warnings"' '"mismatch_pct"' \
+        '"false_shadow_pct"' '"missing_shadow_pct"' '"compared_pixels"' '"planes": {"floor": {"pixels"' \
+        '"lpp_median"' '"m_median"' '"m_max"' '"aniso_max"'; do
+      grep -q "$key" "$tmp/json" && ok || no "$platform: JSON lacks $key"
+    done
+    grep -qiE 'nan|inf' "$tmp/json" && no "$platform: JSON holds NaN or Infinity" || ok
+    [ "$(wc -l <"$tmp/json")" -eq 1 ] && ok || no "$platform: JSON is not one line"
+    # a PNG starts with \211PNG
+    [ "$(head -c 4 "$tmp/out.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "$platform: not a PNG"
+  else
+    no "$platform render failed: $(cat "$tmp/stderr")"
+  fi
+done
+
+# the scene file of the built-in scene and the text output
+if "$lixel" render --scene tests/data/default.scene --config low --size 64x64 --frames 1 --out "$tmp/s.png" >"$tmp/text" 2>&1; then
+  grep -q "wrote $tmp/s.png" "$tmp/text" && ok || no "text output does not name the image"
+else
+  no "render --scene tests/data/default.scene: $(cat "$tmp/text")"
+fi
+# method none allocates nothing and renders no map
+"$lixel" render --method none --json --size 32x32 --frames 1 --out "$tmp/n.png" >"$tmp/json" 2>&1 &&
+  grep -q '"lixels": 0' "$tmp/json" && grep -q '"maps": \[\]' "$tmp/json" && ok || no "method none: $(cat "$tmp/json")"
+
+echo "cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
