@@ -69,9 +69,11 @@ $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) | $(BUILD)
 		$(if $(filter test_render,$*),$(GL_OBJ),) $(CORE_OBJ) \
 		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL),-lpthread -lm) -o $@
 
+# The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 check: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS)
 	@sh tests/run-tests.sh $(BUILD)
+	@$(MAKE) --no-print-directory asan
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check

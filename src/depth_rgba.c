@@ -42,3 +42,38 @@ double lx_depth_decode_rgba8(const uint8_t in[4])
 {
 	return lx_depth_decode_code(in) / (double)LX_DEPTH_MAX_CODE;
 }
+
+float lx_fp16(float x)
+{
+	if (x == 0.0f || !isfinite(x))
+		return x;
+	int e;
+	float m = frexpf(x, &e); /* x = m * 2^e, 0.5 <= |m| < 1 */
+	if (e < -13)             /* below fp16's normal range: denormals keep fixed steps of 2^-24 */
+		return ldexpf(rintf(ldexpf(x, 24)), -24);
+	return ldexpf(rintf(ldexpf(m, 11)), e - 11);
+}
+
+uint32_t lx_depth_code_fp16(double d)
+{
+	float f = lx_fp16((float)d);
+	if (!(f >= 0.0f))
+		return isnan(f) ? 2047u : 0u;
+	if (f >= 1.0f)
+		return 2047u;
+	float q = floorf(lx_fp16(f * 2047.0f));
+	return q > 2047.0f ? 2047u : (uint32_t)q;
+}
+
+void lx_depth_encode_rgba8_fp16(double d, enum lx_unorm_conversion conv, uint8_t out[4])
+{
+	float q = (float)lx_depth_code_fp16(d);
+	float hi = floorf(lx_fp16(q / 8.0f));
+	float mid = lx_fp16(lx_fp16(q - lx_fp16(hi * 8.0f)) * 32.0f);
+	out[0] = to_unorm8(lx_fp16(lx_fp16(hi + 0.25f) / 255.0f), conv);
+	out[1] = to_unorm8(lx_fp16(lx_fp16(mid + 0.25f) / 255.0f), conv);
+	out[2] = to_unorm8(lx_fp16(255.25f / 255.0f), conv);
+	out[3] = to_unorm8(1.0f, conv);
+}
+
+uint32_t lx_depth_decode_code_fp16(const uint8_t in[4]) { return (uint32_t)in[0] * 8u + in[1] / 32u; }

@@ -11,7 +11,11 @@
  *   powers of two), so a highp fragment shader and this code agree bit for bit.
  *   Worst-case error of encode/decode is one 24-bit step (2^-24 of the depth range).
  * - The shader compares depths as integers n, never as decoded fractions.
- * A GPU without highp fragment floats cannot hold 2^24 exactly; see docs/lixel.md. */
+ *
+ * A GPU without highp fragment floats (Mali-400: fp16, 11-bit mantissa) cannot hold
+ * 2^24 exactly. The shaders' mediump path keeps 11 bits, q = floor(d * 2047), written
+ * in the same layout (n = q * 8192: R = q >> 3, G = (q & 7) << 5, B = 255) and compared
+ * as q; lx_depth_encode_rgba8_fp16() mirrors it with every step rounded to fp16. */
 #ifndef LX_DEPTH_RGBA_H
 #define LX_DEPTH_RGBA_H
 #include <stdint.h>
@@ -25,6 +29,13 @@ uint32_t lx_depth_code(double d);
 /* Encode as the shader does and convert to bytes as a driver would. */
 void lx_depth_encode_rgba8(double d, enum lx_unorm_conversion conv, uint8_t out[4]);
 uint32_t lx_depth_decode_code(const uint8_t in[4]);
+/* The mediump path with fp16 arithmetic emulated: the 11-bit code q, and the texel. */
+uint32_t lx_depth_code_fp16(double d);
+void lx_depth_encode_rgba8_fp16(double d, enum lx_unorm_conversion conv, uint8_t out[4]);
+/* The 11-bit code the mediump path decodes from a texel. */
+uint32_t lx_depth_decode_code_fp16(const uint8_t in[4]);
+/* Rounds to the nearest IEEE half-precision value (11 significant bits). */
+float lx_fp16(float x);
 double lx_depth_decode_rgba8(const uint8_t in[4]);
 
 #endif

@@ -11,10 +11,14 @@ for t in "$build"/tests/test_*; do
   [ -x "$t" ] || continue
   name=$(basename "$t")
   echo "== $name"
-  if "$t"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names $name"; fi
+  # Mesa's llvmpipe and OSMesa keep allocations of their own past exit (JIT code,
+  # context caches) that LeakSanitizer cannot attribute; GL-linked programs run under
+  # ASan and UBSan without the leak check, the GL-free ones with it.
+  case $name in test_render) leaks=0 ;; *) leaks=1 ;; esac
+  if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=$leaks" "$t"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names $name"; fi
 done
 echo "== cli"
-if sh tests/cli.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names cli"; fi
+if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names cli"; fi
 [ -n "$failed_names" ] && echo "failed:$failed_names"
 echo "tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

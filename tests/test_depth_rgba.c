@@ -80,6 +80,47 @@ static void encoding_is_monotonic(void **state)
 	}
 }
 
+/* The mediump path with fp16 arithmetic emulated: all 2048 codes round-trip with both
+ * conversions, the encoding is monotonic, far stays far, and the error is 11 bits. */
+static void mediump_path_keeps_11_bits_in_fp16(void **state)
+{
+	(void)state;
+	assert_near(lx_fp16(1.0f / 3.0f), 0.333251953125, 0); /* fp16's nearest to 1/3 */
+	assert_near(lx_fp16(2049.0f), 2048.0f, 0);           /* only 11 significant bits */
+	for (int conv = 0; conv < 2; conv++) {
+		for (uint32_t q = 0; q < 2048; q++) {
+			uint8_t px[4];
+			double d = q / 2047.0;
+			lx_depth_encode_rgba8_fp16(d, (enum lx_unorm_conversion)conv, px);
+			uint32_t back = lx_depth_decode_code_fp16(px);
+			if (back != lx_depth_code_fp16(d))
+				fail_msg("q %u (%s): decoded %u, expected %u", q, conv ? "truncating" : "rounding", back,
+					 lx_depth_code_fp16(d));
+			/* the same texel read by the highp decoder is q * 8192 plus the low byte */
+			assert_int_equal(lx_depth_decode_code(px) >> 13, back);
+		}
+		uint8_t px[4];
+		lx_depth_encode_rgba8_fp16(1.0, (enum lx_unorm_conversion)conv, px);
+		assert_int_equal(lx_depth_decode_code_fp16(px), 2047);
+	}
+	uint64_t s = 3;
+	double worst = 0;
+	uint32_t prev = 0;
+	for (int i = 0; i <= 200000; i++) {
+		double d = i / 200000.0;
+		uint8_t px[4];
+		lx_depth_encode_rgba8_fp16(d, LX_UNORM_TRUNCATE, px);
+		uint32_t q = lx_depth_decode_code_fp16(px);
+		assert_true(q >= prev);
+		prev = q;
+		double r = test_rand(&s);
+		lx_depth_encode_rgba8_fp16(r, LX_UNORM_ROUND, px);
+		worst = fmax(worst, fabs(lx_depth_decode_code_fp16(px) / 2047.0 - r));
+	}
+	print_message("fp16 mediump path: worst error %.3g, %.2f bits\n", worst, -log2(worst));
+	assert_true(-log2(worst) >= 10.0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -87,6 +128,7 @@ int main(void)
 		cmocka_unit_test(random_depths_error_in_bits),
 		cmocka_unit_test(far_plane_encodes_as_far_never_zero),
 		cmocka_unit_test(encoding_is_monotonic),
+		cmocka_unit_test(mediump_path_keeps_11_bits_in_fp16),
 	};
 	return cmocka_run_group_tests_name("depth_rgba", tests, NULL, NULL);
 }

@@ -12,15 +12,22 @@
 static const char *const platforms[] = {"osmesa", "egl"};
 enum { W = 320, H = 240 };
 
-static void run(const char *platform, const char *method, struct lx_scene *scene, struct lx_render_report *rep)
+static void run_path(const char *platform, const char *method, struct lx_scene *scene, bool mediump,
+		     struct lx_render_report *rep)
 {
 	struct lx_render_job job = {.method = method, .platform = platform, .scene = *scene, .width = W, .height = H,
 				    .time = 0.4, .warmup_frames = 0, .timed_frames = 1, .measure = true,
-				    .keep_pixels = true, .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
+				    .keep_pixels = true, .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2,
+				    .force_mediump = mediump};
 	char err[512];
 	int st = lx_render_run(&job, rep, err, sizeof err);
 	if (st)
 		fail_msg("%s/%s: %s", platform, method, err);
+}
+
+static void run(const char *platform, const char *method, struct lx_scene *scene, struct lx_render_report *rep)
+{
+	run_path(platform, method, scene, false, rep);
 }
 
 /* Chessboard distance from each pixel to the nearest reference edge (a pixel whose
@@ -63,6 +70,41 @@ static void edge_distance(const struct lx_render_report *r, uint8_t *dist, int c
  * lixel-centre rounding). No mismatch far from an edge means no acne, no leaks and no
  * clipped caster. In total they stay under 0.5% of the compared pixels (0.16% at
  * worst measured at this size, in the configuration facing the light). */
+static void check_against_reference(const char *platform, const char *config, bool mediump, uint8_t *dist)
+{
+	struct lx_scene scene;
+	lx_scene_default(&scene);
+	lx_config_apply(lx_config_find(config), &scene);
+	struct lx_render_report r;
+	run_path(platform, "uniform", &scene, mediump, &r);
+	assert_true(m4_finite(&r.result.maps[0].light_clip));
+	double m_max = 1;
+	for (int k = 0; k < r.plane_count; k++)
+		if (r.planes[k].present)
+			m_max = fmax(m_max, r.planes[k].s.m_max);
+	int reach = (int)ceil(m_max) + 2;
+	if (reach > 250)
+		reach = 250;
+	edge_distance(&r, dist, reach + 1);
+	long far = 0, n = 0;
+	int worst = 0;
+	for (long i = 0; i < (long)W * H; i++)
+		if (r.ref_object[i] >= 0 && r.ref_object[i] == r.object[i] && r.ref_shadow[i] != r.shadow[i]) {
+			n++;
+			worst = dist[i] > worst ? dist[i] : worst;
+			far += dist[i] > reach;
+		}
+	print_message("%-6s %-7s %-12s mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
+		      "worst distance to an edge %d px (allowed %d); %ld beyond\n",
+		      platform, mediump ? "mediump" : "highp", config, r.mismatch.mismatch_pct, r.mismatch.false_shadow_pct,
+		      r.mismatch.missing_shadow_pct, r.mismatch.compared, m_max, worst, reach, far);
+	assert_int_equal(n, r.mismatch.false_shadow + r.mismatch.missing_shadow);
+	assert_true(r.mismatch.compared > W * H / 4);
+	assert_int_equal(far, 0);
+	assert_true(r.mismatch.mismatch_pct < 0.5);
+	lx_render_report_free(&r);
+}
+
 static void uniform_matches_reference(void **state)
 {
 	(void)state;
@@ -70,39 +112,22 @@ static void uniform_matches_reference(void **state)
 					      "floor-close", "horizon", "near-wall"};
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
-		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++) {
-			struct lx_scene scene;
-			lx_scene_default(&scene);
-			lx_config_apply(lx_config_find(configs[c]), &scene);
-			struct lx_render_report r;
-			run(platforms[p], "uniform", &scene, &r);
-			assert_true(m4_finite(&r.result.maps[0].light_clip));
-			double m_max = 1;
-			for (int k = 0; k < r.plane_count; k++)
-				if (r.planes[k].present)
-					m_max = fmax(m_max, r.planes[k].s.m_max);
-			int reach = (int)ceil(m_max) + 2;
-			if (reach > 250)
-				reach = 250;
-			edge_distance(&r, dist, reach + 1);
-			long far = 0, n = 0;
-			int worst = 0;
-			for (long i = 0; i < (long)W * H; i++)
-				if (r.ref_object[i] >= 0 && r.ref_object[i] == r.object[i] && r.ref_shadow[i] != r.shadow[i]) {
-					n++;
-					worst = dist[i] > worst ? dist[i] : worst;
-					far += dist[i] > reach;
-				}
-			print_message("%-6s %-12s mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
-				      "worst distance to an edge %d px (allowed %d); %ld beyond\n",
-				      platforms[p], configs[c], r.mismatch.mismatch_pct, r.mismatch.false_shadow_pct,
-				      r.mismatch.missing_shadow_pct, r.mismatch.compared, m_max, worst, reach, far);
-			assert_int_equal(n, r.mismatch.false_shadow + r.mismatch.missing_shadow);
-			assert_true(r.mismatch.compared > W * H / 4);
-			assert_int_equal(far, 0);
-			assert_true(r.mismatch.mismatch_pct < 0.5);
-			lx_render_report_free(&r);
-		}
+		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
+			check_against_reference(platforms[p], configs[c], false, dist);
+	free(dist);
+}
+
+/* The 11-bit mediump depth path (boards without fragment highp) under the same bounds.
+ * llvmpipe still computes in fp32, so this checks the path's layout and compare, while
+ * test_depth_rgba checks its fp16 arithmetic. */
+static void mediump_path_matches_reference(void **state)
+{
+	(void)state;
+	static const char *const configs[] = {"default", "low", "directional"};
+	uint8_t *dist = malloc((size_t)W * H);
+	for (size_t p = 0; p < 2; p++)
+		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
+			check_against_reference(platforms[p], configs[c], true, dist);
 	free(dist);
 }
 
@@ -249,6 +274,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(uniform_matches_reference),
+		cmocka_unit_test(mediump_path_matches_reference),
 		cmocka_unit_test(none_shadows_nothing),
 		cmocka_unit_test(platforms_agree),
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
