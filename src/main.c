@@ -50,6 +50,7 @@ static void render_usage(FILE *f)
 		"  --platform NAME      GL platform: %s (default osmesa)\n"
 		"  --out FILE.png       the shaded image (default lixel.png)\n"
 		"  --decision-out FILE.png  the per-pixel shadow decision: shadowed red, lit tinted by object\n"
+		"  --atlas-out FILE.png the shadow atlas, depth as grey (near dark, far and guards white)\n"
 		"  --measure            compare with the exact reference ray caster and compute the\n"
 		"                       sampling figures of each plane of interest\n"
 		"  --json               print one JSON object on stdout instead of text\n"
@@ -241,7 +242,7 @@ static int cmd_render(int argc, char **argv)
 		}
 		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
 							 "--at", "--fov", "--light", "--light-dir", "--time",
-							 "--platform", "--out", "--decision-out", "--frames", "--bias"};
+							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias"};
 		bool known = false;
 		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
 			known |= !strcmp(a, with_value[k]);
@@ -297,6 +298,8 @@ static int cmd_render(int argc, char **argv)
 			job.out_png = v;
 		else if (!strcmp(a, "--decision-out"))
 			job.decision_png = v;
+		else if (!strcmp(a, "--atlas-out"))
+			job.atlas_png = v;
 		else if (!strcmp(a, "--frames")) {
 			if (!parse_double(v, &d) || d < 1 || d > 100000 || d != floor(d))
 				return bad(a, "a whole number of frames from 1 to 100000", v);

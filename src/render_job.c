@@ -1,6 +1,7 @@
 #include "render_job.h"
 #include "platform.h"
 #include "png_out.h"
+#include "depth_rgba.h"
 #include "reference.h"
 #include "renderer.h"
 #include <math.h>
@@ -51,6 +52,26 @@ static void decision_colors(const int16_t *object, const uint8_t *shadow, long n
 			p[0] = (uint8_t)(90 + 37 * (object[i] % 4)), p[1] = (uint8_t)(110 + 29 * (object[i] % 5)), p[2] = 140;
 		p[3] = 255;
 	}
+}
+
+/* The atlas as a picture: depth codes as grey levels, far (and the guard bands) white. */
+static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, const char *path, char *err, size_t errlen)
+{
+	size_t n = (size_t)atlas->width * atlas->height;
+	uint8_t *tex = malloc(n * 4);
+	if (!tex) {
+		snprintf(err, errlen, "out of memory for the atlas image");
+		return false;
+	}
+	lx_renderer_read_atlas(r, tex);
+	for (size_t i = 0; i < n; i++) {
+		uint8_t g = (uint8_t)(lx_depth_decode_code(tex + i * 4) >> 16);
+		tex[i * 4] = tex[i * 4 + 1] = tex[i * 4 + 2] = g;
+		tex[i * 4 + 3] = 255;
+	}
+	bool ok = lx_png_write(path, tex, atlas->width, atlas->height, err, errlen);
+	free(tex);
+	return ok;
 }
 
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen)
@@ -149,6 +170,8 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	}
 	lx_renderer_read(r, rgba);
 	if (job->out_png && !lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen))
+		goto out;
+	if (job->atlas_png && !write_atlas(r, &rep->atlas, job->atlas_png, err, errlen))
 		goto out;
 
 	if (job->measure || job->keep_pixels || job->decision_png) {

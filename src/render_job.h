@@ -20,6 +20,7 @@ struct lx_render_job {
 	int reference_threads;
 	const char *out_png; /* shaded image, or NULL */
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
+	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
 };
 
 struct lx_plane_report {
