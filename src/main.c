@@ -4,6 +4,8 @@
 #include "json.h"
 #include "render_job.h"
 #include <errno.h>
+#include <libgen.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -113,6 +115,26 @@ static bool parse_size(const char *s, int *w, int *h)
 		return false;
 	*w = (int)a;
 	*h = (int)b;
+	return true;
+}
+
+/* An output's directory must exist and be writable before anything is rendered, so a
+ * bad path fails as bad input with nothing written. */
+static bool writable_path(const char *opt, const char *path)
+{
+	char buf[4096];
+	if (!path)
+		return true;
+	if (!*path || strlen(path) >= sizeof buf) {
+		fprintf(stderr, "lixel render: %s: expected a file name, got '%s'\n", opt, path);
+		return false;
+	}
+	strcpy(buf, path);
+	const char *dir = dirname(buf);
+	if (access(dir, W_OK | X_OK) != 0) {
+		fprintf(stderr, "lixel render: %s: cannot write into directory '%s': %s\n", opt, dir, strerror(errno));
+		return false;
+	}
 	return true;
 }
 
@@ -313,6 +335,9 @@ static int cmd_render(int argc, char **argv)
 		fprintf(stderr, "lixel render: --light and --light-dir: expected one of them, got both\n");
 		return 2;
 	}
+	if (!writable_path("--out", job.out_png) || !writable_path("--decision-out", job.decision_png) ||
+	    !writable_path("--atlas-out", job.atlas_png))
+		return 2;
 	char err[512];
 	if (scene_file) {
 		if (!lx_scene_load(scene_file, &job.scene, err, sizeof err)) {
