@@ -12,6 +12,14 @@ const char *lx_shader_text(const char *name)
 	return NULL;
 }
 
+/* Driver logs end in newlines; messages are one line each where the log allows. */
+static void trim(char *log)
+{
+	size_t n = strlen(log);
+	while (n && (log[n - 1] == '\n' || log[n - 1] == '\r' || log[n - 1] == ' '))
+		log[--n] = 0;
+}
+
 struct text {
 	char *s;
 	size_t len, cap;
@@ -38,13 +46,8 @@ static void append(struct text *t, const char *s, size_t n)
 }
 
 /* The file's text with defines after line 1 and includes expanded (one level). */
-static char *assemble(const char *name, const char *defines, char *err, size_t errlen)
+static char *assemble(const char *name, const char *src, const char *defines, char *err, size_t errlen)
 {
-	const char *src = lx_shader_text(name);
-	if (!src) {
-		snprintf(err, errlen, "%s: no such shader file is built in", name);
-		return NULL;
-	}
 	struct text t = {0};
 	const char *line = src;
 	int n = 0;
@@ -79,9 +82,9 @@ static char *assemble(const char *name, const char *defines, char *err, size_t e
 	return t.s;
 }
 
-static GLuint compile(GLenum type, const char *name, const char *defines, char *err, size_t errlen)
+static GLuint compile(GLenum type, const char *name, const char *text, const char *defines, char *err, size_t errlen)
 {
-	char *src = assemble(name, defines, err, errlen);
+	char *src = assemble(name, text, defines, err, errlen);
 	if (!src)
 		return 0;
 	GLuint sh = lx_gl.CreateShader(type);
@@ -94,6 +97,7 @@ static GLuint compile(GLenum type, const char *name, const char *defines, char *
 	if (!ok) {
 		char log[2048] = "";
 		lx_gl.GetShaderInfoLog(sh, sizeof log, NULL, log);
+		trim(log);
 		snprintf(err, errlen, "%s: compile error: %s", name, log);
 		lx_gl.DeleteShader(sh);
 		return 0;
@@ -103,10 +107,21 @@ static GLuint compile(GLenum type, const char *name, const char *defines, char *
 
 GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen)
 {
-	GLuint vs = compile(GL_VERTEX_SHADER, vert, defines, err, errlen);
+	const char *vs_text = lx_shader_text(vert), *fs_text = lx_shader_text(frag);
+	if (!vs_text || !fs_text) {
+		snprintf(err, errlen, "%s: no such shader file is built in", vs_text ? frag : vert);
+		return 0;
+	}
+	return lx_program_build_text(vert, vs_text, frag, fs_text, defines, err, errlen);
+}
+
+GLuint lx_program_build_text(const char *vert, const char *vert_text, const char *frag, const char *frag_text,
+			     const char *defines, char *err, size_t errlen)
+{
+	GLuint vs = compile(GL_VERTEX_SHADER, vert, vert_text, defines, err, errlen);
 	if (!vs)
 		return 0;
-	GLuint fs = compile(GL_FRAGMENT_SHADER, frag, defines, err, errlen);
+	GLuint fs = compile(GL_FRAGMENT_SHADER, frag, frag_text, defines, err, errlen);
 	if (!fs) {
 		lx_gl.DeleteShader(vs);
 		return 0;
@@ -125,6 +140,7 @@ GLuint lx_program_build(const char *vert, const char *frag, const char *defines,
 	if (!ok) {
 		char log[2048] = "";
 		lx_gl.GetProgramInfoLog(prog, sizeof log, NULL, log);
+		trim(log);
 		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, log);
 		lx_gl.DeleteProgram(prog);
 		return 0;

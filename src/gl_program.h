@@ -10,5 +10,8 @@ enum { LX_ATTR_POSITION = 0, LX_ATTR_NORMAL = 1, LX_ATTR_FACE_NORMAL = 2 };
 /* Builds a program from two embedded files with the given "#define" lines (may be
  * NULL). On failure returns 0 and writes "FILE: compile|link error: driver log". */
 GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen);
+/* The same from given texts (names are for messages); includes still name embedded files. */
+GLuint lx_program_build_text(const char *vert, const char *vert_text, const char *frag, const char *frag_text,
+			     const char *defines, char *err, size_t errlen);
 
 #endif

@@ -1,6 +1,8 @@
 /* Render tests on both GL platforms against the exact reference. */
 #include "configs.h"
 #include "depth_rgba.h"
+#include "gl_program.h"
+#include "shaders.h"
 #include "platform.h"
 #include "render_job.h"
 #include "renderer.h"
@@ -270,6 +272,33 @@ static void unknown_platform_and_method_are_bad_input(void **state)
 	assert_non_null(strstr(err, "vulkan"));
 }
 
+/* A shader that fails names its file and carries the driver's log; the embedded
+ * shaders build on both platforms. */
+static void shader_failures_show_the_log(void **state)
+{
+	(void)state;
+	for (size_t p = 0; p < 2; p++) {
+		char err[2048];
+		struct lx_platform *plat = lx_platform_create(platforms[p], err, sizeof err);
+		if (!plat)
+			fail_msg("%s", err);
+		const char *vert = lx_shader_text("shadow_depth.vert");
+		const char *broken = "#version 100\nprecision mediump float;\nvoid main() { gl_FragColor = undeclared; }\n";
+		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "broken.frag", broken, NULL, err, sizeof err), 0);
+		print_message("%s: %s\n", platforms[p], err);
+		assert_non_null(strstr(err, "broken.frag: compile error: "));
+		assert_non_null(strstr(err, "undeclared"));
+		const char *no_main = "#version 100\nprecision mediump float;\nvoid helper() {}\n";
+		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "nomain.frag", no_main, NULL, err, sizeof err), 0);
+		assert_true(strstr(err, "nomain.frag") != NULL);
+		GLuint prog = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
+		if (!prog)
+			fail_msg("%s", err);
+		lx_gl.DeleteProgram(prog);
+		lx_platform_destroy(plat);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -279,6 +308,7 @@ int main(void)
 		cmocka_unit_test(platforms_agree),
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
 		cmocka_unit_test(unknown_platform_and_method_are_bad_input),
+		cmocka_unit_test(shader_failures_show_the_log),
 	};
 	return cmocka_run_group_tests_name("render", tests, NULL, NULL);
 }
