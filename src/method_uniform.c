@@ -28,11 +28,22 @@ struct extent {
 
 static struct extent empty_extent(void) { return (struct extent){INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY}; }
 
-static void grow(struct extent *e, double x, double y, double z)
+/* Grows e by world point p seen in light view space: x, y as they are for a directional
+ * light, as tangents x/depth, y/depth for a point light. Returns false (e untouched) for
+ * a point at or behind a point light, which has no finite projection. */
+static bool grow(struct extent *e, const mat4 *lview, bool directional, double tiny, vec3 p)
 {
+	vec4 q = m4_mul_point(lview, p);
+	double depth = -q.z, x = q.x, y = q.y;
+	if (!directional) {
+		if (!(depth > tiny))
+			return false;
+		x /= depth, y /= depth;
+	}
 	e->x0 = fmin(e->x0, x), e->x1 = fmax(e->x1, x);
 	e->y0 = fmin(e->y0, y), e->y1 = fmax(e->y1, y);
-	e->z0 = fmin(e->z0, z), e->z1 = fmax(e->z1, z);
+	e->z0 = fmin(e->z0, depth), e->z1 = fmax(e->z1, depth);
+	return true;
 }
 
 /* Receiver points: the frustum's corners from the inverse view projection, clipped to the scene box. */
@@ -103,16 +114,9 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 	const double tmax = tan(MAX_HALF_ANGLE_DEG * M_PI / 180);
 	struct extent re = empty_extent(), ce = empty_extent();
 	bool clamped = false, receivers_behind = false;
-	for (int i = 0; i < nrec; i++) {
-		vec4 p = m4_mul_point(&lview, rec[i]);
-		double depth = -p.z;
-		if (L->directional)
-			grow(&re, p.x, p.y, depth);
-		else if (depth > tiny)
-			grow(&re, p.x / depth, p.y / depth, depth);
-		else
+	for (int i = 0; i < nrec; i++)
+		if (!grow(&re, &lview, L->directional, tiny, rec[i]))
 			receivers_behind = true;
-	}
 	bool casters_unbounded = false;
 	int ncasters = 0;
 	for (int id = 0; id < f->object_count; id++) {
@@ -122,13 +126,7 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 		for (int k = 0; k < 8; k++) {
 			vec3 c = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
 				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
-			vec4 p = m4_mul_point(&lview, c);
-			double depth = -p.z;
-			if (L->directional)
-				grow(&ce, p.x, p.y, depth);
-			else if (depth > tiny)
-				grow(&ce, p.x / depth, p.y / depth, depth);
-			else
+			if (!grow(&ce, &lview, L->directional, tiny, c))
 				casters_unbounded = true; /* a box reaching behind the light projects everywhere */
 		}
 	}

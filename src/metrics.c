@@ -99,7 +99,7 @@ static int cmp_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-static double median(double *v, long n)
+double lx_median(double *v, long n)
 {
 	qsort(v, (size_t)n, sizeof(double), cmp_double);
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -146,8 +146,8 @@ bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, c
 		}
 	out->pixels = k;
 	if (k) {
-		out->lpp_median = median(lpp, k);
-		out->m_median = median(m, k);
+		out->lpp_median = lx_median(lpp, k);
+		out->m_median = lx_median(m, k);
 	} else
 		out->lpp_min = 0;
 	free(lpp);

@@ -38,4 +38,7 @@ bool lx_plane_homography(const struct lx_frame *f, const struct lx_atlas *atlas,
 /* Singular values of the Jacobian of homography h at (x, y); false where w' ~ 0. */
 bool lx_homography_jacobian(const mat3 *h, double x, double y, double *s_max, double *s_min);
 
+/* The median of v[0..n-1] (n >= 1); sorts v. */
+double lx_median(double *v, long n);
+
 #endif

@@ -17,18 +17,6 @@ static double now_ms(void)
 	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-	qsort(v, (size_t)n, sizeof(double), cmp_double);
-	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 void lx_render_report_free(struct lx_render_report *rep)
 {
 	free(rep->ref_object);
@@ -156,10 +144,10 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);
 		rep->frame_ms_max = fmax(rep->frame_ms_max, frame_ms[k]);
 	}
-	rep->frame_ms = median(frame_ms, timed);
-	rep->shadow_ms = median(shadow_ms, timed);
-	rep->main_ms = median(main_ms, timed);
-	rep->setup_us = median(setup_us, timed);
+	rep->frame_ms = lx_median(frame_ms, timed);
+	rep->shadow_ms = lx_median(shadow_ms, timed);
+	rep->main_ms = lx_median(main_ms, timed);
+	rep->setup_us = lx_median(setup_us, timed);
 	free(frame_ms);
 
 	long n = (long)job->width * job->height;
