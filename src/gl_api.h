@@ -62,6 +62,7 @@
 	X(void, Uniform1f, (GLint, GLfloat))                                                 \
 	X(void, Uniform1i, (GLint, GLint))                                                   \
 	X(void, Uniform3f, (GLint, GLfloat, GLfloat, GLfloat))                               \
+	X(void, Uniform3fv, (GLint, GLsizei, const GLfloat *))                               \
 	X(void, Uniform4f, (GLint, GLfloat, GLfloat, GLfloat, GLfloat))                      \
 	X(void, Uniform4fv, (GLint, GLsizei, const GLfloat *))                               \
 	X(void, UniformMatrix4fv, (GLint, GLsizei, GLboolean, const GLfloat *))              \

@@ -105,52 +105,87 @@ double lx_median(double *v, long n)
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
+{
+	const struct lx_plane *p = &f->scene->planes[plane];
+	const struct lx_view *v = &f->view;
+	double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
+	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
+	vec3 n = v3_cross(p->edge1, p->edge2), d = v3_sub(pf, pn);
+	double den = v3_dot(n, d);
+	if (fabs(den) < 1e-300)
+		return false; /* the ray runs along the plane */
+	double t = v3_dot(n, v3_sub(p->corner, pn)) / den;
+	if (!(t >= 0 && t <= 1))
+		return false;
+	vec3 q = v3_add(pn, v3_scale(d, t)), r = v3_sub(q, p->corner);
+	/* parallelogram coordinates: solve r = s e1 + u e2 in the plane (n != 0: validated) */
+	double e11 = v3_dot(p->edge1, p->edge1), e12 = v3_dot(p->edge1, p->edge2), e22 = v3_dot(p->edge2, p->edge2);
+	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, p->edge1), r2 = v3_dot(r, p->edge2);
+	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det;
+	if (s < 0 || s > 1 || u < 0 || u > 1)
+		return false;
+	*out = q;
+	return true;
+}
+
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
 {
 	memset(out, 0, sizeof(*out));
+	out->map = -1;
 	int w = f->view.width, hgt = f->view.height;
-	mat3 h;
-	if (!lx_plane_homography(f, atlas, map, plane, &h))
-		return false;
-	long n = 0;
-	for (long i = 0; i < (long)w * hgt; i++)
-		n += ref_object[i] == plane;
-	if (!n)
-		return false;
-	double *lpp = malloc((size_t)n * sizeof(double)), *m = malloc((size_t)n * sizeof(double));
-	if (!lpp || !m) {
+	mat3 h[LX_MAX_MAPS];
+	bool hok[LX_MAX_MAPS] = {false};
+	for (int m = 0; m < res->map_count; m++) {
+		if (res->maps[m].rendered)
+			hok[m] = lx_plane_homography(f, atlas, &res->maps[m], plane, &h[m]);
+		if (res->maps[m].rendered && res->maps[m].plane == plane)
+			out->map = m;
+	}
+	long n = (long)w * hgt;
+	double *lpp = malloc((size_t)n * sizeof(double)), *mm = malloc((size_t)n * sizeof(double));
+	if (!lpp || !mm) {
 		free(lpp);
-		free(m);
+		free(mm);
 		return false;
 	}
 	long k = 0;
 	out->lpp_min = INFINITY;
 	for (int y = 0; y < hgt; y++)
 		for (int x = 0; x < w; x++) {
-			if (ref_object[(long)y * w + x] != plane)
+			vec3 p;
+			if (ref_object ? ref_object[(long)y * w + x] != plane : false)
 				continue;
+			if (!lx_pixel_on_plane(f, plane, x, y, &p))
+				continue;
+			int m = lx_shadow_select_map(res, p);
+			if (m < 0 || (out->map >= 0 && m != out->map) || !hok[m]) {
+				out->unserved++;
+				continue;
+			}
 			double smax, smin;
 			/* s_min below 1e-12 lixels per pixel: a lixel spans the whole screen or more */
-			if (!lx_homography_jacobian(&h, x + 0.5, y + 0.5, &smax, &smin) || !(smin > 1e-12)) {
+			if (!lx_homography_jacobian(&h[m], x + 0.5, y + 0.5, &smax, &smin) || !(smin > 1e-12)) {
 				out->degenerate++;
 				continue;
 			}
 			lpp[k] = smax * smin;
-			m[k] = 1.0 / smin;
+			mm[k] = 1.0 / smin;
 			out->lpp_min = fmin(out->lpp_min, lpp[k]);
 			out->lpp_max = fmax(out->lpp_max, lpp[k]);
-			out->m_max = fmax(out->m_max, m[k]);
+			out->m_max = fmax(out->m_max, mm[k]);
 			out->aniso_max = fmax(out->aniso_max, smax / smin);
 			k++;
 		}
 	out->pixels = k;
 	if (k) {
 		out->lpp_median = lx_median(lpp, k);
-		out->m_median = lx_median(m, k);
+		out->m_median = lx_median(mm, k);
 	} else
 		out->lpp_min = 0;
 	free(lpp);
-	free(m);
+	free(mm);
 	return k > 0;
 }

@@ -19,16 +19,23 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
 
 struct lx_plane_sampling {
+	int map;         /* the map the figures are of: the plane's own map, else -1 (each pixel's serving map) */
 	long pixels;     /* pixels of the plane the figures cover */
+	long unserved;   /* pixels of the plane no map serves, or (own map) another map serves */
 	long degenerate; /* pixels skipped: the map's projection is singular there */
 	double lpp_median, lpp_min, lpp_max, m_median, m_max, aniso_max;
 };
 
-/* The Jacobian figures of the screen-to-lixel homography of `map` on plane `plane`, over
- * the pixels whose visible object (from the reference) is that plane. Returns false
- * (figures zeroed) when the plane covers no pixel. */
-bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
+/* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the
+ * pixels whose visible object (ref_object, or every pixel that sees the plane's
+ * parallelogram when ref_object is NULL) is that plane. If a map is optimal for the
+ * plane, the figures cover the pixels that map serves; otherwise each pixel counts
+ * with the map that serves it (lx_shadow_select_map). False when no pixel counts. */
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out);
+/* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
+ * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
 
 /* The 3x3 homography from window pixel (x, y, 1) (GL window coordinates) to the map's
  * lixel coordinates (u, v, 1) for points on the plane; false when the plane is seen

@@ -194,11 +194,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		for (int p = 0; p < job->scene.plane_count; p++) {
 			struct lx_plane_report *pr = &rep->planes[p];
 			snprintf(pr->name, sizeof pr->name, "%s", job->scene.planes[p].name);
-			/* the first rendered map serves the plane (one-map methods) */
-			for (int m = 0; m < rep->result.map_count && !pr->present; m++)
-				if (rep->result.maps[m].rendered)
-					pr->present = lx_plane_sampling(&frame, &rep->atlas, &rep->result.maps[m], p,
-									rep->ref_object, &pr->s);
+			pr->present = lx_plane_sampling(&frame, &rep->atlas, &rep->result, p, rep->ref_object, &pr->s);
 		}
 		rep->measured = true;
 	}

@@ -11,7 +11,7 @@
 
 struct main_program {
 	GLuint prog;
-	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
+	GLint view_proj, offset, shadow_tex, region, edges, bias, light, color, object_id, atlas;
 };
 
 struct lx_renderer {
@@ -66,6 +66,7 @@ static bool main_program(struct main_program *p, int maps, bool decision, bool m
 	p->offset = lx_gl.GetUniformLocation(p->prog, "u_offset");
 	p->shadow_tex = lx_gl.GetUniformLocation(p->prog, "u_shadow_tex");
 	p->region = lx_gl.GetUniformLocation(p->prog, "u_region");
+	p->edges = lx_gl.GetUniformLocation(p->prog, "u_edges");
 	p->bias = lx_gl.GetUniformLocation(p->prog, "u_bias");
 	p->light = lx_gl.GetUniformLocation(p->prog, "u_light");
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
@@ -258,24 +259,36 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	else
 		lx_gl.Uniform4f(p->light, (float)L->position.x, (float)L->position.y, (float)L->position.z, 1);
 	if (r->d.map_count > 0) {
-		float tex[3][16], region[3][4];
+		float tex[3][16], region[3][4], edges[3][LX_MAX_MAP_EDGES][3];
 		for (int m = 0; m < r->d.map_count; m++) {
 			const struct lx_shadow_map *map = &res->maps[m];
 			mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 			to_float(&t, tex[m]);
-			if (map->rendered) {
-				const struct lx_region *g = &atlas->regions[map->region];
-				region[m][0] = (float)g->x / atlas->width;
-				region[m][1] = (float)g->y / atlas->height;
-				region[m][2] = (float)(g->x + g->w) / atlas->width;
-				region[m][3] = (float)(g->y + g->h) / atlas->height;
-			} else { /* an empty box: every lookup misses and reads lit */
+			for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
+				edges[m][e][0] = edges[m][e][1] = 0, edges[m][e][2] = 1;
+			if (!map->rendered) { /* an empty box: every lookup misses and reads lit */
 				region[m][0] = region[m][1] = 2;
 				region[m][2] = region[m][3] = -1;
+				continue;
+			}
+			/* region clip space -> atlas texture space: tex = o + s * clip */
+			const struct lx_region *g = &atlas->regions[map->region];
+			double sx = 0.5 * g->w / atlas->width, ox = (g->x + 0.5 * g->w) / atlas->width;
+			double sy = 0.5 * g->h / atlas->height, oy = (g->y + 0.5 * g->h) / atlas->height;
+			region[m][0] = (float)(ox + sx * map->bounds[0]);
+			region[m][1] = (float)(oy + sy * map->bounds[1]);
+			region[m][2] = (float)(ox + sx * map->bounds[2]);
+			region[m][3] = (float)(oy + sy * map->bounds[3]);
+			for (int e = 0; e < map->edge_count; e++) {
+				const double *q = map->edges[e];
+				edges[m][e][0] = (float)(q[0] / sx);
+				edges[m][e][1] = (float)(q[1] / sy);
+				edges[m][e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
 			}
 		}
 		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
 		lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
+		lx_gl.Uniform3fv(p->edges, r->d.map_count * LX_MAX_MAP_EDGES, edges[0][0]);
 		lx_gl.Uniform1f(p->bias, r->bias_uniform);
 		lx_gl.Uniform1i(p->atlas, 0);
 		lx_gl.ActiveTexture(GL_TEXTURE0);

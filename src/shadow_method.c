@@ -17,6 +17,35 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 
 const char *lx_shadow_method_names(void) { return "none|uniform"; }
 
+void lx_shadow_map_full(struct lx_shadow_map *m)
+{
+	m->plane = -1;
+	m->bounds[0] = m->bounds[1] = -1;
+	m->bounds[2] = m->bounds[3] = 1;
+	m->edge_count = 0;
+}
+
+int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p)
+{
+	for (int i = 0; i < r->map_count; i++) {
+		const struct lx_shadow_map *m = &r->maps[i];
+		if (!m->rendered)
+			continue;
+		vec4 c = m4_mul_point(&m->light_clip, p);
+		if (!(c.w > 0))
+			continue;
+		double x = c.x / c.w, y = c.y / c.w;
+		if (x < m->bounds[0] || y < m->bounds[1] || x >= m->bounds[2] || y >= m->bounds[3])
+			continue;
+		bool inside = true;
+		for (int e = 0; e < m->edge_count; e++)
+			inside &= m->edges[e][0] * x + m->edges[e][1] * y + m->edges[e][2] >= 0;
+		if (inside)
+			return i;
+	}
+	return -1;
+}
+
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...)
 {
 	if (r->warning_count == LX_MAX_WARNINGS)

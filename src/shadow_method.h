@@ -14,10 +14,20 @@
 #define LX_MAX_WARNINGS 8
 #define LX_WARNING_MAX 160
 
+#define LX_MAX_MAP_EDGES 4
+
 struct lx_shadow_map {
 	int region; /* index into the atlas */
 	bool rendered;
 	mat4 light_clip; /* world -> region clip space */
+	int plane;       /* the plane of interest this map is optimal for, or -1 */
+	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
+	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
+	 * of edge_count edges (a table top's polygon). The main pass uses the first map, in
+	 * order, that serves a ray. */
+	double bounds[4];
+	int edge_count;
+	double edges[LX_MAX_MAP_EDGES][3];
 };
 
 struct lx_shadow_result {
@@ -39,6 +49,12 @@ struct lx_shadow_method {
 const struct lx_shadow_method *lx_shadow_method_find(const char *name);
 /* The list of method names, separated by '|', for help and error messages. */
 const char *lx_shadow_method_names(void);
+
+/* A map that serves every ray of its region: bounds [-1, 1]^2, no edges, no plane. */
+void lx_shadow_map_full(struct lx_shadow_map *m);
+/* The map the main pass would use for world point p (the shader's choice, in double):
+ * its index, or -1 when no rendered map serves p. */
+int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p);
 
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 

@@ -1,0 +1,217 @@
+#include "light_space.h"
+#include "convex.h"
+#include <math.h>
+
+/* A point light's frustum is kept within this half-angle; a wider cone would spend the
+ * map on grazing directions (or need several maps), so what lies outside is left
+ * unshadowed with a warning. */
+#define MAX_HALF_ANGLE_DEG 75.0
+
+static int receiver_points(const struct lx_frame *f, vec3 *pts)
+{
+	vec3 fc[8];
+	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
+	for (int i = 0; i < 8; i++) {
+		vec4 p = m4_mul_v4(&f->view.inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
+		/* w > 0 for the corners of a valid perspective frustum */
+		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w);
+	}
+	return lx_frustum_box_points(fc, f->scene_min, f->scene_max, pts, LX_CONVEX_MAX_POINTS);
+}
+
+/* Which objects can cast: casters always; planes only when their back face is lit. */
+static bool can_cast(const struct lx_frame *f, int id)
+{
+	const struct lx_scene *s = f->scene;
+	if (id >= s->plane_count)
+		return true;
+	const struct lx_plane *p = &s->planes[id];
+	vec3 n = lx_plane_normal(p);
+	if (f->light.directional)
+		return v3_dot(n, f->light.direction) > 0;
+	return v3_dot(n, v3_sub(f->light.position, p->corner)) <= 1e-12 * (1 + v3_len(p->edge1) + v3_len(p->edge2));
+}
+
+/* G coordinates and depth of a world point; false at or behind a point light. */
+static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *depth)
+{
+	vec4 q = m4_mul_point(&ls->view, p);
+	*depth = -q.z;
+	if (ls->directional) {
+		*g = (vec2){q.x, q.y};
+		return true;
+	}
+	if (!(*depth > ls->tiny))
+		return false;
+	*g = (vec2){q.x / *depth, q.y / *depth};
+	return true;
+}
+
+void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
+{
+	*ls = (struct lx_light_space){.directional = f->light.directional, .empty = true};
+	ls->size = v3_len(v3_sub(f->scene_max, f->scene_min));
+	ls->tiny = 1e-9 * (ls->size + 1e-300);
+	vec3 rec[LX_CONVEX_MAX_POINTS];
+	int nrec = receiver_points(f, rec);
+	if (nrec == 0)
+		return; /* the view holds nothing of the scene */
+	vec3 centroid = v3(0, 0, 0);
+	for (int i = 0; i < nrec; i++)
+		centroid = v3_add(centroid, v3_scale(rec[i], 1.0 / nrec));
+	vec3 eye, dir;
+	if (ls->directional) {
+		dir = f->light.direction;
+		eye = v3_sub(centroid, v3_scale(dir, ls->size + 1));
+	} else {
+		eye = f->light.position;
+		if (!v3_normalize(v3_sub(centroid, eye), &dir))
+			dir = v3(0, -1, 0); /* light at the centroid: any axis, the cone is clamped later */
+	}
+	vec3 up = fabs(dir.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
+	m4_look_at(eye, v3_add(eye, dir), up, &ls->view); /* unit dir, up not parallel: cannot fail */
+
+	vec2 pts[4 * LX_POLY_MAX];
+	int n = 0;
+	ls->zfar = -INFINITY;
+	double zmin_rec = INFINITY;
+	for (int i = 0; i < nrec; i++) {
+		vec2 g;
+		double depth;
+		if (project(ls, rec[i], &g, &depth)) {
+			if (n < 4 * LX_POLY_MAX)
+				pts[n++] = g;
+			ls->zfar = fmax(ls->zfar, depth);
+			zmin_rec = fmin(zmin_rec, depth);
+		} else
+			ls->receivers_behind = true;
+	}
+	lx_poly_hull(pts, n, &ls->receivers);
+	int ncasters = 0;
+	n = 0;
+	ls->znear = INFINITY;
+	for (int id = 0; id < f->object_count; id++) {
+		if (!can_cast(f, id))
+			continue;
+		ncasters++;
+		for (int k = 0; k < 8; k++) {
+			vec3 c = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
+				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			vec2 g;
+			double depth;
+			if (project(ls, c, &g, &depth)) {
+				if (n < 4 * LX_POLY_MAX)
+					pts[n++] = g;
+				ls->znear = fmin(ls->znear, depth);
+			} else
+				ls->casters_unbounded = true; /* a box reaching behind the light projects everywhere */
+		}
+	}
+	lx_poly_hull(pts, n, &ls->casters);
+	if (ls->casters_unbounded)
+		ls->znear = -INFINITY;
+	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond
+	 * every receiver: no shadow can fall in the view. */
+	ls->empty = ncasters == 0 || !(ls->zfar > -INFINITY) || ls->znear > ls->zfar;
+	(void)zmin_rec;
+}
+
+bool lx_light_space_chart(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X, vec2 *g)
+{
+	if (ls->directional) {
+		if (fabs(X.w) < 1e-300)
+			return false; /* a direction: not a ray of a directional light */
+		vec4 q = m4_mul_v4(&ls->view, X);
+		*g = (vec2){q.x / q.w, q.y / q.w};
+		return true;
+	}
+	/* the direction from the light to X, of either kind */
+	vec3 L = f->light.position;
+	vec4 d4 = {X.x - L.x * X.w, X.y - L.y * X.w, X.z - L.z * X.w, 0};
+	if (X.w < 0)
+		d4 = (vec4){-d4.x, -d4.y, -d4.z, 0};
+	vec4 q = m4_mul_v4(&ls->view, d4);
+	double depth = -q.z, len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+	if (!(depth > 1e-12 * len))
+		return false;
+	*g = (vec2){q.x / depth, q.y / depth};
+	return true;
+}
+
+/* A hull of fewer than three points (everything seen edge-on) becomes its padded
+ * bounding box, so a flat but real set of rays is not lost. */
+static struct lx_poly solid(const struct lx_poly *p, double pad)
+{
+	if (p->n >= 3 || p->n == 0)
+		return *p;
+	double x0, y0, x1, y1;
+	lx_poly_bounds(p, &x0, &y0, &x1, &y1);
+	x0 -= pad, y0 -= pad, x1 += pad, y1 += pad;
+	return (struct lx_poly){4, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
+}
+
+bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out)
+{
+	double pad = ls->directional ? 1e-6 * (ls->size + 1e-300) : 1e-9;
+	struct lx_poly rec = solid(&ls->receivers, pad), cas = solid(&ls->casters, pad);
+	out->n = 0;
+	if (ls->empty)
+		return true;
+	if (ls->receivers_behind && ls->casters_unbounded)
+		return false;
+	/* Receivers behind the light can only be shadowed by casters behind it too (the
+	 * segment from the light never enters the front half-space), so with the light
+	 * inside the receiver volume the casters alone bound the rays. */
+	if (ls->receivers_behind)
+		*out = cas;
+	else if (ls->casters_unbounded)
+		*out = rec;
+	else
+		lx_poly_intersect(&rec, &cas, out);
+	return true;
+}
+
+bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, double y0, double y1, mat4 *clip,
+			struct lx_shadow_result *warn, const char *prefix)
+{
+	const double tmax = tan(MAX_HALF_ANGLE_DEG * M_PI / 180);
+	double znear = ls->znear, zfar = ls->zfar;
+	if (!ls->directional) {
+		if (x0 < -tmax || x1 > tmax || y0 < -tmax || y1 > tmax) {
+			x0 = fmax(x0, -tmax), x1 = fmin(x1, tmax);
+			y0 = fmax(y0, -tmax), y1 = fmin(y1, tmax);
+			lx_shadow_warn(warn, "%s: receivers span more than %.0f degrees around the point light; those outside the map are unshadowed",
+				       prefix, 2 * MAX_HALF_ANGLE_DEG);
+		}
+		double min_near = zfar * 1e-4;
+		if (znear < min_near) {
+			if (!ls->casters_unbounded)
+				lx_shadow_warn(warn, "%s: a caster within %.3g m of the point light is clipped by the near plane",
+					       prefix, min_near);
+			znear = min_near;
+		}
+	}
+	/* Keep the frustum non-empty for flat configurations (a single plane edge-on). */
+	double pad = ls->directional ? 1e-6 * (ls->size + 1e-300) : 1e-9;
+	if (!(x1 - x0 >= pad))
+		x0 -= pad, x1 += pad;
+	if (!(y1 - y0 >= pad))
+		y0 -= pad, y1 += pad;
+	/* a sliver of depth margin so the extreme points do not fall on the clip planes */
+	double zpad = fmax((zfar - znear) * 1e-4, ls->directional ? 1e-6 * (ls->size + 1e-300) : znear * 1e-4);
+	mat4 proj;
+	bool ok;
+	if (ls->directional)
+		ok = m4_ortho(x0, x1, y0, y1, znear - zpad, zfar + zpad, &proj);
+	else {
+		double n = fmax(znear - zpad, znear * 0.5);
+		ok = m4_frustum(x0 * n, x1 * n, y0 * n, y1 * n, n, zfar + zpad, &proj);
+	}
+	if (ok) {
+		*clip = m4_mul(&proj, &ls->view);
+		ok = m4_finite(clip);
+	}
+	if (!ok)
+		lx_shadow_warn(warn, "%s: degenerate light frustum; the map is skipped this frame", prefix);
+	return ok;
+}

@@ -1,0 +1,39 @@
+/* The light's view of a frame, shared by the methods that need a conventional map:
+ * a light view whose image plane G (z = -1 in light view space) charts the light rays
+ * (tangents x/depth, y/depth for a point light; x, y for a directional light), the
+ * hulls on G of what receivers and casters project to, and their depth range
+ * (papers/003's unit cube clipping; papers/000's C_tot). GL-free. */
+#ifndef LX_LIGHT_SPACE_H
+#define LX_LIGHT_SPACE_H
+#include "frame.h"
+#include "polygon2d.h"
+#include "shadow_method.h"
+
+struct lx_light_space {
+	bool directional;
+	mat4 view;              /* world -> light view (looking down -z) */
+	double tiny;            /* depth below which a point counts as at the light */
+	bool empty;             /* nothing to shadow: no receivers in front, or no casters */
+	bool receivers_behind;  /* the point light is inside the receiver volume */
+	bool casters_unbounded; /* a caster box reaches behind the point light */
+	struct lx_poly receivers, casters; /* hulls on G; meaningful unless the flag above says unbounded */
+	double znear, zfar;     /* casters' minimum depth, receivers' maximum depth */
+	double size;            /* scene diagonal */
+};
+
+/* Receivers are the view frustum clipped to the scene bounds; casters the objects'
+ * bounds (planes only where their back face is lit). */
+void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);
+/* The ray through homogeneous world point X (or from the light towards direction X
+ * when X.w = 0 for a point light) on G; false when it does not meet G in front. */
+bool lx_light_space_chart(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X, vec2 *g);
+/* C_tot: the rays both receivers and casters need, as a polygon on G; false (with
+ * *unbounded set) when one frustum cannot hold them without clamping. */
+bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out);
+/* The light-clip matrix of a conventional map covering the rectangle [x0, x1] x [y0, y1]
+ * of G and the depth range; clamps a point light's cone to 150 degrees and warns
+ * (prefix names the method). False when no valid frustum exists. */
+bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, double y0, double y1, mat4 *clip,
+			struct lx_shadow_result *warn, const char *prefix);
+
+#endif

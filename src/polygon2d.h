@@ -1,0 +1,32 @@
+/* Convex polygons in 2D, GL-free: hulls, intersections and the hull of a difference,
+ * for the sets of wanted light rays drawn on a plane (papers/000, section 3).
+ * Polygons are counter-clockwise vertex lists. */
+#ifndef LX_POLYGON2D_H
+#define LX_POLYGON2D_H
+#include <stdbool.h>
+
+#define LX_POLY_MAX 64
+
+typedef struct { double x, y; } vec2;
+
+struct lx_poly {
+	int n;
+	vec2 v[LX_POLY_MAX];
+};
+
+/* Convex hull of n points (Andrew's monotone chain); collinear points dropped. */
+void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);
+/* Intersection of two convex polygons (clipping a by each edge of b). */
+void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *out);
+/* Keeps the part of a on the side a.x * x + a.y * y + c >= 0 of a line. */
+void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out);
+/* HULL(a - b - c) for convex a, b, c (b or c may be empty): the hull of every point of
+ * a outside the interiors of b and c. Empty when that set has no area. */
+void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b, const struct lx_poly *c,
+				struct lx_poly *out);
+double lx_poly_area(const struct lx_poly *p);
+/* Strictly inside by more than eps (distance to every edge). */
+bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
+void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1, double *y1);
+
+#endif
