@@ -20,7 +20,7 @@ static int receiver_points(const struct lx_frame *f, vec3 *pts)
 }
 
 /* Which objects can cast: casters always; planes only when their back face is lit. */
-static bool can_cast(const struct lx_frame *f, int id)
+bool lx_object_can_cast(const struct lx_frame *f, int id)
 {
 	const struct lx_scene *s = f->scene;
 	if (id >= s->plane_count)
@@ -91,7 +91,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	n = 0;
 	ls->znear = INFINITY;
 	for (int id = 0; id < f->object_count; id++) {
-		if (!can_cast(f, id))
+		if (!lx_object_can_cast(f, id))
 			continue;
 		ncasters++;
 		for (int k = 0; k < 8; k++) {

@@ -21,6 +21,9 @@ struct lx_light_space {
 	double size;            /* scene diagonal */
 };
 
+/* Whether object id can cast: casters always, planes only when their back face is lit
+ * (the shadow passes write back faces). */
+bool lx_object_can_cast(const struct lx_frame *f, int id);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'
  * bounds (planes only where their back face is lit). */
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);

@@ -1,8 +1,10 @@
 /* No shadows: the baseline every other method's frame time is compared with. */
 #include "shadow_method.h"
 
-static int none_regions(struct lx_region_request *out)
+static int none_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
+	(void)s;
+	(void)o;
 	(void)out;
 	return 0;
 }

@@ -6,11 +6,10 @@
 #include "light_space.h"
 #include <math.h>
 
-#define UNIFORM_LIXELS 512
-
-static int uniform_regions(struct lx_region_request *out)
+static int uniform_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
-	out[0] = (struct lx_region_request){"uniform", UNIFORM_LIXELS, UNIFORM_LIXELS};
+	(void)s;
+	out[0] = (struct lx_region_request){"uniform", o->uniform_lixels, o->uniform_lixels};
 	return 1;
 }
 
@@ -34,6 +33,6 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 }
 
 const struct lx_shadow_method lx_method_uniform = {.name = "uniform",
-	.summary = "one 512x512 map focused by unit cube clipping",
+	.summary = "one map (512x512) focused by unit cube clipping",
 	.regions = uniform_regions,
 	.build = uniform_build};

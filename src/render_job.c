@@ -100,7 +100,8 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	lx_gl_caps_probe(&rep->caps);
 
 	struct lx_region_request req[LX_MAX_MAPS];
-	int nreq = method->regions(req);
+	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
+	int nreq = method->regions(&job->scene, &opt, req);
 	if (!lx_atlas_layout(&rep->atlas, req, nreq, 1, rep->caps.max_texture_size, err, errlen))
 		goto out;
 	struct lx_renderer_desc rd = {.scene = &job->scene, .meshes = &meshes, .atlas = &rep->atlas, .caps = &rep->caps,

@@ -17,6 +17,7 @@ struct lx_render_job {
 	bool keep_pixels;    /* keep the per-pixel arrays in the report (tests) */
 	bool force_mediump;  /* take the shaders' mediump path */
 	double bias_codes;   /* depth bias in 24-bit codes */
+	struct lx_method_options budgets; /* zero: LX_METHOD_OPTIONS_DEFAULT */
 	int reference_threads;
 	const char *out_png; /* shaded image, or NULL */
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */

@@ -3,9 +3,9 @@
 #include <stdio.h>
 #include <string.h>
 
-extern const struct lx_shadow_method lx_method_none, lx_method_uniform;
+extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane;
 
-static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform};
+static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform, &lx_method_plane};
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 {
@@ -15,7 +15,7 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 	return NULL;
 }
 
-const char *lx_shadow_method_names(void) { return "none|uniform"; }
+const char *lx_shadow_method_names(void) { return "none|uniform|plane"; }
 
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {

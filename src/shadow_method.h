@@ -37,11 +37,19 @@ struct lx_shadow_result {
 	char warnings[LX_MAX_WARNINGS][LX_WARNING_MAX];
 };
 
+/* Lixel budgets: each map is budget x budget lixels. */
+struct lx_method_options {
+	int uniform_lixels;  /* one-map methods (512) */
+	int plane_lixels;    /* each plane-optimal map (350) */
+	int fallback_lixels; /* the plane-optimal method's fallback map (128) */
+};
+#define LX_METHOD_OPTIONS_DEFAULT ((struct lx_method_options){512, 350, 128})
+
 struct lx_shadow_method {
 	const char *name;
 	const char *summary;
-	/* Region requests (at most LX_MAX_MAPS); returns the count. */
-	int (*regions)(struct lx_region_request *out);
+	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. */
+	int (*regions)(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out);
 	/* Fills one map per region, in the order regions() gave them. */
 	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out);
 };

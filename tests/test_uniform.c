@@ -21,7 +21,7 @@ static void build(struct setup *s, const char *method)
 	assert_true(lx_meshes_build(&s->scene, &s->meshes));
 	if (!lx_frame_setup(&s->frame, &s->scene, &s->meshes, 0.4, 640, 480, err, sizeof err))
 		fail_msg("%s", err);
-	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(req), 1, 2048, err, sizeof err));
+	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, req), 1, 2048, err, sizeof err));
 	memset(&s->res, 0, sizeof s->res);
 	m->build(&s->frame, &s->atlas, &s->res);
 }

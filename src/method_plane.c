@@ -1,0 +1,281 @@
+/* Plane-optimal shadow maps (papers/000, Chong and Gortler): one map per plane of
+ * interest (the scene's first two planes: floor and wall, or table and floor) whose
+ * light image samples that plane exactly where the view's pixels do, and a small
+ * conventional fallback map for the wanted rays no plane map serves,
+ * C_fallback = HULL(C_tot - C_plane1 - C_plane2).
+ *
+ * Per plane map: the plane-optimal camera (plane_optimal.c), then A_l: a twist that
+ * makes the line where this plane meets the next one horizontal with this plane below
+ * it, a uniform scale when the budget cannot give a lixel per pixel, and a translation
+ * of the wanted rays' bounding rectangle to lixel (0, 0); then depth fitted to the
+ * casters and receivers in the map's frustum (unit cube clipping in z). */
+#include "light_space.h"
+#include "plane_optimal.h"
+#include <math.h>
+#include <string.h>
+
+#define PLANE_MAPS 2
+
+static int plane_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
+{
+	int n = 0;
+	for (int i = 0; i < s->plane_count && i < PLANE_MAPS; i++)
+		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels};
+	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels};
+	return n;
+}
+
+static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
+static vec4 comb(vec4 a, double s, vec4 b, double t)
+{
+	return (vec4){a.x * s + b.x * t, a.y * s + b.y * t, a.z * s + b.z * t, a.w * s + b.w * t};
+}
+static double dot4p(vec4 a, vec3 p) { return a.x * p.x + a.y * p.y + a.z * p.z + a.w; }
+
+/* The twist: a rotation of the light image that turns the line where plane `self`
+ * meets plane `other` horizontal, with this plane's visible polygon below it. */
+static bool twist_angle(const struct lx_view *v, const struct lx_plane *self, const struct lx_plane *other,
+			const struct lx_poly *visible, double *angle)
+{
+	vec4 a = lx_plane_equation(self), b = lx_plane_equation(other);
+	vec3 na = v3(a.x, a.y, a.z), nb = v3(b.x, b.y, b.z), dir = v3_cross(na, nb);
+	if (!(v3_len(dir) > 1e-9))
+		return false; /* parallel planes (table and floor) meet nowhere */
+	/* a point on both planes: the least-norm solution of na.p = -a.w, nb.p = -b.w */
+	double m11 = v3_dot(na, na), m12 = v3_dot(na, nb), m22 = v3_dot(nb, nb), det = m11 * m22 - m12 * m12;
+	double k1 = (-a.w * m22 + b.w * m12) / det, k2 = (-b.w * m11 + a.w * m12) / det; /* det > 0: not parallel */
+	vec3 p0 = v3_add(v3_scale(na, k1), v3_scale(nb, k2)), p1 = v3_add(p0, dir);
+	double s[2][3];
+	vec3 pts[2] = {p0, p1};
+	for (int i = 0; i < 2; i++) {
+		vec4 c = m4_mul_point(&v->view_proj, pts[i]);
+		s[i][0] = (c.x + c.w) * 0.5 * v->width;
+		s[i][1] = (c.y + c.w) * 0.5 * v->height;
+		s[i][2] = c.w;
+	}
+	double l0 = s[0][1] * s[1][2] - s[0][2] * s[1][1], l1 = s[0][2] * s[1][0] - s[0][0] * s[1][2],
+	       l2 = s[0][0] * s[1][1] - s[0][1] * s[1][0];
+	double len = hypot(l0, l1);
+	if (!(len > 1e-12 * (fabs(l2) + 1)))
+		return false; /* the line passes through the eye: it projects to a point */
+	double cx = 0, cy = 0;
+	for (int i = 0; i < visible->n; i++)
+		cx += visible->v[i].x / visible->n, cy += visible->v[i].y / visible->n;
+	*angle = atan2(l0, l1); /* turns the line's normal (l0, l1) to +y */
+	if (l0 * cx + l1 * cy + l2 > 0)
+		*angle += M_PI; /* keep this plane below the line */
+	return true;
+}
+
+/* Builds plane i's map; returns the rays it serves as a polygon on G (empty when none
+ * or when they cannot be charted there). */
+static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
+			    int i, int next, struct lx_shadow_map *map, struct lx_shadow_result *out, struct lx_poly *served)
+{
+	const struct lx_scene *s = f->scene;
+	const struct lx_plane *P = &s->planes[i];
+	const struct lx_view *v = &f->view;
+	served->n = 0;
+	vec4 pi = lx_plane_equation(P);
+	vec3 n = v3(pi.x, pi.y, pi.z);
+	const struct lx_light *light = &f->light;
+	/* the lit side faces away from the light: every point of the plane is shadowed by
+	 * the facing rule, so its map would decide nothing */
+	double facing = light->directional ? -v3_dot(n, light->direction) : dot4p(pi, light->position);
+	double near_limit = light->directional ? 1e-3 : 1e-3 * ls->size;
+	if (fabs(facing) < near_limit) {
+		lx_shadow_warn(out, light->directional ? "plane %s: the light grazes the plane; its map is skipped and the fallback map serves it"
+						     : "plane %s: the light is within %.3g m of the plane; its map is skipped and the fallback map serves it",
+			       P->name, near_limit);
+		return;
+	}
+	if (facing < 0)
+		return;
+	struct lx_poly win;
+	vec3 world[32];
+	int nw;
+	if (!lx_plane_visible(v, P, &win, world, &nw)) {
+		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && nw > 0)
+			lx_shadow_warn(out, "plane %s is seen edge-on: no map for it this frame", P->name);
+		return; /* not in view: no pass, no fill */
+	}
+	vec3 c = v3(0, 0, 0);
+	for (int k = 0; k < nw; k++)
+		c = v3_add(c, v3_scale(world[k], 1.0 / nw));
+	struct lx_plane_camera cam;
+	enum lx_plane_camera_status st = lx_plane_camera_solve(v, lx_light_point(light), pi, (vec4){c.x, c.y, c.z, 1}, &cam);
+	if (st != LX_PLANE_CAMERA_OK) {
+		static const char *const why[] = {"", "the light lies in the plane", "the eye lies in the plane",
+						  "the five-point system is singular"};
+		lx_shadow_warn(out, "plane %s: %s; its map is skipped and the fallback map serves it", P->name, why[st]);
+		return;
+	}
+	/* Wanted rays in this light image (window coordinates on the plane): the visible
+	 * plane, within what the casters can cover. */
+	struct lx_poly wanted = win, cast;
+	vec2 pts[4 * LX_POLY_MAX];
+	int np = 0;
+	bool bounded = true;
+	for (int id = 0; id < f->object_count && bounded; id++) {
+		if (!lx_object_can_cast(f, id))
+			continue;
+		for (int k = 0; k < 8; k++) {
+			vec3 q = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
+				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			vec4 h = m4_mul_point(&cam.m, q);
+			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z)))) {
+				bounded = false; /* a caster reaches behind the light image: no bound from casters */
+				break;
+			}
+			if (np < 4 * LX_POLY_MAX)
+				pts[np++] = (vec2){h.x / h.w, h.y / h.w};
+		}
+	}
+	if (bounded) {
+		lx_poly_hull(pts, np, &cast);
+		lx_poly_intersect(&win, &cast, &wanted);
+	}
+	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
+		return; /* no caster over the visible plane: nothing to shadow there */
+
+	/* A_l: twist, scale, translate. */
+	double angle = 0;
+	if (next >= 0)
+		twist_angle(v, P, &s->planes[next], &win, &angle);
+	/* A twist by a multiple of 90 degrees (a level camera facing the wall) keeps the
+	 * pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
+	double quarter = round(angle / (M_PI / 2));
+	bool on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
+	double cs = cos(angle), sn = sin(angle);
+	if (on_grid) {
+		int k = ((int)quarter % 4 + 4) % 4;
+		static const double c4[4] = {1, 0, -1, 0}, s4[4] = {0, 1, 0, -1};
+		cs = c4[k], sn = s4[k];
+	}
+	struct lx_poly rot = wanted;
+	for (int k = 0; k < rot.n; k++)
+		rot.v[k] = (vec2){cs * wanted.v[k].x - sn * wanted.v[k].y, sn * wanted.v[k].x + cs * wanted.v[k].y};
+	double x0, y0, x1, y1;
+	lx_poly_bounds(&rot, &x0, &y0, &x1, &y1);
+	const struct lx_region *g = &atlas->regions[map->region];
+	double scale = fmin(1.0, fmin(g->w / (x1 - x0), g->h / (y1 - y0))); /* the area check above keeps x1 > x0 */
+	if (scale == 1.0 && on_grid && ceil(x1) - floor(x0) <= g->w && ceil(y1) - floor(y0) <= g->h) {
+		/* pixel centres, turned by quarter turns, stay at half-integers: a whole-lixel
+		 * translation puts each on a lixel centre */
+		x0 = floor(x0);
+		y0 = floor(y0);
+	}
+	double uw = fmin(g->w, scale * (x1 - x0)), vh = fmin(g->h, scale * (y1 - y0));
+	/* window (x q, y q, z q, q) -> region clip: x_clip = 2 u / w - 1 with u = scale (R p - p0) */
+	mat4 a = m4_identity();
+	double kx = 2.0 / g->w, ky = 2.0 / g->h;
+	a.m[0] = kx * scale * cs, a.m[4] = -kx * scale * sn, a.m[12] = -kx * scale * x0 - 1;
+	a.m[1] = ky * scale * sn, a.m[5] = ky * scale * cs, a.m[13] = -ky * scale * y0 - 1;
+	mat4 m = m4_mul(&a, &cam.m);
+	double b[4] = {-1, -1, kx * uw - 1, ky * vh - 1};
+
+	/* Depth: unit cube clipping inside the map's frustum. Receivers: the view frustum
+	 * within the scene box and the map's cone; casters: their boxes within the cone. */
+	vec4 wrow = row(&m, 3), zrow = row(&m, 2);
+	double wplane = INFINITY;
+	for (int k = 0; k < nw; k++)
+		wplane = fmin(wplane, dot4p(wrow, world[k]));
+	vec4 hs[20];
+	int nh = 0;
+	hs[nh++] = comb(row(&m, 0), 1, wrow, -b[0]);
+	hs[nh++] = comb(row(&m, 0), -1, wrow, b[2]);
+	hs[nh++] = comb(row(&m, 1), 1, wrow, -b[1]);
+	hs[nh++] = comb(row(&m, 1), -1, wrow, b[3]);
+	double wmin = 1e-4 * wplane; /* a hair in front of the light: depth is finite there */
+	hs[nh++] = comb(wrow, 1, (vec4){0, 0, 0, 1}, -wmin);
+	int ncone = nh;
+	const mat4 *vp = &v->view_proj;
+	for (int r = 0; r < 3; r++) { /* the view frustum: -w <= x, y, z <= w */
+		hs[nh++] = comb(row(vp, 3), 1, row(vp, r), 1);
+		hs[nh++] = comb(row(vp, 3), 1, row(vp, r), -1);
+	}
+	vec3 lo = f->scene_min, hi = f->scene_max;
+	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
+	for (int k = 0; k < 6; k++)
+		hs[nh++] = box[k];
+	vec3 vert[2048];
+	int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
+	double zfar = -INFINITY, znear = INFINITY;
+	for (int k = 0; k < nv; k++)
+		zfar = fmax(zfar, dot4p(zrow, vert[k]) / dot4p(wrow, vert[k])); /* w >= wmin > 0 there */
+	bool clipped = false;
+	for (int id = 0; id < f->object_count; id++) {
+		if (!lx_object_can_cast(f, id))
+			continue;
+		vec4 cb[11];
+		memcpy(cb, hs, (size_t)ncone * sizeof(vec4));
+		vec4 obox[6] = {{1, 0, 0, -f->bmin[id].x}, {-1, 0, 0, f->bmax[id].x}, {0, 1, 0, -f->bmin[id].y},
+				{0, -1, 0, f->bmax[id].y}, {0, 0, 1, -f->bmin[id].z}, {0, 0, -1, f->bmax[id].z}};
+		memcpy(cb + ncone, obox, sizeof obox);
+		vec3 cv[512];
+		int nc = lx_halfspace_vertices(cb, ncone + 6, cv, 512);
+		for (int k = 0; k < nc; k++) {
+			double w = dot4p(wrow, cv[k]);
+			znear = fmin(znear, dot4p(zrow, cv[k]) / w);
+			clipped |= w <= wmin * (1 + 1e-9);
+		}
+	}
+	if (clipped)
+		lx_shadow_warn(out, "plane %s: a caster next to the light is clipped by the map's near plane", P->name);
+	if (!(znear < zfar) || !isfinite(znear) || !isfinite(zfar))
+		return; /* no caster in front of any receiver in this map */
+	double pad = (zfar - znear) * 1e-4;
+	znear -= pad, zfar += pad;
+	vec4 z2 = comb(zrow, 2 / (zfar - znear), wrow, -(zfar + znear) / (zfar - znear));
+	m.m[2] = z2.x, m.m[6] = z2.y, m.m[10] = z2.z, m.m[14] = z2.w;
+	if (!m4_finite(&m))
+		return;
+	map->light_clip = m;
+	memcpy(map->bounds, b, sizeof b);
+	map->rendered = true;
+	/* the rays it serves, on G, for the fallback to leave out */
+	mat4 inv;
+	if (!m4_invert(&m, &inv))
+		return;
+	vec2 corners[4];
+	const double cxs[4] = {b[0], b[2], b[2], b[0]}, cys[4] = {b[1], b[1], b[3], b[3]};
+	for (int k = 0; k < 4; k++)
+		if (!lx_light_space_chart(ls, f, m4_mul_v4(&inv, (vec4){cxs[k], cys[k], 0, 1}), &corners[k]))
+			return;
+	lx_poly_hull(corners, 4, served);
+}
+
+static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+{
+	int np = atlas->count - 1;
+	out->map_count = atlas->count;
+	for (int i = 0; i < atlas->count; i++) {
+		out->maps[i] = (struct lx_shadow_map){.region = i, .rendered = false, .light_clip = m4_identity()};
+		lx_shadow_map_full(&out->maps[i]);
+		out->maps[i].plane = i < np ? i : -1;
+	}
+	struct lx_light_space ls;
+	lx_light_space_build(f, &ls);
+	if (ls.empty)
+		return; /* no shadow can fall in the view: no pass at all */
+	struct lx_poly served[PLANE_MAPS] = {{0}};
+	for (int i = 0; i < np; i++)
+		build_plane_map(f, &ls, atlas, i, i + 1 < np ? i + 1 : -1, &out->maps[i], out, &served[i]);
+	/* the fallback map: what is wanted and no plane map serves */
+	struct lx_shadow_map *fb = &out->maps[np];
+	struct lx_poly tot, rest;
+	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
+	if (lx_light_space_wanted(&ls, &tot)) {
+		struct lx_poly none = {0};
+		lx_poly_hull_of_difference(&tot, &served[0], np > 1 ? &served[1] : &none, &rest);
+		if (rest.n < 3)
+			return; /* the plane maps serve every wanted ray */
+		lx_poly_bounds(&rest, &x0, &y0, &x1, &y1);
+	}
+	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+}
+
+const struct lx_shadow_method lx_method_plane = {.name = "plane",
+	.summary = "plane-optimal maps for the first two planes (350x350 each) and a 128x128 fallback",
+	.regions = plane_regions,
+	.build = plane_build};

@@ -1,0 +1,196 @@
+#include "plane_optimal.h"
+#include <math.h>
+#include <string.h>
+
+vec4 lx_light_point(const struct lx_light *l)
+{
+	if (l->directional)
+		return (vec4){-l->direction.x, -l->direction.y, -l->direction.z, 0};
+	return (vec4){l->position.x, l->position.y, l->position.z, 1};
+}
+
+vec4 lx_plane_equation(const struct lx_plane *p)
+{
+	vec3 n = lx_plane_normal(p);
+	return (vec4){n.x, n.y, n.z, -v3_dot(n, p->corner)};
+}
+
+static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
+static double len4(vec4 a) { return sqrt(dot4(a, a)); }
+static vec4 scale4(vec4 a, double s) { return (vec4){a.x * s, a.y * s, a.z * s, a.w * s}; }
+static vec4 add4(vec4 a, vec4 b) { return (vec4){a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
+static vec4 unit4(vec4 a)
+{
+	double l = len4(a);
+	return l > 0 ? scale4(a, 1 / l) : a;
+}
+
+/* T with columns lambda_i * X_i such that sum lambda_i X_i = X_4 (the projective basis
+ * that maps e_i -> X_i and (1, 1, 1, 1) -> X_4). False when the points are not in
+ * general position. */
+static bool basis(const vec4 x[5], mat4 *t)
+{
+	double a[16], b[4] = {x[4].x, x[4].y, x[4].z, x[4].w};
+	for (int c = 0; c < 4; c++) {
+		a[0 * 4 + c] = x[c].x;
+		a[1 * 4 + c] = x[c].y;
+		a[2 * 4 + c] = x[c].z;
+		a[3 * 4 + c] = x[c].w;
+	}
+	if (!lx_solve(4, a, b, 1e-12))
+		return false;
+	double big = fmax(fmax(fabs(b[0]), fabs(b[1])), fmax(fabs(b[2]), fabs(b[3])));
+	for (int c = 0; c < 4; c++) {
+		if (!(fabs(b[c]) > 1e-9 * big)) /* X_4 lies in the span of three of the others */
+			return false;
+		t->m[c * 4 + 0] = b[c] * x[c].x;
+		t->m[c * 4 + 1] = b[c] * x[c].y;
+		t->m[c * 4 + 2] = b[c] * x[c].z;
+		t->m[c * 4 + 3] = b[c] * x[c].w;
+	}
+	return true;
+}
+
+/* Angle between M x and the target y, as homogeneous points (either sign). */
+static double residual(const mat4 *m, vec4 x, vec4 y)
+{
+	vec4 v = unit4(m4_mul_v4(m, x)), u = unit4(y);
+	double d = fabs(dot4(v, u));
+	return acos(fmin(1.0, d));
+}
+
+enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 light, vec4 plane, vec4 inside,
+						   struct lx_plane_camera *out)
+{
+	light = unit4(light);
+	/* |pi . L| is the light's distance to P (point light, unit normal); relative to the
+	 * view's extent a tiny value makes the construction singular. */
+	if (fabs(dot4(plane, light)) < 1e-9)
+		return LX_PLANE_CAMERA_LIGHT_ON_PLANE;
+	const double W = v->width, H = v->height;
+	const double cx[4] = {0, 0, W, W}, cy[4] = {0, H, H, 0};
+	vec4 p[4];
+	for (int i = 0; i < 4; i++) {
+		double nx = cx[i] / W * 2 - 1, ny = cy[i] / H * 2 - 1;
+		vec4 n = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
+		vec4 f = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+		/* the ray's point on P, homogeneous: at infinity or behind the eye is fine */
+		p[i] = add4(scale4(n, dot4(plane, f)), scale4(f, -dot4(plane, n)));
+		if (!(len4(p[i]) > 1e-12 * len4(n) * len4(f)))
+			return LX_PLANE_CAMERA_EDGE_ON;
+		p[i] = unit4(p[i]);
+		if (p[i].w < 0)
+			p[i] = scale4(p[i], -1);
+	}
+	/* p4 lifted towards the light: on the line L p4, between them when both are finite. */
+	vec4 l = light.w < 0 ? scale4(light, -1) : light;
+	vec4 lifted = unit4(add4(p[3], l));
+	vec4 X[5] = {light, p[0], p[1], p[2], lifted};
+	vec4 Y[5] = {{0, 0, 1, 0}, {cx[0], cy[0], 1, 1}, {cx[1], cy[1], 1, 1}, {cx[2], cy[2], 1, 1}, {cx[3], cy[3], -1, 1}};
+	mat4 tx, ty, txi;
+	if (!basis(X, &tx) || !basis(Y, &ty) || !m4_invert(&tx, &txi))
+		return LX_PLANE_CAMERA_SINGULAR;
+	mat4 m = m4_mul(&ty, &txi);
+	/* fix the scale by the largest element, never by one entry that may be 0 */
+	double big = 0;
+	for (int i = 0; i < 16; i++)
+		big = fmax(big, fabs(m.m[i]));
+	if (!(big > 0) || !m4_finite(&m))
+		return LX_PLANE_CAMERA_SINGULAR;
+	for (int i = 0; i < 16; i++)
+		m.m[i] /= big;
+	double r = 0;
+	for (int i = 0; i < 5; i++)
+		r = fmax(r, residual(&m, X[i], Y[i]));
+	/* the fourth corner itself must keep its window x, y too (equation 6) */
+	vec4 q4 = m4_mul_v4(&m, p[3]);
+	if (fabs(q4.w) > 1e-12 * len4(q4))
+		r = fmax(r, hypot(q4.x / q4.w - cx[3], q4.y / q4.w - cy[3]) / (W + H));
+	if (!(r < 1e-7))
+		return LX_PLANE_CAMERA_SINGULAR;
+	/* q > 0 where the map must see */
+	vec4 qi = m4_mul_v4(&m, inside);
+	if (qi.w * (inside.w < 0 ? -1 : 1) < 0)
+		for (int i = 0; i < 16; i++)
+			m.m[i] = -m.m[i];
+	/* depth increasing away from the light: compare the inside point with a point
+	 * between it and the light */
+	vec4 in = inside.w < 0 ? scale4(inside, -1) : inside;
+	vec4 nearer = add4(unit4(in), scale4(l, 0.5));
+	vec4 a = m4_mul_v4(&m, nearer), b = m4_mul_v4(&m, in);
+	if (fabs(a.w) > 0 && fabs(b.w) > 0 && a.z / a.w > b.z / b.w)
+		for (int c = 0; c < 4; c++)
+			m.m[c * 4 + 2] = -m.m[c * 4 + 2];
+	out->m = m;
+	out->residual = r;
+	return LX_PLANE_CAMERA_OK;
+}
+
+/* Clips a homogeneous polygon against -w <= x, y, z <= w (GL's clip volume). */
+static int clip_homogeneous(vec4 *poly, int n, vec4 *tmp)
+{
+	for (int k = 0; k < 6; k++) {
+		int m = 0;
+		for (int i = 0; i < n; i++) {
+			vec4 a = poly[i], b = poly[(i + 1) % n];
+			double ca[3] = {a.x, a.y, a.z}, cb[3] = {b.x, b.y, b.z};
+			double s = k & 1 ? -1 : 1;
+			double da = a.w + s * ca[k / 2], db = b.w + s * cb[k / 2];
+			if (da >= 0 && m < 32)
+				tmp[m++] = a;
+			if ((da >= 0) != (db >= 0) && m < 32)
+				tmp[m++] = add4(a, scale4(add4(b, scale4(a, -1)), da / (da - db)));
+		}
+		memcpy(poly, tmp, (size_t)m * sizeof(vec4));
+		n = m;
+	}
+	return n;
+}
+
+bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct lx_poly *window, vec3 *world,
+		      int *world_count)
+{
+	vec3 c[4] = {p->corner, v3_add(p->corner, p->edge1), v3_add(v3_add(p->corner, p->edge1), p->edge2),
+		     v3_add(p->corner, p->edge2)};
+	vec4 poly[32], tmp[32];
+	for (int i = 0; i < 4; i++)
+		poly[i] = m4_mul_point(&v->view_proj, c[i]);
+	int n = clip_homogeneous(poly, 4, tmp);
+	window->n = 0;
+	*world_count = 0;
+	vec2 pts[32];
+	for (int i = 0; i < n; i++) {
+		if (!(poly[i].w > 0))
+			continue; /* inside the clip volume w >= |z| > 0 except at degenerate corners */
+		pts[i] = (vec2){(poly[i].x / poly[i].w + 1) * 0.5 * v->width, (poly[i].y / poly[i].w + 1) * 0.5 * v->height};
+		vec4 wp = m4_mul_v4(&v->inv_view_proj, (vec4){poly[i].x / poly[i].w, poly[i].y / poly[i].w, poly[i].z / poly[i].w, 1});
+		world[(*world_count)++] = v3(wp.x / wp.w, wp.y / wp.w, wp.z / wp.w);
+	}
+	lx_poly_hull(pts, *world_count, window);
+	/* an edge-on plane covers no area on screen */
+	return window->n >= 3 && fabs(lx_poly_area(window)) > 1e-6;
+}
+
+int lx_halfspace_vertices(const vec4 *planes, int n, vec3 *out, int max_out)
+{
+	int count = 0;
+	for (int i = 0; i < n; i++)
+		for (int j = i + 1; j < n; j++)
+			for (int k = j + 1; k < n; k++) {
+				double a[9] = {planes[i].x, planes[i].y, planes[i].z, planes[j].x, planes[j].y, planes[j].z,
+					       planes[k].x, planes[k].y, planes[k].z};
+				double b[3] = {-planes[i].w, -planes[j].w, -planes[k].w};
+				if (!lx_solve(3, a, b, 1e-12))
+					continue;
+				vec3 p = v3(b[0], b[1], b[2]);
+				bool inside = v3_finite(p);
+				for (int q = 0; q < n && inside; q++) {
+					double s = fabs(planes[q].x) + fabs(planes[q].y) + fabs(planes[q].z);
+					double scale = s * (fabs(p.x) + fabs(p.y) + fabs(p.z)) + fabs(planes[q].w);
+					inside = planes[q].x * p.x + planes[q].y * p.y + planes[q].z * p.z + planes[q].w >= -1e-9 * scale;
+				}
+				if (inside && count < max_out)
+					out[count++] = p;
+			}
+	return count;
+}

@@ -1,0 +1,45 @@
+/* The plane-optimal light camera of Chong and Gortler, "A Lixel for every Pixel"
+ * (papers/000), GL-free. For a plane of interest P, a light L and the view, the light
+ * image samples P exactly where the view's pixels do: for every point of P its light
+ * image (x, y) equals its window coordinates. */
+#ifndef LX_PLANE_OPTIMAL_H
+#define LX_PLANE_OPTIMAL_H
+#include "frame.h"
+#include "polygon2d.h"
+
+enum lx_plane_camera_status {
+	LX_PLANE_CAMERA_OK,
+	LX_PLANE_CAMERA_LIGHT_ON_PLANE, /* the light lies (nearly) in P: the construction is singular */
+	LX_PLANE_CAMERA_EDGE_ON,        /* the eye lies in P: the screen corners' rays meet P in one point */
+	LX_PLANE_CAMERA_SINGULAR,       /* the 4x4 systems are singular or the residual is too large */
+};
+
+struct lx_plane_camera {
+	mat4 m;          /* world -> (x q, y q, z q, q); z: -1 at the lifted point, +1 on P */
+	double residual; /* worst angle (radians) between M X_i and its target image point */
+};
+
+/* The homogeneous light point: (position, 1), or (-direction, 0) for a directional light. */
+vec4 lx_light_point(const struct lx_light *l);
+/* Plane of interest as (n, d) with n . x + d = 0, n the unit front normal. */
+vec4 lx_plane_equation(const struct lx_plane *p);
+
+/* Solves the five point constraints (the paper's equations 1 and 7-10): L -> [0, 0, 1, 0];
+ * the points where the eye's rays through the window corners (0, 0), (0, H), (W, H) meet
+ * P keep their window x, y at depth +1; the fourth corner's point, lifted along its light
+ * ray towards the light, keeps them at depth -1. Two 4x4 systems solved with partial
+ * pivoting, then a residual check. The sign is chosen so that `inside` (a homogeneous
+ * point the map must see) gets q > 0, and depth increases away from the light. */
+enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 light, vec4 plane, vec4 inside,
+						   struct lx_plane_camera *out);
+
+/* The part of a plane's parallelogram inside the view frustum: window-coordinate
+ * polygon (counter-clockwise) and its world vertices; false when nothing is visible. */
+bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct lx_poly *window, vec3 *world,
+		      int *world_count);
+
+/* Vertices of the intersection of half-spaces a x + b y + c z + d >= 0 (bounded), by
+ * solving every triple of planes; returns the count. */
+int lx_halfspace_vertices(const vec4 *planes, int n, vec3 *out, int max_out);
+
+#endif
