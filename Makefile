@@ -30,7 +30,7 @@ SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.gls
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
-TESTS = test_linalg test_depth_rgba test_atlas test_scene test_uniform test_reference test_render
+TESTS = test_linalg test_depth_rgba test_atlas test_scene test_uniform test_plane test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan
@@ -61,7 +61,7 @@ $(BUILD):
 run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/lixel
 	@mkdir -p out
-	$(BUILD)/lixel render --method uniform --out out/default.png --measure
+	$(BUILD)/lixel render --out out/default.png --measure
 
 # Unit tests link only the pure geometry; render tests link the GL side too.
 $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) | $(BUILD)

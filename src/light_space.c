@@ -116,25 +116,31 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	(void)zmin_rec;
 }
 
+double lx_light_space_front(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X)
+{
+	if (ls->directional)
+		return X.w;
+	vec3 L = f->light.position;
+	vec4 d = {X.x - L.x * X.w, X.y - L.y * X.w, X.z - L.z * X.w, 0};
+	return -m4_mul_v4(&ls->view, d).z; /* the depth of the direction along the light's axis */
+}
+
 bool lx_light_space_chart(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X, vec2 *g)
 {
+	double front = lx_light_space_front(ls, f, X);
 	if (ls->directional) {
-		if (fabs(X.w) < 1e-300)
-			return false; /* a direction: not a ray of a directional light */
+		if (!(front > 0))
+			return false;
 		vec4 q = m4_mul_v4(&ls->view, X);
-		*g = (vec2){q.x / q.w, q.y / q.w};
+		*g = (vec2){q.x / q.w, q.y / q.w}; /* view is affine: q.w = X.w > 0 */
 		return true;
 	}
-	/* the direction from the light to X, of either kind */
 	vec3 L = f->light.position;
-	vec4 d4 = {X.x - L.x * X.w, X.y - L.y * X.w, X.z - L.z * X.w, 0};
-	if (X.w < 0)
-		d4 = (vec4){-d4.x, -d4.y, -d4.z, 0};
-	vec4 q = m4_mul_v4(&ls->view, d4);
-	double depth = -q.z, len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-	if (!(depth > 1e-12 * len))
+	vec4 q = m4_mul_v4(&ls->view, (vec4){X.x - L.x * X.w, X.y - L.y * X.w, X.z - L.z * X.w, 0});
+	double len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+	if (!(front > 1e-12 * len))
 		return false;
-	*g = (vec2){q.x / depth, q.y / depth};
+	*g = (vec2){q.x / front, q.y / front};
 	return true;
 }
 

@@ -27,9 +27,12 @@ bool lx_object_can_cast(const struct lx_frame *f, int id);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'
  * bounds (planes only where their back face is lit). */
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);
-/* The ray through homogeneous world point X (or from the light towards direction X
- * when X.w = 0 for a point light) on G; false when it does not meet G in front. */
+/* The light ray through homogeneous world point X on G. X's sign says which way the ray
+ * leaves the light: for a point light the ray runs along X.xyz - light * X.w, for a
+ * directional light X must have X.w > 0. lx_light_space_front() is the linear function
+ * whose sign says whether that ray meets G (> 0); the chart fails where it is <= 0. */
 bool lx_light_space_chart(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X, vec2 *g);
+double lx_light_space_front(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X);
 /* C_tot: the rays both receivers and casters need, as a polygon on G; false (with
  * *unbounded set) when one frustum cannot hold them without clamping. */
 bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out);

@@ -35,8 +35,9 @@ static void render_usage(FILE *f)
 		"Renders one frame of the scene with a shadow method into a PNG and prints the\n"
 		"frame's figures (median frame time over the timed frames, light-matrix set-up).\n"
 		"\n"
-		"  --method NAME        shadow method: %s (default uniform)\n"
-		"  --scene FILE         scene file (docs/scene-format.md); default: the built-in scene\n"
+		"  --method NAME        shadow method: %s (default plane)\n"
+		"  --scene NAME|FILE    built-in scene 'default' or 'table', or a scene file\n"
+		"                       (docs/scene-format.md)\n"
 		"  --config NAME        a named view/light configuration applied to the scene:\n",
 		lx_shadow_method_names());
 	for (int i = 0; i < lx_config_count; i++)
@@ -58,6 +59,9 @@ static void render_usage(FILE *f)
 		"  --json               print one JSON object on stdout instead of text\n"
 		"  --frames N           timed frames after 3 warm-up frames (default 10)\n"
 		"  --bias CODES         depth bias in 24-bit depth codes (default %g)\n"
+		"  --uniform-lixels N   side of the one-map methods' map (default 512)\n"
+		"  --plane-lixels N     side of each plane-optimal map (default 350)\n"
+		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128)\n"
 		"  --mediump            use the shaders' mediump path (11-bit depth) as boards without\n"
 		"                       fragment highp do\n"
 		"  -h, --help           this text\n"
@@ -237,7 +241,7 @@ static void print_json(const struct lx_render_report *r)
 
 static int cmd_render(int argc, char **argv)
 {
-	struct lx_render_job job = {.method = "uniform", .platform = "osmesa", .width = 1024, .height = 768,
+	struct lx_render_job job = {.method = "plane", .platform = "osmesa", .width = 1024, .height = 768,
 				    .warmup_frames = 3, .timed_frames = 10, .bias_codes = LX_DEFAULT_BIAS_CODES,
 				    .reference_threads = 2, .out_png = "lixel.png"};
 	const char *scene_file = NULL, *config = NULL;
@@ -264,7 +268,8 @@ static int cmd_render(int argc, char **argv)
 		}
 		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
 							 "--at", "--fov", "--light", "--light-dir", "--time",
-							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias"};
+							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias",
+							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels"};
 		bool known = false;
 		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
 			known |= !strcmp(a, with_value[k]);
@@ -326,11 +331,24 @@ static int cmd_render(int argc, char **argv)
 			if (!parse_double(v, &d) || d < 1 || d > 100000 || d != floor(d))
 				return bad(a, "a whole number of frames from 1 to 100000", v);
 			job.timed_frames = (int)d;
+		} else if (!strcmp(a, "--uniform-lixels") || !strcmp(a, "--plane-lixels") || !strcmp(a, "--fallback-lixels")) {
+			if (!parse_double(v, &d) || d < 1 || d > 8192 || d != floor(d))
+				return bad(a, "a whole number of lixels from 1 to 8192", v);
+			int *field = a[2] == 'u' ? &job.budgets.uniform_lixels : a[2] == 'p' ? &job.budgets.plane_lixels
+											     : &job.budgets.fallback_lixels;
+			*field = (int)d;
 		} else if (!strcmp(a, "--bias")) {
 			if (!parse_double(v, &job.bias_codes) || job.bias_codes < 0 || job.bias_codes > 16777215)
 				return bad(a, "depth codes from 0 to 16777215", v);
 		}
 	}
+	struct lx_method_options defaults = LX_METHOD_OPTIONS_DEFAULT;
+	if (!job.budgets.uniform_lixels)
+		job.budgets.uniform_lixels = defaults.uniform_lixels;
+	if (!job.budgets.plane_lixels)
+		job.budgets.plane_lixels = defaults.plane_lixels;
+	if (!job.budgets.fallback_lixels)
+		job.budgets.fallback_lixels = defaults.fallback_lixels;
 	if (have_light && have_dir) {
 		fprintf(stderr, "lixel render: --light and --light-dir: expected one of them, got both\n");
 		return 2;
@@ -339,13 +357,12 @@ static int cmd_render(int argc, char **argv)
 	    !writable_path("--atlas-out", job.atlas_png))
 		return 2;
 	char err[512];
-	if (scene_file) {
-		if (!lx_scene_load(scene_file, &job.scene, err, sizeof err)) {
-			fprintf(stderr, "lixel: %s\n", err);
-			return 2;
-		}
-	} else
+	if (!scene_file)
 		lx_scene_default(&job.scene);
+	else if (!lx_scene_builtin(scene_file, &job.scene) && !lx_scene_load(scene_file, &job.scene, err, sizeof err)) {
+		fprintf(stderr, "lixel: %s\n", err);
+		return 2;
+	}
 	if (config)
 		lx_config_apply(lx_config_find(config), &job.scene);
 	if (have_eye)

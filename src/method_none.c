@@ -1,5 +1,6 @@
 /* No shadows: the baseline every other method's frame time is compared with. */
 #include "shadow_method.h"
+#include <string.h>
 
 static int none_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
@@ -13,7 +14,7 @@ static void none_build(const struct lx_frame *f, const struct lx_atlas *atlas, s
 {
 	(void)f;
 	(void)atlas;
-	out->map_count = 0;
+	memset(out, 0, sizeof(*out));
 }
 
 const struct lx_shadow_method lx_method_none = {

@@ -232,21 +232,75 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		return;
 	map->light_clip = m;
 	memcpy(map->bounds, b, sizeof b);
+	map->lixel_scale = scale;
 	map->rendered = true;
-	/* the rays it serves, on G, for the fallback to leave out */
+
+	/* Point-line tests: the map serves only rays that meet the plane's parallelogram
+	 * (a table top's rays, not the floor's around it). Its edges, projected to window
+	 * coordinates, are lines of the light image; valid as a convex test only when the
+	 * whole parallelogram lies in front of the eye. */
+	struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
+	vec3 pc[4] = {P->corner, v3_add(P->corner, P->edge1), v3_add(v3_add(P->corner, P->edge1), P->edge2),
+		      v3_add(P->corner, P->edge2)};
+	double sp[4][3];
+	bool in_front = true;
+	for (int k = 0; k < 4; k++) {
+		vec4 cc = m4_mul_point(&v->view_proj, pc[k]);
+		in_front &= cc.w > 0;
+		/* window coordinates, then through A_l into region clip space (homogeneous) */
+		double wx = (cc.x + cc.w) * 0.5 * v->width, wy = (cc.y + cc.w) * 0.5 * v->height;
+		sp[k][0] = a.m[0] * wx + a.m[4] * wy + a.m[12] * cc.w;
+		sp[k][1] = a.m[1] * wx + a.m[5] * wy + a.m[13] * cc.w;
+		sp[k][2] = cc.w;
+	}
+	if (in_front) {
+		vec2 mid = {0, 0};
+		for (int k = 0; k < 4; k++)
+			mid.x += sp[k][0] / sp[k][2] / 4, mid.y += sp[k][1] / sp[k][2] / 4;
+		for (int k = 0; k < 4; k++) {
+			const double *p0 = sp[k], *p1 = sp[(k + 1) % 4];
+			double l0 = p0[1] * p1[2] - p0[2] * p1[1], l1 = p0[2] * p1[0] - p0[0] * p1[2],
+			       l2 = p0[0] * p1[1] - p0[1] * p1[0];
+			double norm = hypot(l0, l1);
+			if (!(norm > 0))
+				continue;
+			double sgn = l0 * mid.x + l1 * mid.y + l2 >= 0 ? 1 : -1;
+			map->edges[map->edge_count][0] = sgn * l0 / norm;
+			map->edges[map->edge_count][1] = sgn * l1 / norm;
+			map->edges[map->edge_count][2] = sgn * l2 / norm;
+			lx_poly_clip_halfplane(&served_clip, map->edges[map->edge_count][0], map->edges[map->edge_count][1],
+					       map->edges[map->edge_count][2], &served_clip);
+			map->edge_count++;
+		}
+	}
+	/* The rays it serves, on G, for the fallback to leave out. The ray through clip
+	 * (x, y) holds X = inv(M) (x, y, 0, 1), linear in (x, y, 1); only the part of the
+	 * served polygon whose rays meet G can be charted (a half-plane), the rest stays
+	 * with the fallback. */
 	mat4 inv;
 	if (!m4_invert(&m, &inv))
 		return;
-	vec2 corners[4];
-	const double cxs[4] = {b[0], b[2], b[2], b[0]}, cys[4] = {b[1], b[1], b[3], b[3]};
-	for (int k = 0; k < 4; k++)
-		if (!lx_light_space_chart(ls, f, m4_mul_v4(&inv, (vec4){cxs[k], cys[k], 0, 1}), &corners[k]))
-			return;
-	lx_poly_hull(corners, 4, served);
+	vec4 ex = {inv.m[0], inv.m[1], inv.m[2], inv.m[3]}, ey = {inv.m[4], inv.m[5], inv.m[6], inv.m[7]},
+	     e1 = {inv.m[12], inv.m[13], inv.m[14], inv.m[15]};
+	double fa = lx_light_space_front(ls, f, ex), fb = lx_light_space_front(ls, f, ey), fc = lx_light_space_front(ls, f, e1);
+	double fmargin = 1e-9 * (fabs(fa) + fabs(fb) + fabs(fc));
+	lx_poly_clip_halfplane(&served_clip, fa, fb, fc - fmargin, &served_clip);
+	vec2 corners[LX_POLY_MAX];
+	int nc = 0;
+	for (int k = 0; k < served_clip.n; k++) {
+		vec4 X = {ex.x * served_clip.v[k].x + ey.x * served_clip.v[k].y + e1.x,
+			  ex.y * served_clip.v[k].x + ey.y * served_clip.v[k].y + e1.y,
+			  ex.z * served_clip.v[k].x + ey.z * served_clip.v[k].y + e1.z,
+			  ex.w * served_clip.v[k].x + ey.w * served_clip.v[k].y + e1.w};
+		if (lx_light_space_chart(ls, f, X, &corners[nc]))
+			nc++;
+	}
+	lx_poly_hull(corners, nc, served);
 }
 
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
+	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
 	int np = atlas->count - 1;
 	out->map_count = atlas->count;
 	for (int i = 0; i < atlas->count; i++) {

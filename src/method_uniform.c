@@ -5,6 +5,7 @@
  * The geometry lives in light_space.c, shared with the plane-optimal fallback map. */
 #include "light_space.h"
 #include <math.h>
+#include <string.h>
 
 static int uniform_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
@@ -16,6 +17,7 @@ static int uniform_regions(const struct lx_scene *s, const struct lx_method_opti
 static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
 	(void)atlas;
+	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
 	struct lx_shadow_map *map = &out->maps[0];
 	out->map_count = 1;
 	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};

@@ -15,14 +15,20 @@ static int cmp_vec2(const void *pa, const void *pb)
 
 void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 {
-	vec2 p[4 * LX_POLY_MAX], h[8 * LX_POLY_MAX];
+	out->n = 0;
+	if (n <= 0)
+		return;
+	vec2 *p = malloc((size_t)n * 3 * sizeof(vec2)), *h = p + n;
+	if (!p)
+		return;
 	int m = 0;
-	for (int i = 0; i < n && m < 4 * LX_POLY_MAX; i++)
+	for (int i = 0; i < n; i++)
 		if (isfinite(pts[i].x) && isfinite(pts[i].y))
 			p[m++] = pts[i];
-	out->n = 0;
-	if (m == 0)
+	if (m == 0) {
+		free(p);
 		return;
+	}
 	qsort(p, (size_t)m, sizeof(vec2), cmp_vec2);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
@@ -37,9 +43,10 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	}
 	k = k > 1 ? k - 1 : k; /* the last point repeats the first */
 	if (k > LX_POLY_MAX)
-		k = LX_POLY_MAX;
+		k = LX_POLY_MAX; /* hulls here have a few dozen vertices at most */
 	out->n = k;
 	memcpy(out->v, h, (size_t)k * sizeof(vec2));
+	free(p);
 }
 
 void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out)
@@ -52,9 +59,14 @@ void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, doubl
 			r.v[r.n++] = p;
 		if ((dp >= 0) != (dq >= 0) && r.n < LX_POLY_MAX) {
 			double t = dp / (dp - dq); /* signs differ: dp - dq != 0 */
-			r.v[r.n++] = (vec2){p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
+			vec2 x = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
+			if (!(r.n && r.v[r.n - 1].x == x.x && r.v[r.n - 1].y == x.y))
+				r.v[r.n++] = x;
 		}
 	}
+	/* no repeated vertices: they make zero-length edges */
+	while (r.n > 1 && r.v[r.n - 1].x == r.v[0].x && r.v[r.n - 1].y == r.v[0].y)
+		r.n--;
 	*out = r;
 }
 
@@ -89,7 +101,9 @@ bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps)
 	for (int i = 0; i < p->n; i++) {
 		vec2 a = p->v[i], b = p->v[(i + 1) % p->n];
 		double len = hypot(b.x - a.x, b.y - a.y);
-		if (!(len > 0) || cross(a, b, q) / len <= eps)
+		if (!(len > 0))
+			continue; /* a repeated vertex bounds nothing */
+		if (cross(a, b, q) / len <= eps)
 			return false;
 	}
 	return true;
@@ -105,74 +119,57 @@ void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1,
 	}
 }
 
-/* Intersection points of the edges of two polygons. */
-static int edge_crossings(const struct lx_poly *a, const struct lx_poly *b, vec2 *out, int max_out)
+/* Splits a - interior(b) into convex pieces: for b's edges in turn, the part of what
+ * remains outside that edge is a piece, the part inside goes on. Pieces without area
+ * (a boundary shared with b) are dropped. Returns the count, at most max. */
+static int subtract(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *pieces, int max, double min_area)
 {
-	int n = 0;
-	for (int i = 0; i < a->n; i++)
-		for (int j = 0; j < b->n; j++) {
-			vec2 p = a->v[i], p2 = a->v[(i + 1) % a->n], q = b->v[j], q2 = b->v[(j + 1) % b->n];
-			double rx = p2.x - p.x, ry = p2.y - p.y, sx = q2.x - q.x, sy = q2.y - q.y;
-			double den = rx * sy - ry * sx;
-			if (fabs(den) < 1e-300) /* parallel edges: their end points are candidates already */
-				continue;
-			double t = ((q.x - p.x) * sy - (q.y - p.y) * sx) / den;
-			double u = ((q.x - p.x) * ry - (q.y - p.y) * rx) / den;
-			if (t >= 0 && t <= 1 && u >= 0 && u <= 1 && n < max_out)
-				out[n++] = (vec2){p.x + rx * t, p.y + ry * t};
-		}
-	return n;
-}
-
-static bool inside_or_on(const struct lx_poly *p, vec2 q, double eps)
-{
-	if (p->n < 3)
-		return false;
-	for (int e = 0; e < p->n; e++) {
-		vec2 a = p->v[e], b = p->v[(e + 1) % p->n];
-		double len = hypot(b.x - a.x, b.y - a.y);
-		if (len > 0 && cross(a, b, q) / len < -eps)
-			return false;
+	if (b->n < 3) {
+		if (max < 1)
+			return 0;
+		pieces[0] = *a;
+		return 1;
 	}
-	return true;
+	int n = 0;
+	struct lx_poly rest = *a, piece;
+	for (int i = 0; i < b->n && rest.n >= 3; i++) {
+		vec2 p = b->v[i], q = b->v[(i + 1) % b->n];
+		double nx = -(q.y - p.y), ny = q.x - p.x, c = -(nx * p.x + ny * p.y); /* inside: >= 0 */
+		if (nx == 0 && ny == 0)
+			continue;
+		lx_poly_clip_halfplane(&rest, -nx, -ny, -c, &piece);
+		if (piece.n >= 3 && fabs(lx_poly_area(&piece)) > min_area && n < max)
+			pieces[n++] = piece;
+		lx_poly_clip_halfplane(&rest, nx, ny, c, &rest);
+	}
+	return n;
 }
 
 void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b, const struct lx_poly *c,
 				struct lx_poly *out)
 {
-	/* Every vertex of closure(a - b - c) is a vertex of one of the three polygons or a
-	 * crossing of two of their edges. A candidate is such a vertex when points of
-	 * a - b - c lie right next to it: probe a tiny circle around it. The hull of the
-	 * vertices is the hull of the difference; boundaries shared by b and c leave none. */
+	/* a - b - c as convex pieces, then the hull of their vertices */
+	enum { MAX_PIECES = 256 };
 	out->n = 0;
 	if (a->n < 3)
 		return;
-	vec2 cand[4 * LX_POLY_MAX];
-	int n = 0;
-	const struct lx_poly *polys[3] = {a, b, c};
-	double x0, y0, x1, y1;
-	lx_poly_bounds(a, &x0, &y0, &x1, &y1);
-	double r = 1e-7 * (fabs(x1 - x0) + fabs(y1 - y0)), eps = r * 1e-3;
-	if (!(r > 0))
+	double min_area = 1e-12 * fabs(lx_poly_area(a));
+	struct lx_poly *first = malloc(2 * MAX_PIECES * sizeof(struct lx_poly)), *second = first + MAX_PIECES;
+	if (!first)
 		return;
-	for (int k = 0; k < 3; k++)
-		for (int i = 0; i < polys[k]->n && n < 4 * LX_POLY_MAX; i++)
-			cand[n++] = polys[k]->v[i];
-	for (int k = 0; k < 3; k++)
-		for (int l = k + 1; l < 3; l++)
-			n += edge_crossings(polys[k], polys[l], cand + n, 4 * LX_POLY_MAX - n);
-	vec2 keep[4 * LX_POLY_MAX];
-	int m = 0;
-	for (int i = 0; i < n; i++)
-		for (int d = 0; d < 24; d++) {
-			double ang = 2 * M_PI * (d + 0.37) / 24;
-			vec2 q = {cand[i].x + r * cos(ang), cand[i].y + r * sin(ang)};
-			if (lx_poly_contains(a, q, eps) && !inside_or_on(b, q, eps) && !inside_or_on(c, q, eps)) {
-				keep[m++] = cand[i];
-				break;
-			}
-		}
-	lx_poly_hull(keep, m, out);
+	int n1 = subtract(a, b, first, MAX_PIECES, min_area), n2 = 0;
+	for (int i = 0; i < n1; i++)
+		n2 += subtract(&first[i], c, second + n2, MAX_PIECES - n2, min_area);
+	vec2 *pts = malloc((size_t)n2 * LX_POLY_MAX * sizeof(vec2));
+	if (pts) {
+		int m = 0;
+		for (int i = 0; i < n2; i++)
+			for (int k = 0; k < second[i].n; k++)
+				pts[m++] = second[i].v[k];
+		lx_poly_hull(pts, m, out);
+		free(pts);
+	}
+	free(first);
 	if (out->n < 3)
 		out->n = 0;
 }

@@ -55,6 +55,44 @@ void lx_scene_default(struct lx_scene *s)
 	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
 }
 
+static void add_static_box(struct lx_scene *s, vec3 size, double x, double z, double bottom, vec3 color)
+{
+	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_BOX, .size = size, .x = x, .z = z, .low = bottom,
+							   .high = bottom, .period = 1, .phase = 0, .color = color};
+}
+
+void lx_scene_table(struct lx_scene *s)
+{
+	memset(s, 0, sizeof(*s));
+	/* the table top 0.75 m high; its 4 cm slab stops 1 mm below it, so the top is a
+	 * surface of its own and the slab casts the table's shadow */
+	add_plane(s, "table", v3(-1.2, 0.75, 0.8), v3(2.4, 0, 0), v3(0, 0, -1.6), v3(0.62, 0.45, 0.30));
+	add_plane(s, "floor", v3(-5, 0, 5), v3(10, 0, 0), v3(0, 0, -10), v3(0.80, 0.78, 0.72));
+	vec3 wood = v3(0.45, 0.32, 0.22);
+	add_static_box(s, v3(2.4, 0.04, 1.6), 0, 0, 0.709, wood);
+	for (int i = 0; i < 4; i++)
+		add_static_box(s, v3(0.08, 0.709, 0.08), i & 1 ? 1.1 : -1.1, i & 2 ? 0.7 : -0.7, 0, wood);
+	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_SPHERE, .size = v3(0.25, 0.25, 0.25), .x = -0.4,
+		.z = 0.1, .low = 0.8, .high = 1.8, .period = 1.7, .phase = 0.3, .color = v3(0.85, 0.25, 0.2)};
+	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_CONE, .size = v3(0.22, 0.5, 0.22), .x = 0.55,
+		.z = -0.25, .low = 0.8, .high = 1.6, .period = 2.3, .phase = 1.1, .color = v3(0.9, 0.7, 0.2)};
+	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_CYLINDER, .size = v3(0.3, 0.8, 0.3), .x = 2.3,
+		.z = 1.3, .low = 0.3, .high = 1.5, .period = 1.9, .phase = 2.0, .color = v3(0.3, 0.75, 0.35)};
+	s->light = (struct lx_light){.directional = false, .position = v3(2.0, 5.5, 2.5), .direction = v3(0, -1, 0)};
+	s->camera = (struct lx_camera){.eye = v3(0, 2.6, 4.2), .at = v3(0, 0.6, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
+}
+
+bool lx_scene_builtin(const char *name, struct lx_scene *s)
+{
+	if (!strcmp(name, "default"))
+		lx_scene_default(s);
+	else if (!strcmp(name, "table"))
+		lx_scene_table(s);
+	else
+		return false;
+	return true;
+}
+
 /* ---- scene file parser ---- */
 
 struct parser {

@@ -50,6 +50,11 @@ struct lx_scene {
 };
 
 void lx_scene_default(struct lx_scene *s);
+/* The table scene: a table top (a plane of interest, listed first so its map is tried
+ * first) on a slab and four legs, over the floor, with casters above and beside it. */
+void lx_scene_table(struct lx_scene *s);
+/* Fills *s with the built-in scene of that name ("default", "table"); false if none. */
+bool lx_scene_builtin(const char *name, struct lx_scene *s);
 /* Loads a scene file. On error returns false with "FILE:LINE: what was expected" in err
  * and leaves *s unspecified. */
 bool lx_scene_load(const char *path, struct lx_scene *s, char *err, size_t errlen);

@@ -21,6 +21,7 @@ struct lx_shadow_map {
 	bool rendered;
 	mat4 light_clip; /* world -> region clip space */
 	int plane;       /* the plane of interest this map is optimal for, or -1 */
+	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel) */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
 	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
 	 * of edge_count edges (a table top's polygon). The main pass uses the first map, in
@@ -50,7 +51,7 @@ struct lx_shadow_method {
 	const char *summary;
 	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. */
 	int (*regions)(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out);
-	/* Fills one map per region, in the order regions() gave them. */
+	/* Fills one map per region, in the order regions() gave them; resets *out first. */
 	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out);
 };
 

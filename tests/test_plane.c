@@ -1,0 +1,403 @@
+/* The plane-optimal method: its light camera, its sampling guarantees over a sweep of
+ * configurations, its degenerate cases, and the coverage of every shadow. GL-free. */
+#include "configs.h"
+#include "light_space.h"
+#include "metrics.h"
+#include "plane_optimal.h"
+#include "shadow_method.h"
+#include "test_util.h"
+#include <stdio.h>
+#include <string.h>
+
+struct setup {
+	struct lx_scene scene;
+	struct lx_scene_meshes meshes;
+	struct lx_frame frame;
+	struct lx_atlas atlas;
+	struct lx_shadow_result res;
+};
+
+static bool build(struct setup *s, const char *method, int w, int h, double t)
+{
+	struct lx_region_request req[LX_MAX_MAPS];
+	const struct lx_shadow_method *m = lx_shadow_method_find(method);
+	char err[256];
+	assert_true(lx_meshes_build(&s->scene, &s->meshes));
+	if (!lx_frame_setup(&s->frame, &s->scene, &s->meshes, t, w, h, err, sizeof err)) {
+		lx_meshes_free(&s->meshes);
+		return false;
+	}
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &o, req), 1, 2048, err, sizeof err));
+	m->build(&s->frame, &s->atlas, &s->res);
+	return true;
+}
+
+static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
+static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
+
+/* The five-point solve agrees with the closed form of the same camera: its x, y, w rows
+ * are R - (R L) pi^T / (pi . L), R the view's window rows (x w, y w, w). */
+static void camera_matches_closed_form(void **state)
+{
+	(void)state;
+	uint64_t seed = 11;
+	int solved = 0;
+	for (int k = 0; k < 500; k++) {
+		struct lx_scene sc;
+		lx_scene_default(&sc);
+		sc.camera.eye = v3(test_rand(&seed) * 12 - 6, 0.3 + test_rand(&seed) * 6, test_rand(&seed) * 12 - 4);
+		sc.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 2, test_rand(&seed) * 4 - 3);
+		if (k % 4 == 0) {
+			sc.light.directional = true;
+			assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.2 - test_rand(&seed), test_rand(&seed) - 0.5),
+						 &sc.light.direction));
+		} else
+			sc.light.position = v3(test_rand(&seed) * 14 - 7, 0.5 + test_rand(&seed) * 8, test_rand(&seed) * 14 - 7);
+		struct lx_scene_meshes me;
+		struct lx_frame f;
+		char err[128];
+		assert_true(lx_meshes_build(&sc, &me));
+		if (!lx_frame_setup(&f, &sc, &me, 0, 400, 300, err, sizeof err)) {
+			lx_meshes_free(&me);
+			continue;
+		}
+		for (int p = 0; p < sc.plane_count; p++) {
+			vec4 pi = lx_plane_equation(&sc.planes[p]), L = lx_light_point(&sc.light);
+			struct lx_plane_camera cam;
+			vec3 c = v3_add(sc.planes[p].corner, v3_scale(v3_add(sc.planes[p].edge1, sc.planes[p].edge2), 0.5));
+			if (lx_plane_camera_solve(&f.view, L, pi, (vec4){c.x, c.y, c.z, 1}, &cam) != LX_PLANE_CAMERA_OK)
+				continue;
+			solved++;
+			assert_true(cam.residual < 1e-7);
+			/* R: window rows of the view */
+			vec4 r[3];
+			const mat4 *vp = &f.view.view_proj;
+			vec4 r0 = row(vp, 0), r1 = row(vp, 1), r3 = row(vp, 3);
+			r[0] = (vec4){(r0.x + r3.x) * 200, (r0.y + r3.y) * 200, (r0.z + r3.z) * 200, (r0.w + r3.w) * 200};
+			r[1] = (vec4){(r1.x + r3.x) * 150, (r1.y + r3.y) * 150, (r1.z + r3.z) * 150, (r1.w + r3.w) * 150};
+			r[2] = r3;
+			double pl = dot4(pi, L);
+			double ref[12], got[12], nref = 0, ngot = 0;
+			const int rows[3] = {0, 1, 3};
+			for (int i = 0; i < 3; i++) {
+				double rl = dot4(r[i], L);
+				vec4 q = row(&cam.m, rows[i]);
+				double rv[4] = {r[i].x - rl * pi.x / pl, r[i].y - rl * pi.y / pl, r[i].z - rl * pi.z / pl,
+						r[i].w - rl * pi.w / pl};
+				double gv[4] = {q.x, q.y, q.z, q.w};
+				for (int j = 0; j < 4; j++) {
+					ref[i * 4 + j] = rv[j], got[i * 4 + j] = gv[j];
+					nref += rv[j] * rv[j], ngot += gv[j] * gv[j];
+				}
+			}
+			double sgn = 0;
+			for (int j = 0; j < 12; j++)
+				sgn += ref[j] * got[j];
+			sgn = sgn < 0 ? -1 : 1;
+			for (int j = 0; j < 12; j++)
+				assert_near(got[j] / sqrt(ngot), sgn * ref[j] / sqrt(nref), 1e-8);
+			/* and points of the plane keep their window coordinates */
+			for (int t = 0; t < 5; t++) {
+				vec3 q = v3_add(sc.planes[p].corner, v3_add(v3_scale(sc.planes[p].edge1, test_rand(&seed)),
+									     v3_scale(sc.planes[p].edge2, test_rand(&seed))));
+				vec4 a = m4_mul_point(&cam.m, q), b = m4_mul_point(vp, q);
+				if (fabs(b.w) < 1e-6 || fabs(a.w) < 1e-12)
+					continue;
+				assert_near(a.x / a.w, (b.x / b.w + 1) * 200, 1e-6 * (1 + fabs(a.x / a.w)));
+				assert_near(a.y / a.w, (b.y / b.w + 1) * 150, 1e-6 * (1 + fabs(a.y / a.w)));
+			}
+		}
+		lx_meshes_free(&me);
+	}
+	print_message("%d plane cameras solved and checked\n", solved);
+	assert_true(solved > 700);
+}
+
+/* Sampling of one setup's plane maps: aniso and lpp spread within 1.001 on the pixels
+ * each serves, lpp = scale^2 (1 where the budget suffices). Returns maps checked. */
+static int check_sampling(const struct setup *s, const char *what)
+{
+	int checked = 0;
+	for (int m = 0; m < s->res.map_count; m++) {
+		const struct lx_shadow_map *map = &s->res.maps[m];
+		if (!m4_finite(&map->light_clip))
+			fail_msg("%s: map %d has a non-finite matrix", what, m);
+		if (!map->rendered || map->plane < 0)
+			continue;
+		struct lx_plane_sampling ps;
+		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, &ps))
+			continue;
+		double k2 = map->lixel_scale * map->lixel_scale;
+		if (!(ps.aniso_max <= 1.001 && ps.lpp_max / ps.lpp_min <= 1.001 && fabs(ps.lpp_median - k2) <= 1e-3 * k2))
+			fail_msg("%s: plane %s: %ld px, aniso_max %.6f, lpp %.6f..%.6f, scale^2 %.6f", what,
+				 s->scene.planes[map->plane].name, ps.pixels, ps.aniso_max, ps.lpp_min, ps.lpp_max, k2);
+		if (map->lixel_scale == 1.0)
+			assert_true(ps.lpp_min >= 0.999 && ps.lpp_max <= 1.001);
+		checked++;
+	}
+	return checked;
+}
+
+static void sweep_is_a_similarity_on_every_plane(void **state)
+{
+	(void)state;
+	uint64_t seed = 2024;
+	int configs = 0, maps = 0, full = 0;
+	for (int k = 0; k < 320; k++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		if (k < lx_config_count)
+			lx_config_apply(&lx_configs[k], &s.scene);
+		else {
+			s.scene.camera.eye = v3(test_rand(&seed) * 12 - 6, 0.05 + test_rand(&seed) * 6, test_rand(&seed) * 12 - 4.9);
+			s.scene.camera.at = v3(test_rand(&seed) * 6 - 3, test_rand(&seed) * 2.5, test_rand(&seed) * 6 - 4);
+			s.scene.camera.fovy_deg = 30 + test_rand(&seed) * 70;
+			if (k % 5 == 0) {
+				s.scene.light.directional = true;
+				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.05 - test_rand(&seed), test_rand(&seed) - 0.5),
+							 &s.scene.light.direction));
+			} else if (k % 7 == 0)
+				s.scene.light.position = s.scene.camera.eye; /* miner's lamp */
+			else
+				s.scene.light.position = v3(test_rand(&seed) * 14 - 7, 0.2 + test_rand(&seed) * 8, test_rand(&seed) * 14 - 4.5);
+		}
+		int w = k % 3 == 0 ? 640 : 160, h = k % 3 == 0 ? 480 : 120;
+		if (!build(&s, "plane", w, h, test_rand(&seed) * 5))
+			continue;
+		char what[64];
+		snprintf(what, sizeof what, "configuration %d", k);
+		int n = check_sampling(&s, what);
+		maps += n;
+		for (int m = 0; m < s.res.map_count; m++)
+			full += s.res.maps[m].rendered && s.res.maps[m].plane >= 0 && s.res.maps[m].lixel_scale == 1.0;
+		configs++;
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("%d configurations, %d plane maps checked (%d with a lixel for every pixel)\n", configs, maps, full);
+	assert_true(configs >= 300 && maps >= 300 && full >= 100);
+}
+
+static bool in_receivers(const struct lx_frame *f, vec3 p)
+{
+	vec4 c = m4_mul_point(&f->view.view_proj, p);
+	double e = 1e-9;
+	return c.w > 0 && fabs(c.x) <= c.w && fabs(c.y) <= c.w && fabs(c.z) <= c.w && p.x >= f->scene_min.x - e &&
+	       p.x <= f->scene_max.x + e && p.y >= f->scene_min.y - e && p.y <= f->scene_max.y + e &&
+	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
+}
+
+/* Every shadow is captured: for a caster point c and a visible receiver point r beyond
+ * it on the same light ray, the map serving r holds c inside its depth range. */
+static long check_coverage(const struct setup *s, uint64_t *seed, int samples, const char *what)
+{
+	const struct lx_frame *f = &s->frame;
+	long checked = 0;
+	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
+	for (int id = s->scene.plane_count; id < f->object_count; id++)
+		for (int k = 0; k < samples; k++) {
+			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
+				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
+				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
+			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
+			if (!v3_normalize(dir, &dir))
+				continue;
+			for (int j = 1; j <= 40; j++) {
+				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
+				if (!in_receivers(f, r))
+					continue;
+				int m = lx_shadow_select_map(&s->res, r);
+				if (m < 0)
+					fail_msg("%s: receiver (%g, %g, %g) behind caster point (%g, %g, %g) is served by no map", what,
+						 r.x, r.y, r.z, c.x, c.y, c.z);
+				const mat4 *lc = &s->res.maps[m].light_clip;
+				vec4 pc = m4_mul_point(lc, c), pr = m4_mul_point(lc, r);
+				if (!(pc.w > 0 && pr.w > 0))
+					fail_msg("%s: map %d: caster or receiver behind the light image", what, m);
+				double zc = pc.z / pc.w, zr = pr.z / pr.w;
+				if (!(zc >= -1 - 1e-7 && zr <= 1 + 1e-7 && zc <= zr + 1e-9))
+					fail_msg("%s: map %d: depths caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)", what,
+						 m, zc, zr);
+				/* same ray, same lixel */
+				assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6);
+				checked++;
+			}
+		}
+	return checked;
+}
+
+static void every_shadow_is_covered(void **state)
+{
+	(void)state;
+	uint64_t seed = 99;
+	long total = 0;
+	int fallback_used = 0;
+	for (int k = 0; k < 120; k++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		if (k % 4 == 3)
+			lx_scene_table(&s.scene);
+		else
+			lx_scene_default(&s.scene);
+		if (k < lx_config_count)
+			lx_config_apply(&lx_configs[k], &s.scene);
+		else {
+			s.scene.camera.eye = v3(test_rand(&seed) * 10 - 5, 0.3 + test_rand(&seed) * 5, test_rand(&seed) * 10 - 3);
+			s.scene.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 1.5, test_rand(&seed) * 4 - 3);
+			if (k % 5 == 0) {
+				s.scene.light.directional = true;
+				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.1 - test_rand(&seed), test_rand(&seed) - 0.5),
+							 &s.scene.light.direction));
+			} else
+				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
+		}
+		if (!build(&s, "plane", 320, 240, test_rand(&seed) * 5))
+			continue;
+		bool wide = false;
+		for (int i = 0; i < s.res.warning_count; i++)
+			wide |= strstr(s.res.warnings[i], "150 degrees") != NULL;
+		char what[256];
+		snprintf(what, sizeof what, "configuration %d (eye %.2f %.2f %.2f at %.2f %.2f %.2f light %.2f %.2f %.2f%s)", k,
+			 s.scene.camera.eye.x, s.scene.camera.eye.y, s.scene.camera.eye.z, s.scene.camera.at.x,
+			 s.scene.camera.at.y, s.scene.camera.at.z,
+			 s.scene.light.directional ? s.scene.light.direction.x : s.scene.light.position.x,
+			 s.scene.light.directional ? s.scene.light.direction.y : s.scene.light.position.y,
+			 s.scene.light.directional ? s.scene.light.direction.z : s.scene.light.position.z,
+			 s.scene.light.directional ? " dir" : "");
+		if (!wide)
+			total += check_coverage(&s, &seed, 60, what);
+		fallback_used += s.res.maps[s.res.map_count - 1].rendered;
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("%ld caster/receiver pairs covered; the fallback map ran in %d configurations\n", total, fallback_used);
+	assert_true(total > 10000);
+	assert_true(fallback_used > 0);
+}
+
+struct degenerate {
+	const char *what;
+	vec3 eye, at;
+	int light; /* 0 point at pos, 1 directional along pos, 2 at the eye */
+	vec3 pos;
+	const char *warning; /* a fragment expected among the warnings, or NULL */
+};
+
+/* Item 7 of the plane-optimal issue: every singular or degenerate configuration gives
+ * finite matrices, a similarity where a plane map runs, and the documented warning. */
+static void degenerate_configurations(void **state)
+{
+	(void)state;
+	static const struct degenerate cases[] = {
+		{"light on the floor", {0, 2, 6}, {0, 0.8, 0}, 0, {1, 0, 1}, "plane floor: the light is within"},
+		{"light 1 mm above the floor", {0, 2, 6}, {0, 0.8, 0}, 0, {1, 0.001, 1}, "plane floor: the light is within"},
+		{"light on the wall", {0, 2, 6}, {0, 0.8, 0}, 0, {0.5, 3, -5}, "plane wall: the light is within"},
+		{"light behind the wall", {0, 2, 6}, {0, 0.8, 0}, 0, {0.5, 3, -6}, NULL},
+		{"horizon in view", {0, 1, 4.5}, {0, 1, -5}, 0, {2.5, 6, 3}, NULL},
+		{"looking up: two corner rays miss the floor", {0, 0.6, 4.5}, {0, 2.5, -5}, 0, {2.5, 6, 3}, NULL},
+		{"floor seen edge-on", {0, 0, 6}, {0, 0, -5}, 0, {2.5, 6, 3}, "plane floor is seen edge-on"},
+		{"wall seen edge-on", {-3, 2, -5}, {3, 1, -5}, 0, {2.5, 6, 3}, "plane wall is seen edge-on"},
+		{"miner's lamp", {0.5, 2.2, 5}, {0, 0.5, -1}, 2, {0, 0, 0}, NULL},
+		{"directional light", {0, 2, 6}, {0, 0.8, 0}, 1, {-0.4, -1, -0.3}, NULL},
+		{"grazing directional light", {0, 2, 6}, {0, 0.8, 0}, 1, {1, -0.0001, 0}, "plane floor: the light grazes"},
+		{"camera 2 cm above the floor", {0.3, 0.02, 2}, {0, 0.01, -3}, 0, {2.5, 6, 3}, NULL},
+		{"camera 1 cm from the wall", {0.2, 1.5, -4.99}, {0.2, 1.4, -5}, 0, {2.5, 6, 3}, NULL},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		s.scene.camera.eye = cases[i].eye;
+		s.scene.camera.at = cases[i].at;
+		if (cases[i].light == 1) {
+			s.scene.light.directional = true;
+			assert_true(v3_normalize(cases[i].pos, &s.scene.light.direction));
+		} else
+			s.scene.light.position = cases[i].light == 2 ? cases[i].eye : cases[i].pos;
+		assert_true(build(&s, "plane", 320, 240, 0.4));
+		check_sampling(&s, cases[i].what);
+		char ws[512] = "";
+		for (int k = 0; k < s.res.warning_count; k++)
+			snprintf(ws + strlen(ws), sizeof ws - strlen(ws), "%s%s", k ? "; " : "", s.res.warnings[k]);
+		print_message("%-44s maps %d%d%d  %s\n", cases[i].what, s.res.maps[0].rendered, s.res.maps[1].rendered,
+			      s.res.maps[2].rendered, ws[0] ? ws : "no warning");
+		if (cases[i].warning && !strstr(ws, cases[i].warning))
+			fail_msg("%s: expected a warning with \"%s\", got \"%s\"", cases[i].what, cases[i].warning, ws);
+		uint64_t seed = i + 1;
+		if (!strstr(ws, "150 degrees"))
+			check_coverage(&s, &seed, 40, cases[i].what);
+		lx_meshes_free(&s.meshes);
+	}
+}
+
+/* A frame whose floor map is skipped leaves nothing of the previous frame's matrix. */
+static void no_stale_matrix(void **state)
+{
+	(void)state;
+	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_default(&s.scene);
+	assert_true(build(&s, "plane", 320, 240, 0));
+	assert_true(s.res.maps[0].rendered);
+	lx_meshes_free(&s.meshes);
+	s.scene.light.position = v3(1, 0, 1); /* on the floor */
+	assert_true(build(&s, "plane", 320, 240, 0));
+	assert_false(s.res.maps[0].rendered);
+	mat4 id = m4_identity();
+	assert_memory_equal(&s.res.maps[0].light_clip, &id, sizeof id);
+	lx_meshes_free(&s.meshes);
+}
+
+/* A plane not in view gets no pass; a view without shadows gets none at all. */
+static void only_what_the_scene_requires(void **state)
+{
+	(void)state;
+	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_default(&s.scene);
+	s.scene.camera.eye = v3(0, 1.5, 4);
+	s.scene.camera.at = v3(0, 0, 3); /* looking down at the floor: the wall is out of view */
+	assert_true(build(&s, "plane", 320, 240, 0));
+	struct lx_poly win;
+	vec3 world[32];
+	int nw;
+	assert_false(lx_plane_visible(&s.frame.view, &s.scene.planes[1], &win, world, &nw));
+	assert_false(s.res.maps[1].rendered);
+	lx_meshes_free(&s.meshes);
+	s.scene.camera.at = v3(0, 6, 20); /* looking away from the scene */
+	s.scene.camera.eye = v3(0, 6, 10);
+	assert_true(build(&s, "plane", 320, 240, 0));
+	for (int m = 0; m < s.res.map_count; m++)
+		assert_false(s.res.maps[m].rendered);
+	lx_meshes_free(&s.meshes);
+}
+
+static void polygon_difference(void **state)
+{
+	(void)state;
+	struct lx_poly sq = {4, {{0, 0}, {2, 0}, {2, 2}, {0, 2}}}, left = {4, {{-1, -1}, {1, -1}, {1, 3}, {-1, 3}}},
+		       right = {4, {{1, -1}, {3, -1}, {3, 3}, {1, 3}}}, none = {0}, out;
+	lx_poly_hull_of_difference(&sq, &left, &right, &out);
+	assert_int_equal(out.n, 0); /* the halves cover the square: only their shared edge remains */
+	lx_poly_hull_of_difference(&sq, &left, &none, &out);
+	assert_near(fabs(lx_poly_area(&out)), 2, 1e-9);
+	struct lx_poly hole = {4, {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}}};
+	lx_poly_hull_of_difference(&sq, &hole, &none, &out);
+	assert_near(fabs(lx_poly_area(&out)), 4, 1e-9); /* a hole does not shrink the hull */
+	lx_poly_intersect(&sq, &hole, &out);
+	assert_near(fabs(lx_poly_area(&out)), 1, 1e-12);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(camera_matches_closed_form),
+		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),
+		cmocka_unit_test(every_shadow_is_covered),
+		cmocka_unit_test(degenerate_configurations),
+		cmocka_unit_test(no_stale_matrix),
+		cmocka_unit_test(only_what_the_scene_requires),
+		cmocka_unit_test(polygon_difference),
+	};
+	return cmocka_run_group_tests_name("plane", tests, NULL, NULL);
+}
