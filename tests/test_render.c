@@ -2,6 +2,7 @@
 #include "configs.h"
 #include "depth_rgba.h"
 #include "gl_program.h"
+#include "metrics.h"
 #include "shaders.h"
 #include "platform.h"
 #include "render_job.h"
@@ -14,7 +15,7 @@
 static const char *const platforms[] = {"osmesa", "egl"};
 enum { W = 320, H = 240 };
 
-static void run_path(const char *platform, const char *method, struct lx_scene *scene, bool mediump,
+static void run_path(const char *platform, const char *method, const struct lx_scene *scene, bool mediump,
 		     struct lx_render_report *rep)
 {
 	struct lx_render_job job = {.method = method, .platform = platform, .scene = *scene, .width = W, .height = H,
@@ -27,7 +28,7 @@ static void run_path(const char *platform, const char *method, struct lx_scene *
 		fail_msg("%s/%s: %s", platform, method, err);
 }
 
-static void run(const char *platform, const char *method, struct lx_scene *scene, struct lx_render_report *rep)
+static void run(const char *platform, const char *method, const struct lx_scene *scene, struct lx_render_report *rep)
 {
 	run_path(platform, method, scene, false, rep);
 }
@@ -72,18 +73,35 @@ static void edge_distance(const struct lx_render_report *r, uint8_t *dist, int c
  * lixel-centre rounding). No mismatch far from an edge means no acne, no leaks and no
  * clipped caster. In total they stay under 0.5% of the compared pixels (0.16% at
  * worst measured at this size, in the configuration facing the light). */
-static void check_against_reference(const char *platform, const char *config, bool mediump, uint8_t *dist)
+/* The largest number of pixels one lixel spans on any plane pixel, whichever map serves it. */
+static double worst_m(const struct lx_scene *scene, const struct lx_render_report *r)
 {
-	struct lx_scene scene;
-	lx_scene_default(&scene);
-	lx_config_apply(lx_config_find(config), &scene);
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[128];
+	assert_true(lx_meshes_build(scene, &m));
+	assert_true(lx_frame_setup(&f, scene, &m, 0.4, W, H, err, sizeof err));
+	struct lx_shadow_result any = r->result;
+	for (int i = 0; i < any.map_count; i++)
+		any.maps[i].plane = -1; /* count every pixel with the map that serves it */
+	double worst = 1;
+	for (int p = 0; p < scene->plane_count; p++) {
+		struct lx_plane_sampling ps;
+		if (lx_plane_sampling(&f, &r->atlas, &any, p, r->ref_object, &ps))
+			worst = fmax(worst, ps.m_max);
+	}
+	lx_meshes_free(&m);
+	return worst;
+}
+
+static double check_against_reference(const char *platform, const char *method, const struct lx_scene *scene,
+				      const char *config, bool mediump, uint8_t *dist, double max_pct)
+{
 	struct lx_render_report r;
-	run_path(platform, "uniform", &scene, mediump, &r);
-	assert_true(m4_finite(&r.result.maps[0].light_clip));
-	double m_max = 1;
-	for (int k = 0; k < r.plane_count; k++)
-		if (r.planes[k].present)
-			m_max = fmax(m_max, r.planes[k].s.m_max);
+	run_path(platform, method, scene, mediump, &r);
+	for (int k = 0; k < r.result.map_count; k++)
+		assert_true(m4_finite(&r.result.maps[k].light_clip));
+	double m_max = worst_m(scene, &r);
 	int reach = (int)ceil(m_max) + 2;
 	if (reach > 250)
 		reach = 250;
@@ -96,15 +114,25 @@ static void check_against_reference(const char *platform, const char *config, bo
 			worst = dist[i] > worst ? dist[i] : worst;
 			far += dist[i] > reach;
 		}
-	print_message("%-6s %-7s %-12s mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
+	print_message("%-6s %-7s %-7s %-12s mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
 		      "worst distance to an edge %d px (allowed %d); %ld beyond\n",
-		      platform, mediump ? "mediump" : "highp", config, r.mismatch.mismatch_pct, r.mismatch.false_shadow_pct,
-		      r.mismatch.missing_shadow_pct, r.mismatch.compared, m_max, worst, reach, far);
+		      platform, method, mediump ? "mediump" : "highp", config, r.mismatch.mismatch_pct,
+		      r.mismatch.false_shadow_pct, r.mismatch.missing_shadow_pct, r.mismatch.compared, m_max, worst, reach, far);
 	assert_int_equal(n, r.mismatch.false_shadow + r.mismatch.missing_shadow);
 	assert_true(r.mismatch.compared > W * H / 4);
 	assert_int_equal(far, 0);
-	assert_true(r.mismatch.mismatch_pct < 0.5);
+	assert_true(r.mismatch.mismatch_pct < max_pct);
+	double pct = r.mismatch.mismatch_pct;
 	lx_render_report_free(&r);
+	return pct;
+}
+
+static double check_config(const char *platform, const char *method, const char *config, bool mediump, uint8_t *dist)
+{
+	struct lx_scene scene;
+	lx_scene_default(&scene);
+	lx_config_apply(lx_config_find(config), &scene);
+	return check_against_reference(platform, method, &scene, config, mediump, dist, 0.5);
 }
 
 static void uniform_matches_reference(void **state)
@@ -115,7 +143,66 @@ static void uniform_matches_reference(void **state)
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
 		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			check_against_reference(platforms[p], configs[c], false, dist);
+			check_config(platforms[p], "uniform", configs[c], false, dist);
+	free(dist);
+}
+
+/* The plane-optimal method under the same bounds, on every configuration and the table
+ * scene; and where the paper says it wins (long shadows, the light facing the camera,
+ * a light near a plane, the camera low over the floor) it must beat uniform. At this
+ * size every plane map has a lixel for every pixel. */
+static void plane_matches_reference_and_wins(void **state)
+{
+	(void)state;
+	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
+					      "floor-close", "horizon", "near-wall"};
+	static const char *const wins[] = {"low", "facing", "near-wall", "floor-close"};
+	uint8_t *dist = malloc((size_t)W * H);
+	for (size_t p = 0; p < 2; p++) {
+		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
+			check_config(platforms[p], "plane", configs[c], false, dist);
+		struct lx_scene table;
+		lx_scene_table(&table);
+		check_against_reference(platforms[p], "plane", &table, "table", false, dist, 0.5);
+		for (size_t c = 0; c < sizeof wins / sizeof wins[0]; c++) {
+			double plane = check_config(platforms[p], "plane", wins[c], false, dist);
+			double uniform = check_config(platforms[p], "uniform", wins[c], false, dist);
+			if (!(plane < uniform))
+				fail_msg("%s %s: plane-optimal mismatch %.4f%% is not below uniform's %.4f%%", platforms[p], wins[c],
+					 plane, uniform);
+		}
+	}
+	free(dist);
+}
+
+/* The paper's known bad case: the camera close to the (optimised) floor, looking at
+ * shadows on a plane that is not optimised (a side wall, the scene's third plane, which
+ * only the 128x128 fallback map serves). Measured and reported; asserted only that the
+ * fallback map serves it and every mismatch stays within the edge bound. */
+static void paper_bad_case_is_measured(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_plane *side = &s.planes[s.plane_count++];
+	*side = (struct lx_plane){.name = "side", .corner = {5, 0, 5}, .edge1 = {0, 5, 0}, .edge2 = {0, 0, -10},
+				  .color = {0.7, 0.8, 0.7}};
+	s.camera.eye = v3(-0.5, 0.12, 2.5);
+	s.camera.at = v3(5, 1.2, -1.5);
+	s.light.position = v3(-2.5, 2.6, 1.5);
+	uint8_t *dist = malloc((size_t)W * H);
+	for (size_t p = 0; p < 2; p++) {
+		/* no total bound here beyond the edge rule: a fallback lixel spans ~20 pixels */
+		double plane = check_against_reference(platforms[p], "plane", &s, "bad-case", false, dist, 100);
+		double uniform = check_against_reference(platforms[p], "uniform", &s, "bad-case", false, dist, 100);
+		struct lx_render_report r;
+		run(platforms[p], "plane", &s, &r);
+		print_message("%s: paper's bad case: plane-optimal %.4f%% against uniform %.4f%%; side wall: %ld px, "
+			      "m_max %.2f (fallback map)\n",
+			      platforms[p], plane, uniform, r.planes[2].s.pixels, r.planes[2].s.m_max);
+		assert_true(r.planes[2].present && r.result.maps[2].rendered);
+		lx_render_report_free(&r);
+	}
 	free(dist);
 }
 
@@ -129,7 +216,7 @@ static void mediump_path_matches_reference(void **state)
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
 		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			check_against_reference(platforms[p], configs[c], true, dist);
+			check_config(platforms[p], "uniform", configs[c], true, dist);
 	free(dist);
 }
 
@@ -304,6 +391,8 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(uniform_matches_reference),
 		cmocka_unit_test(mediump_path_matches_reference),
+		cmocka_unit_test(plane_matches_reference_and_wins),
+		cmocka_unit_test(paper_bad_case_is_measured),
 		cmocka_unit_test(none_shadows_nothing),
 		cmocka_unit_test(platforms_agree),
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
