@@ -25,24 +25,19 @@ varying vec3 v_normal;
 varying vec3 v_face_normal;
 
 #if LX_MAPS > 0
-// 1.0 when map i serves the point and a caster is nearer the light; 0.0 when lit;
-// -1.0 when the map does not serve the point.
-float lookup(vec4 s, int i)
+// Whether a map serves the point: in front of its light, inside its bounds and its
+// edges. Called with constant indices only: indexing uniform arrays with a variable is
+// slow or unsupported on small GPUs.
+bool serves(vec3 p, float w, vec4 region, vec3 e0, vec3 e1, vec3 e2, vec3 e3)
 {
-	if (s.w <= 0.0)
-		return -1.0;
-	vec3 p = s.xyz / s.w;
-	vec4 region = u_region[i];
-	if (p.x < region.x || p.y < region.y || p.x >= region.z || p.y >= region.w)
-		return -1.0;
-	for (int k = 0; k < 4; k++) {
-		vec3 e = u_edges[i * 4 + k];
-		if (e.x * p.x + e.y * p.y + e.z < 0.0)
-			return -1.0;
-	}
-	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
-	return lx_depth_code(p.z) > stored + u_bias ? 1.0 : 0.0;
+	vec3 q = vec3(p.xy, 1.0);
+	return w > 0.0 && p.x >= region.x && p.y >= region.y && p.x < region.z && p.y < region.w &&
+	       dot(e0, q) >= 0.0 && dot(e1, q) >= 0.0 && dot(e2, q) >= 0.0 && dot(e3, q) >= 0.0;
 }
+// Later maps first, so that the first map that serves the point wins; then one fetch.
+#define PICK(i) { vec3 p = v_shadow[i].xyz / v_shadow[i].w; \
+	if (serves(p, v_shadow[i].w, u_region[i], u_edges[4 * i], u_edges[4 * i + 1], u_edges[4 * i + 2], u_edges[4 * i + 3])) { \
+		pick = p; found = true; } }
 #endif
 
 void main()
@@ -53,13 +48,21 @@ void main()
 	if (dot(v_face_normal, to_light) <= 0.0) {
 		shadowed = 1.0; // faces away from the light
 	} else {
-		// the first map that holds the point decides
-		for (int i = 0; i < LX_MAPS; i++) {
-			float r = lookup(v_shadow[i], i);
-			if (r >= 0.0) {
-				shadowed = r;
-				break;
-			}
+		vec3 pick = vec3(0.0);
+		bool found = false;
+#if LX_MAPS > 3
+		PICK(3)
+#endif
+#if LX_MAPS > 2
+		PICK(2)
+#endif
+#if LX_MAPS > 1
+		PICK(1)
+#endif
+		PICK(0)
+		if (found) {
+			float stored = lx_decode_code(texture2D(u_atlas, pick.xy));
+			shadowed = lx_depth_code(pick.z) > stored + u_bias ? 1.0 : 0.0;
 		}
 	}
 #endif
