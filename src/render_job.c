@@ -102,8 +102,10 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	struct lx_region_request req[LX_MAX_MAPS];
 	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
 	int nreq = method->regions(&job->scene, &opt, req);
-	if (!lx_atlas_layout(&rep->atlas, req, nreq, 1, rep->caps.max_texture_size, err, errlen))
+	if (!lx_atlas_layout(&rep->atlas, req, nreq, 1, rep->caps.max_texture_size, err, errlen)) {
+		status = 2; /* budgets this GL cannot hold: the input asks too much */
 		goto out;
+	}
 	struct lx_renderer_desc rd = {.scene = &job->scene, .meshes = &meshes, .atlas = &rep->atlas, .caps = &rep->caps,
 				      .map_count = nreq, .width = job->width, .height = job->height,
 				      .force_mediump = job->force_mediump, .bias_codes = job->bias_codes};

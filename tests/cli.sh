@@ -26,7 +26,8 @@ expect_bad() {
 
 "$lixel" --help >"$tmp/help" 2>&1 && grep -q "render" "$tmp/help" && ok || no "lixel --help"
 "$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
-for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json; do
+for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json \
+    --plane-lixels --fallback-lixels --uniform-lixels; do
   grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
 done
 
@@ -72,6 +73,25 @@ for platform in osmesa egl; do
     no "$platform render failed: $(cat "$tmp/stderr")"
   fi
 done
+
+# plane-optimal is the default: floor, wall and fallback maps with their budgets
+if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr"; then
+  for key in '"method": "plane"' '"name": "floor", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' \
+      '"name": "wall", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' '"name": "fallback", "x": [0-9]*, "y": [0-9]*, "w": 128, "h": 128' \
+      '"lixels": 261384' '"lpp_spread": 1[,}]' '"aniso_max": 1[,}]'; do
+    grep -q "$key" "$tmp/json" && ok || no "plane JSON lacks $key: $(cat "$tmp/json")"
+  done
+  grep -qiE 'nan|inf' "$tmp/json" && no "plane JSON holds NaN or Infinity" || ok
+else
+  no "default render failed: $(cat "$tmp/stderr")"
+fi
+"$lixel" render --scene table --plane-lixels 200 --fallback-lixels 64 --json --size 96x64 --frames 1 --out "$tmp/t.png" >"$tmp/json" 2>&1 &&
+  grep -q '"name": "table", "x": [0-9]*, "y": [0-9]*, "w": 200, "h": 200' "$tmp/json" && grep -q '"lixels": 84096' "$tmp/json" && ok ||
+  no "table scene with budgets: $(cat "$tmp/json")"
+expect_bad "zero budget" render --plane-lixels 0 $out
+expect_bad "huge budget" render --uniform-lixels 100000 $out
+expect_bad "atlas too big for the GL" render --plane-lixels 8192 $out
+grep -q "exceeds the GL maximum texture size\|do not fit" "$tmp/stderr" && ok || no "atlas error: $(cat "$tmp/stderr")"
 
 # the scene file of the built-in scene and the text output
 if "$lixel" render --scene tests/data/default.scene --config low --size 64x64 --frames 1 --out "$tmp/s.png" >"$tmp/text" 2>&1; then
