@@ -53,7 +53,7 @@ static void render_usage(FILE *f)
 		"  --platform NAME      GL platform: %s (default osmesa)\n"
 		"  --out FILE.png       the shaded image (default lixel.png)\n"
 		"  --decision-out FILE.png  the per-pixel shadow decision: shadowed red, lit tinted by object\n"
-		"  --atlas-out FILE.png the shadow atlas, depth as grey (near dark, far and guards white)\n"
+		"  --atlas-out FILE.png the shadow atlas: depth as grey (near dark, far white), guard bands red\n"
 		"  --measure            compare with the exact reference ray caster and compute the\n"
 		"                       sampling figures of each plane of interest\n"
 		"  --json               print one JSON object on stdout instead of text\n"

@@ -42,7 +42,7 @@ static void decision_colors(const int16_t *object, const uint8_t *shadow, long n
 	}
 }
 
-/* The atlas as a picture: depth codes as grey levels, far (and the guard bands) white. */
+/* The atlas as a picture: depth codes as grey levels (far white), guard bands red. */
 static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, const char *path, char *err, size_t errlen)
 {
 	size_t n = (size_t)atlas->width * atlas->height;
@@ -56,6 +56,15 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 		uint8_t g = (uint8_t)(lx_depth_decode_code(tex + i * 4) >> 16);
 		tex[i * 4] = tex[i * 4 + 1] = tex[i * 4 + 2] = g;
 		tex[i * 4 + 3] = 255;
+		/* outside every region (the guard bands): red, to show the layout */
+		int x = (int)(i % (size_t)atlas->width), y = (int)(i / (size_t)atlas->width);
+		bool inside = false;
+		for (int k = 0; k < atlas->count; k++) {
+			const struct lx_region *g2 = &atlas->regions[k];
+			inside |= x >= g2->x && x < g2->x + g2->w && y >= g2->y && y < g2->y + g2->h;
+		}
+		if (!inside)
+			tex[i * 4] = 200, tex[i * 4 + 1] = 40, tex[i * 4 + 2] = 40;
 	}
 	bool ok = lx_png_write(path, tex, atlas->width, atlas->height, err, errlen);
 	free(tex);
