@@ -48,26 +48,40 @@ static void default_scene_is_the_specified_one(void **state)
 	}
 }
 
-static void scene_file_matches_the_built_in_scene(void **state)
+static void same_scene(const struct lx_scene *a, const struct lx_scene *b)
+{
+	assert_int_equal(a->plane_count, b->plane_count);
+	assert_int_equal(a->caster_count, b->caster_count);
+	assert_memory_equal(a->planes, b->planes, sizeof a->planes);
+	for (int i = 0; i < a->caster_count; i++) {
+		assert_int_equal(a->casters[i].shape, b->casters[i].shape);
+		assert_memory_equal(&a->casters[i].size, &b->casters[i].size, sizeof(vec3));
+		assert_near(a->casters[i].x, b->casters[i].x, 0);
+		assert_near(a->casters[i].z, b->casters[i].z, 0);
+		assert_near(a->casters[i].low, b->casters[i].low, 0);
+		assert_near(a->casters[i].high, b->casters[i].high, 0);
+		assert_near(a->casters[i].period, b->casters[i].period, 0);
+		assert_near(a->casters[i].phase, b->casters[i].phase, 0);
+	}
+	assert_memory_equal(&a->light, &b->light, sizeof a->light);
+	assert_memory_equal(&a->camera, &b->camera, sizeof a->camera);
+}
+
+static void scene_files_match_the_built_in_scenes(void **state)
 {
 	(void)state;
-	struct lx_scene a, b;
-	char err[256];
-	lx_scene_default(&a);
-	if (!lx_scene_load(LX_TEST_DATA "/default.scene", &b, err, sizeof err))
-		fail_msg("%s", err);
-	assert_int_equal(a.plane_count, b.plane_count);
-	assert_int_equal(a.caster_count, b.caster_count);
-	assert_memory_equal(a.planes, b.planes, sizeof a.planes);
-	for (int i = 0; i < a.caster_count; i++) {
-		assert_int_equal(a.casters[i].shape, b.casters[i].shape);
-		assert_memory_equal(&a.casters[i].size, &b.casters[i].size, sizeof(vec3));
-		assert_near(a.casters[i].x, b.casters[i].x, 0);
-		assert_near(a.casters[i].period, b.casters[i].period, 0);
-		assert_near(a.casters[i].phase, b.casters[i].phase, 0);
+	static const char *const names[] = {"default", "table"};
+	for (int k = 0; k < 2; k++) {
+		struct lx_scene a, b;
+		char err[256], path[256];
+		assert_true(lx_scene_builtin(names[k], &a));
+		snprintf(path, sizeof path, "%s/%s.scene", LX_TEST_DATA, names[k]);
+		if (!lx_scene_load(path, &b, err, sizeof err))
+			fail_msg("%s", err);
+		same_scene(&a, &b);
 	}
-	assert_memory_equal(&a.light, &b.light, sizeof a.light);
-	assert_memory_equal(&a.camera, &b.camera, sizeof a.camera);
+	struct lx_scene c;
+	assert_false(lx_scene_builtin("kitchen", &c));
 }
 
 struct bad_case {
@@ -174,7 +188,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(default_scene_is_the_specified_one),
-		cmocka_unit_test(scene_file_matches_the_built_in_scene),
+		cmocka_unit_test(scene_files_match_the_built_in_scenes),
 		cmocka_unit_test(malformed_files_name_the_line_and_what_was_expected),
 		cmocka_unit_test(missing_and_binary_files),
 		cmocka_unit_test(directional_light_and_defaults),
