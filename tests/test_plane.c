@@ -6,6 +6,7 @@
 #include "plane_optimal.h"
 #include "shadow_method.h"
 #include "test_util.h"
+#include "shadow_coverage.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -179,53 +180,6 @@ static void sweep_is_a_similarity_on_every_plane(void **state)
 	assert_true(configs >= 300 && maps >= 300 && full >= 100);
 }
 
-static bool in_receivers(const struct lx_frame *f, vec3 p)
-{
-	vec4 c = m4_mul_point(&f->view.view_proj, p);
-	double e = 1e-9;
-	return c.w > 0 && fabs(c.x) <= c.w && fabs(c.y) <= c.w && fabs(c.z) <= c.w && p.x >= f->scene_min.x - e &&
-	       p.x <= f->scene_max.x + e && p.y >= f->scene_min.y - e && p.y <= f->scene_max.y + e &&
-	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
-}
-
-/* Every shadow is captured: for a caster point c and a visible receiver point r beyond
- * it on the same light ray, the map serving r holds c inside its depth range. */
-static long check_coverage(const struct setup *s, uint64_t *seed, int samples, const char *what)
-{
-	const struct lx_frame *f = &s->frame;
-	long checked = 0;
-	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
-	for (int id = s->scene.plane_count; id < f->object_count; id++)
-		for (int k = 0; k < samples; k++) {
-			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
-				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
-				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
-			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
-			if (!v3_normalize(dir, &dir))
-				continue;
-			for (int j = 1; j <= 40; j++) {
-				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
-				if (!in_receivers(f, r))
-					continue;
-				int m = lx_shadow_select_map(&s->res, r);
-				if (m < 0)
-					fail_msg("%s: receiver (%g, %g, %g) behind caster point (%g, %g, %g) is served by no map", what,
-						 r.x, r.y, r.z, c.x, c.y, c.z);
-				const mat4 *lc = &s->res.maps[m].light_clip;
-				vec4 pc = m4_mul_point(lc, c), pr = m4_mul_point(lc, r);
-				if (!(pc.w > 0 && pr.w > 0))
-					fail_msg("%s: map %d: caster or receiver behind the light image", what, m);
-				double zc = pc.z / pc.w, zr = pr.z / pr.w;
-				if (!(zc >= -1 - 1e-7 && zr <= 1 + 1e-7 && zc <= zr + 1e-9))
-					fail_msg("%s: map %d: depths caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)", what,
-						 m, zc, zr);
-				/* same ray, same lixel */
-				assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6);
-				checked++;
-			}
-		}
-	return checked;
-}
 
 static void every_shadow_is_covered(void **state)
 {
@@ -266,7 +220,7 @@ static void every_shadow_is_covered(void **state)
 			 s.scene.light.directional ? s.scene.light.direction.z : s.scene.light.position.z,
 			 s.scene.light.directional ? " dir" : "");
 		if (!wide)
-			total += check_coverage(&s, &seed, 60, what);
+			total += check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 60, what);
 		fallback_used += s.res.maps[s.res.map_count - 1].rendered;
 		lx_meshes_free(&s.meshes);
 	}
@@ -325,7 +279,7 @@ static void degenerate_configurations(void **state)
 			fail_msg("%s: expected a warning with \"%s\", got \"%s\"", cases[i].what, cases[i].warning, ws);
 		uint64_t seed = i + 1;
 		if (!strstr(ws, "150 degrees"))
-			check_coverage(&s, &seed, 40, cases[i].what);
+			check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, cases[i].what);
 		lx_meshes_free(&s.meshes);
 	}
 }

@@ -1,6 +1,7 @@
 #include "configs.h"
 #include "shadow_method.h"
 #include "test_util.h"
+#include "shadow_coverage.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -26,53 +27,6 @@ static void build(struct setup *s, const char *method)
 	m->build(&s->frame, &s->atlas, &s->res);
 }
 
-static bool in_receivers(const struct lx_frame *f, vec3 p)
-{
-	vec4 c = m4_mul_point(&f->view.view_proj, p);
-	double e = 1e-9;
-	return c.w > 0 && fabs(c.x) <= c.w && fabs(c.y) <= c.w && fabs(c.z) <= c.w && p.x >= f->scene_min.x - e &&
-	       p.x <= f->scene_max.x + e && p.y >= f->scene_min.y - e && p.y <= f->scene_max.y + e &&
-	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
-}
-
-/* Every shadow that can fall on a receiver is captured: for caster points c and
- * receiver points r on the same light ray beyond c, c lands inside the map's x, y
- * and depth range, and r within its depth range. Returns the number of pairs checked. */
-static long check_coverage(const struct setup *s, uint64_t *seed, int samples)
-{
-	const struct lx_frame *f = &s->frame;
-	const struct lx_shadow_map *map = &s->res.maps[0];
-	long checked = 0;
-	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
-	for (int id = s->scene.plane_count; id < f->object_count; id++)
-		for (int k = 0; k < samples; k++) {
-			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
-				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
-				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
-			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
-			if (!v3_normalize(dir, &dir))
-				continue;
-			for (int j = 1; j <= 40; j++) {
-				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
-				if (!in_receivers(f, r))
-					continue;
-				if (!map->rendered)
-					fail_msg("a caster point can shadow a visible receiver but the map is not rendered");
-				vec4 pc = m4_mul_point(&map->light_clip, c), pr = m4_mul_point(&map->light_clip, r);
-				assert_true(pc.w > 0 && pr.w > 0);
-				double x = pc.x / pc.w, y = pc.y / pc.w, zc = pc.z / pc.w, zr = pr.z / pr.w;
-				if (!(fabs(x) <= 1 + 1e-9 && fabs(y) <= 1 + 1e-9))
-					fail_msg("light (%g, %g, %g)%s: caster point (%g, %g, %g) shadows (%g, %g, %g) but maps outside: (%g, %g); %s",
-						 f->light.position.x, f->light.position.y, f->light.position.z,
-						 f->light.directional ? " directional" : "", c.x, c.y, c.z, r.x, r.y, r.z, x, y,
-						 s->res.warning_count ? s->res.warnings[0] : "no warning");
-				if (!(zc >= -1 - 1e-9 && zr <= 1 + 1e-9 && zc <= zr + 1e-9))
-					fail_msg("depths: caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)", zc, zr);
-				checked++;
-			}
-		}
-	return checked;
-}
 
 static void cleanup(struct setup *s) { lx_meshes_free(&s->meshes); }
 
@@ -87,7 +41,7 @@ static void every_configuration_covers_every_shadow(void **state)
 		build(&s, "uniform");
 		assert_int_equal(s.res.map_count, 1);
 		assert_true(m4_finite(&s.res.maps[0].light_clip));
-		long n = check_coverage(&s, &seed, 300);
+		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 300, lx_configs[i].name);
 		print_message("%-12s rendered %d, %ld caster/receiver pairs checked, %d warnings%s%s\n", lx_configs[i].name,
 			      s.res.maps[0].rendered, n, s.res.warning_count, s.res.warning_count ? ": " : "",
 			      s.res.warning_count ? s.res.warnings[0] : "");
@@ -120,7 +74,7 @@ static void random_lights(void **state)
 				      s.scene.light.position.z, s.res.warnings[0]);
 			too_wide++;
 		} else
-			check_coverage(&s, &seed, 40);
+			check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, "random light");
 		rendered += s.res.maps[0].rendered;
 		cleanup(&s);
 	}
@@ -168,7 +122,7 @@ static void extremes_stay_finite(void **state)
 		build(&s, "uniform");
 		if (!m4_finite(&s.res.maps[0].light_clip))
 			fail_msg("%s: non-finite light matrix", cases[i].what);
-		long n = check_coverage(&s, &seed, cases[i].expect_warning ? 0 : 200);
+		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, cases[i].expect_warning ? 0 : 200, cases[i].what);
 		print_message("%-30s rendered %d, %ld pairs, warnings: %s\n", cases[i].what, s.res.maps[0].rendered, n,
 			      s.res.warning_count ? s.res.warnings[0] : "none");
 		if (cases[i].expect_warning)

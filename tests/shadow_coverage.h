@@ -1,0 +1,57 @@
+/* The coverage check shared by the method tests: every shadow that can fall on a
+ * visible receiver is captured. For caster points c (sampled in the casters' boxes) and
+ * receiver points r beyond c on the same light ray inside the view frustum and the
+ * scene box, the map that serves r (lx_shadow_select_map, the shader's choice) holds c
+ * on the same lixel with -1 <= depth(c) <= depth(r) <= 1. Include after test_util.h. */
+#ifndef LX_SHADOW_COVERAGE_H
+#define LX_SHADOW_COVERAGE_H
+#include "shadow_method.h"
+
+static bool in_receivers(const struct lx_frame *f, vec3 p)
+{
+	vec4 c = m4_mul_point(&f->view.view_proj, p);
+	double e = 1e-9;
+	return c.w > 0 && fabs(c.x) <= c.w && fabs(c.y) <= c.w && fabs(c.z) <= c.w && p.x >= f->scene_min.x - e &&
+	       p.x <= f->scene_max.x + e && p.y >= f->scene_min.y - e && p.y <= f->scene_max.y + e &&
+	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
+}
+
+/* Returns the number of caster/receiver pairs checked; fails the test on the first miss. */
+static long check_coverage(const struct lx_frame *f, const struct lx_shadow_result *res, int plane_count,
+			   uint64_t *seed, int samples, const char *what)
+{
+	long checked = 0;
+	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
+	for (int id = plane_count; id < f->object_count; id++)
+		for (int k = 0; k < samples; k++) {
+			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
+				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
+				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
+			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
+			if (!v3_normalize(dir, &dir))
+				continue;
+			for (int j = 1; j <= 40; j++) {
+				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
+				if (!in_receivers(f, r))
+					continue;
+				int m = lx_shadow_select_map(res, r);
+				if (m < 0)
+					fail_msg("%s: receiver (%g, %g, %g) behind caster point (%g, %g, %g) is served by no map (%s)",
+						 what, r.x, r.y, r.z, c.x, c.y, c.z,
+						 res->warning_count ? res->warnings[0] : "no warning");
+				const mat4 *lc = &res->maps[m].light_clip;
+				vec4 pc = m4_mul_point(lc, c), pr = m4_mul_point(lc, r);
+				if (!(pc.w > 0 && pr.w > 0))
+					fail_msg("%s: map %d: caster or receiver behind the light image", what, m);
+				double zc = pc.z / pc.w, zr = pr.z / pr.w;
+				if (!(zc >= -1 - 1e-7 && zr <= 1 + 1e-7 && zc <= zr + 1e-9))
+					fail_msg("%s: map %d: depths caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)",
+						 what, m, zc, zr);
+				assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6); /* same ray, same lixel */
+				checked++;
+			}
+		}
+	return checked;
+}
+
+#endif
