@@ -166,8 +166,10 @@ static void print_text(const struct lx_render_report *r, const char *out)
 			if (!pr->present)
 				printf("plane %s: not measured (not visible or no map serves it)\n", pr->name);
 			else
-				printf("plane %s: %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g\n",
-				       pr->name, pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max);
+				printf("plane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g\n",
+				       pr->name,
+				       pr->s.map >= 0 ? r->atlas.regions[r->result.maps[pr->s.map].region].name : "serving",
+				       pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max);
 		}
 	}
 }
@@ -225,6 +227,9 @@ static void print_json(const struct lx_render_report *r)
 				continue;
 			lx_json_key(&j, pr->name);
 			lx_json_object(&j);
+			/* the figures are of the plane's own map, or of whichever map serves each pixel */
+			lx_json_key(&j, "map");
+			lx_json_string(&j, pr->s.map >= 0 ? r->atlas.regions[r->result.maps[pr->s.map].region].name : "serving");
 			lx_json_key(&j, "pixels"), lx_json_int(&j, pr->s.pixels);
 			lx_json_key(&j, "lpp_median"), lx_json_number(&j, pr->s.lpp_median);
 			lx_json_key(&j, "m_median"), lx_json_number(&j, pr->s.m_median);

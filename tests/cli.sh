@@ -61,7 +61,7 @@ for platform in osmesa egl; do
     ok
     for key in '"method": "uniform"' "\"platform\": \"$platform\"" '"renderer"' '"size": \[96, 64\]' '"lixels": 262144' \
         '"maps": \[{"name": "uniform"' '"rendered": true' '"frame_ms"' '"setup_us"' '"warnings"' '"mismatch_pct"' \
-        '"false_shadow_pct"' '"missing_shadow_pct"' '"compared_pixels"' '"planes": {"floor": {"pixels"' \
+        '"false_shadow_pct"' '"missing_shadow_pct"' '"compared_pixels"' '"planes": {"floor": {"map": "serving", "pixels"' \
         '"lpp_median"' '"m_median"' '"m_max"' '"aniso_max"'; do
       grep -q "$key" "$tmp/json" && ok || no "$platform: JSON lacks $key"
     done
