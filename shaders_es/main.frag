@@ -15,8 +15,10 @@ uniform float u_object_id;
 uniform sampler2D u_atlas;
 uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
                                 // empty when not rendered
-uniform vec3 u_edges[LX_MAPS * 4]; // and inside them a x + b y + c >= 0 (a table top's edges;
-                                   // (0, 0, 1) where unused)
+#if LX_MAPS > 1
+uniform vec3 u_edges[4]; // the first map also needs a x + b y + c >= 0 on each edge (a table
+                         // top's point-line tests; (0, 0, 1) where unused)
+#endif
 uniform float u_bias;           // in depth codes
 varying vec4 v_shadow[LX_MAPS];
 #endif
@@ -25,19 +27,19 @@ varying vec3 v_normal;
 varying vec3 v_face_normal;
 
 #if LX_MAPS > 0
-// Whether a map serves the point: in front of its light, inside its bounds and its
-// edges. Called with constant indices only: indexing uniform arrays with a variable is
-// slow or unsupported on small GPUs.
-bool serves(vec3 p, float w, vec4 region, vec3 e0, vec3 e1, vec3 e2, vec3 e3)
+// Whether a map serves the point: in front of its light and inside its bounds.
+// Written without branches, and called with constant indices only: indexing uniform
+// arrays with a variable is slow or unsupported on small GPUs.
+bool serves(vec3 p, float w, vec4 region)
 {
-	vec3 q = vec3(p.xy, 1.0);
-	return w > 0.0 && p.x >= region.x && p.y >= region.y && p.x < region.z && p.y < region.w &&
-	       dot(e0, q) >= 0.0 && dot(e1, q) >= 0.0 && dot(e2, q) >= 0.0 && dot(e3, q) >= 0.0;
+	return w > 0.0 && all(greaterThanEqual(p.xy, region.xy)) && all(lessThan(p.xy, region.zw));
 }
 // Later maps first, so that the first map that serves the point wins; then one fetch.
-#define PICK(i) { vec3 p = v_shadow[i].xyz / v_shadow[i].w; \
-	if (serves(p, v_shadow[i].w, u_region[i], u_edges[4 * i], u_edges[4 * i + 1], u_edges[4 * i + 2], u_edges[4 * i + 3])) { \
-		pick = p; found = true; } }
+#define PICK(i, extra) { vec3 p = v_shadow[i].xyz / v_shadow[i].w; \
+	if (serves(p, v_shadow[i].w, u_region[i]) extra) { pick = p; found = true; } }
+#if LX_MAPS > 1
+#define EDGES(q) && min(min(dot(u_edges[0], q), dot(u_edges[1], q)), min(dot(u_edges[2], q), dot(u_edges[3], q))) >= 0.0
+#endif
 #endif
 
 void main()
@@ -51,15 +53,17 @@ void main()
 		vec3 pick = vec3(0.0);
 		bool found = false;
 #if LX_MAPS > 3
-		PICK(3)
+		PICK(3, )
 #endif
 #if LX_MAPS > 2
-		PICK(2)
+		PICK(2, )
 #endif
 #if LX_MAPS > 1
-		PICK(1)
+		PICK(1, )
+		PICK(0, EDGES(vec3(p.xy, 1.0)))
+#else
+		PICK(0, )
 #endif
-		PICK(0)
 		if (found) {
 			float stored = lx_decode_code(texture2D(u_atlas, pick.xy));
 			shadowed = lx_depth_code(pick.z) > stored + u_bias ? 1.0 : 0.0;

@@ -140,8 +140,7 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 
 	/* A_l: twist, scale, translate. */
 	double angle = 0;
-	if (next >= 0)
-		twist_angle(v, P, &s->planes[next], &win, &angle);
+	bool twisted = next >= 0 && twist_angle(v, P, &s->planes[next], &win, &angle);
 	/* A twist by a multiple of 90 degrees (a level camera facing the wall) keeps the
 	 * pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
 	double quarter = round(angle / (M_PI / 2));
@@ -253,7 +252,9 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		sp[k][1] = a.m[1] * wx + a.m[5] * wy + a.m[13] * cc.w;
 		sp[k][2] = cc.w;
 	}
-	if (in_front) {
+	/* Only where a later plane map can take the rays that miss this plane and no twist
+	 * already sends them out of bounds (a table top over the floor). */
+	if (in_front && i == 0 && next >= 0 && !twisted) {
 		vec2 mid = {0, 0};
 		for (int k = 0; k < 4; k++)
 			mid.x += sp[k][0] / sp[k][2] / 4, mid.y += sp[k][1] / sp[k][2] / 4;

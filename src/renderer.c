@@ -84,8 +84,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 			 d->height, caps->max_renderbuffer_size, caps->max_viewport[0], caps->max_viewport[1]);
 		return NULL;
 	}
-	if (d->map_count > 3) {
-		snprintf(err, errlen, "a method returned %d maps; the main pass handles at most 3", d->map_count);
+	if (d->map_count > LX_MAX_MAPS) {
+		snprintf(err, errlen, "a method returned %d maps; the main pass handles at most %d", d->map_count, LX_MAX_MAPS);
 		return NULL;
 	}
 	struct lx_renderer *r = calloc(1, sizeof(*r));
@@ -259,13 +259,13 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	else
 		lx_gl.Uniform4f(p->light, (float)L->position.x, (float)L->position.y, (float)L->position.z, 1);
 	if (r->d.map_count > 0) {
-		float tex[3][16], region[3][4], edges[3][LX_MAX_MAP_EDGES][3];
+		float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], edges[LX_MAX_MAP_EDGES][3];
+		for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
+			edges[e][0] = edges[e][1] = 0, edges[e][2] = 1;
 		for (int m = 0; m < r->d.map_count; m++) {
 			const struct lx_shadow_map *map = &res->maps[m];
 			mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 			to_float(&t, tex[m]);
-			for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
-				edges[m][e][0] = edges[m][e][1] = 0, edges[m][e][2] = 1;
 			if (!map->rendered) { /* an empty box: every lookup misses and reads lit */
 				region[m][0] = region[m][1] = 2;
 				region[m][2] = region[m][3] = -1;
@@ -279,16 +279,18 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 			region[m][1] = (float)(oy + sy * map->bounds[1]);
 			region[m][2] = (float)(ox + sx * map->bounds[2]);
 			region[m][3] = (float)(oy + sy * map->bounds[3]);
-			for (int e = 0; e < map->edge_count; e++) {
+			/* only the first map may carry point-line tests (shadow_method.h) */
+			for (int e = 0; m == 0 && e < map->edge_count; e++) {
 				const double *q = map->edges[e];
-				edges[m][e][0] = (float)(q[0] / sx);
-				edges[m][e][1] = (float)(q[1] / sy);
-				edges[m][e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
+				edges[e][0] = (float)(q[0] / sx);
+				edges[e][1] = (float)(q[1] / sy);
+				edges[e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
 			}
 		}
 		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
 		lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
-		lx_gl.Uniform3fv(p->edges, r->d.map_count * LX_MAX_MAP_EDGES, edges[0][0]);
+		if (r->d.map_count > 1)
+			lx_gl.Uniform3fv(p->edges, LX_MAX_MAP_EDGES, edges[0]);
 		lx_gl.Uniform1f(p->bias, r->bias_uniform);
 		lx_gl.Uniform1i(p->atlas, 0);
 		lx_gl.ActiveTexture(GL_TEXTURE0);

@@ -24,7 +24,8 @@ struct lx_shadow_map {
 	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel) */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
 	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
-	 * of edge_count edges (a table top's polygon). The main pass uses the first map, in
+	 * of edge_count edges (a table top's polygon; only the first of several maps may
+	 * have edges, which keeps the shader cheap). The main pass uses the first map, in
 	 * order, that serves a ray. */
 	double bounds[4];
 	int edge_count;
