@@ -10,13 +10,6 @@
 #include <string.h>
 #include <time.h>
 
-static double now_ms(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
 void lx_render_report_free(struct lx_render_report *rep)
 {
 	free(rep->ref_object);
@@ -74,8 +67,7 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen)
 {
 	memset(rep, 0, sizeof(*rep));
-	const struct lx_shadow_method *method = lx_shadow_method_find(job->method);
-	if (!method) {
+	if (!lx_shadow_method_find(job->method)) {
 		snprintf(err, errlen, "unknown method '%s', expected %s", job->method, lx_shadow_method_names());
 		return 2;
 	}
@@ -83,7 +75,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		snprintf(err, errlen, "size %dx%d, expected at least 1x1", job->width, job->height);
 		return 2;
 	}
-	snprintf(rep->method, sizeof rep->method, "%s", method->name);
+	snprintf(rep->method, sizeof rep->method, "%s", job->method);
 	snprintf(rep->platform, sizeof rep->platform, "%s", job->platform);
 	rep->width = job->width;
 	rep->height = job->height;
@@ -103,54 +95,35 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		lx_meshes_free(&meshes);
 		return strcmp(job->platform, "osmesa") && strcmp(job->platform, "egl") ? 2 : 1;
 	}
-	int status = 1;
-	struct lx_renderer *r = NULL;
 	uint8_t *rgba = NULL;
+	double *times = NULL;
 	lx_gl_caps_probe(&rep->caps);
-
-	struct lx_region_request req[LX_MAX_MAPS];
 	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
-	int nreq = method->regions(&job->scene, &opt, req);
-	if (!lx_atlas_layout(&rep->atlas, req, nreq, 1, rep->caps.max_texture_size, err, errlen)) {
-		status = 2; /* budgets this GL cannot hold: the input asks too much */
+	struct lx_method_run mr;
+	int status = lx_method_run_init(&mr, job->method, &job->scene, &meshes, &rep->caps, &opt, job->width,
+					job->height, job->force_mediump, job->bias_codes, err, errlen);
+	if (status)
+		goto out;
+	status = 1;
+	rep->atlas = mr.atlas;
+	int timed = job->timed_frames > 0 ? job->timed_frames : 1;
+	times = calloc((size_t)timed * 4, sizeof(double));
+	long n = (long)job->width * job->height;
+	rgba = malloc((size_t)n * 4);
+	if (!times || !rgba) {
+		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
 		goto out;
 	}
-	struct lx_renderer_desc rd = {.scene = &job->scene, .meshes = &meshes, .atlas = &rep->atlas, .caps = &rep->caps,
-				      .map_count = nreq, .width = job->width, .height = job->height,
-				      .force_mediump = job->force_mediump, .bias_codes = job->bias_codes};
-	r = lx_renderer_create(&rd, err, errlen);
-	if (!r)
-		goto out;
-
-	int total = job->warmup_frames + (job->timed_frames > 0 ? job->timed_frames : 1);
-	int timed = total - job->warmup_frames;
-	double *frame_ms = calloc((size_t)timed * 4, sizeof(double));
-	if (!frame_ms) {
-		snprintf(err, errlen, "out of memory");
-		goto out;
-	}
-	double *shadow_ms = frame_ms + timed, *main_ms = shadow_ms + timed, *setup_us = main_ms + timed;
+	double *frame_ms = times, *shadow_ms = times + timed, *main_ms = shadow_ms + timed, *setup_us = main_ms + timed;
 	lx_renderer_finish();
-	for (int i = 0; i < total; i++) {
-		double t0 = now_ms();
-		struct lx_shadow_result res = {0};
-		method->build(&frame, &rep->atlas, &res);
-		double t1 = now_ms();
-		lx_renderer_shadow_passes(r, &frame, &res);
-		lx_renderer_finish();
-		double t2 = now_ms();
-		lx_renderer_main_pass(r, &frame, &res, false);
-		lx_renderer_finish();
-		double t3 = now_ms();
-		if (i >= job->warmup_frames) {
-			int k = i - job->warmup_frames;
-			setup_us[k] = (t1 - t0) * 1e3;
-			shadow_ms[k] = t2 - t1;
-			main_ms[k] = t3 - t2;
-			frame_ms[k] = t3 - t0;
-		}
-		rep->result = res;
+	for (int i = 0; i < job->warmup_frames + timed; i++) {
+		struct lx_frame_times t;
+		lx_method_run_frame(&mr, &frame, &t);
+		int k = i - job->warmup_frames;
+		if (k >= 0)
+			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;
 	}
+	rep->result = mr.result;
 	rep->frame_ms_min = INFINITY;
 	for (int k = 0; k < timed; k++) {
 		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);
@@ -160,33 +133,20 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	rep->shadow_ms = lx_median(shadow_ms, timed);
 	rep->main_ms = lx_median(main_ms, timed);
 	rep->setup_us = lx_median(setup_us, timed);
-	free(frame_ms);
 
-	long n = (long)job->width * job->height;
-	rgba = malloc((size_t)n * 4);
-	if (!rgba) {
-		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
-		goto out;
-	}
-	lx_renderer_read(r, rgba);
+	lx_renderer_read(mr.renderer, rgba);
 	if (job->out_png && !lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen))
 		goto out;
-	if (job->atlas_png && !write_atlas(r, &rep->atlas, job->atlas_png, err, errlen))
+	if (job->atlas_png && !write_atlas(mr.renderer, &rep->atlas, job->atlas_png, err, errlen))
 		goto out;
-
 	if (job->measure || job->keep_pixels || job->decision_png) {
-		lx_renderer_main_pass(r, &frame, &rep->result, true);
-		lx_renderer_read(r, rgba);
 		rep->object = malloc((size_t)n * sizeof(int16_t));
 		rep->shadow = malloc((size_t)n);
 		if (!rep->object || !rep->shadow) {
 			snprintf(err, errlen, "out of memory");
 			goto out;
 		}
-		for (long i = 0; i < n; i++) {
-			rep->shadow[i] = rgba[i * 4] > 127;
-			rep->object[i] = (int16_t)rgba[i * 4 + 1] - 1; /* (id + 1.25) / 255 stores id + 1 */
-		}
+		lx_method_run_decision(&mr, &frame, rgba, rep->object, rep->shadow);
 		if (job->decision_png) {
 			decision_colors(rep->object, rep->shadow, n, rgba);
 			if (!lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen))
@@ -201,21 +161,18 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 			snprintf(err, errlen, "out of memory for the reference image");
 			goto out;
 		}
-		lx_mismatch_compare(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, &rep->mismatch);
 		rep->plane_count = job->scene.plane_count;
-		for (int p = 0; p < job->scene.plane_count; p++) {
-			struct lx_plane_report *pr = &rep->planes[p];
-			snprintf(pr->name, sizeof pr->name, "%s", job->scene.planes[p].name);
-			pr->present = lx_plane_sampling(&frame, &rep->atlas, &rep->result, p, rep->ref_object, &pr->s);
-		}
+		lx_measure(&frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
+			   &rep->mismatch, rep->planes);
 		rep->measured = true;
 	}
 	status = 0;
 out:
 	free(rgba);
+	free(times);
 	if (status != 0 || !job->keep_pixels)
 		lx_render_report_free(rep);
-	lx_renderer_destroy(r);
+	lx_method_run_free(&mr);
 	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);
 	return status;

@@ -2,9 +2,7 @@
  * GL passes -> image -> measurements. Used by `lixel render` and by the tests. */
 #ifndef LX_RENDER_JOB_H
 #define LX_RENDER_JOB_H
-#include "gl_caps.h"
-#include "metrics.h"
-#include "shadow_method.h"
+#include "method_run.h"
 
 struct lx_render_job {
 	const char *method;   /* a name lx_shadow_method_find() knows */
@@ -22,12 +20,6 @@ struct lx_render_job {
 	const char *out_png; /* shaded image, or NULL */
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
 	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
-};
-
-struct lx_plane_report {
-	char name[LX_NAME_MAX];
-	bool present; /* the plane covers pixels and a map serves it */
-	struct lx_plane_sampling s;
 };
 
 struct lx_render_report {

@@ -1,0 +1,79 @@
+#include "method_run.h"
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+static double now_ms(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct lx_scene *scene,
+		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
+		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
+		       double bias_codes, char *err, size_t errlen)
+{
+	memset(mr, 0, sizeof(*mr));
+	mr->method = lx_shadow_method_find(name);
+	if (!mr->method) {
+		snprintf(err, errlen, "unknown method '%s', expected %s", name, lx_shadow_method_names());
+		return 2;
+	}
+	mr->width = width;
+	mr->height = height;
+	struct lx_region_request req[LX_MAX_MAPS];
+	int nreq = mr->method->regions(scene, budgets, req);
+	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
+		return 2; /* budgets this GL cannot hold: the input asks too much */
+	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
+				      .map_count = nreq, .width = width, .height = height,
+				      .force_mediump = force_mediump, .bias_codes = bias_codes};
+	mr->renderer = lx_renderer_create(&rd, err, errlen);
+	return mr->renderer ? 0 : 1;
+}
+
+void lx_method_run_free(struct lx_method_run *mr)
+{
+	lx_renderer_destroy(mr->renderer);
+	mr->renderer = NULL;
+}
+
+void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t)
+{
+	double t0 = now_ms();
+	mr->method->build(f, &mr->atlas, &mr->result);
+	double t1 = now_ms();
+	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+	lx_renderer_finish();
+	double t2 = now_ms();
+	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
+	lx_renderer_finish();
+	double t3 = now_ms();
+	*t = (struct lx_frame_times){.setup_us = (t1 - t0) * 1e3, .shadow_ms = t2 - t1, .main_ms = t3 - t2,
+				     .frame_ms = t3 - t0};
+}
+
+void lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
+			    uint8_t *shadow)
+{
+	lx_renderer_main_pass(mr->renderer, f, &mr->result, true);
+	lx_renderer_read(mr->renderer, rgba);
+	long n = (long)mr->width * mr->height;
+	for (long i = 0; i < n; i++) {
+		shadow[i] = rgba[i * 4] > 127;
+		object[i] = (int16_t)(rgba[i * 4 + 1] - 1); /* (id + 1.25) / 255 stores id + 1 */
+	}
+}
+
+void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
+		struct lx_mismatch *mismatch, struct lx_plane_report *planes)
+{
+	lx_mismatch_compare(ref_object, ref_shadow, object, shadow, (long)f->view.width * f->view.height, mismatch);
+	for (int p = 0; p < f->scene->plane_count; p++) {
+		snprintf(planes[p].name, sizeof planes[p].name, "%s", f->scene->planes[p].name);
+		planes[p].present = lx_plane_sampling(f, atlas, res, p, ref_object, &planes[p].s);
+	}
+}

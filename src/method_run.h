@@ -1,0 +1,49 @@
+/* A shadow method set up to draw: its atlas and renderer for one scene and view size,
+ * one frame at a time with the times of each step, its decision image, and the
+ * measurements against the exact reference. Used by `lixel render` and `lixel bench`. */
+#ifndef LX_METHOD_RUN_H
+#define LX_METHOD_RUN_H
+#include "gl_caps.h"
+#include "metrics.h"
+#include "renderer.h"
+
+struct lx_method_run {
+	const struct lx_shadow_method *method;
+	struct lx_atlas atlas;
+	struct lx_renderer *renderer;
+	struct lx_shadow_result result; /* of the last frame */
+	int width, height;
+};
+
+struct lx_frame_times {
+	double setup_us;  /* CPU time building the light matrices */
+	double shadow_ms; /* shadow passes, glFinish'ed */
+	double main_ms;   /* main pass, glFinish'ed */
+	double frame_ms;  /* all three */
+};
+
+struct lx_plane_report {
+	char name[LX_NAME_MAX];
+	bool present; /* the plane covers pixels and a map serves it */
+	struct lx_plane_sampling s;
+};
+
+/* Returns 0, or 2 for bad input (unknown method, budgets the GL cannot hold), 1 for a GL
+ * failure; err says what. A current GL context is needed. */
+int lx_method_run_init(struct lx_method_run *mr, const char *method, const struct lx_scene *scene,
+		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
+		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
+		       double bias_codes, char *err, size_t errlen);
+void lx_method_run_free(struct lx_method_run *mr);
+/* Light matrices, shadow passes and the shaded main pass, each step timed. */
+void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
+/* The main pass's shadow decision for the last frame's matrices: per pixel the visible
+ * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4. */
+void lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
+			    uint8_t *shadow);
+/* The mismatch against the reference, and each plane's sampling figures. */
+void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
+		struct lx_mismatch *mismatch, struct lx_plane_report *planes);
+
+#endif
