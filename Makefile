@@ -24,7 +24,7 @@ CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/
 	src/shadow_method.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/reference.c src/metrics.c \
 	src/configs.c src/json.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/platform.c src/platform_osmesa.c \
-	src/platform_egl.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c
+	src/platform_egl.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
 
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)

@@ -1,4 +1,5 @@
 /* lixel: command line. `lixel render` draws one frame and reports its figures. */
+#include "bench.h"
 #include "configs.h"
 #include "platform.h"
 #include "json.h"
@@ -22,8 +23,10 @@ static void usage(FILE *f)
 		   "\n"
 		   "commands:\n"
 		   "  render     render one frame to a PNG and print its figures\n"
+		   "  bench      every method over the standard configurations: time and accuracy\n"
 		   "\n"
 		   "  lixel render --help    options of render\n"
+		   "  lixel bench --help     options of bench\n"
 		   "  lixel --version        the version\n");
 }
 
@@ -401,7 +404,7 @@ static int cmd_render(int argc, char **argv)
 int main(int argc, char **argv)
 {
 	if (argc < 2) {
-		fprintf(stderr, "lixel: expected a command (render); see lixel --help\n");
+		fprintf(stderr, "lixel: expected a command (render or bench); see lixel --help\n");
 		return 2;
 	}
 	if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "help")) {
@@ -414,6 +417,8 @@ int main(int argc, char **argv)
 	}
 	if (!strcmp(argv[1], "render"))
 		return cmd_render(argc - 2, argv + 2);
-	fprintf(stderr, "lixel: unknown command '%s', expected render (see lixel --help)\n", argv[1]);
+	if (!strcmp(argv[1], "bench"))
+		return lx_bench_main(argc - 2, argv + 2);
+	fprintf(stderr, "lixel: unknown command '%s', expected render or bench (see lixel --help)\n", argv[1]);
 	return 2;
 }

@@ -7,6 +7,9 @@
 #include "metrics.h"
 #include "renderer.h"
 
+/* The default bias: a few 24-bit codes, enough for the rounding of interpolated depth. */
+#define LX_DEFAULT_BIAS_CODES 64.0
+
 struct lx_method_run {
 	const struct lx_shadow_method *method;
 	struct lx_atlas atlas;

@@ -42,7 +42,5 @@ struct lx_render_report {
  * platform or GL (err says what). */
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen);
 void lx_render_report_free(struct lx_render_report *rep);
-/* The default bias: a few 24-bit codes, enough for the rounding of interpolated depth. */
-#define LX_DEFAULT_BIAS_CODES 64.0
 
 #endif

@@ -103,5 +103,31 @@ fi
 "$lixel" render --method none --json --size 32x32 --frames 1 --out "$tmp/n.png" >"$tmp/json" 2>&1 &&
   grep -q '"lixels": 0' "$tmp/json" && grep -q '"maps": \[\]' "$tmp/json" && ok || no "method none: $(cat "$tmp/json")"
 
+# lixel bench at a small size: every method over every configuration, all outputs
+mkdir -p "$tmp/strips"
+if "$lixel" bench --size 64x48 --frames 2 --warmup 1 --json --csv "$tmp/b.csv" --plot "$tmp/b.png" --strips "$tmp/strips" \
+    >"$tmp/bench.json" 2>"$tmp/bench.err"; then
+  ok
+  for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "config": "default", "frame_ms_median"' \
+      '"frame_ms_min"' '"frame_ms_max"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
+      '"summary": \[{"method": "none", "frame_ms_median": [0-9.e-]*, "ratio_none": 1, "ratio_uniform"' '"mismatch_median"' '"mismatch_worst"'; do
+    grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
+  done
+  grep -qiE 'nan|inf' "$tmp/bench.json" && no "bench JSON holds NaN or Infinity" || ok
+  [ "$(wc -l <"$tmp/b.csv")" -eq $((3 * 11 + 1)) ] && ok || no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected 34"
+  [ "$(head -c 4 "$tmp/b.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "bench plot is not a PNG"
+  [ "$(ls "$tmp/strips" | wc -l)" -eq 11 ] && ok || no "bench wrote $(ls "$tmp/strips" | wc -l) strips, expected 11"
+  grep -q "configuration 11/11: animation" "$tmp/bench.err" && ok || no "bench shows no progress on stderr"
+else
+  no "bench failed: $(cat "$tmp/bench.err")"
+fi
+"$lixel" bench --size 48x32 --frames 2 --warmup 0 --methods uniform,plane --configs low >"$tmp/bench.txt" 2>&1 &&
+  grep -q '^\[plane\] config=low: FrameTime: ' "$tmp/bench.txt" && grep -q '^uniform ' "$tmp/bench.txt" && ok ||
+  no "bench text: $(cat "$tmp/bench.txt")"
+expect_bad "bench unknown method" bench --methods none,teapot
+expect_bad "bench zero frames" bench --frames 0
+expect_bad "bench unknown config" bench --configs sideways
+expect_bad "bench strips into a missing directory" bench --strips "$tmp/no/such"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

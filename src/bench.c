@@ -1,0 +1,537 @@
+#include "bench.h"
+#include "configs.h"
+#include "json.h"
+#include "method_run.h"
+#include "platform.h"
+#include "plot.h"
+#include "png_out.h"
+#include "reference.h"
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_METHODS 8
+#define MAX_CONFIGS 16
+#define ANIMATION_SAMPLES 5 /* times at which the animation's accuracy is measured */
+
+struct row {
+	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us;
+	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
+	double mismatch_worst;
+	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
+};
+
+struct bench {
+	int width, height, frames, warmup;
+	const char *platform, *csv, *plot, *strips;
+	bool json;
+	int nm, nc;
+	const char *methods[MAX_METHODS];
+	const char *configs[MAX_CONFIGS];
+	struct lx_scene scene;
+	struct row rows[MAX_METHODS][MAX_CONFIGS];
+	double *all_frames[MAX_METHODS]; /* every timed frame of a method over all configurations */
+	int nframes[MAX_METHODS];
+	double *all_setup[MAX_METHODS];
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f, "usage: lixel bench [--size WxH] [--frames N] [--warmup N] [--methods LIST] [--configs LIST]\n"
+		   "                   [--platform osmesa|egl] [--scene NAME|FILE] [--csv FILE] [--plot FILE.png]\n"
+		   "                   [--strips DIR] [--json]\n"
+		   "\n"
+		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
+		   "(glFinish per frame, methods interleaved frame by frame so that they share the\n"
+		   "machine's noise), then the accuracy against the exact reference. Prints a line per\n"
+		   "method and configuration, then a summary per method with ratios to no shadows and\n"
+		   "to uniform. Run with LP_NUM_THREADS=1 to stand in for a fill-limited board GPU.\n"
+		   "\n"
+		   "  --size WxH       view size (default 1024x1024)\n"
+		   "  --frames N       timed frames per method and configuration (default 30)\n"
+		   "  --warmup N       warm-up frames (default 5)\n"
+		   "  --methods LIST   comma-separated, from %s (default none,uniform,plane)\n"
+		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
+		   "                   'animation' (the default scene's casters bouncing); default all\n"
+		   "  --csv FILE       every row as CSV\n"
+		   "  --plot FILE.png  median mismatch against median frame time, one mark per method\n"
+		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods order\n"
+		   "  --json           one JSON object on stdout instead of the text\n"
+		   "\n"
+		   "Progress goes to stderr. Exit status: 0 done; 1 GL failure; 2 bad input.\n",
+		lx_shadow_method_names());
+}
+
+static int bad(const char *opt, const char *expected, const char *got)
+{
+	fprintf(stderr, "lixel bench: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
+	return 2;
+}
+
+/* Splits a comma list in place into out[]; false on an empty item or too many. */
+static bool split(char *list, const char **out, int max, int *n)
+{
+	*n = 0;
+	for (char *t = strtok(list, ","); t; t = strtok(NULL, ",")) {
+		if (*n == max || !*t)
+			return false;
+		out[(*n)++] = t;
+	}
+	return *n > 0;
+}
+
+static bool is_animation(const char *c) { return !strcmp(c, "animation"); }
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static double median_of(const double *v, int n)
+{
+	double *t = malloc((size_t)n * sizeof(double));
+	if (!t)
+		return NAN;
+	memcpy(t, v, (size_t)n * sizeof(double));
+	qsort(t, (size_t)n, sizeof(double), cmp_double);
+	double m = n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+	free(t);
+	return m;
+}
+
+static void config_scene(const struct bench *b, const char *config, struct lx_scene *s)
+{
+	*s = b->scene;
+	if (!is_animation(config))
+		lx_config_apply(lx_config_find(config), s);
+}
+
+/* One configuration: timed frames for every method (interleaved), then accuracy. */
+static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const struct lx_scene_meshes *meshes,
+		      uint8_t *rgba, int16_t *obj, uint8_t *sh, int16_t *ref_obj, uint8_t *ref_sh, char *err,
+		      size_t errlen)
+{
+	const char *config = b->configs[ci];
+	bool anim = is_animation(config);
+	struct lx_scene scene;
+	config_scene(b, config, &scene);
+	double *times = malloc(sizeof(double) * (size_t)b->frames * 2 * b->nm);
+	if (!times) {
+		snprintf(err, errlen, "out of memory");
+		return 1;
+	}
+	double *setup = times + (size_t)b->frames * b->nm;
+	struct lx_frame frame;
+	for (int i = 0; i < b->warmup + b->frames; i++) {
+		double t = anim ? i / 30.0 : 0.0;
+		if (!lx_frame_setup(&frame, &scene, meshes, t, b->width, b->height, err, errlen)) {
+			free(times);
+			return 2;
+		}
+		for (int m = 0; m < b->nm; m++) {
+			struct lx_frame_times ft;
+			lx_method_run_frame(&runs[m], &frame, &ft);
+			if (i >= b->warmup) {
+				times[m * b->frames + i - b->warmup] = ft.frame_ms;
+				setup[m * b->frames + i - b->warmup] = ft.setup_us;
+			}
+		}
+	}
+	/* strips: each method's last shaded frame, side by side */
+	long n = (long)b->width * b->height;
+	if (b->strips) {
+		int gap = 8, sw = b->nm * b->width + (b->nm - 1) * gap;
+		uint8_t *strip = malloc((size_t)sw * b->height * 4);
+		if (strip) {
+			memset(strip, 255, (size_t)sw * b->height * 4);
+			for (int m = 0; m < b->nm; m++) {
+				lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
+				lx_renderer_read(runs[m].renderer, rgba);
+				for (int y = 0; y < b->height; y++)
+					memcpy(strip + ((size_t)y * sw + m * (b->width + gap)) * 4, rgba + (size_t)y * b->width * 4,
+					       (size_t)b->width * 4);
+			}
+			char path[4096];
+			snprintf(path, sizeof path, "%s/%s.png", b->strips, config);
+			bool ok = lx_png_write(path, strip, sw, b->height, err, errlen);
+			free(strip);
+			if (!ok) {
+				free(times);
+				return 1;
+			}
+		}
+	}
+	for (int m = 0; m < b->nm; m++) {
+		struct row *r = &b->rows[m][ci];
+		r->frame_ms_median = median_of(times + m * b->frames, b->frames);
+		r->frame_ms_min = INFINITY, r->frame_ms_max = 0;
+		for (int k = 0; k < b->frames; k++) {
+			r->frame_ms_min = fmin(r->frame_ms_min, times[m * b->frames + k]);
+			r->frame_ms_max = fmax(r->frame_ms_max, times[m * b->frames + k]);
+		}
+		r->setup_us = median_of(setup + m * b->frames, b->frames);
+		memcpy(b->all_frames[m] + b->nframes[m], times + m * b->frames, sizeof(double) * (size_t)b->frames);
+		memcpy(b->all_setup[m] + b->nframes[m], setup + m * b->frames, sizeof(double) * (size_t)b->frames);
+		b->nframes[m] += b->frames;
+		for (int p = 0; p < LX_MAX_PLANES; p++)
+			r->m_max[p] = NAN;
+	}
+	free(times);
+	/* accuracy: one reference per sampled time, shared by the methods */
+	int samples = anim ? ANIMATION_SAMPLES : 1;
+	double mis[MAX_METHODS][ANIMATION_SAMPLES], fal[MAX_METHODS][ANIMATION_SAMPLES], mss[MAX_METHODS][ANIMATION_SAMPLES];
+	for (int sidx = 0; sidx < samples; sidx++) {
+		double t = anim ? sidx * 0.6 : 0.0;
+		if (!lx_frame_setup(&frame, &scene, meshes, t, b->width, b->height, err, errlen))
+			return 2;
+		if (!lx_reference_image(&frame, ref_obj, ref_sh, 2)) {
+			snprintf(err, errlen, "out of memory for the reference image");
+			return 1;
+		}
+		for (int m = 0; m < b->nm; m++) {
+			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
+			lx_method_run_decision(&runs[m], &frame, rgba, obj, sh);
+			struct lx_mismatch mm;
+			struct lx_plane_report planes[LX_MAX_PLANES];
+			lx_measure(&frame, &runs[m].atlas, &runs[m].result, ref_obj, ref_sh, obj, sh, &mm, planes);
+			mis[m][sidx] = mm.mismatch_pct, fal[m][sidx] = mm.false_shadow_pct, mss[m][sidx] = mm.missing_shadow_pct;
+			for (int p = 0; p < scene.plane_count && p < LX_MAX_PLANES; p++)
+				if (planes[p].present)
+					b->rows[m][ci].m_max[p] = isnan(b->rows[m][ci].m_max[p])
+									  ? planes[p].s.m_max
+									  : fmax(b->rows[m][ci].m_max[p], planes[p].s.m_max);
+		}
+	}
+	(void)n;
+	for (int m = 0; m < b->nm; m++) {
+		struct row *r = &b->rows[m][ci];
+		r->mismatch_pct = median_of(mis[m], samples);
+		r->false_pct = median_of(fal[m], samples);
+		r->missing_pct = median_of(mss[m], samples);
+		r->mismatch_worst = 0;
+		for (int k = 0; k < samples; k++)
+			r->mismatch_worst = fmax(r->mismatch_worst, mis[m][k]);
+	}
+	return 0;
+}
+
+static int method_index(const struct bench *b, const char *name)
+{
+	for (int m = 0; m < b->nm; m++)
+		if (!strcmp(b->methods[m], name))
+			return m;
+	return -1;
+}
+
+static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
+{
+	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s\n", b->width, b->height, b->frames,
+	       b->warmup, b->platform, caps->renderer);
+	for (int c = 0; c < b->nc; c++)
+		for (int m = 0; m < b->nm; m++) {
+			const struct row *r = &b->rows[m][c];
+			printf("[%s] config=%s: FrameTime: %.3f ms (%.3f-%.3f) setup: %.1f us mismatch: %.4f%% "
+			       "(false %.4f%%, missing %.4f%%)",
+			       b->methods[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->setup_us,
+			       r->mismatch_pct, r->false_pct, r->missing_pct);
+			for (int p = 0; p < b->scene.plane_count; p++)
+				if (!isnan(r->m_max[p]))
+					printf(" m_max %s %.3g", b->scene.planes[p].name, r->m_max[p]);
+			printf("\n");
+		}
+	int none = method_index(b, "none"), uni = method_index(b, "uniform");
+	double none_ms = none >= 0 ? median_of(b->all_frames[none], b->nframes[none]) : NAN;
+	double uni_ms = uni >= 0 ? median_of(b->all_frames[uni], b->nframes[uni]) : NAN;
+	printf("\n%-8s %10s %19s %8s %8s %9s %10s %10s", "method", "frame ms", "(min-max)", "/none", "/uniform",
+	       "setup us", "mismatch%", "worst%");
+	for (int p = 0; p < b->scene.plane_count && p < 2; p++)
+		printf(" %8s", b->scene.planes[p].name);
+	printf("\n");
+	for (int m = 0; m < b->nm; m++) {
+		double med = median_of(b->all_frames[m], b->nframes[m]), lo = INFINITY, hi = 0, mis[MAX_CONFIGS], worst = 0;
+		for (int k = 0; k < b->nframes[m]; k++)
+			lo = fmin(lo, b->all_frames[m][k]), hi = fmax(hi, b->all_frames[m][k]);
+		for (int c = 0; c < b->nc; c++)
+			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
+		char range[40];
+		snprintf(range, sizeof range, "(%.2f-%.2f)", lo, hi);
+		printf("%-8s %10.3f %19s %8.3f %8.3f %9.1f %10.4f %10.4f", b->methods[m], med, range, med / none_ms,
+		       med / uni_ms, median_of(b->all_setup[m], b->nframes[m]), median_of(mis, b->nc), worst);
+		for (int p = 0; p < b->scene.plane_count && p < 2; p++) {
+			double w = NAN;
+			for (int c = 0; c < b->nc; c++)
+				if (!isnan(b->rows[m][c].m_max[p]))
+					w = isnan(w) ? b->rows[m][c].m_max[p] : fmax(w, b->rows[m][c].m_max[p]);
+			if (isnan(w))
+				printf(" %8s", "-");
+			else
+				printf(" %8.3g", w);
+		}
+		printf("\n");
+	}
+	printf("(the two plane columns: worst m_max over the configurations, lixel spans in pixels)\n");
+}
+
+static void print_json(const struct bench *b)
+{
+	struct lx_json j;
+	lx_json_begin(&j, stdout);
+	lx_json_object(&j);
+	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, b->width), lx_json_int(&j, b->height), lx_json_end(&j);
+	lx_json_key(&j, "configs"), lx_json_array(&j);
+	for (int c = 0; c < b->nc; c++)
+		lx_json_string(&j, b->configs[c]);
+	lx_json_end(&j);
+	lx_json_key(&j, "results"), lx_json_array(&j);
+	for (int c = 0; c < b->nc; c++)
+		for (int m = 0; m < b->nm; m++) {
+			const struct row *r = &b->rows[m][c];
+			lx_json_object(&j);
+			lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
+			lx_json_key(&j, "config"), lx_json_string(&j, b->configs[c]);
+			lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, r->frame_ms_median);
+			lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
+			lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
+			lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
+			lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, r->mismatch_pct);
+			lx_json_key(&j, "m_max"), lx_json_object(&j);
+			for (int p = 0; p < b->scene.plane_count; p++)
+				if (!isnan(r->m_max[p]))
+					lx_json_key(&j, b->scene.planes[p].name), lx_json_number(&j, r->m_max[p]);
+			lx_json_end(&j);
+			lx_json_end(&j);
+		}
+	lx_json_end(&j);
+	int none = method_index(b, "none"), uni = method_index(b, "uniform");
+	double none_ms = none >= 0 ? median_of(b->all_frames[none], b->nframes[none]) : NAN;
+	double uni_ms = uni >= 0 ? median_of(b->all_frames[uni], b->nframes[uni]) : NAN;
+	lx_json_key(&j, "summary"), lx_json_array(&j);
+	for (int m = 0; m < b->nm; m++) {
+		double med = median_of(b->all_frames[m], b->nframes[m]), mis[MAX_CONFIGS], worst = 0;
+		for (int c = 0; c < b->nc; c++)
+			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
+		lx_json_object(&j);
+		lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
+		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, med);
+		lx_json_key(&j, "ratio_none"), lx_json_number(&j, med / none_ms);
+		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, med / uni_ms);
+		lx_json_key(&j, "setup_us"), lx_json_number(&j, median_of(b->all_setup[m], b->nframes[m]));
+		lx_json_key(&j, "mismatch_median"), lx_json_number(&j, median_of(mis, b->nc));
+		lx_json_key(&j, "mismatch_worst"), lx_json_number(&j, worst);
+		lx_json_end(&j);
+	}
+	lx_json_end(&j);
+	lx_json_end(&j);
+}
+
+static bool write_csv(const struct bench *b, char *err, size_t errlen)
+{
+	FILE *f = fopen(b->csv, "w");
+	if (!f) {
+		snprintf(err, errlen, "%s: cannot write: %s", b->csv, strerror(errno));
+		return false;
+	}
+	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,setup_us,mismatch_pct,false_shadow_pct,"
+		   "missing_shadow_pct,mismatch_worst");
+	for (int p = 0; p < b->scene.plane_count; p++)
+		fprintf(f, ",m_max_%s", b->scene.planes[p].name);
+	fprintf(f, "\n");
+	for (int c = 0; c < b->nc; c++)
+		for (int m = 0; m < b->nm; m++) {
+			const struct row *r = &b->rows[m][c];
+			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.2f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
+				r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->setup_us, r->mismatch_pct, r->false_pct,
+				r->missing_pct, r->mismatch_worst);
+			for (int p = 0; p < b->scene.plane_count; p++)
+				if (isnan(r->m_max[p]))
+					fprintf(f, ",");
+				else
+					fprintf(f, ",%.4f", r->m_max[p]);
+			fprintf(f, "\n");
+		}
+	return fclose(f) == 0;
+}
+
+static bool write_plot(const struct bench *b, char *err, size_t errlen)
+{
+	struct lx_plot_point pts[MAX_METHODS];
+	for (int m = 0; m < b->nm; m++) {
+		double mis[MAX_CONFIGS];
+		for (int c = 0; c < b->nc; c++)
+			mis[c] = b->rows[m][c].mismatch_pct;
+		pts[m] = (struct lx_plot_point){.x = median_of(b->all_frames[m], b->nframes[m]), .y = median_of(mis, b->nc),
+						.label = b->methods[m]};
+		lx_plot_color(m, pts[m].rgb);
+	}
+	char title[96];
+	snprintf(title, sizeof title, "lixel bench %dx%d: median over %d configurations", b->width, b->height, b->nc);
+	return lx_plot_scatter(b->plot, title, "frame time ms (median)", "mismatch % (median, log)", pts, b->nm, err, errlen);
+}
+
+int lx_bench_main(int argc, char **argv)
+{
+	static struct bench b;
+	memset(&b, 0, sizeof b);
+	b.width = b.height = 1024;
+	b.frames = 30;
+	b.warmup = 5;
+	b.platform = "osmesa";
+	static char methods_buf[256] = "none,uniform,plane", configs_buf[512];
+	lx_scene_default(&b.scene);
+	const char *scene_arg = NULL;
+	for (int i = 0; i < argc; i++) {
+		const char *a = argv[i];
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			usage(stdout);
+			return 0;
+		}
+		if (!strcmp(a, "--json")) {
+			b.json = true;
+			continue;
+		}
+		static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
+							 "--scene", "--csv", "--plot", "--strips"};
+		bool known = false;
+		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+			known |= !strcmp(a, with_value[k]);
+		if (!known) {
+			fprintf(stderr, "lixel bench: unknown option '%s' (see lixel bench --help)\n", a);
+			return 2;
+		}
+		if (i + 1 >= argc)
+			return bad(a, "a value", NULL);
+		const char *v = argv[++i];
+		char *end;
+		if (!strcmp(a, "--size")) {
+			long w = strtol(v, &end, 10), h = *end == 'x' ? strtol(end + 1, &end, 10) : 0;
+			if (*end || w < 1 || h < 1 || w > 16384 || h > 16384)
+				return bad(a, "WxH with W and H from 1 to 16384", v);
+			b.width = (int)w, b.height = (int)h;
+		} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
+			long k = strtol(v, &end, 10);
+			bool frames = !strcmp(a, "--frames");
+			if (end == v || *end || k < (frames ? 1 : 0) || k > 10000)
+				return bad(a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000", v);
+			*(frames ? &b.frames : &b.warmup) = (int)k;
+		} else if (!strcmp(a, "--methods")) {
+			if (strlen(v) >= sizeof methods_buf)
+				return bad(a, "a shorter list", v);
+			strcpy(methods_buf, v);
+		} else if (!strcmp(a, "--configs")) {
+			if (strlen(v) >= sizeof configs_buf)
+				return bad(a, "a shorter list", v);
+			strcpy(configs_buf, v);
+		} else if (!strcmp(a, "--platform")) {
+			if (strcmp(v, "osmesa") && strcmp(v, "egl"))
+				return bad(a, lx_platform_names(), v);
+			b.platform = v;
+		} else if (!strcmp(a, "--scene"))
+			scene_arg = v;
+		else if (!strcmp(a, "--csv"))
+			b.csv = v;
+		else if (!strcmp(a, "--plot"))
+			b.plot = v;
+		else if (!strcmp(a, "--strips"))
+			b.strips = v;
+	}
+	char list_copy[256];
+	strcpy(list_copy, methods_buf);
+	if (!split(methods_buf, b.methods, MAX_METHODS, &b.nm))
+		return bad("--methods", "a comma-separated list of methods", list_copy);
+	for (int m = 0; m < b.nm; m++)
+		if (!lx_shadow_method_find(b.methods[m]))
+			return bad("--methods", lx_shadow_method_names(), b.methods[m]);
+	if (!configs_buf[0]) {
+		for (int c = 0; c < lx_config_count; c++)
+			b.configs[b.nc++] = lx_configs[c].name;
+		b.configs[b.nc++] = "animation";
+	} else {
+		char copy[512];
+		strcpy(copy, configs_buf);
+		if (!split(configs_buf, b.configs, MAX_CONFIGS, &b.nc))
+			return bad("--configs", "a comma-separated list of configurations", copy);
+		for (int c = 0; c < b.nc; c++)
+			if (!is_animation(b.configs[c]) && !lx_config_find(b.configs[c]))
+				return bad("--configs", "configurations named in lixel render --help, or animation", b.configs[c]);
+	}
+	char err[512];
+	if (scene_arg && !lx_scene_builtin(scene_arg, &b.scene) && !lx_scene_load(scene_arg, &b.scene, err, sizeof err)) {
+		fprintf(stderr, "lixel: %s\n", err);
+		return 2;
+	}
+	if (b.strips) {
+		FILE *probe;
+		char path[4096];
+		snprintf(path, sizeof path, "%s/.lixel-probe", b.strips);
+		if (!(probe = fopen(path, "w")))
+			return bad("--strips", "a writable directory", b.strips);
+		fclose(probe);
+		remove(path);
+	}
+
+	struct lx_scene_meshes meshes = {0};
+	if (!lx_meshes_build(&b.scene, &meshes)) {
+		fprintf(stderr, "lixel: out of memory building the meshes\n");
+		return 1;
+	}
+	struct lx_platform *plat = lx_platform_create(b.platform, err, sizeof err);
+	if (!plat) {
+		fprintf(stderr, "lixel: %s\n", err);
+		lx_meshes_free(&meshes);
+		return 1;
+	}
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	struct lx_method_options opt = LX_METHOD_OPTIONS_DEFAULT;
+	struct lx_method_run runs[MAX_METHODS];
+	int status = 0, ready = 0;
+	long n = (long)b.width * b.height;
+	uint8_t *rgba = malloc((size_t)n * 4), *sh = malloc((size_t)n), *ref_sh = malloc((size_t)n);
+	int16_t *obj = malloc((size_t)n * sizeof(int16_t)), *ref_obj = malloc((size_t)n * sizeof(int16_t));
+	if (!rgba || !sh || !ref_sh || !obj || !ref_obj) {
+		snprintf(err, sizeof err, "out of memory for %dx%d images", b.width, b.height);
+		status = 1;
+		goto out;
+	}
+	for (int m = 0; m < b.nm; m++) {
+		b.all_frames[m] = malloc(sizeof(double) * (size_t)b.frames * b.nc);
+		b.all_setup[m] = malloc(sizeof(double) * (size_t)b.frames * b.nc);
+		if (!b.all_frames[m] || !b.all_setup[m]) {
+			snprintf(err, sizeof err, "out of memory");
+			status = 1;
+			goto out;
+		}
+	}
+	for (; ready < b.nm; ready++) {
+		status = lx_method_run_init(&runs[ready], b.methods[ready], &b.scene, &meshes, &caps, &opt, b.width, b.height,
+					    false, LX_DEFAULT_BIAS_CODES, err, sizeof err);
+		if (status)
+			goto out;
+	}
+	for (int c = 0; c < b.nc; c++) {
+		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b.nc, b.configs[c]);
+		status = run_config(&b, c, runs, &meshes, rgba, obj, sh, ref_obj, ref_sh, err, sizeof err);
+		if (status)
+			goto out;
+	}
+	if (b.json)
+		print_json(&b);
+	else
+		print_text(&b, &caps);
+	if ((b.csv && !write_csv(&b, err, sizeof err)) || (b.plot && !write_plot(&b, err, sizeof err)))
+		status = 1;
+out:
+	if (status)
+		fprintf(stderr, "lixel: %s\n", err);
+	for (int m = 0; m < ready; m++)
+		lx_method_run_free(&runs[m]);
+	for (int m = 0; m < b.nm; m++)
+		free(b.all_frames[m]), free(b.all_setup[m]);
+	free(rgba), free(sh), free(ref_sh), free(obj), free(ref_obj);
+	lx_platform_destroy(plat);
+	lx_meshes_free(&meshes);
+	return status;
+}
