@@ -1,11 +1,13 @@
 #include "shadow_method.h"
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane;
+extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane, lx_method_lispsm;
 
-static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform, &lx_method_plane};
+static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform, &lx_method_plane,
+							 &lx_method_lispsm};
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 {
@@ -15,7 +17,7 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 	return NULL;
 }
 
-const char *lx_shadow_method_names(void) { return "none|uniform|plane"; }
+const char *lx_shadow_method_names(void) { return "none|uniform|lispsm|plane"; }
 
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {
@@ -44,6 +46,29 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p)
 			return i;
 	}
 	return -1;
+}
+
+bool lx_shadow_fix_winding(mat4 *clip, const struct lx_light *light, vec3 p)
+{
+	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p), n, a, b;
+	if (!v3_normalize(to_light, &n))
+		return false;
+	/* two unit vectors spanning the plane through p facing the light: (a, b, n) right-handed */
+	if (!v3_normalize(v3_cross(fabs(n.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0), n), &a))
+		return false;
+	b = v3_cross(n, a);
+	double s = 1e-3;
+	vec4 q[3] = {m4_mul_point(clip, p), m4_mul_point(clip, v3_add(p, v3_scale(a, s))),
+		     m4_mul_point(clip, v3_add(p, v3_scale(b, s)))};
+	for (int i = 0; i < 3; i++)
+		if (!(q[i].w > 0))
+			return false;
+	double area = (q[1].x / q[1].w - q[0].x / q[0].w) * (q[2].y / q[2].w - q[0].y / q[0].w) -
+		      (q[1].y / q[1].w - q[0].y / q[0].w) * (q[2].x / q[2].w - q[0].x / q[0].w);
+	if (area < 0)
+		for (int c = 0; c < 4; c++)
+			clip->m[c * 4] = -clip->m[c * 4];
+	return true;
 }
 
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...)

@@ -206,6 +206,19 @@ static void paper_bad_case_is_measured(void **state)
 	free(dist);
 }
 
+/* LiSPSM under the same edge bound on every configuration. */
+static void lispsm_matches_reference(void **state)
+{
+	(void)state;
+	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
+					      "floor-close", "horizon", "near-wall"};
+	uint8_t *dist = malloc((size_t)W * H);
+	for (size_t p = 0; p < 2; p++)
+		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
+			check_config(platforms[p], "lispsm", configs[c], false, dist);
+	free(dist);
+}
+
 /* The 11-bit mediump depth path (boards without fragment highp) under the same bounds.
  * llvmpipe still computes in fp32, so this checks the path's layout and compare, while
  * test_depth_rgba checks its fp16 arithmetic. */
@@ -392,6 +405,7 @@ int main(void)
 		cmocka_unit_test(uniform_matches_reference),
 		cmocka_unit_test(mediump_path_matches_reference),
 		cmocka_unit_test(plane_matches_reference_and_wins),
+		cmocka_unit_test(lispsm_matches_reference),
 		cmocka_unit_test(paper_bad_case_is_measured),
 		cmocka_unit_test(none_shadows_nothing),
 		cmocka_unit_test(platforms_agree),

@@ -1,0 +1,137 @@
+/* LiSPSM: the 1-D error oracle, the parameter's pitfalls, the fade to uniform, and the
+ * coverage of every shadow. GL-free. */
+#include "configs.h"
+#include "method_lispsm.h"
+#include "shadow_method.h"
+#include "test_util.h"
+#include "shadow_coverage.h"
+#include <stdio.h>
+#include <string.h>
+
+/* The 1-D model of the shared notes: a directional light perpendicular to the view,
+ * view depths z in [z_n, z_f]. A pixel at depth z covers a length proportional to z; a
+ * lixel covers 1 / (N du/dz). The worst m, max over z of 1 / (z du/dz), is (z_f - z_n) / z_n
+ * for a uniform map and (z_f - z_n) / sqrt(z_n z_f) with LiSPSM's n_opt: 99 against 9.9
+ * for z_n = 1, z_f = 100. */
+static void one_dimensional_oracle(void **state)
+{
+	(void)state;
+	const double zn = 1, zf = 100, d = zf - zn;
+	double n = lx_lispsm_n(zn, d, 1.0);
+	assert_near(n, zn + sqrt(zn * zf), 1e-12); /* n_opt in the perpendicular case */
+	double worst_uniform = 0, worst_lispsm = 0;
+	for (int i = 0; i <= 100000; i++) {
+		double z = zn + d * i / 100000.0, h = 1e-6 * z;
+		double du_uniform = 1.0 / d;
+		/* warp coordinate in [-1, 1] along the view; u = (warp + 1) / 2 */
+		double du_lispsm = (lx_lispsm_warp(z - zn + n + h, n, d) - lx_lispsm_warp(z - zn + n - h, n, d)) / (4 * h);
+		worst_uniform = fmax(worst_uniform, 1 / (z * du_uniform));
+		worst_lispsm = fmax(worst_lispsm, 1 / (z * du_lispsm));
+	}
+	print_message("1-D model: worst m uniform %.3f, LiSPSM %.3f (expected 99 and 9.9)\n", worst_uniform, worst_lispsm);
+	assert_near(worst_uniform, 99, 1e-9);
+	assert_near(worst_lispsm, (zf - zn) / sqrt(zn * zf), 0.01);
+}
+
+static void parameter_pitfalls(void **state)
+{
+	(void)state;
+	/* a flat body (d = 0) gives a finite n and a finite warp */
+	double n = lx_lispsm_n(0.5, 0, 0.7);
+	assert_true(isfinite(n) && n > 0);
+	assert_true(isfinite(lx_lispsm_warp(n, n, 0)));
+	/* n grows without bound as the view turns parallel to the light: the warp fades */
+	assert_true(lx_lispsm_n(0.5, 10, LX_LISPSM_MIN_SIN_GAMMA) > 10 * lx_lispsm_n(0.5, 10, 1));
+	assert_true(lx_lispsm_n(0.5, 10, 1e-6) > 1e5);
+	/* the warp maps the body's ends to -1 and 1 */
+	assert_near(lx_lispsm_warp(3, 3, 7), -1, 1e-12);
+	assert_near(lx_lispsm_warp(10, 3, 7), 1, 1e-12);
+}
+
+struct setup {
+	struct lx_scene scene;
+	struct lx_scene_meshes meshes;
+	struct lx_frame frame;
+	struct lx_atlas atlas;
+	struct lx_shadow_result res;
+};
+
+static void build(struct setup *s, const char *method)
+{
+	struct lx_region_request req[LX_MAX_MAPS];
+	const struct lx_shadow_method *m = lx_shadow_method_find(method);
+	char err[256];
+	assert_true(lx_meshes_build(&s->scene, &s->meshes));
+	assert_true(lx_frame_setup(&s->frame, &s->scene, &s->meshes, 0.3, 320, 240, err, sizeof err));
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &o, req), 1, 2048, err, sizeof err));
+	m->build(&s->frame, &s->atlas, &s->res);
+}
+
+/* A directional light along the view: no warp, the uniform map exactly. */
+static void parallel_view_and_light_is_uniform(void **state)
+{
+	(void)state;
+	struct setup a, b;
+	memset(&a, 0, sizeof a);
+	lx_scene_default(&a.scene);
+	a.scene.light.directional = true;
+	assert_true(v3_normalize(v3_sub(a.scene.camera.at, a.scene.camera.eye), &a.scene.light.direction));
+	b = a;
+	build(&a, "lispsm");
+	build(&b, "uniform");
+	assert_true(a.res.maps[0].rendered);
+	assert_memory_equal(&a.res.maps[0].light_clip, &b.res.maps[0].light_clip, sizeof(mat4));
+	lx_meshes_free(&a.meshes);
+	lx_meshes_free(&b.meshes);
+}
+
+static void every_shadow_is_covered(void **state)
+{
+	(void)state;
+	uint64_t seed = 31;
+	long pairs = 0;
+	int warped = 0;
+	for (int k = 0; k < 200; k++) {
+		struct setup s, u;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		if (k < lx_config_count)
+			lx_config_apply(&lx_configs[k], &s.scene);
+		else {
+			s.scene.camera.eye = v3(test_rand(&seed) * 10 - 5, 0.3 + test_rand(&seed) * 5, test_rand(&seed) * 10 - 3);
+			s.scene.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 1.5, test_rand(&seed) * 4 - 3);
+			if (k % 3 == 0) {
+				s.scene.light.directional = true;
+				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.05 - test_rand(&seed), test_rand(&seed) - 0.5),
+							 &s.scene.light.direction));
+			} else
+				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
+		}
+		u = s;
+		build(&s, "lispsm");
+		build(&u, "uniform");
+		assert_true(m4_finite(&s.res.maps[0].light_clip));
+		bool wide = s.res.warning_count && strstr(s.res.warnings[0], "150 degrees");
+		char what[64];
+		snprintf(what, sizeof what, "lispsm configuration %d", k);
+		if (!wide)
+			pairs += check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, what);
+		warped += memcmp(&s.res.maps[0].light_clip, &u.res.maps[0].light_clip, sizeof(mat4)) != 0;
+		lx_meshes_free(&s.meshes);
+		lx_meshes_free(&u.meshes);
+	}
+	print_message("%ld caster/receiver pairs covered; %d of 200 maps warped\n", pairs, warped);
+	assert_true(pairs > 10000 && warped > 100);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(one_dimensional_oracle),
+		cmocka_unit_test(parameter_pitfalls),
+		cmocka_unit_test(parallel_view_and_light_is_uniform),
+		cmocka_unit_test(every_shadow_is_covered),
+	};
+	return cmocka_run_group_tests_name("lispsm", tests, NULL, NULL);
+}
