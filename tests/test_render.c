@@ -206,8 +206,8 @@ static void paper_bad_case_is_measured(void **state)
 	free(dist);
 }
 
-/* LiSPSM under the same edge bound on every configuration. */
-static void lispsm_matches_reference(void **state)
+/* LiSPSM and TSM under the same edge bound on every configuration. */
+static void warps_match_reference(void **state)
 {
 	(void)state;
 	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
@@ -215,7 +215,8 @@ static void lispsm_matches_reference(void **state)
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
 		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			check_config(platforms[p], "lispsm", configs[c], false, dist);
+			for (int m = 0; m < 2; m++)
+				check_config(platforms[p], m ? "tsm" : "lispsm", configs[c], false, dist);
 	free(dist);
 }
 
@@ -405,7 +406,7 @@ int main(void)
 		cmocka_unit_test(uniform_matches_reference),
 		cmocka_unit_test(mediump_path_matches_reference),
 		cmocka_unit_test(plane_matches_reference_and_wins),
-		cmocka_unit_test(lispsm_matches_reference),
+		cmocka_unit_test(warps_match_reference),
 		cmocka_unit_test(paper_bad_case_is_measured),
 		cmocka_unit_test(none_shadows_nothing),
 		cmocka_unit_test(platforms_agree),

@@ -1,5 +1,6 @@
-/* LiSPSM: the 1-D error oracle, the parameter's pitfalls, the fade to uniform, and the
- * coverage of every shadow. GL-free. */
+/* The warping methods (LiSPSM, TSM): LiSPSM's 1-D error oracle, its parameter's
+ * pitfalls and fade to uniform, TSM's 80% rule, and for each the coverage of every
+ * shadow over the standard and random configurations. GL-free. */
 #include "configs.h"
 #include "method_lispsm.h"
 #include "shadow_method.h"
@@ -86,9 +87,8 @@ static void parallel_view_and_light_is_uniform(void **state)
 	lx_meshes_free(&b.meshes);
 }
 
-static void every_shadow_is_covered(void **state)
+static void covered(const char *method)
 {
-	(void)state;
 	uint64_t seed = 31;
 	long pairs = 0;
 	int warped = 0;
@@ -109,20 +109,53 @@ static void every_shadow_is_covered(void **state)
 				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
 		}
 		u = s;
-		build(&s, "lispsm");
+		build(&s, method);
 		build(&u, "uniform");
 		assert_true(m4_finite(&s.res.maps[0].light_clip));
 		bool wide = s.res.warning_count && strstr(s.res.warnings[0], "150 degrees");
 		char what[64];
-		snprintf(what, sizeof what, "lispsm configuration %d", k);
+		snprintf(what, sizeof what, "%s configuration %d", method, k);
 		if (!wide)
 			pairs += check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, what);
 		warped += memcmp(&s.res.maps[0].light_clip, &u.res.maps[0].light_clip, sizeof(mat4)) != 0;
 		lx_meshes_free(&s.meshes);
 		lx_meshes_free(&u.meshes);
 	}
-	print_message("%ld caster/receiver pairs covered; %d of 200 maps warped\n", pairs, warped);
+	print_message("%s: %ld caster/receiver pairs covered; %d of 200 maps warped\n", method, pairs, warped);
 	assert_true(pairs > 10000 && warped > 100);
+}
+
+static void lispsm_covers_every_shadow(void **state)
+{
+	(void)state;
+	covered("lispsm");
+}
+
+static void tsm_covers_every_shadow(void **state)
+{
+	(void)state;
+	covered("tsm");
+}
+
+/* TSM's 80% rule: the focus point (the view's centre at half its depth) lands on the
+ * map's 80% line: 80% of the map lies between the trapezoid's top (y = -1) and it. */
+static void tsm_focus_on_the_80_percent_line(void **state)
+{
+	(void)state;
+	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_default(&s.scene);
+	s.scene.light.directional = true;
+	assert_true(v3_normalize(v3(0.2, -1, -0.1), &s.scene.light.direction));
+	build(&s, "tsm");
+	const struct lx_view *v = &s.frame.view;
+	vec3 dir;
+	assert_true(v3_normalize(v3_sub(s.scene.camera.at, s.scene.camera.eye), &dir));
+	vec4 top = m4_mul_point(&s.res.maps[0].light_clip, v3_add(v->eye, v3_scale(dir, v->near)));
+	vec4 focus = m4_mul_point(&s.res.maps[0].light_clip, v3_add(v->eye, v3_scale(dir, v->near + 0.5 * (v->far - v->near))));
+	print_message("near centre at y %.4f, focus at y %.4f\n", top.y / top.w, focus.y / focus.w);
+	assert_near(focus.y / focus.w, 0.6, 1e-6);
+	lx_meshes_free(&s.meshes);
 }
 
 int main(void)
@@ -131,7 +164,9 @@ int main(void)
 		cmocka_unit_test(one_dimensional_oracle),
 		cmocka_unit_test(parameter_pitfalls),
 		cmocka_unit_test(parallel_view_and_light_is_uniform),
-		cmocka_unit_test(every_shadow_is_covered),
+		cmocka_unit_test(lispsm_covers_every_shadow),
+		cmocka_unit_test(tsm_covers_every_shadow),
+		cmocka_unit_test(tsm_focus_on_the_80_percent_line),
 	};
-	return cmocka_run_group_tests_name("lispsm", tests, NULL, NULL);
+	return cmocka_run_group_tests_name("warps", tests, NULL, NULL);
 }
