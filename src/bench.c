@@ -52,7 +52,7 @@ static void usage(FILE *f)
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
 		   "  --warmup N       warm-up frames (default 5)\n"
-		   "  --methods LIST   comma-separated, from %s (default none,uniform,lispsm,tsm,plane)\n"
+		   "  --methods LIST   comma-separated, from %s (default none,uniform,psm,lispsm,tsm,plane)\n"
 		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
 		   "  --csv FILE       every row as CSV\n"
@@ -379,7 +379,7 @@ int lx_bench_main(int argc, char **argv)
 	b.frames = 30;
 	b.warmup = 5;
 	b.platform = "osmesa";
-	static char methods_buf[256] = "none,uniform,lispsm,tsm,plane", configs_buf[512];
+	static char methods_buf[256] = "none,uniform,psm,lispsm,tsm,plane", configs_buf[512];
 	lx_scene_default(&b.scene);
 	const char *scene_arg = NULL;
 	for (int i = 0; i < argc; i++) {

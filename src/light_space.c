@@ -7,7 +7,7 @@
  * unshadowed with a warning. */
 #define MAX_HALF_ANGLE_DEG 75.0
 
-static int receiver_points(const struct lx_frame *f, vec3 *pts)
+int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts)
 {
 	vec3 fc[8];
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
@@ -53,7 +53,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	ls->size = v3_len(v3_sub(f->scene_max, f->scene_min));
 	ls->tiny = 1e-9 * (ls->size + 1e-300);
 	vec3 rec[LX_CONVEX_MAX_POINTS];
-	int nrec = receiver_points(f, rec);
+	int nrec = lx_light_space_receivers(f, rec);
 	if (nrec == 0)
 		return; /* the view holds nothing of the scene */
 	vec3 centroid = v3(0, 0, 0);

@@ -5,6 +5,7 @@
  * (papers/003's unit cube clipping; papers/000's C_tot). GL-free. */
 #ifndef LX_LIGHT_SPACE_H
 #define LX_LIGHT_SPACE_H
+#include "convex.h"
 #include "frame.h"
 #include "polygon2d.h"
 #include "shadow_method.h"
@@ -24,6 +25,9 @@ struct lx_light_space {
 /* Whether object id can cast: casters always, planes only when their back face is lit
  * (the shadow passes write back faces). */
 bool lx_object_can_cast(const struct lx_frame *f, int id);
+/* The receiver volume's vertices (the view frustum clipped to the scene box); returns
+ * the count, at most LX_CONVEX_MAX_POINTS. */
+int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'
  * bounds (planes only where their back face is lit). */
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);

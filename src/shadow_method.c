@@ -5,10 +5,11 @@
 #include <string.h>
 
 extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane, lx_method_lispsm,
-	lx_method_tsm;
+	lx_method_tsm, lx_method_psm;
 
 static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform, &lx_method_plane,
-							 &lx_method_lispsm, &lx_method_tsm};
+							 &lx_method_psm, &lx_method_lispsm,
+							 &lx_method_tsm};
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 {
@@ -18,7 +19,7 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 	return NULL;
 }
 
-const char *lx_shadow_method_names(void) { return "none|uniform|lispsm|tsm|plane"; }
+const char *lx_shadow_method_names(void) { return "none|uniform|psm|lispsm|tsm|plane"; }
 
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {

@@ -22,6 +22,7 @@ struct lx_shadow_map {
 	mat4 light_clip; /* world -> region clip space */
 	int plane;       /* the plane of interest this map is optimal for, or -1 */
 	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel) */
+	bool pancake;       /* casters may lie nearer than the near plane: the shadow pass flattens them onto it */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
 	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
 	 * of edge_count edges (a table top's polygon; only the first of several maps may
@@ -32,7 +33,11 @@ struct lx_shadow_map {
 	double edges[LX_MAX_MAP_EDGES][3];
 };
 
+/* PSM's kinds of light in post-perspective space (lx_shadow_result.variant) */
+enum { LX_PSM_POINT = 1, LX_PSM_INVERTED = 2, LX_PSM_DIRECTIONAL = 3 };
+
 struct lx_shadow_result {
+	int variant; /* which branch a method took, where it has several (PSM); 0 otherwise */
 	int map_count;
 	struct lx_shadow_map maps[LX_MAX_MAPS];
 	int warning_count;

@@ -34,7 +34,7 @@ done
 out="--out $tmp/out.png"
 expect_bad "no command"
 expect_bad "unknown command" frobnicate
-expect_bad "unknown method" render --method psm $out
+expect_bad "unknown method" render --method teapot $out
 expect_bad "size 0x0" render --size 0x0 $out
 expect_bad "size words" render --size wide $out
 expect_bad "word for a number" render --fov wide $out
@@ -114,7 +114,7 @@ if "$lixel" bench --size 64x48 --frames 2 --warmup 1 --json --csv "$tmp/b.csv" -
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
   grep -qiE 'nan|inf' "$tmp/bench.json" && no "bench JSON holds NaN or Infinity" || ok
-  [ "$(wc -l <"$tmp/b.csv")" -eq $((5 * 11 + 1)) ] && ok || no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected 56"
+  [ "$(wc -l <"$tmp/b.csv")" -eq $((6 * 11 + 1)) ] && ok || no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected 67"
   [ "$(head -c 4 "$tmp/b.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "bench plot is not a PNG"
   [ "$(ls "$tmp/strips" | wc -l)" -eq 11 ] && ok || no "bench wrote $(ls "$tmp/strips" | wc -l) strips, expected 11"
   grep -q "configuration 11/11: animation" "$tmp/bench.err" && ok || no "bench shows no progress on stderr"

@@ -132,7 +132,9 @@ static double check_config(const char *platform, const char *method, const char 
 	struct lx_scene scene;
 	lx_scene_default(&scene);
 	lx_config_apply(lx_config_find(config), &scene);
-	return check_against_reference(platform, method, &scene, config, mediump, dist, 0.5);
+	/* PSM is known to deteriorate (papers/002): with the camera level, the wall's lixels
+	 * span up to 15 pixels; its edge bound stays as strict, its total bound is 2% */
+	return check_against_reference(platform, method, &scene, config, mediump, dist, strcmp(method, "psm") ? 0.5 : 2.0);
 }
 
 static void uniform_matches_reference(void **state)
@@ -206,7 +208,7 @@ static void paper_bad_case_is_measured(void **state)
 	free(dist);
 }
 
-/* LiSPSM and TSM under the same edge bound on every configuration. */
+/* PSM, LiSPSM and TSM under the same edge bound on every configuration. */
 static void warps_match_reference(void **state)
 {
 	(void)state;
@@ -215,8 +217,8 @@ static void warps_match_reference(void **state)
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
 		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			for (int m = 0; m < 2; m++)
-				check_config(platforms[p], m ? "tsm" : "lispsm", configs[c], false, dist);
+			for (int m = 0; m < 3; m++)
+				check_config(platforms[p], m == 0 ? "psm" : m == 1 ? "lispsm" : "tsm", configs[c], false, dist);
 	free(dist);
 }
 
@@ -361,12 +363,12 @@ static void gpu_depth_encoding_and_guards(void **state)
 static void unknown_platform_and_method_are_bad_input(void **state)
 {
 	(void)state;
-	struct lx_render_job job = {.method = "psm", .platform = "osmesa", .width = 8, .height = 8, .timed_frames = 1};
+	struct lx_render_job job = {.method = "teapot", .platform = "osmesa", .width = 8, .height = 8, .timed_frames = 1};
 	lx_scene_default(&job.scene);
 	struct lx_render_report r;
 	char err[256];
 	assert_int_equal(lx_render_run(&job, &r, err, sizeof err), 2);
-	assert_non_null(strstr(err, "unknown method 'psm'"));
+	assert_non_null(strstr(err, "unknown method 'teapot'"));
 	job.method = "uniform";
 	job.platform = "vulkan";
 	assert_int_equal(lx_render_run(&job, &r, err, sizeof err), 2);

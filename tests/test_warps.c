@@ -1,6 +1,7 @@
-/* The warping methods (LiSPSM, TSM): LiSPSM's 1-D error oracle, its parameter's
- * pitfalls and fade to uniform, TSM's 80% rule, and for each the coverage of every
- * shadow over the standard and random configurations. GL-free. */
+/* The warping methods (PSM, LiSPSM, TSM): LiSPSM's 1-D error oracle, its parameter's
+ * pitfalls and fade to uniform, TSM's 80% rule, PSM's three kinds of light in
+ * post-perspective space, and for each the coverage of every shadow over the standard
+ * and random configurations. GL-free. */
 #include "configs.h"
 #include "method_lispsm.h"
 #include "shadow_method.h"
@@ -131,6 +132,55 @@ static void lispsm_covers_every_shadow(void **state)
 	covered("lispsm");
 }
 
+static void psm_covers_every_shadow(void **state)
+{
+	(void)state;
+	covered("psm");
+}
+
+/* PSM: a point light in front of the viewer, an inverted light behind it, and a
+ * directional light orthogonal to the view (directional in PPS too) each take their
+ * branch and still cover every shadow. */
+static void psm_branches(void **state)
+{
+	(void)state;
+	struct {
+		const char *what;
+		vec3 eye, at;
+		bool directional;
+		vec3 light;
+		int variant;
+	} cases[] = {
+		{"point light in front", {0, 2, 6}, {0, 0.8, 0}, false, {2.5, 6, 3}, LX_PSM_POINT},
+		{"light behind the viewer", {0, 2, 6}, {0, 0.8, 0}, false, {0.8, 4, 8.5}, LX_PSM_INVERTED},
+		{"directional, orthogonal to the view", {0, 1, 4.5}, {0, 1, -5}, true, {0, -1, 0}, LX_PSM_DIRECTIONAL},
+		/* a light travelling along the view comes from behind the viewer: inverted */
+		{"directional, from behind", {0, 2, 6}, {0, 0.8, 0}, true, {0.1, -0.5, -1}, LX_PSM_INVERTED},
+		{"directional, from the front", {0, 2, 6}, {0, 0.8, 0}, true, {0.1, -0.5, 1}, LX_PSM_POINT},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		s.scene.camera.eye = cases[i].eye;
+		s.scene.camera.at = cases[i].at;
+		s.scene.light.directional = cases[i].directional;
+		if (cases[i].directional)
+			assert_true(v3_normalize(cases[i].light, &s.scene.light.direction));
+		else
+			s.scene.light.position = cases[i].light;
+		build(&s, "psm");
+		uint64_t seed = i + 7;
+		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 60, cases[i].what);
+		print_message("%-40s variant %d, %ld pairs, %s\n", cases[i].what, s.res.variant, n,
+			      s.res.warning_count ? s.res.warnings[0] : "no warning");
+		assert_int_equal(s.res.variant, cases[i].variant);
+		assert_int_equal(s.res.warning_count, 0);
+		assert_true(n > 500);
+		lx_meshes_free(&s.meshes);
+	}
+}
+
 static void tsm_covers_every_shadow(void **state)
 {
 	(void)state;
@@ -166,6 +216,8 @@ int main(void)
 		cmocka_unit_test(parallel_view_and_light_is_uniform),
 		cmocka_unit_test(lispsm_covers_every_shadow),
 		cmocka_unit_test(tsm_covers_every_shadow),
+		cmocka_unit_test(psm_covers_every_shadow),
+		cmocka_unit_test(psm_branches),
 		cmocka_unit_test(tsm_focus_on_the_80_percent_line),
 	};
 	return cmocka_run_group_tests_name("warps", tests, NULL, NULL);
