@@ -206,13 +206,35 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
-		vec4 cb[11];
-		memcpy(cb, hs, (size_t)ncone * sizeof(vec4));
-		vec4 obox[6] = {{1, 0, 0, -f->bmin[id].x}, {-1, 0, 0, f->bmax[id].x}, {0, 1, 0, -f->bmin[id].y},
-				{0, -1, 0, f->bmax[id].y}, {0, 0, 1, -f->bmin[id].z}, {0, 0, -1, f->bmax[id].z}};
-		memcpy(cb + ncone, obox, sizeof obox);
+		/* the box's corners against the cone: all inside (the usual case) gives the box's
+		 * corners as the vertices, all outside one side gives none; only a box crossing
+		 * the cone's sides needs the half-space enumeration */
 		vec3 cv[512];
-		int nc = lx_halfspace_vertices(cb, ncone + 6, cv, 512);
+		int nc = 0, all_in = 1, out_one = 0;
+		vec3 corner[8];
+		for (int k = 0; k < 8; k++)
+			corner[k] = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
+				       k & 4 ? f->bmax[id].z : f->bmin[id].z);
+		for (int q = 0; q < ncone; q++) {
+			int outside = 0;
+			for (int k = 0; k < 8; k++)
+				outside += dot4p(hs[q], corner[k]) < 0;
+			all_in &= outside == 0;
+			out_one |= outside == 8;
+		}
+		if (out_one)
+			continue;
+		if (all_in) {
+			memcpy(cv, corner, sizeof corner);
+			nc = 8;
+		} else {
+			vec4 cb[11];
+			memcpy(cb, hs, (size_t)ncone * sizeof(vec4));
+			vec4 obox[6] = {{1, 0, 0, -f->bmin[id].x}, {-1, 0, 0, f->bmax[id].x}, {0, 1, 0, -f->bmin[id].y},
+					{0, -1, 0, f->bmax[id].y}, {0, 0, 1, -f->bmin[id].z}, {0, 0, -1, f->bmax[id].z}};
+			memcpy(cb + ncone, obox, sizeof obox);
+			nc = lx_halfspace_vertices(cb, ncone + 6, cv, 512);
+		}
 		for (int k = 0; k < nc; k++) {
 			double w = dot4p(wrow, cv[k]);
 			znear = fmin(znear, dot4p(zrow, cv[k]) / w);

@@ -173,24 +173,37 @@ bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct 
 
 int lx_halfspace_vertices(const vec4 *planes, int n, vec3 *out, int max_out)
 {
+	/* Each triple of planes meets in p = -(d1 (n2 x n3) + d2 (n3 x n1) + d3 (n1 x n2)) / det,
+	 * det = n1 . (n2 x n3) (Cramer's rule; this runs every frame, so no general solver).
+	 * A triple whose det is tiny against its normals is parallel or nearly so: skipped. */
+	enum { MAX_PLANES = 32 };
+	if (n > MAX_PLANES)
+		n = MAX_PLANES;
+	vec3 nn[MAX_PLANES];
+	double scale[MAX_PLANES];
+	for (int i = 0; i < n; i++) {
+		nn[i] = v3(planes[i].x, planes[i].y, planes[i].z);
+		scale[i] = fabs(nn[i].x) + fabs(nn[i].y) + fabs(nn[i].z);
+	}
 	int count = 0;
 	for (int i = 0; i < n; i++)
-		for (int j = i + 1; j < n; j++)
+		for (int j = i + 1; j < n; j++) {
+			vec3 cij = v3_cross(nn[i], nn[j]);
 			for (int k = j + 1; k < n; k++) {
-				double a[9] = {planes[i].x, planes[i].y, planes[i].z, planes[j].x, planes[j].y, planes[j].z,
-					       planes[k].x, planes[k].y, planes[k].z};
-				double b[3] = {-planes[i].w, -planes[j].w, -planes[k].w};
-				if (!lx_solve(3, a, b, 1e-12))
+				double det = v3_dot(nn[k], cij);
+				if (!(fabs(det) > 1e-12 * scale[i] * scale[j] * scale[k]))
 					continue;
-				vec3 p = v3(b[0], b[1], b[2]);
-				bool inside = v3_finite(p);
-				for (int q = 0; q < n && inside; q++) {
-					double s = fabs(planes[q].x) + fabs(planes[q].y) + fabs(planes[q].z);
-					double scale = s * (fabs(p.x) + fabs(p.y) + fabs(p.z)) + fabs(planes[q].w);
-					inside = planes[q].x * p.x + planes[q].y * p.y + planes[q].z * p.z + planes[q].w >= -1e-9 * scale;
-				}
+				vec3 cjk = v3_cross(nn[j], nn[k]), cki = v3_cross(nn[k], nn[i]);
+				vec3 p = v3_scale(v3_add(v3_add(v3_scale(cjk, planes[i].w), v3_scale(cki, planes[j].w)),
+							 v3_scale(cij, planes[k].w)),
+						  -1 / det);
+				double pscale = fabs(p.x) + fabs(p.y) + fabs(p.z);
+				bool inside = isfinite(pscale);
+				for (int q = 0; q < n && inside; q++)
+					inside = v3_dot(nn[q], p) + planes[q].w >= -1e-9 * (scale[q] * pscale + fabs(planes[q].w));
 				if (inside && count < max_out)
 					out[count++] = p;
 			}
+		}
 	return count;
 }
