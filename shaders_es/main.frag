@@ -6,6 +6,8 @@ precision mediump float;
 #endif
 // Main pass: shading and the shadow decision. With LX_DECISION defined it writes the
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255.
+// The loader compiles one variant per set of maps a frame uses: LX_USE_i is 1 for each
+// map i that is rendered, LX_EDGES is 1 when map 0 has point-line tests.
 // With no maps (method none) nothing is shadowed.
 //!include depth_rgba.glsl
 uniform vec4 u_light; // xyz: position (w = 1) or direction of travel (w = 0)
@@ -15,9 +17,9 @@ uniform float u_object_id;
 uniform sampler2D u_atlas;
 uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
                                 // empty when not rendered
-#if LX_MAPS > 1
-uniform vec3 u_edges[4]; // the first map also needs a x + b y + c >= 0 on each edge (a table
-                         // top's point-line tests; (0, 0, 1) where unused)
+#if LX_EDGES
+uniform vec3 u_edges[4]; // the first map's a x + b y + c >= 0 on each edge (a table top's
+                         // point-line tests)
 #endif
 uniform float u_bias;           // in depth codes
 varying vec4 v_shadow[LX_MAPS];
@@ -34,11 +36,14 @@ bool serves(vec3 p, float w, vec4 region)
 {
 	return w > 0.0 && all(greaterThanEqual(p.xy, region.xy)) && all(lessThan(p.xy, region.zw));
 }
-// Later maps first, so that the first map that serves the point wins; then one fetch.
-#define PICK(i, extra) { vec3 p = v_shadow[i].xyz / v_shadow[i].w; \
-	if (serves(p, v_shadow[i].w, u_region[i]) extra) { pick = p; found = true; } }
-#if LX_MAPS > 1
+// The first map, in order, that serves the point wins; later maps are only looked at
+// where the earlier ones fail (coherent regions skip them), then one fetch.
+#define TRY(i, extra) if (!found) { p = v_shadow[i].xyz / v_shadow[i].w; \
+	found = serves(p, v_shadow[i].w, u_region[i]) extra; }
+#if LX_EDGES
 #define EDGES(q) && min(min(dot(u_edges[0], q), dot(u_edges[1], q)), min(dot(u_edges[2], q), dot(u_edges[3], q))) >= 0.0
+#else
+#define EDGES(q)
 #endif
 #endif
 
@@ -50,23 +55,23 @@ void main()
 	if (dot(v_face_normal, to_light) <= 0.0) {
 		shadowed = 1.0; // faces away from the light
 	} else {
-		vec3 pick = vec3(0.0);
+		vec3 p = vec3(0.0);
 		bool found = false;
-#if LX_MAPS > 3
-		PICK(3, )
+#if LX_USE_0
+		TRY(0, EDGES(vec3(p.xy, 1.0)))
 #endif
-#if LX_MAPS > 2
-		PICK(2, )
+#if LX_USE_1
+		TRY(1, )
 #endif
-#if LX_MAPS > 1
-		PICK(1, )
-		PICK(0, EDGES(vec3(p.xy, 1.0)))
-#else
-		PICK(0, )
+#if LX_USE_2
+		TRY(2, )
+#endif
+#if LX_USE_3
+		TRY(3, )
 #endif
 		if (found) {
-			float stored = lx_decode_code(texture2D(u_atlas, pick.xy));
-			shadowed = lx_depth_code(pick.z) > stored + u_bias ? 1.0 : 0.0;
+			float stored = lx_decode_code(texture2D(u_atlas, p.xy));
+			shadowed = lx_depth_code(p.z) > stored + u_bias ? 1.0 : 0.0;
 		}
 	}
 #endif

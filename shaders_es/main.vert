@@ -19,9 +19,18 @@ void main()
 	v_world = world.xyz;
 	v_normal = a_normal;
 	v_face_normal = a_face_normal;
-#if LX_MAPS > 0
-	for (int i = 0; i < LX_MAPS; i++)
-		v_shadow[i] = u_shadow_tex[i] * world;
+	// only the maps this variant uses (LX_USE_i, see main.frag)
+#if LX_USE_0
+	v_shadow[0] = u_shadow_tex[0] * world;
+#endif
+#if LX_USE_1
+	v_shadow[1] = u_shadow_tex[1] * world;
+#endif
+#if LX_USE_2
+	v_shadow[2] = u_shadow_tex[2] * world;
+#endif
+#if LX_USE_3
+	v_shadow[3] = u_shadow_tex[3] * world;
 #endif
 	gl_Position = u_view_proj * world;
 }

@@ -23,7 +23,9 @@ struct lx_renderer {
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog;
 	GLint shadow_light_clip;
-	struct main_program shaded, decision;
+	/* main-pass variants, built when first used: [decision][edges][mask of maps used] */
+	struct main_program variant[2][2][1 << LX_MAX_MAPS];
+	bool mediump;
 	float bias_uniform;
 };
 
@@ -54,11 +56,15 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, bool decision, bool mediump, char *err, size_t errlen)
+static bool main_program(struct main_program *p, int maps, bool decision, bool edges, unsigned mask, bool mediump,
+			 char *err, size_t errlen)
 {
-	char defines[160];
-	snprintf(defines, sizeof defines, "#define LX_MAPS %d\n%s%s", maps, decision ? "#define LX_DECISION 1\n" : "",
-		 mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
+	char defines[320];
+	snprintf(defines, sizeof defines,
+		 "#define LX_MAPS %d\n#define LX_EDGES %d\n#define LX_USE_0 %d\n"
+		 "#define LX_USE_1 %d\n#define LX_USE_2 %d\n#define LX_USE_3 %d\n%s%s",
+		 maps, edges, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
+		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
 	if (!p->prog)
 		return false;
@@ -101,8 +107,12 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 
 	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
 					  mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
-	if (!r->shadow_prog || !main_program(&r->shaded, d->map_count, false, mediump, err, errlen) ||
-	    !main_program(&r->decision, d->map_count, true, mediump, err, errlen)) {
+	r->mediump = mediump;
+	/* the variants with every map, built now so that a shader error shows at start */
+	unsigned all = (1u << d->map_count) - 1;
+	bool edges = d->map_count > 1;
+	if (!r->shadow_prog || !main_program(&r->variant[0][edges][all], d->map_count, false, edges, all, mediump, err, errlen) ||
+	    !main_program(&r->variant[1][edges][all], d->map_count, true, edges, all, mediump, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -175,10 +185,11 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	lx_gl.DeleteFramebuffers(1, &r->target_fbo);
 	if (r->shadow_prog)
 		lx_gl.DeleteProgram(r->shadow_prog);
-	if (r->shaded.prog)
-		lx_gl.DeleteProgram(r->shaded.prog);
-	if (r->decision.prog)
-		lx_gl.DeleteProgram(r->decision.prog);
+	for (int a = 0; a < 2; a++)
+		for (int b = 0; b < 2; b++)
+			for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
+				if (r->variant[a][b][c].prog)
+					lx_gl.DeleteProgram(r->variant[a][b][c].prog);
 	free(r);
 }
 
@@ -237,7 +248,21 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
 			   bool decision)
 {
-	const struct main_program *p = decision ? &r->decision : &r->shaded;
+	/* the variant for the maps this frame renders: no work for a map that is not there */
+	unsigned mask = 0;
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
+		mask |= res->maps[m].rendered ? 1u << m : 0;
+	bool edges = res->map_count > 1 && res->maps[0].rendered && res->maps[0].edge_count > 0;
+	struct main_program *p = &r->variant[decision][edges][mask];
+	if (!p->prog) {
+		char err[1024];
+		if (!main_program(p, r->d.map_count, decision, edges, mask, r->mediump, err, sizeof err)) {
+			/* cannot happen once the full variant compiled; fall back to it */
+			fprintf(stderr, "lixel: %s\n", err);
+			unsigned all = (1u << r->d.map_count) - 1;
+			p = &r->variant[decision][r->d.map_count > 1][all];
+		}
+	}
 	const struct lx_atlas *atlas = r->d.atlas;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
 	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
