@@ -1,4 +1,19 @@
 #version 100
+#ifndef LX_USE_0
+#define LX_USE_0 0
+#endif
+#ifndef LX_USE_1
+#define LX_USE_1 0
+#endif
+#ifndef LX_USE_2
+#define LX_USE_2 0
+#endif
+#ifndef LX_USE_3
+#define LX_USE_3 0
+#endif
+#ifndef LX_EDGES
+#define LX_EDGES 0
+#endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
 #else

@@ -1,4 +1,16 @@
 #version 100
+#ifndef LX_USE_0
+#define LX_USE_0 0
+#endif
+#ifndef LX_USE_1
+#define LX_USE_1 0
+#endif
+#ifndef LX_USE_2
+#define LX_USE_2 0
+#endif
+#ifndef LX_USE_3
+#define LX_USE_3 0
+#endif
 // Main pass. LX_MAPS (0 to 3) shadow maps are looked up; the loader defines it.
 uniform mat4 u_view_proj;
 uniform vec3 u_offset; // object translation in world space
