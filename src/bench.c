@@ -57,7 +57,8 @@ static void usage(FILE *f)
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
 		   "  --csv FILE       every row as CSV\n"
 		   "  --plot FILE.png  median mismatch against median frame time, one mark per method\n"
-		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods order\n"
+		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods\n"
+		   "                   order, each panel scaled down to at most 512 pixels wide\n"
 		   "  --json           one JSON object on stdout instead of the text\n"
 		   "\n"
 		   "Progress goes to stderr. Exit status: 0 done; 1 GL failure; 2 bad input.\n",
@@ -143,20 +144,28 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 	/* strips: each method's last shaded frame, side by side */
 	long n = (long)b->width * b->height;
 	if (b->strips) {
-		int gap = 8, sw = b->nm * b->width + (b->nm - 1) * gap;
-		uint8_t *strip = malloc((size_t)sw * b->height * 4);
+		/* panels at most 512 pixels wide (box-filtered down by a whole factor) */
+		int k = (b->width + 511) / 512, pw = b->width / k, ph = b->height / k, gap = 8;
+		int sw = b->nm * pw + (b->nm - 1) * gap;
+		uint8_t *strip = malloc((size_t)sw * ph * 4);
 		if (strip) {
-			memset(strip, 255, (size_t)sw * b->height * 4);
+			memset(strip, 255, (size_t)sw * ph * 4);
 			for (int m = 0; m < b->nm; m++) {
 				lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
 				lx_renderer_read(runs[m].renderer, rgba);
-				for (int y = 0; y < b->height; y++)
-					memcpy(strip + ((size_t)y * sw + m * (b->width + gap)) * 4, rgba + (size_t)y * b->width * 4,
-					       (size_t)b->width * 4);
+				for (int y = 0; y < ph; y++)
+					for (int x = 0; x < pw; x++)
+						for (int c = 0; c < 4; c++) {
+							unsigned sum = 0;
+							for (int dy = 0; dy < k; dy++)
+								for (int dx = 0; dx < k; dx++)
+									sum += rgba[(((size_t)(y * k + dy)) * b->width + x * k + dx) * 4 + c];
+							strip[((size_t)y * sw + m * (pw + gap) + x) * 4 + c] = (uint8_t)(sum / (unsigned)(k * k));
+						}
 			}
 			char path[4096];
 			snprintf(path, sizeof path, "%s/%s.png", b->strips, config);
-			bool ok = lx_png_write(path, strip, sw, b->height, err, errlen);
+			bool ok = lx_png_write(path, strip, sw, ph, err, errlen);
 			free(strip);
 			if (!ok) {
 				free(times);
