@@ -67,10 +67,42 @@ static bool twist_angle(const struct lx_view *v, const struct lx_plane *self, co
 	return true;
 }
 
+/* The planes bounding the receiver volume (view frustum within the scene box), as
+ * half-spaces: only those that carry a face of it (three of its vertices or more), so
+ * that each map's depth fit enumerates as few plane triples as it can. */
+static int receiver_faces(const struct lx_frame *f, vec4 *out)
+{
+	const mat4 *vp = &f->view.view_proj;
+	vec4 all[12];
+	int n = 0;
+	for (int r = 0; r < 3; r++) { /* the view frustum: -w <= x, y, z <= w */
+		all[n++] = comb(row(vp, 3), 1, row(vp, r), 1);
+		all[n++] = comb(row(vp, 3), 1, row(vp, r), -1);
+	}
+	vec3 lo = f->scene_min, hi = f->scene_max;
+	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
+	for (int k = 0; k < 6; k++)
+		all[n++] = box[k];
+	vec3 pts[LX_CONVEX_MAX_POINTS];
+	int np = lx_light_space_receivers(f, pts);
+	double size = v3_len(v3_sub(hi, lo)) + 1e-300;
+	int m = 0;
+	for (int k = 0; k < n; k++) {
+		double len = sqrt(all[k].x * all[k].x + all[k].y * all[k].y + all[k].z * all[k].z);
+		int on = 0;
+		for (int i = 0; i < np && on < 3; i++)
+			on += fabs(dot4p(all[k], pts[i])) <= 1e-9 * size * len;
+		if (on >= 3 || np == 0)
+			out[m++] = all[k];
+	}
+	return m;
+}
+
 /* Builds plane i's map; returns the rays it serves as a polygon on G (empty when none
  * or when they cannot be charted there). */
 static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
-			    int i, int next, struct lx_shadow_map *map, struct lx_shadow_result *out, struct lx_poly *served)
+			    int i, int next, const vec4 *faces, int nfaces, struct lx_shadow_map *map,
+			    struct lx_shadow_result *out, struct lx_poly *served)
 {
 	const struct lx_scene *s = f->scene;
 	const struct lx_plane *P = &s->planes[i];
@@ -188,15 +220,8 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 	double wmin = 1e-4 * wplane; /* a hair in front of the light: depth is finite there */
 	hs[nh++] = comb(wrow, 1, (vec4){0, 0, 0, 1}, -wmin);
 	int ncone = nh;
-	const mat4 *vp = &v->view_proj;
-	for (int r = 0; r < 3; r++) { /* the view frustum: -w <= x, y, z <= w */
-		hs[nh++] = comb(row(vp, 3), 1, row(vp, r), 1);
-		hs[nh++] = comb(row(vp, 3), 1, row(vp, r), -1);
-	}
-	vec3 lo = f->scene_min, hi = f->scene_max;
-	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
-	for (int k = 0; k < 6; k++)
-		hs[nh++] = box[k];
+	for (int k = 0; k < nfaces; k++)
+		hs[nh++] = faces[k];
 	vec3 vert[2048];
 	int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
 	double zfar = -INFINITY, znear = INFINITY;
@@ -335,9 +360,11 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	lx_light_space_build(f, &ls);
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
+	vec4 faces[12];
+	int nfaces = receiver_faces(f, faces);
 	struct lx_poly served[PLANE_MAPS] = {{0}};
 	for (int i = 0; i < np; i++)
-		build_plane_map(f, &ls, atlas, i, i + 1 < np ? i + 1 : -1, &out->maps[i], out, &served[i]);
+		build_plane_map(f, &ls, atlas, i, i + 1 < np ? i + 1 : -1, faces, nfaces, &out->maps[i], out, &served[i]);
 	/* the fallback map: what is wanted and no plane map serves */
 	struct lx_shadow_map *fb = &out->maps[np];
 	struct lx_poly tot, rest;
