@@ -115,6 +115,47 @@ static void camera_matches_closed_form(void **state)
 	assert_true(solved > 700);
 }
 
+/* A public engine fixed m33 = 1 after an unpivoted solve, which breaks when the true
+ * m33 is 0: the world origin on the light camera's principal plane, which holds the
+ * light. With the whole scene moved so that the light sits at the origin, m33 is 0
+ * and the solve must still meet every constraint (and keep the window coordinates). */
+static void m33_zero_is_solved(void **state)
+{
+	(void)state;
+	struct lx_scene sc;
+	lx_scene_default(&sc);
+	vec3 shift = v3_scale(sc.light.position, -1);
+	for (int p = 0; p < sc.plane_count; p++)
+		sc.planes[p].corner = v3_add(sc.planes[p].corner, shift);
+	for (int c = 0; c < sc.caster_count; c++)
+		sc.casters[c].x += shift.x, sc.casters[c].z += shift.z, sc.casters[c].low += shift.y, sc.casters[c].high += shift.y;
+	sc.camera.eye = v3_add(sc.camera.eye, shift);
+	sc.camera.at = v3_add(sc.camera.at, shift);
+	sc.light.position = v3(0, 0, 0);
+	struct lx_scene_meshes me;
+	struct lx_frame f;
+	char err[128];
+	assert_true(lx_meshes_build(&sc, &me));
+	assert_true(lx_frame_setup(&f, &sc, &me, 0, 400, 300, err, sizeof err));
+	for (int p = 0; p < sc.plane_count; p++) {
+		struct lx_plane_camera cam;
+		vec3 c = v3_add(sc.planes[p].corner, v3_scale(v3_add(sc.planes[p].edge1, sc.planes[p].edge2), 0.5));
+		assert_int_equal(lx_plane_camera_solve(&f.view, lx_light_point(&sc.light), lx_plane_equation(&sc.planes[p]),
+						       (vec4){c.x, c.y, c.z, 1}, &cam),
+				 LX_PLANE_CAMERA_OK);
+		double big = 0;
+		for (int i = 0; i < 16; i++)
+			big = fmax(big, fabs(cam.m.m[i]));
+		assert_true(fabs(cam.m.m[15]) < 1e-12 * big); /* m33 is 0 here */
+		assert_true(cam.residual < 1e-7);
+		vec3 q = v3_add(sc.planes[p].corner, v3_scale(sc.planes[p].edge1, 0.3));
+		vec4 a = m4_mul_point(&cam.m, q), b = m4_mul_point(&f.view.view_proj, q);
+		assert_near(a.x / a.w, (b.x / b.w + 1) * 200, 1e-6);
+		assert_near(a.y / a.w, (b.y / b.w + 1) * 150, 1e-6);
+	}
+	lx_meshes_free(&me);
+}
+
 /* Sampling of one setup's plane maps: aniso and lpp spread within 1.001 on the pixels
  * each serves, lpp = scale^2 (1 where the budget suffices). Returns maps checked. */
 static int check_sampling(const struct setup *s, const char *what)
@@ -346,6 +387,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(camera_matches_closed_form),
+		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(degenerate_configurations),
