@@ -1,6 +1,7 @@
 #include "light_space.h"
 #include "convex.h"
 #include <math.h>
+#include <string.h>
 
 /* A point light's frustum is kept within this half-angle; a wider cone would spend the
  * map on grazing directions (or need several maps), so what lies outside is left
@@ -220,4 +221,26 @@ bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, d
 	if (!ok)
 		lx_shadow_warn(warn, "%s: degenerate light frustum; the map is skipped this frame", prefix);
 	return ok;
+}
+
+bool lx_uniform_map(const struct lx_frame *f, struct lx_light_space *ls, struct lx_shadow_result *out,
+		    const char *prefix, struct lx_uniform_fit *fit)
+{
+	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
+	struct lx_shadow_map *map = &out->maps[0];
+	out->map_count = 1;
+	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
+	lx_shadow_map_full(map);
+	lx_light_space_build(f, ls);
+	struct lx_uniform_fit local, *u = fit ? fit : &local;
+	u->wanted.n = 0;
+	u->x0 = u->y0 = -INFINITY;
+	u->x1 = u->y1 = INFINITY;
+	if (lx_light_space_wanted(ls, &u->wanted)) {
+		if (u->wanted.n < 3)
+			return false; /* nothing to shadow, or casters and receivers do not overlap */
+		lx_poly_bounds(&u->wanted, &u->x0, &u->y0, &u->x1, &u->y1);
+	}
+	map->rendered = lx_light_space_map(ls, u->x0, u->x1, u->y0, u->y1, &map->light_clip, out, prefix);
+	return map->rendered;
 }

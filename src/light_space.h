@@ -46,4 +46,15 @@ bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out)
 bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, double y0, double y1, mat4 *clip,
 			struct lx_shadow_result *warn, const char *prefix);
 
+/* The one-map methods' common start: resets *out to one full map in region 0, builds
+ * the light space, and fills the map with the uniform map focused on C_tot (unit cube
+ * clipping). Returns whether that map is rendered; *wanted and the bounds on G it used
+ * (infinite where C_tot is unbounded) are given back for the warping methods. */
+struct lx_uniform_fit {
+	struct lx_poly wanted;
+	double x0, x1, y0, y1;
+};
+bool lx_uniform_map(const struct lx_frame *f, struct lx_light_space *ls, struct lx_shadow_result *out,
+		    const char *prefix, struct lx_uniform_fit *fit);
+
 #endif

@@ -66,25 +66,11 @@ static vec3 project(const mat4 *m, vec3 p, bool *ok)
 static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
 	(void)atlas;
-	memset(out, 0, sizeof(*out));
-	struct lx_shadow_map *map = &out->maps[0];
-	out->map_count = 1;
-	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
-	lx_shadow_map_full(map);
 	struct lx_light_space ls;
-	lx_light_space_build(f, &ls);
-	struct lx_poly wanted;
-	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (lx_light_space_wanted(&ls, &wanted)) {
-		if (wanted.n < 3)
-			return; /* nothing to shadow */
-		lx_poly_bounds(&wanted, &x0, &y0, &x1, &y1);
-	}
-	mat4 uniform;
-	if (!lx_light_space_map(&ls, x0, x1, y0, y1, &uniform, out, "lispsm"))
+	if (!lx_uniform_map(f, &ls, out, "lispsm", NULL))
 		return;
-	map->light_clip = uniform;
-	map->rendered = true;
+	struct lx_shadow_map *map = &out->maps[0];
+	mat4 uniform = map->light_clip;
 	/* Light space S: rigid for a directional light (the light travels along -z); the
 	 * uniform map's clip space for a point light (its rays travel along +z there). */
 	mat4 S = ls.directional ? ls.view : uniform;

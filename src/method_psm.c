@@ -43,24 +43,11 @@ static bool orthonormal(vec4 *v, const vec4 *u, int n)
 static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
 	(void)atlas;
-	memset(out, 0, sizeof(*out));
-	struct lx_shadow_map *map = &out->maps[0];
-	out->map_count = 1;
-	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
-	lx_shadow_map_full(map);
-	struct lx_light_space ls;
-	lx_light_space_build(f, &ls);
 	/* the uniform map first: where PPS cannot hold the light's view, it stands in */
-	struct lx_poly wanted;
-	double ux0 = -INFINITY, ux1 = INFINITY, uy0 = -INFINITY, uy1 = INFINITY;
-	if (lx_light_space_wanted(&ls, &wanted)) {
-		if (wanted.n < 3)
-			return; /* nothing to shadow */
-		lx_poly_bounds(&wanted, &ux0, &uy0, &ux1, &uy1);
-	}
-	if (!lx_light_space_map(&ls, ux0, ux1, uy0, uy1, &map->light_clip, out, "psm"))
+	struct lx_light_space ls;
+	if (!lx_uniform_map(f, &ls, out, "psm", NULL))
 		return;
-	map->rendered = true;
+	struct lx_shadow_map *map = &out->maps[0];
 	const struct lx_camera *cam = &f->scene->camera;
 	const struct lx_view *v = &f->view;
 	vec3 dir;

@@ -31,25 +31,14 @@ static bool to_image(const mat4 *u, vec3 p, vec2 *q)
 static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
 	(void)atlas;
-	memset(out, 0, sizeof(*out));
-	struct lx_shadow_map *map = &out->maps[0];
-	out->map_count = 1;
-	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
-	lx_shadow_map_full(map);
 	struct lx_light_space ls;
-	lx_light_space_build(f, &ls);
-	struct lx_poly wanted;
-	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (lx_light_space_wanted(&ls, &wanted)) {
-		if (wanted.n < 3)
-			return;
-		lx_poly_bounds(&wanted, &x0, &y0, &x1, &y1);
-	}
-	mat4 u;
-	if (!lx_light_space_map(&ls, x0, x1, y0, y1, &u, out, "tsm"))
+	struct lx_uniform_fit fit;
+	if (!lx_uniform_map(f, &ls, out, "tsm", &fit))
 		return;
-	map->light_clip = u;
-	map->rendered = true;
+	struct lx_shadow_map *map = &out->maps[0];
+	mat4 u = map->light_clip;
+	const struct lx_poly wanted = fit.wanted;
+	double x0 = fit.x0, x1 = fit.x1, y0 = fit.y0, y1 = fit.y1;
 	/* the centre line: the view's near and far centres in the light image */
 	const struct lx_view *v = &f->view;
 	vec3 dir;

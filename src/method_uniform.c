@@ -4,8 +4,6 @@
  * casters' minimum depth (no caster is clipped), far is the receivers' maximum depth.
  * The geometry lives in light_space.c, shared with the plane-optimal fallback map. */
 #include "light_space.h"
-#include <math.h>
-#include <string.h>
 
 static int uniform_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
@@ -17,21 +15,8 @@ static int uniform_regions(const struct lx_scene *s, const struct lx_method_opti
 static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
 {
 	(void)atlas;
-	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
-	struct lx_shadow_map *map = &out->maps[0];
-	out->map_count = 1;
-	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
-	lx_shadow_map_full(map);
 	struct lx_light_space ls;
-	lx_light_space_build(f, &ls);
-	struct lx_poly wanted;
-	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (lx_light_space_wanted(&ls, &wanted)) {
-		if (wanted.n < 3)
-			return; /* nothing to shadow, or casters and receivers do not overlap */
-		lx_poly_bounds(&wanted, &x0, &y0, &x1, &y1);
-	}
-	map->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &map->light_clip, out, "uniform");
+	lx_uniform_map(f, &ls, out, "uniform", NULL);
 }
 
 const struct lx_shadow_method lx_method_uniform = {.name = "uniform",
