@@ -6,33 +6,11 @@
 #include "plane_optimal.h"
 #include "shadow_method.h"
 #include "test_util.h"
+#include "method_fixture.h"
 #include "shadow_coverage.h"
 #include <stdio.h>
 #include <string.h>
 
-struct setup {
-	struct lx_scene scene;
-	struct lx_scene_meshes meshes;
-	struct lx_frame frame;
-	struct lx_atlas atlas;
-	struct lx_shadow_result res;
-};
-
-static bool build(struct setup *s, const char *method, int w, int h, double t)
-{
-	struct lx_region_request req[LX_MAX_MAPS];
-	const struct lx_shadow_method *m = lx_shadow_method_find(method);
-	char err[256];
-	assert_true(lx_meshes_build(&s->scene, &s->meshes));
-	if (!lx_frame_setup(&s->frame, &s->scene, &s->meshes, t, w, h, err, sizeof err)) {
-		lx_meshes_free(&s->meshes);
-		return false;
-	}
-	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &o, req), 1, 2048, err, sizeof err));
-	m->build(&s->frame, &s->atlas, &s->res);
-	return true;
-}
 
 static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
 static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }

@@ -1,31 +1,11 @@
 #include "configs.h"
 #include "shadow_method.h"
 #include "test_util.h"
+#include "method_fixture.h"
 #include "shadow_coverage.h"
 #include <stdio.h>
 #include <string.h>
 
-struct setup {
-	struct lx_scene scene;
-	struct lx_scene_meshes meshes;
-	struct lx_frame frame;
-	struct lx_atlas atlas;
-	struct lx_shadow_result res;
-};
-
-static void build(struct setup *s, const char *method)
-{
-	struct lx_region_request req[LX_MAX_MAPS];
-	const struct lx_shadow_method *m = lx_shadow_method_find(method);
-	assert_non_null(m);
-	char err[256];
-	assert_true(lx_meshes_build(&s->scene, &s->meshes));
-	if (!lx_frame_setup(&s->frame, &s->scene, &s->meshes, 0.4, 640, 480, err, sizeof err))
-		fail_msg("%s", err);
-	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, req), 1, 2048, err, sizeof err));
-	memset(&s->res, 0, sizeof s->res);
-	m->build(&s->frame, &s->atlas, &s->res);
-}
 
 
 static void cleanup(struct setup *s) { lx_meshes_free(&s->meshes); }
@@ -38,7 +18,7 @@ static void every_configuration_covers_every_shadow(void **state)
 		struct setup s;
 		lx_scene_default(&s.scene);
 		lx_config_apply(&lx_configs[i], &s.scene);
-		build(&s, "uniform");
+		assert_true(build(&s, "uniform", 640, 480, 0.4));
 		assert_int_equal(s.res.map_count, 1);
 		assert_true(m4_finite(&s.res.maps[0].light_clip));
 		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 300, lx_configs[i].name);
@@ -64,7 +44,7 @@ static void random_lights(void **state)
 		} else
 			s.scene.light = (struct lx_light){
 				.position = v3(test_rand(&seed) * 16 - 8, 2.5 + test_rand(&seed) * 8, test_rand(&seed) * 16 - 8)};
-		build(&s, "uniform");
+		assert_true(build(&s, "uniform", 640, 480, 0.4));
 		assert_true(m4_finite(&s.res.maps[0].light_clip));
 		/* The documented fallback for a point light among the casters: one frustum
 		 * cannot see more than 150 degrees, so coverage is not promised there. */
@@ -119,7 +99,7 @@ static void extremes_stay_finite(void **state)
 		s.scene.light.position = v3_scale(s.scene.light.position, k);
 		s.scene.camera.eye = v3_scale(cases[i].eye, k);
 		s.scene.camera.at = v3_scale(cases[i].at, k);
-		build(&s, "uniform");
+		assert_true(build(&s, "uniform", 640, 480, 0.4));
 		if (!m4_finite(&s.res.maps[0].light_clip))
 			fail_msg("%s: non-finite light matrix", cases[i].what);
 		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, cases[i].expect_warning ? 0 : 200, cases[i].what);
@@ -136,7 +116,7 @@ static void none_has_no_maps(void **state)
 	(void)state;
 	struct setup s;
 	lx_scene_default(&s.scene);
-	build(&s, "none");
+	assert_true(build(&s, "none", 640, 480, 0.4));
 	assert_int_equal(s.res.map_count, 0);
 	assert_int_equal(s.atlas.count, 0);
 	cleanup(&s);

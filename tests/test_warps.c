@@ -6,6 +6,7 @@
 #include "method_lispsm.h"
 #include "shadow_method.h"
 #include "test_util.h"
+#include "method_fixture.h"
 #include "shadow_coverage.h"
 #include <stdio.h>
 #include <string.h>
@@ -50,25 +51,6 @@ static void parameter_pitfalls(void **state)
 	assert_near(lx_lispsm_warp(10, 3, 7), 1, 1e-12);
 }
 
-struct setup {
-	struct lx_scene scene;
-	struct lx_scene_meshes meshes;
-	struct lx_frame frame;
-	struct lx_atlas atlas;
-	struct lx_shadow_result res;
-};
-
-static void build(struct setup *s, const char *method)
-{
-	struct lx_region_request req[LX_MAX_MAPS];
-	const struct lx_shadow_method *m = lx_shadow_method_find(method);
-	char err[256];
-	assert_true(lx_meshes_build(&s->scene, &s->meshes));
-	assert_true(lx_frame_setup(&s->frame, &s->scene, &s->meshes, 0.3, 320, 240, err, sizeof err));
-	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &o, req), 1, 2048, err, sizeof err));
-	m->build(&s->frame, &s->atlas, &s->res);
-}
 
 /* A directional light along the view: no warp, the uniform map exactly. */
 static void parallel_view_and_light_is_uniform(void **state)
@@ -80,8 +62,8 @@ static void parallel_view_and_light_is_uniform(void **state)
 	a.scene.light.directional = true;
 	assert_true(v3_normalize(v3_sub(a.scene.camera.at, a.scene.camera.eye), &a.scene.light.direction));
 	b = a;
-	build(&a, "lispsm");
-	build(&b, "uniform");
+	assert_true(build(&a, "lispsm", 320, 240, 0.3));
+	assert_true(build(&b, "uniform", 320, 240, 0.3));
 	assert_true(a.res.maps[0].rendered);
 	assert_memory_equal(&a.res.maps[0].light_clip, &b.res.maps[0].light_clip, sizeof(mat4));
 	lx_meshes_free(&a.meshes);
@@ -110,8 +92,8 @@ static void covered(const char *method)
 				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
 		}
 		u = s;
-		build(&s, method);
-		build(&u, "uniform");
+		assert_true(build(&s, method, 320, 240, 0.3));
+		assert_true(build(&u, "uniform", 320, 240, 0.3));
 		assert_true(m4_finite(&s.res.maps[0].light_clip));
 		bool wide = s.res.warning_count && strstr(s.res.warnings[0], "150 degrees");
 		char what[64];
@@ -169,7 +151,7 @@ static void psm_branches(void **state)
 			assert_true(v3_normalize(cases[i].light, &s.scene.light.direction));
 		else
 			s.scene.light.position = cases[i].light;
-		build(&s, "psm");
+		assert_true(build(&s, "psm", 320, 240, 0.3));
 		uint64_t seed = i + 7;
 		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 60, cases[i].what);
 		print_message("%-40s variant %d, %ld pairs, %s\n", cases[i].what, s.res.variant, n,
@@ -197,7 +179,7 @@ static void tsm_focus_on_the_80_percent_line(void **state)
 	lx_scene_default(&s.scene);
 	s.scene.light.directional = true;
 	assert_true(v3_normalize(v3(0.2, -1, -0.1), &s.scene.light.direction));
-	build(&s, "tsm");
+	assert_true(build(&s, "tsm", 320, 240, 0.3));
 	const struct lx_view *v = &s.frame.view;
 	vec3 dir;
 	assert_true(v3_normalize(v3_sub(s.scene.camera.at, s.scene.camera.eye), &dir));
