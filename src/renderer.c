@@ -205,6 +205,33 @@ static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
 	}
 }
 
+/* Whether a world box lies entirely outside the rays a map serves or beyond its far
+ * plane (never culled for the near plane: the pass flattens casters onto it). */
+static bool outside_map(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
+{
+	int out[5] = {0, 0, 0, 0, 0}, behind = 0;
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_point(&map->light_clip, v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
+		if (!(c.w > 0)) {
+			behind++;
+			continue;
+		}
+		out[0] += c.x < map->bounds[0] * c.w;
+		out[1] += c.x > map->bounds[2] * c.w;
+		out[2] += c.y < map->bounds[1] * c.w;
+		out[3] += c.y > map->bounds[3] * c.w;
+		out[4] += c.z > c.w;
+	}
+	if (behind == 8)
+		return true;
+	if (behind)
+		return false; /* a box crossing the light's plane: keep it */
+	for (int i = 0; i < 5; i++)
+		if (out[i] == 8)
+			return true;
+	return false;
+}
+
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
 {
 	bool any = false;
@@ -233,6 +260,8 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 		lx_gl.Scissor(g->x, g->y, g->w, g->h);
 		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 		for (int id = 0; id < r->objects; id++) {
+			if (outside_map(map, f->bmin[id], f->bmax[id]))
+				continue; /* no fill and no vertices for what the map cannot see */
 			mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
 			float lcf[16];
 			to_float(&lc, lcf);
