@@ -22,15 +22,16 @@ LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng 2>/dev/null) -lpthread 
 # Pure geometry: never includes a GL header, so the unit tests link it alone.
 CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
 	src/shadow_method.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
-	src/configs.c src/json.c src/button.c
+	src/configs.c src/json.c src/button.c src/embedded.c src/board.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/platform.c src/platform_osmesa.c \
 	src/platform_egl.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
+BOARDS = $(sort $(wildcard board/*.profile))
 
-CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
+CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
-TESTS = test_linalg test_button test_depth_rgba test_atlas test_scene test_uniform test_plane test_warps test_reference test_render
+TESTS = test_linalg test_button test_board test_depth_rgba test_atlas test_scene test_uniform test_plane test_warps test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan
@@ -46,10 +47,13 @@ deps-check:
 $(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-shaders.sh | $(BUILD)
-	sh tools/embed-shaders.sh $(SHADERS) > $@.tmp && mv $@.tmp $@
+$(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
+	sh tools/embed-files.sh lx_shader_files $(SHADERS) > $@.tmp && mv $@.tmp $@
 
-$(BUILD)/shaders_embedded.o: $(BUILD)/shaders_embedded.c src/shaders.h
+$(BUILD)/boards_embedded.c: $(BOARDS) tools/embed-files.sh | $(BUILD)
+	sh tools/embed-files.sh lx_board_files $(BOARDS) > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ)

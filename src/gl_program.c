@@ -1,16 +1,8 @@
 #include "gl_program.h"
-#include "shaders.h"
+#include "embedded.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-const char *lx_shader_text(const char *name)
-{
-	for (const struct lx_shader_file *f = lx_shader_files; f->name; f++)
-		if (!strcmp(f->name, name))
-			return f->text;
-	return NULL;
-}
 
 /* Driver logs end in newlines; messages are one line each where the log allows. */
 static void trim(char *log)
@@ -61,7 +53,7 @@ static char *assemble(const char *name, const char *src, const char *defines, ch
 			while (m && (line[sizeof tag - 2 + m] == '\n' || line[sizeof tag - 2 + m] == '\r'))
 				m--;
 			snprintf(inc, sizeof inc, "%.*s", (int)m, line + sizeof tag - 1);
-			const char *body = lx_shader_text(inc);
+			const char *body = lx_embedded_text(lx_shader_files, inc);
 			if (!body) {
 				snprintf(err, errlen, "%s:%d: included file '%s' is not built in", name, n + 1, inc);
 				free(t.s);
@@ -107,7 +99,7 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
 
 GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen)
 {
-	const char *vs_text = lx_shader_text(vert), *fs_text = lx_shader_text(frag);
+	const char *vs_text = lx_embedded_text(lx_shader_files, vert), *fs_text = lx_embedded_text(lx_shader_files, frag);
 	if (!vs_text || !fs_text) {
 		snprintf(err, errlen, "%s: no such shader file is built in", vs_text ? frag : vert);
 		return 0;

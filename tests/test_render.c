@@ -3,7 +3,7 @@
 #include "depth_rgba.h"
 #include "gl_program.h"
 #include "metrics.h"
-#include "shaders.h"
+#include "embedded.h"
 #include "platform.h"
 #include "render_job.h"
 #include "renderer.h"
@@ -385,7 +385,7 @@ static void shader_failures_show_the_log(void **state)
 		struct lx_platform *plat = lx_platform_create(platforms[p], err, sizeof err);
 		if (!plat)
 			fail_msg("%s", err);
-		const char *vert = lx_shader_text("shadow_depth.vert");
+		const char *vert = lx_embedded_text(lx_shader_files, "shadow_depth.vert");
 		const char *broken = "#version 100\nprecision mediump float;\nvoid main() { gl_FragColor = undeclared; }\n";
 		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "broken.frag", broken, NULL, err, sizeof err), 0);
 		print_message("%s: %s\n", platforms[p], err);

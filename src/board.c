@@ -1,0 +1,200 @@
+#include "board.h"
+#include "embedded.h"
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void lx_board_defaults(struct lx_board *b)
+{
+	memset(b, 0, sizeof(*b));
+	snprintf(b->name, sizeof b->name, "custom");
+	b->gpio_line = -1;
+	b->active_low = true;
+	b->bias = LX_BIAS_PULL_UP;
+	b->debounce_ms = 30;
+	b->long_press_ms = 1000;
+	b->lixels = LX_METHOD_OPTIONS_DEFAULT;
+	static const char *const order[] = {"plane", "uniform", "psm", "lispsm", "tsm", "none"};
+	for (int i = 0; i < 6; i++)
+		snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", order[i]);
+}
+
+static bool fail(char *err, size_t errlen, const char *file, int line, const char *fmt, ...)
+{
+	char msg[256];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	snprintf(err, errlen, "%s:%d: %s", file, line, msg);
+	return false;
+}
+
+static bool whole(const char *s, long lo, long hi, int *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(s, &end, 10);
+	if (end == s || *end || errno || v < lo || v > hi)
+		return false;
+	*out = (int)v;
+	return true;
+}
+
+bool lx_parse_mode(const char *s, int *w, int *h, int *hz)
+{
+	char buf[64];
+	if (strlen(s) >= sizeof buf)
+		return false;
+	strcpy(buf, s);
+	char *at = strchr(buf, '@'), *x = strchr(buf, 'x');
+	*hz = 0;
+	if (at) {
+		*at = 0;
+		if (!whole(at + 1, 1, 1000, hz))
+			return false;
+	}
+	if (!x)
+		return false;
+	*x = 0;
+	return whole(buf, 1, 16384, w) && whole(x + 1, 1, 16384, h);
+}
+
+bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen)
+{
+	int line = 0;
+	while (*text) {
+		line++;
+		const char *eol = strchr(text, '\n');
+		size_t len = eol ? (size_t)(eol - text) : strlen(text);
+		char buf[512];
+		if (len >= sizeof buf)
+			return fail(err, errlen, file, line, "expected a line shorter than %zu characters", sizeof buf);
+		memcpy(buf, text, len);
+		buf[len] = 0;
+		text = eol ? eol + 1 : text + len;
+		char *hash = strchr(buf, '#');
+		if (hash)
+			*hash = 0;
+		char *key = strtok(buf, " \t\r");
+		if (!key)
+			continue;
+		char *value = strtok(NULL, "\r\n");
+		while (value && (*value == ' ' || *value == '\t'))
+			value++;
+		if (!value || !*value)
+			return fail(err, errlen, file, line, "expected a value after '%s'", key);
+		size_t vl = strlen(value);
+		while (vl && (value[vl - 1] == ' ' || value[vl - 1] == '\t'))
+			value[--vl] = 0;
+		if (!strcmp(key, "name")) {
+			if (vl >= sizeof b->name)
+				return fail(err, errlen, file, line, "expected a name of at most %zu characters", sizeof b->name - 1);
+			strcpy(b->name, value);
+		} else if (!strcmp(key, "description")) {
+			snprintf(b->description, sizeof b->description, "%s", value);
+		} else if (!strcmp(key, "gpio-chip")) {
+			if (vl >= sizeof b->gpio_chip)
+				return fail(err, errlen, file, line, "expected a chip name or path of at most %zu characters",
+					    sizeof b->gpio_chip - 1);
+			strcpy(b->gpio_chip, strcmp(value, "none") ? value : "");
+		} else if (!strcmp(key, "gpio-line")) {
+			if (!whole(value, 0, 1023, &b->gpio_line))
+				return fail(err, errlen, file, line, "expected a line offset from 0 to 1023, got '%s'", value);
+		} else if (!strcmp(key, "gpio-active")) {
+			if (strcmp(value, "low") && strcmp(value, "high"))
+				return fail(err, errlen, file, line, "expected gpio-active low or high, got '%s'", value);
+			b->active_low = !strcmp(value, "low");
+		} else if (!strcmp(key, "gpio-bias")) {
+			static const char *const names[] = {"as-is", "pull-up", "pull-down", "disabled"};
+			int k = 0;
+			while (k < 4 && strcmp(value, names[k]))
+				k++;
+			if (k == 4)
+				return fail(err, errlen, file, line, "expected gpio-bias as-is, pull-up, pull-down or disabled, got '%s'",
+					    value);
+			b->bias = (enum lx_bias)k;
+		} else if (!strcmp(key, "debounce-ms")) {
+			if (!whole(value, 0, 1000, &b->debounce_ms))
+				return fail(err, errlen, file, line, "expected debounce-ms from 0 to 1000, got '%s'", value);
+		} else if (!strcmp(key, "long-press-ms")) {
+			if (!whole(value, 100, 10000, &b->long_press_ms))
+				return fail(err, errlen, file, line, "expected long-press-ms from 100 to 10000, got '%s'", value);
+		} else if (!strcmp(key, "display")) {
+			if (vl >= sizeof b->display)
+				return fail(err, errlen, file, line, "expected a device path of at most %zu characters",
+					    sizeof b->display - 1);
+			strcpy(b->display, strcmp(value, "auto") ? value : "");
+		} else if (!strcmp(key, "mode")) {
+			if (!strcmp(value, "preferred"))
+				b->mode_w = b->mode_h = b->mode_hz = 0;
+			else if (!lx_parse_mode(value, &b->mode_w, &b->mode_h, &b->mode_hz))
+				return fail(err, errlen, file, line, "expected mode preferred, WxH or WxH@HZ, got '%s'", value);
+		} else if (!strcmp(key, "plane-lixels") || !strcmp(key, "fallback-lixels") || !strcmp(key, "uniform-lixels")) {
+			int *field = key[0] == 'p' ? &b->lixels.plane_lixels : key[0] == 'f' ? &b->lixels.fallback_lixels
+											     : &b->lixels.uniform_lixels;
+			if (!whole(value, 1, 8192, field))
+				return fail(err, errlen, file, line, "expected %s from 1 to 8192, got '%s'", key, value);
+		} else if (!strcmp(key, "methods")) {
+			b->method_count = 0;
+			for (char *t = strtok(value, ", "); t; t = strtok(NULL, ", ")) {
+				if (!lx_shadow_method_find(t))
+					return fail(err, errlen, file, line, "expected methods from %s, got '%s'", lx_shadow_method_names(),
+						    t);
+				if (b->method_count == LX_BOARD_MAX_METHODS)
+					return fail(err, errlen, file, line, "expected at most %d methods", LX_BOARD_MAX_METHODS);
+				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", t);
+			}
+		} else
+			return fail(err, errlen, file, line,
+				    "expected name, description, gpio-chip, gpio-line, gpio-active, gpio-bias, debounce-ms, "
+				    "long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels or methods, got '%s'",
+				    key);
+	}
+	if (b->gpio_chip[0] && b->gpio_line < 0)
+		return fail(err, errlen, file, line + 1, "expected a gpio-line for gpio-chip %s", b->gpio_chip);
+	return true;
+}
+
+bool lx_board_load(const char *name_or_path, struct lx_board *b, char *err, size_t errlen)
+{
+	lx_board_defaults(b);
+	char file[96];
+	snprintf(file, sizeof file, "%s.profile", name_or_path);
+	const char *text = strchr(name_or_path, '/') ? NULL : lx_embedded_text(lx_board_files, file);
+	if (text)
+		return lx_board_parse(text, file, b, err, errlen);
+	FILE *f = fopen(name_or_path, "rb");
+	if (!f) {
+		snprintf(err, errlen, "%s: no such built-in board (%s) and cannot open it as a file: %s", name_or_path,
+			 lx_board_names(), strerror(errno));
+		return false;
+	}
+	char buf[16384];
+	size_t n = fread(buf, 1, sizeof buf - 1, f);
+	bool too_long = !feof(f);
+	fclose(f);
+	if (too_long) {
+		snprintf(err, errlen, "%s: expected a board profile under 16 KiB", name_or_path);
+		return false;
+	}
+	buf[n] = 0;
+	if (memchr(buf, 0, n)) {
+		snprintf(err, errlen, "%s:1: expected a text file, found a NUL byte", name_or_path);
+		return false;
+	}
+	return lx_board_parse(buf, name_or_path, b, err, errlen);
+}
+
+const char *lx_board_names(void)
+{
+	static char names[512];
+	if (!names[0])
+		for (const struct lx_embedded_file *f = lx_board_files; f->name; f++) {
+			size_t l = strlen(names);
+			snprintf(names + l, sizeof names - l, "%s%.*s", l ? ", " : "", (int)(strlen(f->name) - 8), f->name);
+		}
+	return names;
+}

@@ -1,0 +1,39 @@
+/* Board profiles: what the kiosk needs to know of a board (the GPIO button, the display,
+ * the lixel budgets, the order of methods the button cycles through), as small text
+ * files in board/ built into the binary; --board NAME|FILE. GL-free. */
+#ifndef LX_BOARD_H
+#define LX_BOARD_H
+#include "shadow_method.h"
+#include <stdbool.h>
+#include <stddef.h>
+
+#define LX_BOARD_MAX_METHODS 8
+
+enum lx_bias { LX_BIAS_AS_IS, LX_BIAS_PULL_UP, LX_BIAS_PULL_DOWN, LX_BIAS_DISABLED };
+
+struct lx_board {
+	char name[32];
+	char description[96];
+	char gpio_chip[64]; /* a name (gpiochip0) or a path (/dev/gpiochip0); empty: no button */
+	int gpio_line;
+	bool active_low;
+	enum lx_bias bias;
+	int debounce_ms, long_press_ms;
+	char display[128]; /* a DRM device path, or empty for the first that can mode-set */
+	int mode_w, mode_h, mode_hz; /* 0: the connector's preferred mode / any refresh */
+	struct lx_method_options lixels;
+	int method_count;
+	char methods[LX_BOARD_MAX_METHODS][16];
+};
+
+void lx_board_defaults(struct lx_board *b);
+/* Parses a profile over the defaults; on error false with "FILE:LINE: what was expected". */
+bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen);
+/* A built-in profile by name (board/NAME.profile), else a file. */
+bool lx_board_load(const char *name_or_path, struct lx_board *b, char *err, size_t errlen);
+/* The built-in profiles' names, separated by ", ". */
+const char *lx_board_names(void);
+/* Parses WxH or WxH@HZ; false when malformed. */
+bool lx_parse_mode(const char *s, int *w, int *h, int *hz);
+
+#endif

@@ -1,0 +1,93 @@
+/* Board profiles: the built-in ones, overrides of the defaults, malformed files. */
+#include "board.h"
+#include "test_util.h"
+#include <stdio.h>
+#include <string.h>
+
+static void built_in_profiles(void **state)
+{
+	(void)state;
+	static const char *const names[] = {"raspberry-pi-3", "raspberry-pi-4", "mali-400", "desktop"};
+	for (int i = 0; i < 4; i++) {
+		struct lx_board b;
+		char err[256];
+		if (!lx_board_load(names[i], &b, err, sizeof err))
+			fail_msg("%s", err);
+		assert_string_equal(b.name, names[i]);
+		assert_true(b.method_count >= 2);
+		assert_true(b.lixels.plane_lixels == 350 && b.lixels.fallback_lixels == 128 && b.lixels.uniform_lixels == 512);
+		assert_non_null(strstr(lx_board_names(), names[i]));
+	}
+	struct lx_board pi4;
+	char err[256];
+	assert_true(lx_board_load("raspberry-pi-4", &pi4, err, sizeof err));
+	assert_string_equal(pi4.display, "/dev/dri/card1"); /* card0 is render-only there */
+	assert_string_equal(pi4.gpio_chip, "gpiochip0");
+	assert_int_equal(pi4.gpio_line, 17);
+	assert_true(pi4.active_low);
+	assert_int_equal(pi4.bias, LX_BIAS_PULL_UP);
+	assert_int_equal(pi4.debounce_ms, 30);
+	assert_int_equal(pi4.mode_w, 0);
+	struct lx_board pi3;
+	assert_true(lx_board_load("raspberry-pi-3", &pi3, err, sizeof err));
+	assert_true(pi3.mode_w == 1280 && pi3.mode_h == 720 && pi3.mode_hz == 60);
+	struct lx_board desk;
+	assert_true(lx_board_load("desktop", &desk, err, sizeof err));
+	assert_string_equal(desk.gpio_chip, ""); /* no button: the keyboard */
+}
+
+static void modes(void **state)
+{
+	(void)state;
+	int w, h, hz;
+	assert_true(lx_parse_mode("1920x1080", &w, &h, &hz) && w == 1920 && h == 1080 && hz == 0);
+	assert_true(lx_parse_mode("800x480@75", &w, &h, &hz) && hz == 75);
+	assert_false(lx_parse_mode("1920", &w, &h, &hz));
+	assert_false(lx_parse_mode("0x480", &w, &h, &hz));
+	assert_false(lx_parse_mode("800x480@", &w, &h, &hz));
+	assert_false(lx_parse_mode("axb", &w, &h, &hz));
+}
+
+static void malformed_profiles(void **state)
+{
+	(void)state;
+	static const struct {
+		const char *text;
+		int line;
+		const char *expect;
+	} cases[] = {
+		{"gpio-line seventeen\n", 1, "expected a line offset"},
+		{"# a comment\ngpio-active sideways\n", 2, "expected gpio-active low or high"},
+		{"gpio-bias pull-sideways\n", 1, "expected gpio-bias"},
+		{"debounce-ms -5\n", 1, "expected debounce-ms from 0 to 1000"},
+		{"mode big\n", 1, "expected mode preferred"},
+		{"methods plane,teapot\n", 1, "got 'teapot'"},
+		{"frobnicate 3\n", 1, "got 'frobnicate'"},
+		{"gpio-chip gpiochip0\n", 2, "expected a gpio-line"},
+		{"name\n", 1, "expected a value after 'name'"},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct lx_board b;
+		char err[256], prefix[64];
+		lx_board_defaults(&b);
+		if (lx_board_parse(cases[i].text, "bad.profile", &b, err, sizeof err))
+			fail_msg("case %zu parsed: %s", i, cases[i].text);
+		snprintf(prefix, sizeof prefix, "bad.profile:%d: ", cases[i].line);
+		if (strncmp(err, prefix, strlen(prefix)) || !strstr(err, cases[i].expect))
+			fail_msg("case %zu: got \"%s\", expected \"%s...%s\"", i, err, prefix, cases[i].expect);
+	}
+	struct lx_board b;
+	char err[256];
+	assert_false(lx_board_load("no-such-board", &b, err, sizeof err));
+	assert_non_null(strstr(err, "no such built-in board"));
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(built_in_profiles),
+		cmocka_unit_test(modes),
+		cmocka_unit_test(malformed_profiles),
+	};
+	return cmocka_run_group_tests_name("board", tests, NULL, NULL);
+}
