@@ -18,6 +18,10 @@ CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
 LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng 2>/dev/null) -lpthread -lm
+# libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
+GPIOD_CFLAGS = $(shell $(PKG_CONFIG) --cflags libgpiod 2>/dev/null) \
+	$(shell $(PKG_CONFIG) --atleast-version=2 libgpiod 2>/dev/null && echo -DLX_GPIOD_V2)
+LIBS_GPIOD = $(shell $(PKG_CONFIG) --libs libgpiod 2>/dev/null)
 
 # Pure geometry: never includes a GL header, so the unit tests link it alone.
 CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
@@ -31,7 +35,7 @@ BOARDS = $(sort $(wildcard board/*.profile))
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
-TESTS = test_linalg test_button test_board test_depth_rgba test_atlas test_scene test_uniform test_plane test_warps test_reference test_render
+TESTS = test_gpio test_linalg test_button test_board test_depth_rgba test_atlas test_scene test_uniform test_plane test_warps test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan
@@ -46,6 +50,9 @@ deps-check:
 
 $(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/gpio_button.o: src/gpio_button.c $(wildcard src/*.h) | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(GPIOD_CFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
 	sh tools/embed-files.sh lx_shader_files $(SHADERS) > $@.tmp && mv $@.tmp $@
@@ -68,14 +75,20 @@ run: deps
 	$(BUILD)/lixel render --out out/default.png --measure
 
 # Unit tests link only the pure geometry; render tests link the GL side too.
-$(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) | $(BUILD)
+$(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(WARN) $(CFLAGS) $< \
 		$(if $(filter test_render,$*),$(GL_OBJ),) $(CORE_OBJ) \
+		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
 		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL),-lpthread -lm) -o $@
 
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
+# The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)
+# wherever the machine only has v1; it is linked only where libgpiod 2 is installed.
+$(BUILD)/gpio_button_v2_check.o: src/gpio_button.c src/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
+
 check: deps-check
-	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS)
+	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/gpio_button_v2_check.o
 	@sh tests/run-tests.sh $(BUILD)
 	@$(MAKE) --no-print-directory asan
 

@@ -1,0 +1,179 @@
+#include "gpio_button.h"
+#include <errno.h>
+#include <gpiod.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static int64_t monotonic_ns(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (int64_t)ts.tv_sec * 1000000000 + ts.tv_nsec;
+}
+
+/* Kernel event stamps are CLOCK_MONOTONIC since Linux 5.7, CLOCK_REALTIME before:
+ * a stamp far from the monotonic clock is moved by the difference of the two. */
+static int64_t to_monotonic(int64_t stamp)
+{
+	int64_t mono = monotonic_ns();
+	if (llabs(stamp - mono) < 10LL * 1000000000)
+		return stamp;
+	struct timespec rt;
+	clock_gettime(CLOCK_REALTIME, &rt);
+	return stamp - ((int64_t)rt.tv_sec * 1000000000 + rt.tv_nsec - mono);
+}
+
+#ifdef LX_GPIOD_V2
+
+struct lx_gpio_button {
+	struct gpiod_chip *chip;
+	struct gpiod_line_request *request;
+	struct gpiod_edge_event_buffer *buffer;
+	unsigned int offset;
+};
+
+bool lx_gpio_button_kernel_debounce(void) { return true; }
+const char *lx_gpio_button_api(void) { return "libgpiod 2 (v2 API, kernel debounce)"; }
+
+struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
+{
+	char path[128];
+	/* v2 opens chips by path only */
+	snprintf(path, sizeof path, "%s%s", board->gpio_chip[0] == '/' ? "" : "/dev/", board->gpio_chip);
+	struct lx_gpio_button *g = calloc(1, sizeof(*g));
+	if (!g) {
+		snprintf(err, errlen, "gpio: out of memory");
+		return NULL;
+	}
+	g->offset = (unsigned int)board->gpio_line;
+	g->chip = gpiod_chip_open(path);
+	if (!g->chip) {
+		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, strerror(errno));
+		free(g);
+		return NULL;
+	}
+	struct gpiod_line_settings *s = gpiod_line_settings_new();
+	struct gpiod_line_config *lc = gpiod_line_config_new();
+	struct gpiod_request_config *rc = gpiod_request_config_new();
+	static const enum gpiod_line_bias bias[] = {GPIOD_LINE_BIAS_AS_IS, GPIOD_LINE_BIAS_PULL_UP,
+						    GPIOD_LINE_BIAS_PULL_DOWN, GPIOD_LINE_BIAS_DISABLED};
+	if (s && lc && rc) {
+		gpiod_line_settings_set_direction(s, GPIOD_LINE_DIRECTION_INPUT);
+		gpiod_line_settings_set_edge_detection(s, GPIOD_LINE_EDGE_BOTH);
+		gpiod_line_settings_set_bias(s, bias[board->bias]);
+		gpiod_line_settings_set_debounce_period_us(s, (unsigned long)board->debounce_ms * 1000);
+		gpiod_request_config_set_consumer(rc, "lixel");
+		if (gpiod_line_config_add_line_settings(lc, &g->offset, 1, s) == 0)
+			g->request = gpiod_chip_request_lines(g->chip, rc, lc);
+	}
+	int saved = errno;
+	gpiod_line_settings_free(s);
+	gpiod_line_config_free(lc);
+	gpiod_request_config_free(rc);
+	g->buffer = gpiod_edge_event_buffer_new(64);
+	if (!g->request || !g->buffer) {
+		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(saved));
+		lx_gpio_button_close(g);
+		return NULL;
+	}
+	return g;
+}
+
+void lx_gpio_button_close(struct lx_gpio_button *g)
+{
+	if (!g)
+		return;
+	if (g->buffer)
+		gpiod_edge_event_buffer_free(g->buffer);
+	if (g->request)
+		gpiod_line_request_release(g->request);
+	if (g->chip)
+		gpiod_chip_close(g->chip);
+	free(g);
+}
+
+int lx_gpio_button_fd(const struct lx_gpio_button *g) { return gpiod_line_request_get_fd(g->request); }
+
+bool lx_gpio_button_level(struct lx_gpio_button *g)
+{
+	return gpiod_line_request_get_value(g->request, g->offset) == GPIOD_LINE_VALUE_ACTIVE;
+}
+
+int lx_gpio_button_read(struct lx_gpio_button *g, struct lx_gpio_edge *edges, int max)
+{
+	int n = gpiod_line_request_read_edge_events(g->request, g->buffer, (size_t)(max < 64 ? max : 64));
+	for (int i = 0; i < n; i++) {
+		struct gpiod_edge_event *e = gpiod_edge_event_buffer_get_event(g->buffer, (unsigned long)i);
+		edges[i].high = gpiod_edge_event_get_event_type(e) == GPIOD_EDGE_EVENT_RISING_EDGE;
+		edges[i].t_ns = to_monotonic((int64_t)gpiod_edge_event_get_timestamp_ns(e));
+	}
+	return n;
+}
+
+#else /* the v1 API */
+
+struct lx_gpio_button {
+	struct gpiod_chip *chip;
+	struct gpiod_line *line;
+};
+
+bool lx_gpio_button_kernel_debounce(void) { return false; }
+const char *lx_gpio_button_api(void) { return "libgpiod 1 (v1 API, software debounce)"; }
+
+struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
+{
+	struct lx_gpio_button *g = calloc(1, sizeof(*g));
+	if (!g) {
+		snprintf(err, errlen, "gpio: out of memory");
+		return NULL;
+	}
+	/* a name (gpiochip0), a path, a label or a number */
+	g->chip = gpiod_chip_open_lookup(board->gpio_chip);
+	if (!g->chip) {
+		snprintf(err, errlen, "gpio: cannot open chip %s: %s", board->gpio_chip,
+			 errno ? strerror(errno) : "no such chip");
+		free(g);
+		return NULL;
+	}
+	g->line = gpiod_chip_get_line(g->chip, (unsigned int)board->gpio_line);
+	static const int bias[] = {0, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
+				   GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE};
+	struct gpiod_line_request_config cfg = {.consumer = "lixel", .request_type = GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES,
+						.flags = bias[board->bias]};
+	if (!g->line || gpiod_line_request(g->line, &cfg, 0) != 0) {
+		snprintf(err, errlen, "gpio: cannot request line %d on %s: %s", board->gpio_line, board->gpio_chip,
+			 strerror(errno));
+		gpiod_chip_close(g->chip);
+		free(g);
+		return NULL;
+	}
+	return g;
+}
+
+void lx_gpio_button_close(struct lx_gpio_button *g)
+{
+	if (!g)
+		return;
+	gpiod_line_release(g->line);
+	gpiod_chip_close(g->chip);
+	free(g);
+}
+
+int lx_gpio_button_fd(const struct lx_gpio_button *g) { return gpiod_line_event_get_fd(g->line); }
+
+bool lx_gpio_button_level(struct lx_gpio_button *g) { return gpiod_line_get_value(g->line) == 1; }
+
+int lx_gpio_button_read(struct lx_gpio_button *g, struct lx_gpio_edge *edges, int max)
+{
+	struct gpiod_line_event ev[64];
+	int n = gpiod_line_event_read_multiple(g->line, ev, (unsigned int)(max < 64 ? max : 64));
+	for (int i = 0; i < n; i++) {
+		edges[i].high = ev[i].event_type == GPIOD_LINE_EVENT_RISING_EDGE;
+		edges[i].t_ns = to_monotonic((int64_t)ev[i].ts.tv_sec * 1000000000 + ev[i].ts.tv_nsec);
+	}
+	return n;
+}
+
+#endif
