@@ -13,11 +13,11 @@ PKG_CONFIG ?= pkg-config
 BUILD ?= build
 
 # GL entry points are loaded at run time (src/gl_api.h); glesv2 gives only headers.
-GL_PKGS = osmesa egl glesv2 libpng
+GL_PKGS = osmesa egl glesv2 libpng x11
 CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
-LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng 2>/dev/null) -lpthread -lm
+LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng x11 2>/dev/null) -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
 GPIOD_CFLAGS = $(shell $(PKG_CONFIG) --cflags libgpiod 2>/dev/null) \
 	$(shell $(PKG_CONFIG) --atleast-version=2 libgpiod 2>/dev/null && echo -DLX_GPIOD_V2)
@@ -28,7 +28,7 @@ CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/
 	src/shadow_method.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
 	src/configs.c src/json.c src/button.c src/embedded.c src/board.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/platform.c src/platform_osmesa.c \
-	src/platform_egl.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c
+	src/platform_egl.c src/platform_x11.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
 BOARDS = $(sort $(wildcard board/*.profile))
 
@@ -63,8 +63,8 @@ $(BUILD)/boards_embedded.c: $(BOARDS) tools/embed-files.sh | $(BUILD)
 $(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ)
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LIBS_GL) -o $@
+$(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o
+	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LIBS_GL) $(LIBS_GPIOD) -o $@
 
 $(BUILD):
 	mkdir -p $(BUILD)/tests
@@ -77,9 +77,9 @@ run: deps
 # Unit tests link only the pure geometry; render tests link the GL side too.
 $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(WARN) $(CFLAGS) $< \
-		$(if $(filter test_render,$*),$(GL_OBJ),) $(CORE_OBJ) \
+		$(if $(filter test_render,$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) $(CORE_OBJ) \
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
-		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL),-lpthread -lm) -o $@
+		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
 
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 # The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)

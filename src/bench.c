@@ -516,7 +516,7 @@ int lx_bench_main(int argc, char **argv)
 	}
 	for (; ready < b.nm; ready++) {
 		status = lx_method_run_init(&runs[ready], b.methods[ready], &b.scene, &meshes, &caps, &opt, b.width, b.height,
-					    false, LX_DEFAULT_BIAS_CODES, err, sizeof err);
+					    false, LX_DEFAULT_BIAS_CODES, false, err, sizeof err);
 		if (status)
 			goto out;
 	}

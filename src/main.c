@@ -1,5 +1,6 @@
 /* lixel: command line. `lixel render` draws one frame and reports its figures. */
 #include "bench.h"
+#include "kiosk.h"
 #include "configs.h"
 #include "platform.h"
 #include "json.h"
@@ -24,6 +25,7 @@ static void usage(FILE *f)
 		   "commands:\n"
 		   "  render     render one frame to a PNG and print its figures\n"
 		   "  bench      every method over the standard configurations: time and accuracy\n"
+		   "  kiosk      the animated scene with a button (or keys) switching the method\n"
 		   "\n"
 		   "  lixel render --help    options of render\n"
 		   "  lixel bench --help     options of bench\n"
@@ -419,6 +421,8 @@ int main(int argc, char **argv)
 		return cmd_render(argc - 2, argv + 2);
 	if (!strcmp(argv[1], "bench"))
 		return lx_bench_main(argc - 2, argv + 2);
+	if (!strcmp(argv[1], "kiosk"))
+		return lx_kiosk_main(argc - 2, argv + 2);
 	fprintf(stderr, "lixel: unknown command '%s', expected render or bench (see lixel --help)\n", argv[1]);
 	return 2;
 }

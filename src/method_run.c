@@ -13,7 +13,7 @@ static double now_ms(void)
 int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct lx_scene *scene,
 		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
 		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
-		       double bias_codes, char *err, size_t errlen)
+		       double bias_codes, bool to_window, char *err, size_t errlen)
 {
 	memset(mr, 0, sizeof(*mr));
 	mr->method = lx_shadow_method_find(name);
@@ -29,7 +29,7 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 2; /* budgets this GL cannot hold: the input asks too much */
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
 				      .map_count = nreq, .width = width, .height = height,
-				      .force_mediump = force_mediump, .bias_codes = bias_codes};
+				      .force_mediump = force_mediump, .bias_codes = bias_codes, .to_window = to_window};
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
 	return mr->renderer ? 0 : 1;
 }

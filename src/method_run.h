@@ -36,7 +36,7 @@ struct lx_plane_report {
 int lx_method_run_init(struct lx_method_run *mr, const char *method, const struct lx_scene *scene,
 		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
 		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
-		       double bias_codes, char *err, size_t errlen);
+		       double bias_codes, bool to_window, char *err, size_t errlen);
 void lx_method_run_free(struct lx_method_run *mr);
 /* Light matrices, shadow passes and the shaded main pass, each step timed. */
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);

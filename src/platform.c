@@ -27,6 +27,26 @@ struct lx_platform *lx_platform_create(const char *name, char *err, size_t errle
 	return p;
 }
 
+struct lx_platform *lx_platform_create_window(const char *name, int width, int height, char *err, size_t errlen)
+{
+	struct lx_platform *p;
+	if (!strcmp(name, "x11"))
+		p = lx_platform_x11_create(width, height, err, errlen);
+	else {
+		snprintf(err, errlen, "unknown window platform '%s', expected x11", name);
+		return NULL;
+	}
+	if (!p)
+		return NULL;
+	const char *missing = NULL;
+	if (!lx_gl_load(p->get_proc, &missing)) {
+		snprintf(err, errlen, "%s: the GL entry point %s is missing", name, missing);
+		lx_platform_destroy(p);
+		return NULL;
+	}
+	return p;
+}
+
 void lx_platform_destroy(struct lx_platform *p)
 {
 	if (p)

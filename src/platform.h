@@ -11,6 +11,12 @@ struct lx_platform {
 	void *(*get_proc)(const char *name);
 	void (*destroy)(struct lx_platform *p);
 	void *priv;
+	/* Windowed platforms (x11): the window's size, presenting a frame drawn into the
+	 * default framebuffer, and the next key pressed (0 when none; ' ', 'l', 'q', 27 for
+	 * Escape, -1 when the window was closed). NULL on headless platforms. */
+	int width, height;
+	void (*swap)(struct lx_platform *p);
+	int (*poll_key)(struct lx_platform *p);
 };
 
 /* Creates and makes current a context on the named platform ("osmesa" or "egl");
@@ -19,7 +25,11 @@ struct lx_platform *lx_platform_create(const char *name, char *err, size_t errle
 void lx_platform_destroy(struct lx_platform *p);
 const char *lx_platform_names(void);
 
+/* A window of the given size ("x11": EGL on an X11 window, DISPLAY from the environment). */
+struct lx_platform *lx_platform_create_window(const char *name, int width, int height, char *err, size_t errlen);
+
 struct lx_platform *lx_platform_osmesa_create(char *err, size_t errlen);
+struct lx_platform *lx_platform_x11_create(int width, int height, char *err, size_t errlen);
 struct lx_platform *lx_platform_egl_surfaceless_create(char *err, size_t errlen);
 
 #endif

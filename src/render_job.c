@@ -101,7 +101,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
 	struct lx_method_run mr;
 	int status = lx_method_run_init(&mr, job->method, &job->scene, &meshes, &rep->caps, &opt, job->width,
-					job->height, job->force_mediump, job->bias_codes, err, errlen);
+					job->height, job->force_mediump, job->bias_codes, false, err, errlen);
 	if (status)
 		goto out;
 	status = 1;

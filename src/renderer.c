@@ -84,7 +84,7 @@ static bool main_program(struct main_program *p, int maps, bool decision, bool e
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
-	if (d->width > caps->max_renderbuffer_size || d->height > caps->max_renderbuffer_size ||
+	if ((!d->to_window && (d->width > caps->max_renderbuffer_size || d->height > caps->max_renderbuffer_size)) ||
 	    d->width > caps->max_viewport[0] || d->height > caps->max_viewport[1]) {
 		snprintf(err, errlen, "size %dx%d exceeds the GL's limit (renderbuffer %d, viewport %dx%d)", d->width,
 			 d->height, caps->max_renderbuffer_size, caps->max_viewport[0], caps->max_viewport[1]);
@@ -147,20 +147,22 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	lx_gl.ClearColor(1, 1, 1, 1);
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-	/* RGBA8 renderbuffers are an extension in ES 2.0 (OES_rgb8_rgba8); an RGBA texture is core. */
-	GLuint tex;
-	lx_gl.GenTextures(1, &tex);
-	lx_gl.BindTexture(GL_TEXTURE_2D, tex);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->width, d->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-	r->target_color = tex;
-	if (!framebuffer(&r->target_fbo, tex, 0, &r->target_depth, d->width, d->height, caps->depth24, err, errlen,
-			 "main target")) {
-		lx_renderer_destroy(r);
-		return NULL;
+	if (!d->to_window) {
+		/* RGBA8 renderbuffers are an extension in ES 2.0 (OES_rgb8_rgba8); an RGBA texture is core. */
+		GLuint tex;
+		lx_gl.GenTextures(1, &tex);
+		lx_gl.BindTexture(GL_TEXTURE_2D, tex);
+		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+		lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->width, d->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+		r->target_color = tex;
+		if (!framebuffer(&r->target_fbo, tex, 0, &r->target_depth, d->width, d->height, caps->depth24, err, errlen,
+				 "main target")) {
+			lx_renderer_destroy(r);
+			return NULL;
+		}
 	}
 	GLenum e = lx_gl.GetError();
 	if (e != GL_NO_ERROR) {
@@ -178,11 +180,13 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->objects)
 		lx_gl.DeleteBuffers(r->objects, r->vbo);
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
-	lx_gl.DeleteTextures(1, &r->target_color);
 	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
-	lx_gl.DeleteRenderbuffers(1, &r->target_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
-	lx_gl.DeleteFramebuffers(1, &r->target_fbo);
+	if (r->target_fbo) { /* 0 is the window's */
+		lx_gl.DeleteTextures(1, &r->target_color);
+		lx_gl.DeleteRenderbuffers(1, &r->target_depth);
+		lx_gl.DeleteFramebuffers(1, &r->target_fbo);
+	}
 	if (r->shadow_prog)
 		lx_gl.DeleteProgram(r->shadow_prog);
 	for (int a = 0; a < 2; a++)

@@ -17,6 +17,7 @@ struct lx_renderer_desc {
 	int width, height;
 	bool force_mediump; /* take the fragment shaders' mediump path even where highp exists */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
+	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
 };
 
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen);

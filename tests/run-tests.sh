@@ -19,6 +19,8 @@ for t in "$build"/tests/test_*; do
 done
 echo "== cli"
 if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names cli"; fi
+echo "== kiosk (x11 under Xvfb)"
+if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names kiosk"; fi
 [ -n "$failed_names" ] && echo "failed:$failed_names"
 echo "tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,256 @@
+#include "kiosk.h"
+#include "board.h"
+#include "button.h"
+#include "gl_api.h"
+#include "gpio_button.h"
+#include "method_run.h"
+#include "platform.h"
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static volatile sig_atomic_t stop_requested;
+
+static void on_signal(int sig)
+{
+	(void)sig;
+	stop_requested = 1;
+}
+
+static int64_t now_ns(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (int64_t)ts.tv_sec * 1000000000 + ts.tv_nsec;
+}
+
+static void usage(FILE *f)
+{
+	fprintf(f, "usage: lixel kiosk [--platform x11|kms] [--board NAME|FILE] [--frames N] [--size WxH]\n"
+		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
+		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
+		   "\n"
+		   "Shows the animated scene and switches the shadow method on a button press: a short\n"
+		   "press goes to the next method of the board's order, a long press (1 s) toggles the\n"
+		   "overlay. On a desktop (x11) the keyboard is the button: space a short press, l a\n"
+		   "long press, q or Escape quits. Prints 'method: OLD -> NEW' on each change and a\n"
+		   "status line every 5 seconds.\n"
+		   "\n"
+		   "  --platform NAME   x11 (a window; needs DISPLAY) or kms (full screen on a board)\n"
+		   "  --board NAME|FILE a board profile: %s (default desktop)\n"
+		   "  --frames N        stop after N frames\n"
+		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
+		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
+		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms\n"
+		   "                    override the board profile's button\n"
+		   "\n"
+		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
+		lx_board_names());
+}
+
+static int bad(const char *opt, const char *expected, const char *got)
+{
+	fprintf(stderr, "lixel kiosk: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
+	return 2;
+}
+
+int lx_kiosk_main(int argc, char **argv)
+{
+	const char *platform = getenv("DISPLAY") ? "x11" : "kms", *board_arg = "desktop", *scene_arg = NULL;
+	const char *methods_arg = NULL;
+	long frames = -1;
+	int width = 1024, height = 768;
+	struct lx_board board;
+	char err[512];
+	/* the board first: the other options override it */
+	for (int i = 0; i + 1 < argc; i++)
+		if (!strcmp(argv[i], "--board"))
+			board_arg = argv[i + 1];
+	if (!lx_board_load(board_arg, &board, err, sizeof err)) {
+		fprintf(stderr, "lixel: %s\n", err);
+		return 2;
+	}
+	for (int i = 0; i < argc; i++) {
+		const char *a = argv[i];
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			usage(stdout);
+			return 0;
+		}
+		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
+							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
+							 "--long-press-ms"};
+		bool known = false;
+		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+			known |= !strcmp(a, with_value[k]);
+		if (!known) {
+			fprintf(stderr, "lixel kiosk: unknown option '%s' (see lixel kiosk --help)\n", a);
+			return 2;
+		}
+		if (i + 1 >= argc)
+			return bad(a, "a value", NULL);
+		const char *v = argv[++i];
+		char *end;
+		if (!strcmp(a, "--platform")) {
+			if (strcmp(v, "x11") && strcmp(v, "kms"))
+				return bad(a, "x11 or kms", v);
+			platform = v;
+		} else if (!strcmp(a, "--frames")) {
+			frames = strtol(v, &end, 10);
+			if (end == v || *end || frames < 1)
+				return bad(a, "a whole number of frames >= 1", v);
+		} else if (!strcmp(a, "--size")) {
+			int hz;
+			if (!lx_parse_mode(v, &width, &height, &hz) || hz)
+				return bad(a, "WxH", v);
+		} else if (!strcmp(a, "--scene"))
+			scene_arg = v;
+		else if (!strcmp(a, "--methods"))
+			methods_arg = v;
+		else if (strcmp(a, "--board")) {
+			/* a button override: parsed as a one-line profile */
+			char line[256];
+			snprintf(line, sizeof line, "%s %s\n", a + 2, v);
+			if (!lx_board_parse(line, a, &board, err, sizeof err)) {
+				fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
+				return 2;
+			}
+		}
+	}
+	if (methods_arg) {
+		char line[256];
+		snprintf(line, sizeof line, "methods %s\n", methods_arg);
+		if (!lx_board_parse(line, "--methods", &board, err, sizeof err)) {
+			fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
+			return 2;
+		}
+	}
+	struct lx_scene scene;
+	if (!scene_arg)
+		lx_scene_default(&scene);
+	else if (!lx_scene_builtin(scene_arg, &scene) && !lx_scene_load(scene_arg, &scene, err, sizeof err)) {
+		fprintf(stderr, "lixel: %s\n", err);
+		return 2;
+	}
+	if (!strcmp(platform, "kms")) {
+		fprintf(stderr, "lixel kiosk: kms: full-screen DRM/KMS output is not built yet; use --platform x11 "
+				"with a DISPLAY\n");
+		return 1;
+	}
+	struct lx_platform *plat = lx_platform_create_window(platform, width, height, err, sizeof err);
+	if (!plat) {
+		fprintf(stderr, "lixel kiosk: %s\n", err);
+		return 1;
+	}
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	struct lx_scene_meshes meshes;
+	if (!lx_meshes_build(&scene, &meshes)) {
+		fprintf(stderr, "lixel: out of memory\n");
+		lx_platform_destroy(plat);
+		return 1;
+	}
+	struct lx_method_run runs[LX_BOARD_MAX_METHODS];
+	int ready = 0, status = 0;
+	for (; ready < board.method_count; ready++) {
+		status = lx_method_run_init(&runs[ready], board.methods[ready], &scene, &meshes, &caps, &board.lixels,
+					    plat->width, plat->height, false, LX_DEFAULT_BIAS_CODES, true, err, sizeof err);
+		if (status) {
+			fprintf(stderr, "lixel: %s\n", err);
+			goto out;
+		}
+	}
+	printf("lixel kiosk: GL_VENDOR %s, GL_RENDERER %s, GL_VERSION %s; %s %dx%d; fragment precision %s (%d bits); "
+	       "board %s\n",
+	       caps.vendor, caps.renderer, caps.version, plat->name, plat->width, plat->height,
+	       caps.fragment_highp ? "highp" : "mediump",
+	       caps.fragment_highp ? caps.fragment_highp_bits : caps.fragment_mediump_bits, board.name);
+	struct lx_gpio_button *gpio = NULL;
+	if (board.gpio_chip[0]) {
+		gpio = lx_gpio_button_open(&board, err, sizeof err);
+		if (!gpio)
+			printf("lixel kiosk: warning: %s; the keyboard still works\n", err);
+	}
+	int64_t start = now_ns();
+	struct lx_button button;
+	lx_button_init(&button, gpio && !lx_gpio_button_kernel_debounce() ? board.debounce_ms : 0, board.long_press_ms,
+		       board.active_low, gpio ? lx_gpio_button_level(gpio) : !board.active_low, start);
+	fflush(stdout);
+	signal(SIGINT, on_signal);
+	signal(SIGTERM, on_signal);
+	int current = 0;
+	bool overlay = false;
+	long frame = 0, window_frames = 0;
+	int64_t window_start = start;
+	while (!stop_requested && (frames < 0 || frame < frames)) {
+		int64_t t = now_ns();
+		struct lx_frame f;
+		if (!lx_frame_setup(&f, &scene, &meshes, (t - start) / 1e9, plat->width, plat->height, err, sizeof err)) {
+			fprintf(stderr, "lixel kiosk: %s\n", err);
+			status = 2;
+			break;
+		}
+		struct lx_frame_times ft;
+		lx_method_run_frame(&runs[current], &f, &ft);
+		plat->swap(plat);
+		frame++, window_frames++;
+		/* input: keys, then the button's edges and the time that passed */
+		enum lx_button_event ev = LX_BUTTON_NONE;
+		for (int key; (key = plat->poll_key(plat)) != 0;) {
+			if (key == 'q' || key == 27 || key < 0)
+				stop_requested = 1;
+			else if (key == ' ')
+				ev = LX_BUTTON_SHORT;
+			else if (key == 'l')
+				ev = LX_BUTTON_LONG;
+		}
+		if (gpio) {
+			struct pollfd pfd = {.fd = lx_gpio_button_fd(gpio), .events = POLLIN};
+			while (poll(&pfd, 1, 0) > 0) {
+				struct lx_gpio_edge edges[64];
+				int n = lx_gpio_button_read(gpio, edges, 64);
+				if (n <= 0)
+					break;
+				for (int i = 0; i < n; i++) {
+					enum lx_button_event e = lx_button_edge(&button, edges[i].high, edges[i].t_ns);
+					ev = e != LX_BUTTON_NONE ? e : ev;
+				}
+			}
+			enum lx_button_event e = lx_button_tick(&button, now_ns());
+			ev = e != LX_BUTTON_NONE ? e : ev;
+		}
+		if (ev == LX_BUTTON_SHORT && board.method_count > 1) {
+			int next = (current + 1) % board.method_count;
+			printf("method: %s -> %s\n", board.methods[current], board.methods[next]);
+			fflush(stdout);
+			current = next;
+		} else if (ev == LX_BUTTON_LONG) {
+			overlay = !overlay;
+			printf("overlay: %s\n", overlay ? "on" : "off");
+			fflush(stdout);
+		}
+		int64_t now = now_ns();
+		if (now - window_start >= 5000000000LL) {
+			double secs = (now - window_start) / 1e9;
+			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, window_frames / secs,
+			       board.methods[current]);
+			fflush(stdout);
+			window_start = now;
+			window_frames = 0;
+		}
+	}
+	double secs = (now_ns() - window_start) / 1e9;
+	if (window_frames && secs > 0)
+		printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, window_frames / secs,
+		       board.methods[current]);
+	lx_gpio_button_close(gpio);
+out:
+	for (int m = 0; m < ready; m++)
+		lx_method_run_free(&runs[m]);
+	lx_meshes_free(&meshes);
+	lx_platform_destroy(plat);
+	return status;
+}
