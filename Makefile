@@ -13,11 +13,11 @@ PKG_CONFIG ?= pkg-config
 BUILD ?= build
 
 # GL entry points are loaded at run time (src/gl_api.h); glesv2 gives only headers.
-GL_PKGS = osmesa egl glesv2 libpng x11
+GL_PKGS = osmesa egl glesv2 libpng x11 libdrm gbm
 CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
-LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng x11 2>/dev/null) -lpthread -lm
+LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng x11 libdrm gbm 2>/dev/null) -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
 GPIOD_CFLAGS = $(shell $(PKG_CONFIG) --cflags libgpiod 2>/dev/null) \
 	$(shell $(PKG_CONFIG) --atleast-version=2 libgpiod 2>/dev/null && echo -DLX_GPIOD_V2)
@@ -28,7 +28,7 @@ CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/
 	src/shadow_method.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
 	src/configs.c src/json.c src/button.c src/embedded.c src/board.c src/kms_select.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/platform.c src/platform_osmesa.c \
-	src/platform_egl.c src/platform_x11.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c
+	src/platform_egl.c src/platform_x11.c src/platform_kms.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
 BOARDS = $(sort $(wildcard board/*.profile))
 

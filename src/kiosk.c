@@ -30,7 +30,8 @@ static int64_t now_ns(void)
 
 static void usage(FILE *f)
 {
-	fprintf(f, "usage: lixel kiosk [--platform x11|kms] [--board NAME|FILE] [--frames N] [--size WxH]\n"
+	fprintf(f, "usage: lixel kiosk [--platform kms|x11] [--board NAME|FILE] [--frames N] [--size WxH]\n"
+		   "                   [--device PATH] [--mode WxH[@HZ]]\n"
 		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
 		   "\n"
@@ -40,7 +41,11 @@ static void usage(FILE *f)
 		   "long press, q or Escape quits. Prints 'method: OLD -> NEW' on each change and a\n"
 		   "status line every 5 seconds.\n"
 		   "\n"
-		   "  --platform NAME   x11 (a window; needs DISPLAY) or kms (full screen on a board)\n"
+		   "  --platform NAME   kms (full screen on a board; the default) or x11 (a window; needs\n"
+		   "                    DISPLAY; chosen by itself when KMS cannot be used and DISPLAY is set)\n"
+		   "  --device PATH     the DRM device (default: the board's, else the first that can\n"
+		   "                    mode-set)\n"
+		   "  --mode WxH[@HZ]   the display mode (default: the board's, else the preferred one)\n"
 		   "  --board NAME|FILE a board profile: %s (default desktop)\n"
 		   "  --frames N        stop after N frames\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
@@ -48,6 +53,7 @@ static void usage(FILE *f)
 		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms\n"
 		   "                    override the board profile's button\n"
 		   "\n"
+		   "On SIGINT or SIGTERM it puts back the display mode it found and exits 0.\n"
 		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
 		lx_board_names());
 }
@@ -60,7 +66,7 @@ static int bad(const char *opt, const char *expected, const char *got)
 
 int lx_kiosk_main(int argc, char **argv)
 {
-	const char *platform = getenv("DISPLAY") ? "x11" : "kms", *board_arg = "desktop", *scene_arg = NULL;
+	const char *platform = NULL, *board_arg = "desktop", *scene_arg = NULL;
 	const char *methods_arg = NULL;
 	long frames = -1;
 	int width = 1024, height = 768;
@@ -82,7 +88,7 @@ int lx_kiosk_main(int argc, char **argv)
 		}
 		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
 							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
-							 "--long-press-ms"};
+							 "--long-press-ms", "--device", "--mode"};
 		bool known = false;
 		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
 			known |= !strcmp(a, with_value[k]);
@@ -110,6 +116,16 @@ int lx_kiosk_main(int argc, char **argv)
 			scene_arg = v;
 		else if (!strcmp(a, "--methods"))
 			methods_arg = v;
+		else if (!strcmp(a, "--device")) {
+			if (strlen(v) >= sizeof board.display)
+				return bad(a, "a device path", v);
+			strcpy(board.display, v);
+		} else if (!strcmp(a, "--mode")) {
+			if (!strcmp(v, "preferred"))
+				board.mode_w = board.mode_h = board.mode_hz = 0;
+			else if (!lx_parse_mode(v, &board.mode_w, &board.mode_h, &board.mode_hz))
+				return bad(a, "WxH or WxH@HZ", v);
+		}
 		else if (strcmp(a, "--board")) {
 			/* a button override: parsed as a one-line profile */
 			char line[256];
@@ -135,12 +151,14 @@ int lx_kiosk_main(int argc, char **argv)
 		fprintf(stderr, "lixel: %s\n", err);
 		return 2;
 	}
-	if (!strcmp(platform, "kms")) {
-		fprintf(stderr, "lixel kiosk: kms: full-screen DRM/KMS output is not built yet; use --platform x11 "
-				"with a DISPLAY\n");
-		return 1;
+	/* KMS unless told otherwise; a desktop (DISPLAY set, no KMS device to use) gets x11 */
+	const char *device = board.display[0] ? board.display : NULL;
+	struct lx_platform *plat = lx_platform_create_display(platform ? platform : "kms", width, height, device,
+							      board.mode_w, board.mode_h, board.mode_hz, err, sizeof err);
+	if (!plat && !platform && getenv("DISPLAY")) {
+		printf("lixel kiosk: %s; using x11 (DISPLAY is set)\n", err);
+		plat = lx_platform_create_display("x11", width, height, NULL, 0, 0, 0, err, sizeof err);
 	}
-	struct lx_platform *plat = lx_platform_create_window(platform, width, height, err, sizeof err);
 	if (!plat) {
 		fprintf(stderr, "lixel kiosk: %s\n", err);
 		return 1;

@@ -27,13 +27,16 @@ struct lx_platform *lx_platform_create(const char *name, char *err, size_t errle
 	return p;
 }
 
-struct lx_platform *lx_platform_create_window(const char *name, int width, int height, char *err, size_t errlen)
+struct lx_platform *lx_platform_create_display(const char *name, int width, int height, const char *device,
+					       int mode_w, int mode_h, int mode_hz, char *err, size_t errlen)
 {
 	struct lx_platform *p;
 	if (!strcmp(name, "x11"))
 		p = lx_platform_x11_create(width, height, err, errlen);
+	else if (!strcmp(name, "kms"))
+		p = lx_platform_kms_create(device, mode_w, mode_h, mode_hz, err, errlen);
 	else {
-		snprintf(err, errlen, "unknown window platform '%s', expected x11", name);
+		snprintf(err, errlen, "unknown display platform '%s', expected x11 or kms", name);
 		return NULL;
 	}
 	if (!p)

@@ -25,11 +25,18 @@ struct lx_platform *lx_platform_create(const char *name, char *err, size_t errle
 void lx_platform_destroy(struct lx_platform *p);
 const char *lx_platform_names(void);
 
-/* A window of the given size ("x11": EGL on an X11 window, DISPLAY from the environment). */
-struct lx_platform *lx_platform_create_window(const char *name, int width, int height, char *err, size_t errlen);
+/* A display platform: "x11" (EGL on an X11 window of width x height, DISPLAY from the
+ * environment) or "kms" (full screen on device, NULL for the first that can mode-set, in
+ * mode_w x mode_h @ mode_hz, 0 for the preferred mode). GL entry points loaded. */
+struct lx_platform *lx_platform_create_display(const char *name, int width, int height, const char *device,
+					       int mode_w, int mode_h, int mode_hz, char *err, size_t errlen);
 
 struct lx_platform *lx_platform_osmesa_create(char *err, size_t errlen);
 struct lx_platform *lx_platform_x11_create(int width, int height, char *err, size_t errlen);
+/* Full screen through DRM/KMS and GBM: device NULL for the first that can mode-set,
+ * want_w = 0 for the preferred mode. */
+struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int want_h, int want_hz, char *err,
+					   size_t errlen);
 struct lx_platform *lx_platform_egl_surfaceless_create(char *err, size_t errlen);
 
 #endif

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The kiosk's desktop emulation under Xvfb, driven by synthetic key presses (xdotool):
 # a space changes the method, l toggles the overlay, q quits with status 0; a board whose
-# GPIO chip is missing warns and runs on; bad input exits 2. No GPU, no DRM, no GPIO.
+# GPIO chip is missing warns and runs on; bad input exits 2; KMS without a DRM device is one
+# clear error, and a DISPLAY then gets the x11 window. No GPU, no DRM, no GPIO.
 # Usage: tests/kiosk_x11.sh path/to/lixel
 set -u
 lixel=${1:?usage: kiosk_x11.sh path/to/lixel}
@@ -68,6 +69,22 @@ done
 # 5. no display for x11: a clear error, status 1
 DISPLAY=:1234 "$lixel" kiosk --platform x11 --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?
 [ "$st" -eq 1 ] && grep -q "cannot open display ':1234'" "$tmp/err" && ok || no "no display: status $st: $(cat "$tmp/err")"
+
+# 6. KMS where there is no DRM device (this machine, CI): one clear error naming the
+# device and the reason, status 1; without --platform a DISPLAY gets the x11 window
+if [ ! -e /dev/dri ]; then
+  "$lixel" kiosk --platform kms --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?
+  [ "$st" -eq 1 ] && grep -q '^lixel kiosk: kms: no display to drive (no DRM device found)$' "$tmp/err" && ok ||
+    no "kms without DRM: status $st: $(cat "$tmp/err")"
+  "$lixel" kiosk --platform kms --device /dev/dri/card7 --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?
+  [ "$st" -eq 1 ] && grep -q 'kms: /dev/dri/card7: cannot open: No such file or directory' "$tmp/err" && ok ||
+    no "kms --device: status $st: $(cat "$tmp/err")"
+  "$lixel" kiosk --size 320x240 --frames 5 >"$tmp/out" 2>"$tmp/err"; st=$?
+  [ "$st" -eq 0 ] && grep -q 'using x11 (DISPLAY is set)' "$tmp/out" && grep -q '; x11 320x240;' "$tmp/out" && ok ||
+    no "automatic x11: status $st: $(cat "$tmp/out" "$tmp/err")"
+else
+  echo "kiosk: /dev/dri exists: the no-DRM checks are skipped"
+fi
 
 echo "kiosk: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

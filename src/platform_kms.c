@@ -1,0 +1,260 @@
+/* Full screen on a board: DRM/KMS for the display, GBM for the buffers, EGL with an
+ * OpenGL ES 2.0 context on the GBM surface. The device is the first that can mode-set
+ * (or the one asked for), the mode the connector's preferred one (or the one asked for);
+ * frames are shown by page flips in step with vblank; the CRTC that was there before is
+ * put back when the platform is destroyed (the kiosk does so on SIGINT and SIGTERM). */
+#include "kms_select.h"
+#include "platform.h"
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <gbm.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <xf86drm.h>
+#include <xf86drmMode.h>
+
+struct kms {
+	struct lx_platform base;
+	int fd;
+	uint32_t connector_id, crtc_id;
+	drmModeModeInfo mode;
+	drmModeCrtc *saved; /* to restore at exit */
+	struct gbm_device *gbm;
+	struct gbm_surface *surface;
+	EGLDisplay edpy;
+	EGLSurface esurf;
+	EGLContext ctx;
+	struct gbm_bo *bo; /* on screen */
+	uint32_t fb;
+	bool flip_pending;
+};
+
+static void *kms_get_proc(const char *name) { return (void *)eglGetProcAddress(name); }
+
+static void destroy_fb(struct gbm_bo *bo, void *data)
+{
+	int fd = gbm_device_get_fd(gbm_bo_get_device(bo));
+	uint32_t fb = (uint32_t)(uintptr_t)data;
+	if (fb)
+		drmModeRmFB(fd, fb);
+}
+
+/* The framebuffer of a GBM buffer, made once and kept with it. */
+static uint32_t fb_of(struct kms *k, struct gbm_bo *bo)
+{
+	uint32_t fb = (uint32_t)(uintptr_t)gbm_bo_get_user_data(bo);
+	if (fb)
+		return fb;
+	uint32_t handle = gbm_bo_get_handle(bo).u32, stride = gbm_bo_get_stride(bo);
+	if (drmModeAddFB(k->fd, gbm_bo_get_width(bo), gbm_bo_get_height(bo), 24, 32, stride, handle, &fb))
+		return 0;
+	gbm_bo_set_user_data(bo, (void *)(uintptr_t)fb, destroy_fb);
+	return fb;
+}
+
+static void flip_done(int fd, unsigned int frame, unsigned int sec, unsigned int usec, void *data)
+{
+	(void)fd, (void)frame, (void)sec, (void)usec;
+	((struct kms *)data)->flip_pending = false;
+}
+
+static void wait_flip(struct kms *k)
+{
+	drmEventContext ev = {.version = 2, .page_flip_handler = flip_done};
+	while (k->flip_pending) {
+		struct pollfd p = {.fd = k->fd, .events = POLLIN};
+		if (poll(&p, 1, 1000) <= 0)
+			break; /* no vblank within a second: do not hang the kiosk */
+		drmHandleEvent(k->fd, &ev);
+	}
+	k->flip_pending = false;
+}
+
+static void kms_swap(struct lx_platform *p)
+{
+	struct kms *k = (struct kms *)p;
+	eglSwapBuffers(k->edpy, k->esurf);
+	struct gbm_bo *next = gbm_surface_lock_front_buffer(k->surface);
+	uint32_t fb = next ? fb_of(k, next) : 0;
+	if (!fb)
+		return;
+	if (!k->bo) /* the first frame sets the mode */
+		drmModeSetCrtc(k->fd, k->crtc_id, fb, 0, 0, &k->connector_id, 1, &k->mode);
+	else if (drmModePageFlip(k->fd, k->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, k) == 0) {
+		k->flip_pending = true;
+		wait_flip(k);
+	}
+	if (k->bo)
+		gbm_surface_release_buffer(k->surface, k->bo);
+	k->bo = next;
+}
+
+static int kms_poll_key(struct lx_platform *p)
+{
+	(void)p;
+	return 0; /* no keyboard on a kiosk: the GPIO button */
+}
+
+static void kms_destroy(struct lx_platform *p)
+{
+	struct kms *k = (struct kms *)p;
+	wait_flip(k);
+	if (k->saved) {
+		drmModeSetCrtc(k->fd, k->saved->crtc_id, k->saved->buffer_id, k->saved->x, k->saved->y, &k->connector_id, 1,
+			       &k->saved->mode);
+		drmModeFreeCrtc(k->saved);
+	}
+	if (k->edpy != EGL_NO_DISPLAY) {
+		eglMakeCurrent(k->edpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+		if (k->ctx != EGL_NO_CONTEXT)
+			eglDestroyContext(k->edpy, k->ctx);
+		if (k->esurf != EGL_NO_SURFACE)
+			eglDestroySurface(k->edpy, k->esurf);
+		eglTerminate(k->edpy);
+	}
+	if (k->bo)
+		gbm_surface_release_buffer(k->surface, k->bo);
+	if (k->surface)
+		gbm_surface_destroy(k->surface);
+	if (k->gbm)
+		gbm_device_destroy(k->gbm);
+	if (k->fd >= 0)
+		close(k->fd);
+	free(k);
+}
+
+/* What the selection needs to know of one device. */
+static void describe(int fd, const char *path, struct lx_kms_device *d)
+{
+	memset(d, 0, sizeof(*d));
+	snprintf(d->path, sizeof d->path, "%s", path);
+	d->opened = fd >= 0;
+	drmModeRes *res = fd >= 0 ? drmModeGetResources(fd) : NULL;
+	if (!res)
+		return;
+	d->crtc_count = res->count_crtcs;
+	for (int c = 0; c < res->count_connectors && d->connector_count < LX_KMS_MAX; c++) {
+		drmModeConnector *con = drmModeGetConnector(fd, res->connectors[c]);
+		if (!con)
+			continue;
+		struct lx_kms_connector *o = &d->connectors[d->connector_count++];
+		o->id = con->connector_id;
+		o->connected = con->connection == DRM_MODE_CONNECTED;
+		for (int m = 0; m < con->count_modes && o->mode_count < LX_KMS_MAX; m++)
+			o->modes[o->mode_count++] = (struct lx_kms_mode){con->modes[m].hdisplay, con->modes[m].vdisplay,
+									  (int)con->modes[m].vrefresh,
+									  (con->modes[m].type & DRM_MODE_TYPE_PREFERRED) != 0};
+		for (int e = 0; e < con->count_encoders; e++) {
+			drmModeEncoder *enc = drmModeGetEncoder(fd, con->encoders[e]);
+			if (enc) {
+				o->possible_crtcs |= enc->possible_crtcs;
+				drmModeFreeEncoder(enc);
+			}
+		}
+		drmModeFreeConnector(con);
+	}
+	drmModeFreeResources(res);
+}
+
+struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int want_h, int want_hz, char *err,
+					   size_t errlen)
+{
+	struct lx_kms_device devs[8];
+	int fds[8], n = 0;
+	for (int i = 0; i < 8; i++) {
+		char path[64];
+		if (device && i > 0)
+			break;
+		snprintf(path, sizeof path, "%s", device ? device : "");
+		if (!device)
+			snprintf(path, sizeof path, "/dev/dri/card%d", i);
+		int fd = open(path, O_RDWR | O_CLOEXEC);
+		if (fd < 0 && !device && errno == ENOENT)
+			continue; /* no such node: not worth mentioning */
+		if (fd < 0 && device) {
+			snprintf(err, errlen, "kms: %s: cannot open: %s", path, strerror(errno));
+			return NULL;
+		}
+		describe(fd, path, &devs[n]);
+		fds[n++] = fd;
+	}
+	struct lx_kms_choice ch;
+	bool chosen = lx_kms_choose(devs, n, want_w, want_h, want_hz, &ch, err, errlen);
+	for (int i = 0; i < n; i++)
+		if (fds[i] >= 0 && (!chosen || i != ch.device))
+			close(fds[i]);
+	if (!chosen)
+		return NULL;
+	struct kms *k = calloc(1, sizeof(*k));
+	if (!k) {
+		close(fds[ch.device]);
+		snprintf(err, errlen, "kms: out of memory");
+		return NULL;
+	}
+	k->fd = fds[ch.device];
+	k->edpy = EGL_NO_DISPLAY;
+	k->esurf = EGL_NO_SURFACE;
+	k->ctx = EGL_NO_CONTEXT;
+	const char *path = devs[ch.device].path;
+	drmModeRes *res = drmModeGetResources(k->fd);
+	drmModeConnector *con = res ? drmModeGetConnector(k->fd, devs[ch.device].connectors[ch.connector].id) : NULL;
+	if (!res || !con || ch.mode >= con->count_modes || ch.crtc >= res->count_crtcs) {
+		snprintf(err, errlen, "kms: %s changed while it was being read", path);
+		if (con)
+			drmModeFreeConnector(con);
+		if (res)
+			drmModeFreeResources(res);
+		kms_destroy(&k->base);
+		return NULL;
+	}
+	k->connector_id = con->connector_id;
+	k->crtc_id = res->crtcs[ch.crtc];
+	k->mode = con->modes[ch.mode];
+	k->saved = drmModeGetCrtc(k->fd, k->crtc_id);
+	drmModeFreeConnector(con);
+	drmModeFreeResources(res);
+	int w = k->mode.hdisplay, h = k->mode.vdisplay;
+	k->gbm = gbm_create_device(k->fd);
+	k->surface = k->gbm ? gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, GBM_FORMAT_XRGB8888,
+						 GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING)
+			    : NULL;
+	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
+		(PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+	k->edpy = k->surface && get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
+	EGLint major, minor, count = 0;
+	EGLConfig configs[64], cfg = NULL;
+	const EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8,
+				EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
+	if (k->edpy == EGL_NO_DISPLAY || !eglInitialize(k->edpy, &major, &minor) ||
+	    !eglChooseConfig(k->edpy, attrs, configs, 64, &count)) {
+		snprintf(err, errlen, "kms: %s: no GBM or EGL on this device", path);
+		kms_destroy(&k->base);
+		return NULL;
+	}
+	/* the config whose visual is the surface's format (XRGB8888) */
+	for (int i = 0; i < count && !cfg; i++) {
+		EGLint id;
+		if (eglGetConfigAttrib(k->edpy, configs[i], EGL_NATIVE_VISUAL_ID, &id) && id == GBM_FORMAT_XRGB8888)
+			cfg = configs[i];
+	}
+	const EGLint ctx_attrs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+	if (cfg) {
+		eglBindAPI(EGL_OPENGL_ES_API);
+		k->ctx = eglCreateContext(k->edpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
+		k->esurf = eglCreateWindowSurface(k->edpy, cfg, (EGLNativeWindowType)k->surface, NULL);
+	}
+	if (!cfg || k->ctx == EGL_NO_CONTEXT || k->esurf == EGL_NO_SURFACE ||
+	    !eglMakeCurrent(k->edpy, k->esurf, k->esurf, k->ctx)) {
+		snprintf(err, errlen, "kms: %s: cannot create an OpenGL ES 2.0 context on an XRGB8888 GBM surface", path);
+		kms_destroy(&k->base);
+		return NULL;
+	}
+	k->base = (struct lx_platform){.name = "kms", .get_proc = kms_get_proc, .destroy = kms_destroy, .width = w,
+				       .height = h, .swap = kms_swap, .poll_key = kms_poll_key};
+	return &k->base;
+}
