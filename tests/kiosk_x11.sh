@@ -15,12 +15,26 @@ xvfb_pid=
 cleanup() { [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null; rm -rf "$tmp"; }
 trap cleanup EXIT
 
-# Xvfb picks a free display itself and writes its number to fd 3
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$tmp/display" >/dev/null 2>&1 &
-xvfb_pid=$!
-for i in $(seq 1 100); do [ -s "$tmp/display" ] && break; sleep 0.1; done
-display=":$(head -n 1 "$tmp/display")"
-for i in $(seq 1 50); do DISPLAY=$display xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+# an Xvfb on the first display number that starts and answers
+display=
+for n in 91 92 93 94 95 96 97 98 99; do
+  [ -e "/tmp/.X$n-lock" ] && continue
+  Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+  xvfb_pid=$!
+  for i in $(seq 1 100); do
+    if DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1; then display=":$n"; break; fi
+    kill -0 "$xvfb_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  [ -n "$display" ] && break
+  kill "$xvfb_pid" 2>/dev/null
+  xvfb_pid=
+done
+if [ -z "$display" ]; then
+  echo "FAIL: no Xvfb display could be started"
+  echo "kiosk: 0 passed, 1 failed"
+  exit 1
+fi
 export DISPLAY=$display
 
 # 1. keys: space changes the method, l toggles the overlay, q quits with 0
