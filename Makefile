@@ -8,6 +8,8 @@ PREFIX ?= /usr/local
 DESTDIR ?=
 BINDIR = $(PREFIX)/bin
 MANDIR = $(PREFIX)/share/man/man1
+DATADIR = $(PREFIX)/share/lixel
+UNITDIR ?= $(PREFIX)/lib/systemd/system
 CC ?= cc
 PKG_CONFIG ?= pkg-config
 BUILD ?= build
@@ -98,13 +100,19 @@ asan: deps-check
 		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%)
 	@ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
 
+# The binary (shaders and board profiles are built in), the man page, the profiles as
+# files to copy and edit (--board FILE), and the kiosk's systemd unit.
 install: $(BUILD)/lixel
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/board $(DESTDIR)$(UNITDIR)
 	install -m 755 $(BUILD)/lixel $(DESTDIR)$(BINDIR)/lixel
 	install -m 644 docs/lixel.1 $(DESTDIR)$(MANDIR)/lixel.1
+	install -m 644 $(BOARDS) $(DESTDIR)$(DATADIR)/board/
+	sed 's|@BINDIR@|$(BINDIR)|' board/lixel-kiosk.service > $(DESTDIR)$(UNITDIR)/lixel-kiosk.service
+	chmod 644 $(DESTDIR)$(UNITDIR)/lixel-kiosk.service
 
 uninstall:
-	rm -f $(DESTDIR)$(BINDIR)/lixel $(DESTDIR)$(MANDIR)/lixel.1
+	rm -f $(DESTDIR)$(BINDIR)/lixel $(DESTDIR)$(MANDIR)/lixel.1 $(DESTDIR)$(UNITDIR)/lixel-kiosk.service
+	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:
 	rm -rf build build-asan out
