@@ -12,7 +12,8 @@ fail=0
 ok() { pass=$((pass + 1)); }
 no() { fail=$((fail + 1)); echo "FAIL: $*"; }
 xvfb_pid=
-cleanup() { [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null; rm -rf "$tmp"; }
+# wait for Xvfb to be gone, so that the next run does not find it dying on its display
+cleanup() { [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null; rm -rf "$tmp"; }
 trap cleanup EXIT
 
 # an Xvfb on the first display number that starts and answers
@@ -22,8 +23,12 @@ for n in 91 92 93 94 95 96 97 98 99; do
   Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
   xvfb_pid=$!
   for i in $(seq 1 100); do
-    if DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1; then display=":$n"; break; fi
-    kill -0 "$xvfb_pid" 2>/dev/null || break
+    kill -0 "$xvfb_pid" 2>/dev/null || break # it could not take the display
+    if DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1; then
+      sleep 0.2
+      kill -0 "$xvfb_pid" 2>/dev/null && display=":$n" # still ours, not another's dying server
+      break
+    fi
     sleep 0.1
   done
   [ -n "$display" ] && break
