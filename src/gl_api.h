@@ -16,6 +16,7 @@
 	X(void, BindFramebuffer, (GLenum, GLuint))                                           \
 	X(void, BindRenderbuffer, (GLenum, GLuint))                                          \
 	X(void, BindTexture, (GLenum, GLuint))                                               \
+	X(void, BlendFunc, (GLenum, GLenum))                                                 \
 	X(void, BufferData, (GLenum, GLsizeiptr, const void *, GLenum))                      \
 	X(GLenum, CheckFramebufferStatus, (GLenum))                                          \
 	X(void, Clear, (GLbitfield))                                                         \
@@ -61,6 +62,7 @@
 	X(void, TexParameteri, (GLenum, GLenum, GLint))                                      \
 	X(void, Uniform1f, (GLint, GLfloat))                                                 \
 	X(void, Uniform1i, (GLint, GLint))                                                   \
+	X(void, Uniform2f, (GLint, GLfloat, GLfloat))                                        \
 	X(void, Uniform3f, (GLint, GLfloat, GLfloat, GLfloat))                               \
 	X(void, Uniform3fv, (GLint, GLsizei, const GLfloat *))                               \
 	X(void, Uniform4f, (GLint, GLfloat, GLfloat, GLfloat, GLfloat))                      \

@@ -4,6 +4,7 @@
 #include "gl_api.h"
 #include "gpio_button.h"
 #include "method_run.h"
+#include "overlay.h"
 #include "platform.h"
 #include <math.h>
 #include <poll.h>
@@ -31,7 +32,7 @@ static int64_t now_ns(void)
 static void usage(FILE *f)
 {
 	fprintf(f, "usage: lixel kiosk [--platform kms|x11] [--board NAME|FILE] [--frames N] [--size WxH]\n"
-		   "                   [--device PATH] [--mode WxH[@HZ]]\n"
+		   "                   [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
 		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
 		   "\n"
@@ -50,8 +51,10 @@ static void usage(FILE *f)
 		   "  --frames N        stop after N frames\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
-		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms\n"
-		   "                    override the board profile's button\n"
+		   "  --overlay         start with the overlay on (method, FPS, the planes' sampling)\n"
+		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms,\n"
+		   "  --plane-lixels, --fallback-lixels, --uniform-lixels\n"
+		   "                    override the board profile's values\n"
 		   "\n"
 		   "On SIGINT or SIGTERM it puts back the display mode it found and exits 0.\n"
 		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
@@ -69,6 +72,7 @@ int lx_kiosk_main(int argc, char **argv)
 	const char *platform = NULL, *board_arg = "desktop", *scene_arg = NULL;
 	const char *methods_arg = NULL;
 	long frames = -1;
+	bool overlay = false;
 	int width = 1024, height = 768;
 	struct lx_board board;
 	char err[512];
@@ -86,9 +90,14 @@ int lx_kiosk_main(int argc, char **argv)
 			usage(stdout);
 			return 0;
 		}
+		if (!strcmp(a, "--overlay")) {
+			overlay = true;
+			continue;
+		}
 		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
 							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
-							 "--long-press-ms", "--device", "--mode"};
+							 "--long-press-ms", "--device", "--mode", "--plane-lixels",
+							 "--fallback-lixels", "--uniform-lixels"};
 		bool known = false;
 		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
 			known |= !strcmp(a, with_value[k]);
@@ -200,7 +209,14 @@ int lx_kiosk_main(int argc, char **argv)
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	int current = 0;
-	bool overlay = false;
+	struct lx_overlay *ov = lx_overlay_create(err, sizeof err);
+	if (!ov)
+		printf("lixel kiosk: warning: no overlay: %s\n", err);
+	char text[2 + LX_MAX_PLANES][96];
+	const char *lines[2 + LX_MAX_PLANES];
+	int nlines = 0;
+	int64_t text_time = 0;
+	double fps = 0;
 	long frame = 0, window_frames = 0;
 	int64_t window_start = start;
 	while (!stop_requested && (frames < 0 || frame < frames)) {
@@ -213,6 +229,24 @@ int lx_kiosk_main(int argc, char **argv)
 		}
 		struct lx_frame_times ft;
 		lx_method_run_frame(&runs[current], &f, &ft);
+		if (overlay && ov) {
+			/* the text once a second: the method, the frame rate, each plane's figures */
+			if (t - text_time >= 1000000000LL || !nlines) {
+				text_time = t;
+				nlines = 0;
+				snprintf(text[nlines++], sizeof text[0], "lixel  %s", board.methods[current]);
+				snprintf(text[nlines++], sizeof text[0], "%.1f fps", fps);
+				for (int p = 0; p < scene.plane_count && nlines < 2 + LX_MAX_PLANES; p++) {
+					struct lx_plane_sampling ps;
+					if (lx_plane_sampling_sparse(&f, &runs[current].atlas, &runs[current].result, p, 16, &ps))
+						snprintf(text[nlines++], sizeof text[0], "%s  lpp %.2f  m %.2f  aniso %.2f",
+							 scene.planes[p].name, ps.lpp_median, ps.m_max, ps.aniso_max);
+				}
+				for (int i = 0; i < nlines; i++)
+					lines[i] = text[i];
+			}
+			lx_overlay_draw(ov, plat->width, plat->height, lines, nlines, plat->height >= 720 ? 3 : 2);
+		}
 		plat->swap(plat);
 		frame++, window_frames++;
 		/* input: keys, then the button's edges and the time that passed */
@@ -247,14 +281,18 @@ int lx_kiosk_main(int argc, char **argv)
 			current = next;
 		} else if (ev == LX_BUTTON_LONG) {
 			overlay = !overlay;
+			nlines = 0; /* fresh text at once */
 			printf("overlay: %s\n", overlay ? "on" : "off");
 			fflush(stdout);
 		}
 		int64_t now = now_ns();
 		if (now - window_start >= 5000000000LL) {
 			double secs = (now - window_start) / 1e9;
-			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, window_frames / secs,
-			       board.methods[current]);
+			fps = window_frames / secs;
+			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, fps, board.methods[current]);
+			if (overlay)
+				for (int i = 2; i < nlines; i++)
+					printf("overlay: %s\n", lines[i]);
 			fflush(stdout);
 			window_start = now;
 			window_frames = 0;
@@ -265,6 +303,7 @@ int lx_kiosk_main(int argc, char **argv)
 		printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, window_frames / secs,
 		       board.methods[current]);
 	lx_gpio_button_close(gpio);
+	lx_overlay_destroy(ov);
 out:
 	for (int m = 0; m < ready; m++)
 		lx_method_run_free(&runs[m]);

@@ -130,8 +130,8 @@ bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *
 	return true;
 }
 
-bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
+static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		     int plane, const int16_t *ref_object, int stride, struct lx_plane_sampling *out)
 {
 	memset(out, 0, sizeof(*out));
 	out->map = -1;
@@ -153,8 +153,8 @@ bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, c
 	}
 	long k = 0;
 	out->lpp_min = INFINITY;
-	for (int y = 0; y < hgt; y++)
-		for (int x = 0; x < w; x++) {
+	for (int y = stride / 2; y < hgt; y += stride)
+		for (int x = stride / 2; x < w; x += stride) {
 			vec3 p;
 			if (ref_object ? ref_object[(long)y * w + x] != plane : false)
 				continue;
@@ -188,4 +188,16 @@ bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, c
 	free(lpp);
 	free(mm);
 	return k > 0;
+}
+
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
+{
+	return sampling(f, atlas, res, plane, ref_object, 1, out);
+}
+
+bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			      int plane, int stride, struct lx_plane_sampling *out)
+{
+	return sampling(f, atlas, res, plane, NULL, stride < 1 ? 1 : stride, out);
 }

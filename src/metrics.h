@@ -33,6 +33,10 @@ struct lx_plane_sampling {
  * with the map that serves it (lx_shadow_select_map). False when no pixel counts. */
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out);
+/* The same figures on every stride-th pixel in x and y of the plane's parallelogram
+ * (casters not hidden): cheap enough for a live overlay. */
+bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			      int plane, int stride, struct lx_plane_sampling *out);
 /* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
  * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);

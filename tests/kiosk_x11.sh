@@ -42,54 +42,70 @@ if [ -z "$display" ]; then
 fi
 export DISPLAY=$display
 
-# 1. keys: space changes the method, l toggles the overlay, q quits with 0
+# waits for the kiosk's window; prints its id
+find_window() {
+  for i in $(seq 1 100); do
+    w=$(xdotool search --name '^lixel$' 2>/dev/null | head -n 1)
+    [ -n "$w" ] && { echo "$w"; return; }
+    sleep 0.1
+  done
+}
+key() { xdotool key --window "$wid" "$1" >/dev/null 2>&1; }
+
+# 1. `lixel kiosk --platform x11 --frames 120` changes the method on a space key and
+#    exits 0; l toggles the overlay
+"$lixel" kiosk --platform x11 --size 1024x768 --frames 120 >"$tmp/out" 2>&1 &
+pid=$!
+wid=$(find_window)
+if [ -n "$wid" ]; then
+  sleep 0.2
+  key space; sleep 0.3
+  key l
+fi
+wait "$pid"; st=$?
+[ "$st" -eq 0 ] && ok || no "kiosk --frames 120: exit status $st: $(cat "$tmp/out")"
+grep -q '^lixel kiosk: GL_VENDOR .*GL_RENDERER .*GL_VERSION .*x11 1024x768; fragment precision .*board desktop' "$tmp/out" && ok ||
+  no "no start line: $(head -n 2 "$tmp/out")"
+grep -q '^method: plane -> uniform$' "$tmp/out" && ok || no "space did not change the method: $(cat "$tmp/out")"
+grep -q '^overlay: on$' "$tmp/out" && ok || no "l did not toggle the overlay: $(cat "$tmp/out")"
+grep -q '^[0-9]* frames in .* s = .* FPS (uniform)$' "$tmp/out" && ok || no "no status line at the end: $(cat "$tmp/out")"
+
+# 2. two spaces walk the board's order; q quits with status 0
 "$lixel" kiosk --platform x11 --size 800x600 --frames 100000 >"$tmp/out" 2>&1 &
 pid=$!
-wid=
-for i in $(seq 1 100); do
-  wid=$(xdotool search --name '^lixel$' 2>/dev/null | head -n 1)
-  [ -n "$wid" ] && break
-  sleep 0.1
-done
+wid=$(find_window)
 if [ -n "$wid" ]; then
-  sleep 0.3
-  key() { xdotool key --window "$wid" "$1" >/dev/null 2>&1; }
-  key space; sleep 0.4
-  key l; sleep 0.4
-  key space; sleep 0.4
+  sleep 0.2
+  key space; sleep 0.3
+  key space; sleep 0.3
   key q
 fi
 for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$pid" 2>/dev/null; then kill "$pid"; no "kiosk did not quit on q"; fi
 wait "$pid"; st=$?
 [ "$st" -eq 0 ] && ok || no "kiosk exit status $st after q: $(cat "$tmp/out")"
-grep -q '^lixel kiosk: GL_VENDOR .*GL_RENDERER .*GL_VERSION .*x11 800x600; fragment precision .*board desktop' "$tmp/out" && ok ||
-  no "no start line: $(head -n 2 "$tmp/out")"
-grep -q '^method: plane -> uniform$' "$tmp/out" && ok || no "space did not change the method: $(cat "$tmp/out")"
 grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did not: $(cat "$tmp/out")"
-grep -q '^overlay: on$' "$tmp/out" && ok || no "l did not toggle the overlay"
-grep -q ' frames in .* s = .* FPS (psm)$' "$tmp/out" && ok || no "no status line at the end"
 
-# 2. --frames 120 stops by itself with status 0
-"$lixel" kiosk --platform x11 --size 320x240 --frames 120 >"$tmp/out" 2>&1; st=$?
+# 3. --frames 120 stops by itself with status 0, with the overlay on from the start
+"$lixel" kiosk --platform x11 --size 320x240 --frames 120 --overlay >"$tmp/out" 2>&1; st=$?
 [ "$st" -eq 0 ] && grep -q '^120 frames in ' "$tmp/out" && ok || no "--frames 120: status $st: $(cat "$tmp/out")"
 
-# 3. a board whose GPIO chip is missing (no GPIO here): one warning, and it runs on
+# 4. a board whose GPIO chip is missing (no GPIO here): one warning, and it runs on
 "$lixel" kiosk --platform x11 --board raspberry-pi-4 --gpio-chip lixel-no-chip --size 320x240 --frames 10 >"$tmp/out" 2>&1; st=$?
 [ "$st" -eq 0 ] && grep -q '^lixel kiosk: warning: gpio: cannot open chip lixel-no-chip' "$tmp/out" &&
   grep -q 'board raspberry-pi-4$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
 
-# 4. bad input: exit 2, one line
+# 5. bad input: exit 2, one line
 for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--size big" "--shadows"; do
   # shellcheck disable=SC2086
   "$lixel" kiosk --platform x11 $args >"$tmp/out" 2>"$tmp/err"; st=$?
   [ "$st" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && ok || no "kiosk $args: status $st: $(cat "$tmp/err")"
 done
-# 5. no display for x11: a clear error, status 1
+# 6. no display for x11: a clear error, status 1
 DISPLAY=:1234 "$lixel" kiosk --platform x11 --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?
 [ "$st" -eq 1 ] && grep -q "cannot open display ':1234'" "$tmp/err" && ok || no "no display: status $st: $(cat "$tmp/err")"
 
-# 6. KMS where there is no DRM device (this machine, CI): one clear error naming the
+# 7. KMS where there is no DRM device (this machine, CI): one clear error naming the
 # device and the reason, status 1; without --platform a DISPLAY gets the x11 window
 if [ ! -e /dev/dri ]; then
   "$lixel" kiosk --platform kms --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?

@@ -3,6 +3,8 @@
 #include "depth_rgba.h"
 #include "gl_program.h"
 #include "metrics.h"
+#include "overlay.h"
+#include "png_out.h"
 #include "embedded.h"
 #include "platform.h"
 #include "render_job.h"
@@ -402,6 +404,67 @@ static void shader_failures_show_the_log(void **state)
 	}
 }
 
+/* The kiosk's overlay draws its text over a frame: a dark box at the top left with
+ * bright glyph pixels in it, the rest of the frame untouched. */
+static void overlay_draws_text(void **state)
+{
+	(void)state;
+	for (size_t p = 0; p < 2; p++) {
+		char err[512];
+		struct lx_platform *plat = lx_platform_create(platforms[p], err, sizeof err);
+		if (!plat)
+			fail_msg("%s", err);
+		struct lx_scene s;
+		lx_scene_default(&s);
+		struct lx_scene_meshes m;
+		assert_true(lx_meshes_build(&s, &m));
+		struct lx_frame f;
+		assert_true(lx_frame_setup(&f, &s, &m, 0, W, H, err, sizeof err));
+		struct lx_gl_caps caps;
+		lx_gl_caps_probe(&caps);
+		struct lx_method_run mr;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		assert_int_equal(lx_method_run_init(&mr, "plane", &s, &m, &caps, &o, W, H, false, LX_DEFAULT_BIAS_CODES, false,
+						    err, sizeof err),
+				 0);
+		struct lx_frame_times t;
+		lx_method_run_frame(&mr, &f, &t);
+		uint8_t *before = malloc((size_t)W * H * 4), *after = malloc((size_t)W * H * 4);
+		lx_renderer_read(mr.renderer, before);
+		struct lx_overlay *ov = lx_overlay_create(err, sizeof err);
+		if (!ov)
+			fail_msg("%s", err);
+		const char *lines[] = {"lixel  plane", "60.0 fps", "floor  lpp 1.00  m 1.00  aniso 1.00"};
+		lx_overlay_draw(ov, W, H, lines, 3, 2);
+		lx_renderer_read(mr.renderer, after);
+		if (p == 0 && getenv("LX_TEST_OVERLAY_PNG")) /* to look at it: LX_TEST_OVERLAY_PNG=file.png */
+			lx_png_write(getenv("LX_TEST_OVERLAY_PNG"), after, W, H, err, sizeof err);
+		/* the box, scale 2: 2 * 8 + 36 * 12 = 448 px wide (clipped to W), 2 * 8 + 3 * 18 = 70 px tall, at the top */
+		long bright = 0, darker = 0, changed_outside = 0;
+		for (int y = 0; y < H; y++)
+			for (int x = 0; x < W; x++) {
+				const uint8_t *a = before + ((size_t)y * W + x) * 4, *b = after + ((size_t)y * W + x) * 4;
+				bool in_box = y >= H - 70 && x < 448;
+				if (in_box) {
+					bright += b[0] > 200 && b[1] > 200;
+					darker += b[0] + b[1] + b[2] < a[0] + a[1] + a[2];
+				} else
+					changed_outside += memcmp(a, b, 4) != 0;
+			}
+		print_message("%s: overlay: %ld bright text pixels, %ld darkened, %ld changed outside the box\n",
+			      platforms[p], bright, darker, changed_outside);
+		assert_true(bright > 300);
+		assert_true(darker > 5000);
+		assert_int_equal(changed_outside, 0);
+		free(before);
+		free(after);
+		lx_overlay_destroy(ov);
+		lx_method_run_free(&mr);
+		lx_meshes_free(&m);
+		lx_platform_destroy(plat);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -415,6 +478,7 @@ int main(void)
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
 		cmocka_unit_test(unknown_platform_and_method_are_bad_input),
 		cmocka_unit_test(shader_failures_show_the_log),
+		cmocka_unit_test(overlay_draws_text),
 	};
 	return cmocka_run_group_tests_name("render", tests, NULL, NULL);
 }
