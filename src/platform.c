@@ -5,17 +5,9 @@
 
 const char *lx_platform_names(void) { return "osmesa|egl"; }
 
-struct lx_platform *lx_platform_create(const char *name, char *err, size_t errlen)
+/* Every platform ends the same way: its context current, the GL entry points loaded. */
+static struct lx_platform *with_gl(struct lx_platform *p, const char *name, char *err, size_t errlen)
 {
-	struct lx_platform *p;
-	if (!strcmp(name, "osmesa"))
-		p = lx_platform_osmesa_create(err, errlen);
-	else if (!strcmp(name, "egl"))
-		p = lx_platform_egl_surfaceless_create(err, errlen);
-	else {
-		snprintf(err, errlen, "unknown platform '%s', expected %s", name, lx_platform_names());
-		return NULL;
-	}
 	if (!p)
 		return NULL;
 	const char *missing = NULL;
@@ -27,27 +19,25 @@ struct lx_platform *lx_platform_create(const char *name, char *err, size_t errle
 	return p;
 }
 
+struct lx_platform *lx_platform_create(const char *name, char *err, size_t errlen)
+{
+	if (!strcmp(name, "osmesa"))
+		return with_gl(lx_platform_osmesa_create(err, errlen), name, err, errlen);
+	if (!strcmp(name, "egl"))
+		return with_gl(lx_platform_egl_surfaceless_create(err, errlen), name, err, errlen);
+	snprintf(err, errlen, "unknown platform '%s', expected %s", name, lx_platform_names());
+	return NULL;
+}
+
 struct lx_platform *lx_platform_create_display(const char *name, int width, int height, const char *device,
 					       int mode_w, int mode_h, int mode_hz, char *err, size_t errlen)
 {
-	struct lx_platform *p;
 	if (!strcmp(name, "x11"))
-		p = lx_platform_x11_create(width, height, err, errlen);
-	else if (!strcmp(name, "kms"))
-		p = lx_platform_kms_create(device, mode_w, mode_h, mode_hz, err, errlen);
-	else {
-		snprintf(err, errlen, "unknown display platform '%s', expected x11 or kms", name);
-		return NULL;
-	}
-	if (!p)
-		return NULL;
-	const char *missing = NULL;
-	if (!lx_gl_load(p->get_proc, &missing)) {
-		snprintf(err, errlen, "%s: the GL entry point %s is missing", name, missing);
-		lx_platform_destroy(p);
-		return NULL;
-	}
-	return p;
+		return with_gl(lx_platform_x11_create(width, height, err, errlen), name, err, errlen);
+	if (!strcmp(name, "kms"))
+		return with_gl(lx_platform_kms_create(device, mode_w, mode_h, mode_hz, err, errlen), name, err, errlen);
+	snprintf(err, errlen, "unknown display platform '%s', expected x11 or kms", name);
+	return NULL;
 }
 
 void lx_platform_destroy(struct lx_platform *p)
