@@ -142,7 +142,6 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 		}
 	}
 	/* strips: each method's last shaded frame, side by side */
-	long n = (long)b->width * b->height;
 	if (b->strips) {
 		/* panels at most 512 pixels wide (box-filtered down by a whole factor) */
 		int k = (b->width + 511) / 512, pw = b->width / k, ph = b->height / k, gap = 8;
@@ -214,7 +213,6 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 									  : fmax(b->rows[m][ci].m_max[p], planes[p].s.m_max);
 		}
 	}
-	(void)n;
 	for (int m = 0; m < b->nm; m++) {
 		struct row *r = &b->rows[m][ci];
 		r->mismatch_pct = median_of(mis[m], samples);

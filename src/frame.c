@@ -29,6 +29,8 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	v->height = height;
 	v->eye = s->camera.eye;
 	v->fovy = s->camera.fovy_deg * M_PI / 180;
+	v->dir = v3(0, 0, -1);
+	v3_normalize(v3_sub(s->camera.at, s->camera.eye), &v->dir); /* look_at below refuses eye == at */
 	if (!m4_look_at(s->camera.eye, s->camera.at, s->camera.up, &v->view)) {
 		snprintf(err, errlen, "camera: eye equals at, or up is along the view direction");
 		return false;

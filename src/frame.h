@@ -6,7 +6,7 @@
 
 struct lx_view {
 	int width, height;
-	vec3 eye;
+	vec3 eye, dir; /* dir: the unit view direction */
 	double near, far, fovy; /* fovy in radians */
 	mat4 view, proj, view_proj, inv_view_proj;
 };

@@ -53,8 +53,8 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	*ls = (struct lx_light_space){.directional = f->light.directional, .empty = true};
 	ls->size = v3_len(v3_sub(f->scene_max, f->scene_min));
 	ls->tiny = 1e-9 * (ls->size + 1e-300);
-	vec3 rec[LX_CONVEX_MAX_POINTS];
-	int nrec = lx_light_space_receivers(f, rec);
+	vec3 *rec = ls->receiver_pts;
+	int nrec = ls->receiver_count = lx_light_space_receivers(f, rec);
 	if (nrec == 0)
 		return; /* the view holds nothing of the scene */
 	vec3 centroid = v3(0, 0, 0);
@@ -75,7 +75,6 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	vec2 pts[4 * LX_POLY_MAX];
 	int n = 0;
 	ls->zfar = -INFINITY;
-	double zmin_rec = INFINITY;
 	for (int i = 0; i < nrec; i++) {
 		vec2 g;
 		double depth;
@@ -83,7 +82,6 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 			if (n < 4 * LX_POLY_MAX)
 				pts[n++] = g;
 			ls->zfar = fmax(ls->zfar, depth);
-			zmin_rec = fmin(zmin_rec, depth);
 		} else
 			ls->receivers_behind = true;
 	}
@@ -114,7 +112,6 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond
 	 * every receiver: no shadow can fall in the view. */
 	ls->empty = ncasters == 0 || !(ls->zfar > -INFINITY) || ls->znear > ls->zfar;
-	(void)zmin_rec;
 }
 
 double lx_light_space_front(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X)

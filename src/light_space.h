@@ -20,6 +20,8 @@ struct lx_light_space {
 	struct lx_poly receivers, casters; /* hulls on G; meaningful unless the flag above says unbounded */
 	double znear, zfar;     /* casters' minimum depth, receivers' maximum depth */
 	double size;            /* scene diagonal */
+	int receiver_count;     /* the receiver volume's vertices, world space */
+	vec3 receiver_pts[LX_CONVEX_MAX_POINTS];
 };
 
 /* Whether object id can cast: casters always, planes only when their back face is lit

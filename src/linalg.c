@@ -189,6 +189,15 @@ bool m4_frustum(double l, double r_, double b, double t, double n, double f, mat
 	return true;
 }
 
+mat4 m4_crop(double x0, double x1, double y0, double y1, double z0, double z1)
+{
+	mat4 c = m4_identity();
+	c.m[0] = 2 / (x1 - x0), c.m[12] = -(x1 + x0) / (x1 - x0);
+	c.m[5] = 2 / (y1 - y0), c.m[13] = -(y1 + y0) / (y1 - y0);
+	c.m[10] = 2 / (z1 - z0), c.m[14] = -(z1 + z0) / (z1 - z0);
+	return c;
+}
+
 mat3 m3_mul(const mat3 *a, const mat3 *b)
 {
 	mat3 r;

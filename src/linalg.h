@@ -43,6 +43,10 @@ bool m4_ortho(double l, double r, double b, double t, double n, double f, mat4 *
 /* GL off-centre perspective (glFrustum); false unless l < r, b < t, 0 < n < f. */
 bool m4_frustum(double l, double r, double b, double t, double n, double f, mat4 *out);
 
+/* The affine map taking the box [x0, x1] x [y0, y1] x [z0, z1] onto [-1, 1]^3 (x0 -> -1,
+ * z0 -> -1): the unit cube clipping step. z0 > z1 flips depth. Extents must not be empty. */
+mat4 m4_crop(double x0, double x1, double y0, double y1, double z0, double z1);
+
 mat3 m3_mul(const mat3 *a, const mat3 *b);
 bool m3_invert(const mat3 *a, mat3 *out);
 

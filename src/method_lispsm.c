@@ -6,7 +6,6 @@
  * light; the warp fades out (uniform) as the view becomes parallel to the light. Unit
  * cube clipping in the warped space (papers/003). */
 #include "method_lispsm.h"
-#include "convex.h"
 #include "light_space.h"
 #include <math.h>
 #include <string.h>
@@ -33,17 +32,11 @@ static int lispsm_regions(const struct lx_scene *s, const struct lx_method_optio
 }
 
 /* Points of B: the receiver volume's vertices and the casting objects' box corners. */
-static int body_points(const struct lx_frame *f, vec3 *pts, bool *caster, int max)
+static int body_points(const struct lx_frame *f, const struct lx_light_space *ls, vec3 *pts, bool *caster, int max)
 {
-	vec3 fc[8];
-	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
-	for (int i = 0; i < 8; i++) {
-		vec4 p = m4_mul_v4(&f->view.inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
-		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w);
-	}
-	int n = lx_frustum_box_points(fc, f->scene_min, f->scene_max, pts, max);
-	for (int i = 0; i < n; i++)
-		caster[i] = false;
+	int n = 0;
+	for (int i = 0; i < ls->receiver_count && n < max; i++, n++)
+		pts[n] = ls->receiver_pts[i], caster[n] = false;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
@@ -76,8 +69,7 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 	mat4 S = ls.directional ? ls.view : uniform;
 	vec3 l = ls.directional ? v3(0, 0, -1) : v3(0, 0, 1);
 	const struct lx_view *view = &f->view;
-	vec3 vdir;
-	v3_normalize(v3_sub(f->scene->camera.at, f->scene->camera.eye), &vdir); /* the camera is validated */
+	vec3 vdir = view->dir;
 	bool oka, okb;
 	vec3 a = project(&S, v3_add(view->eye, v3_scale(vdir, view->near)), &oka);
 	vec3 b = project(&S, v3_add(view->eye, v3_scale(vdir, 2 * view->near)), &okb);
@@ -102,7 +94,7 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 	mat4 RS = m4_mul(&R, &S);
 	vec3 pts[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool caster[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
-	int n = body_points(f, pts, caster, (int)(sizeof pts / sizeof pts[0]));
+	int n = body_points(f, &ls, pts, caster, (int)(sizeof pts / sizeof pts[0]));
 	double ylo = INFINITY, yhi = -INFINITY;
 	int valid = 0;
 	for (int i = 0; i < n; i++) {
@@ -149,16 +141,8 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 	}
 	double zpad = (cz1 - rz0) * 1e-4;
 	double zn = cz1 + zpad, zf = rz0 - zpad; /* z decreases away from the light */
-	mat4 crop = m4_identity();
-	crop.m[0] = 2 / (ex1 - ex0), crop.m[12] = -(ex1 + ex0) / (ex1 - ex0);
-	crop.m[5] = 2 / (ey1 - ey0), crop.m[13] = -(ey1 + ey0) / (ey1 - ey0);
-	crop.m[10] = -2 / (zn - zf), crop.m[14] = (zn + zf) / (zn - zf);
-	mat4 m = m4_mul(&crop, &M0);
-	/* check the winding at a point in front of the light */
-	vec3 probe[3] = {v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), f->scene->camera.at,
-			 v3_add(view->eye, v3_scale(vdir, 2 * view->near))};
-	for (int i = 0; i < 3 && !lx_shadow_fix_winding(&m, &f->light, probe[i]); i++) {
-	}
+	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, zn, zf), m = m4_mul(&crop, &M0);
+	lx_shadow_fix_winding(&m, f);
 	if (m4_finite(&m))
 		map->light_clip = m;
 	else

@@ -70,7 +70,7 @@ static bool twist_angle(const struct lx_view *v, const struct lx_plane *self, co
 /* The planes bounding the receiver volume (view frustum within the scene box), as
  * half-spaces: only those that carry a face of it (three of its vertices or more), so
  * that each map's depth fit enumerates as few plane triples as it can. */
-static int receiver_faces(const struct lx_frame *f, vec4 *out)
+static int receiver_faces(const struct lx_frame *f, const struct lx_light_space *ls, vec4 *out)
 {
 	const mat4 *vp = &f->view.view_proj;
 	vec4 all[12];
@@ -83,8 +83,8 @@ static int receiver_faces(const struct lx_frame *f, vec4 *out)
 	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
 	for (int k = 0; k < 6; k++)
 		all[n++] = box[k];
-	vec3 pts[LX_CONVEX_MAX_POINTS];
-	int np = lx_light_space_receivers(f, pts);
+	const vec3 *pts = ls->receiver_pts;
+	int np = ls->receiver_count;
 	double size = v3_len(v3_sub(hi, lo)) + 1e-300;
 	int m = 0;
 	for (int k = 0; k < n; k++) {
@@ -361,7 +361,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
 	vec4 faces[12];
-	int nfaces = receiver_faces(f, faces);
+	int nfaces = receiver_faces(f, &ls, faces);
 	struct lx_poly served[PLANE_MAPS] = {{0}};
 	for (int i = 0; i < np; i++)
 		build_plane_map(f, &ls, atlas, i, i + 1 < np ? i + 1 : -1, faces, nfaces, &out->maps[i], out, &served[i]);

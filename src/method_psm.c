@@ -50,8 +50,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, st
 	struct lx_shadow_map *map = &out->maps[0];
 	const struct lx_camera *cam = &f->scene->camera;
 	const struct lx_view *v = &f->view;
-	vec3 dir;
-	v3_normalize(v3_sub(cam->at, cam->eye), &dir); /* a validated camera */
+	vec3 dir = v->dir;
 	/* the virtual camera: slid back until every caster is in front of its near plane */
 	double cmin = INFINITY;
 	for (int id = 0; id < f->object_count; id++)
@@ -77,8 +76,8 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, st
 	vec4 c = {C.x / clen, C.y / clen, C.z / clen, C.w / clen};
 	out->variant = fabs(c.w) < 1e-9 ? LX_PSM_DIRECTIONAL : c.w < 0 ? LX_PSM_INVERTED : LX_PSM_POINT;
 	/* receivers: the view frustum in the scene box, in PPS */
-	vec3 rec[LX_CONVEX_MAX_POINTS];
-	int nrec = lx_light_space_receivers(f, rec);
+	const vec3 *rec = ls.receiver_pts;
+	int nrec = ls.receiver_count;
 	vec4 centroid = {0, 0, 0, 0};
 	vec4 recp[LX_CONVEX_MAX_POINTS];
 	for (int i = 0; i < nrec; i++) {
@@ -180,14 +179,8 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, st
 	}
 	double zpad = (zfar - znear) * 1e-4;
 	znear -= zpad, zfar += zpad;
-	mat4 crop = m4_identity();
-	crop.m[0] = 2 / (ex1 - ex0), crop.m[12] = -(ex1 + ex0) / (ex1 - ex0);
-	crop.m[5] = 2 / (ey1 - ey0), crop.m[13] = -(ey1 + ey0) / (ey1 - ey0);
-	crop.m[10] = 2 / (zfar - znear), crop.m[14] = -(zfar + znear) / (zfar - znear);
-	mat4 m = m4_mul(&crop, &m0);
-	vec3 probe[3] = {v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), cam->at, v3_add(cam->eye, v3_scale(dir, 2 * v->near))};
-	for (int i = 0; i < 3 && !lx_shadow_fix_winding(&m, &f->light, probe[i]); i++) {
-	}
+	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, znear, zfar), m = m4_mul(&crop, &m0);
+	lx_shadow_fix_winding(&m, f);
 	if (!m4_finite(&m)) {
 		lx_shadow_warn(out, "psm: non-finite light matrix; uniform this frame");
 		return;

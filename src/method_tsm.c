@@ -41,8 +41,7 @@ static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, st
 	double x0 = fit.x0, x1 = fit.x1, y0 = fit.y0, y1 = fit.y1;
 	/* the centre line: the view's near and far centres in the light image */
 	const struct lx_view *v = &f->view;
-	vec3 dir;
-	v3_normalize(v3_sub(f->scene->camera.at, f->scene->camera.eye), &dir); /* validated camera */
+	vec3 dir = v->dir;
 	double span = v->far - v->near;
 	vec2 top, base, focus;
 	if (!to_image(&u, v3_add(v->eye, v3_scale(dir, v->near)), &top) ||
@@ -103,14 +102,9 @@ static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, st
 	}
 	mat4 m = m4_mul(&T, &u);
 	/* depth: the uniform map's z in [-1, 1] becomes z / t with t >= eta inside the trapezoid */
-	double zlo = -1 / eta, zhi = 1 / eta;
-	mat4 crop = m4_identity();
-	crop.m[10] = 2 / (zhi - zlo), crop.m[14] = -(zhi + zlo) / (zhi - zlo);
+	mat4 crop = m4_crop(-1, 1, -1, 1, -1 / eta, 1 / eta);
 	m = m4_mul(&crop, &m);
-	vec3 probe[3] = {v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), f->scene->camera.at,
-			 v3_add(v->eye, v3_scale(dir, 2 * v->near))};
-	for (int i = 0; i < 3 && !lx_shadow_fix_winding(&m, &f->light, probe[i]); i++) {
-	}
+	lx_shadow_fix_winding(&m, f);
 	if (m4_finite(&m))
 		map->light_clip = m;
 	else

@@ -50,7 +50,7 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p)
 	return -1;
 }
 
-bool lx_shadow_fix_winding(mat4 *clip, const struct lx_light *light, vec3 p)
+static bool fix_winding_at(mat4 *clip, const struct lx_light *light, vec3 p)
 {
 	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p), n, a, b;
 	if (!v3_normalize(to_light, &n))
@@ -71,6 +71,14 @@ bool lx_shadow_fix_winding(mat4 *clip, const struct lx_light *light, vec3 p)
 		for (int c = 0; c < 4; c++)
 			clip->m[c * 4] = -clip->m[c * 4];
 	return true;
+}
+
+void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f)
+{
+	vec3 probe[3] = {v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), f->scene->camera.at,
+			 v3_add(f->view.eye, v3_scale(f->view.dir, 2 * f->view.near))};
+	for (int i = 0; i < 3 && !fix_winding_at(clip, &f->light, probe[i]); i++) {
+	}
 }
 
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...)

@@ -74,8 +74,9 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p);
 /* The shadow passes cull front faces in the map's image, so a face turned towards the
  * light must wind counter-clockwise there. A warp built in a mirrored space (a point
  * light's post-perspective space is left-handed) would flip that: this mirrors the
- * image's x when a small triangle at p, facing the light, winds clockwise. */
-bool lx_shadow_fix_winding(mat4 *clip, const struct lx_light *light, vec3 p); /* false: p not in front */
+ * image's x when a small triangle facing the light winds clockwise, tried at the scene's
+ * centre, the camera's target and the view's near centre until one is in front. */
+void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f);
 
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
