@@ -144,7 +144,7 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 		if (res->maps[m].rendered && res->maps[m].plane == plane)
 			out->map = m;
 	}
-	long n = (long)w * hgt;
+	long n = (long)((w + stride - 1) / stride) * ((hgt + stride - 1) / stride); /* pixels visited */
 	double *lpp = malloc((size_t)n * sizeof(double)), *mm = malloc((size_t)n * sizeof(double));
 	if (!lpp || !mm) {
 		free(lpp);

@@ -18,7 +18,10 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	out->n = 0;
 	if (n <= 0)
 		return;
-	vec2 *p = malloc((size_t)n * 3 * sizeof(vec2)), *h = p + n;
+	/* the usual few hundred points on the stack: this runs every frame */
+	enum { ON_STACK = 256 };
+	vec2 stack[3 * ON_STACK];
+	vec2 *p = n <= ON_STACK ? stack : malloc((size_t)n * 3 * sizeof(vec2)), *h = p + n;
 	if (!p)
 		return;
 	int m = 0;
@@ -26,7 +29,8 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 		if (isfinite(pts[i].x) && isfinite(pts[i].y))
 			p[m++] = pts[i];
 	if (m == 0) {
-		free(p);
+		if (p != stack)
+			free(p);
 		return;
 	}
 	qsort(p, (size_t)m, sizeof(vec2), cmp_vec2);
@@ -46,7 +50,8 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 		k = LX_POLY_MAX; /* hulls here have a few dozen vertices at most */
 	out->n = k;
 	memcpy(out->v, h, (size_t)k * sizeof(vec2));
-	free(p);
+	if (p != stack)
+		free(p);
 }
 
 void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out)
@@ -119,57 +124,65 @@ void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1,
 	}
 }
 
-/* Splits a - interior(b) into convex pieces: for b's edges in turn, the part of what
- * remains outside that edge is a piece, the part inside goes on. Pieces without area
- * (a boundary shared with b) are dropped. Returns the count, at most max. */
-static int subtract(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *pieces, int max, double min_area)
+/* The vertices of pieces, gathered for their hull in a fixed buffer: when it fills up it
+ * is replaced by the hull of what it holds, which has the same hull as all of it. */
+struct gather {
+	vec2 pts[4 * LX_POLY_MAX];
+	int n;
+};
+
+static void gather_piece(struct gather *g, const struct lx_poly *piece)
+{
+	if (g->n + piece->n > 4 * LX_POLY_MAX) {
+		struct lx_poly h;
+		lx_poly_hull(g->pts, g->n, &h);
+		memcpy(g->pts, h.v, (size_t)h.n * sizeof(vec2));
+		g->n = h.n;
+	}
+	memcpy(g->pts + g->n, piece->v, (size_t)piece->n * sizeof(vec2));
+	g->n += piece->n;
+}
+
+/* a - interior(b) as convex pieces: for b's edges in turn, the part of what remains
+ * outside that edge is a piece, the part inside goes on. Pieces without area (a boundary
+ * shared with b) are dropped. Each piece goes to c's subtraction when c is given, else
+ * to the gathering. */
+static void subtract(const struct lx_poly *a, const struct lx_poly *b, const struct lx_poly *c, double min_area,
+		     struct gather *g)
 {
 	if (b->n < 3) {
-		if (max < 1)
-			return 0;
-		pieces[0] = *a;
-		return 1;
+		if (c)
+			subtract(a, c, NULL, min_area, g);
+		else
+			gather_piece(g, a);
+		return;
 	}
-	int n = 0;
 	struct lx_poly rest = *a, piece;
 	for (int i = 0; i < b->n && rest.n >= 3; i++) {
 		vec2 p = b->v[i], q = b->v[(i + 1) % b->n];
-		double nx = -(q.y - p.y), ny = q.x - p.x, c = -(nx * p.x + ny * p.y); /* inside: >= 0 */
+		double nx = -(q.y - p.y), ny = q.x - p.x, k = -(nx * p.x + ny * p.y); /* inside: >= 0 */
 		if (nx == 0 && ny == 0)
 			continue;
-		lx_poly_clip_halfplane(&rest, -nx, -ny, -c, &piece);
-		if (piece.n >= 3 && fabs(lx_poly_area(&piece)) > min_area && n < max)
-			pieces[n++] = piece;
-		lx_poly_clip_halfplane(&rest, nx, ny, c, &rest);
+		lx_poly_clip_halfplane(&rest, -nx, -ny, -k, &piece);
+		if (piece.n >= 3 && fabs(lx_poly_area(&piece)) > min_area) {
+			if (c)
+				subtract(&piece, c, NULL, min_area, g);
+			else
+				gather_piece(g, &piece);
+		}
+		lx_poly_clip_halfplane(&rest, nx, ny, k, &rest);
 	}
-	return n;
 }
 
 void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b, const struct lx_poly *c,
 				struct lx_poly *out)
 {
-	/* a - b - c as convex pieces, then the hull of their vertices */
-	enum { MAX_PIECES = 256 };
 	out->n = 0;
 	if (a->n < 3)
 		return;
-	double min_area = 1e-12 * fabs(lx_poly_area(a));
-	struct lx_poly *first = malloc(2 * MAX_PIECES * sizeof(struct lx_poly)), *second = first + MAX_PIECES;
-	if (!first)
-		return;
-	int n1 = subtract(a, b, first, MAX_PIECES, min_area), n2 = 0;
-	for (int i = 0; i < n1; i++)
-		n2 += subtract(&first[i], c, second + n2, MAX_PIECES - n2, min_area);
-	vec2 *pts = malloc((size_t)n2 * LX_POLY_MAX * sizeof(vec2));
-	if (pts) {
-		int m = 0;
-		for (int i = 0; i < n2; i++)
-			for (int k = 0; k < second[i].n; k++)
-				pts[m++] = second[i].v[k];
-		lx_poly_hull(pts, m, out);
-		free(pts);
-	}
-	free(first);
+	struct gather g = {.n = 0};
+	subtract(a, b, c, 1e-12 * fabs(lx_poly_area(a)), &g);
+	lx_poly_hull(g.pts, g.n, out);
 	if (out->n < 3)
 		out->n = 0;
 }
