@@ -1,4 +1,6 @@
 #include "bench.h"
+#include "board.h"
+#include "cli_args.h"
 #include "configs.h"
 #include "json.h"
 #include "method_run.h"
@@ -67,8 +69,7 @@ static void usage(FILE *f)
 
 static int bad(const char *opt, const char *expected, const char *got)
 {
-	fprintf(stderr, "lixel bench: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
-	return 2;
+	return lx_arg_bad("bench", opt, expected, got);
 }
 
 /* Splits a comma list in place into out[]; false on an empty item or too many. */
@@ -401,22 +402,15 @@ int lx_bench_main(int argc, char **argv)
 		}
 		static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
 							 "--scene", "--csv", "--plot", "--strips"};
-		bool known = false;
-		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-			known |= !strcmp(a, with_value[k]);
-		if (!known) {
-			fprintf(stderr, "lixel bench: unknown option '%s' (see lixel bench --help)\n", a);
-			return 2;
-		}
-		if (i + 1 >= argc)
-			return bad(a, "a value", NULL);
-		const char *v = argv[++i];
+		const char *v;
+		int st = lx_arg_value("bench", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
+		if (st)
+			return st;
 		char *end;
+		int hz;
 		if (!strcmp(a, "--size")) {
-			long w = strtol(v, &end, 10), h = *end == 'x' ? strtol(end + 1, &end, 10) : 0;
-			if (*end || w < 1 || h < 1 || w > 16384 || h > 16384)
+			if (!lx_parse_mode(v, &b.width, &b.height, &hz) || hz)
 				return bad(a, "WxH with W and H from 1 to 16384", v);
-			b.width = (int)w, b.height = (int)h;
 		} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
 			long k = strtol(v, &end, 10);
 			bool frames = !strcmp(a, "--frames");
@@ -465,10 +459,8 @@ int lx_bench_main(int argc, char **argv)
 				return bad("--configs", "configurations named in lixel render --help, or animation", b.configs[c]);
 	}
 	char err[512];
-	if (scene_arg && !lx_scene_builtin(scene_arg, &b.scene) && !lx_scene_load(scene_arg, &b.scene, err, sizeof err)) {
-		fprintf(stderr, "lixel: %s\n", err);
+	if (scene_arg && !lx_arg_scene(scene_arg, &b.scene))
 		return 2;
-	}
 	if (b.strips) {
 		FILE *probe;
 		char path[4096];

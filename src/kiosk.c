@@ -1,6 +1,7 @@
 #include "kiosk.h"
 #include "board.h"
 #include "button.h"
+#include "cli_args.h"
 #include "gl_api.h"
 #include "gpio_button.h"
 #include "method_run.h"
@@ -63,8 +64,7 @@ static void usage(FILE *f)
 
 static int bad(const char *opt, const char *expected, const char *got)
 {
-	fprintf(stderr, "lixel kiosk: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
-	return 2;
+	return lx_arg_bad("kiosk", opt, expected, got);
 }
 
 int lx_kiosk_main(int argc, char **argv)
@@ -98,16 +98,10 @@ int lx_kiosk_main(int argc, char **argv)
 							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
 							 "--long-press-ms", "--device", "--mode", "--plane-lixels",
 							 "--fallback-lixels", "--uniform-lixels"};
-		bool known = false;
-		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-			known |= !strcmp(a, with_value[k]);
-		if (!known) {
-			fprintf(stderr, "lixel kiosk: unknown option '%s' (see lixel kiosk --help)\n", a);
-			return 2;
-		}
-		if (i + 1 >= argc)
-			return bad(a, "a value", NULL);
-		const char *v = argv[++i];
+		const char *v;
+		int st = lx_arg_value("kiosk", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
+		if (st)
+			return st;
 		char *end;
 		if (!strcmp(a, "--platform")) {
 			if (strcmp(v, "x11") && strcmp(v, "kms"))
@@ -154,12 +148,8 @@ int lx_kiosk_main(int argc, char **argv)
 		}
 	}
 	struct lx_scene scene;
-	if (!scene_arg)
-		lx_scene_default(&scene);
-	else if (!lx_scene_builtin(scene_arg, &scene) && !lx_scene_load(scene_arg, &scene, err, sizeof err)) {
-		fprintf(stderr, "lixel: %s\n", err);
+	if (!lx_arg_scene(scene_arg, &scene))
 		return 2;
-	}
 	/* KMS unless told otherwise; a desktop (DISPLAY set, no KMS device to use) gets x11 */
 	const char *device = board.display[0] ? board.display : NULL;
 	struct lx_platform *plat = lx_platform_create_display(platform ? platform : "kms", width, height, device,
@@ -244,8 +234,9 @@ int lx_kiosk_main(int argc, char **argv)
 				}
 				for (int i = 0; i < nlines; i++)
 					lines[i] = text[i];
+				lx_overlay_set_text(ov, lines, nlines, plat->height >= 720 ? 3 : 2);
 			}
-			lx_overlay_draw(ov, plat->width, plat->height, lines, nlines, plat->height >= 720 ? 3 : 2);
+			lx_overlay_draw(ov, plat->width, plat->height);
 		}
 		plat->swap(plat);
 		frame++, window_frames++;

@@ -1,5 +1,7 @@
 /* lixel: command line. `lixel render` draws one frame and reports its figures. */
 #include "bench.h"
+#include "board.h"
+#include "cli_args.h"
 #include "kiosk.h"
 #include "configs.h"
 #include "platform.h"
@@ -77,8 +79,7 @@ static void render_usage(FILE *f)
 
 static int bad(const char *opt, const char *expected, const char *got)
 {
-	fprintf(stderr, "lixel: %s: expected %s, got '%s'\n", opt, expected, got ? got : "nothing");
-	return 2;
+	return lx_arg_bad("render", opt, expected, got);
 }
 
 static bool parse_double(const char *s, double *out)
@@ -109,22 +110,11 @@ static bool parse_triple(const char *s, vec3 *out)
 	return parse_double(a, &out->x) && parse_double(b, &out->y) && parse_double(c, &out->z);
 }
 
+/* WxH, each from 1 to 16384 */
 static bool parse_size(const char *s, int *w, int *h)
 {
-	char *end;
-	errno = 0;
-	long a = strtol(s, &end, 10);
-	if (end == s || *end != 'x' || errno)
-		return false;
-	const char *t = end + 1;
-	long b = strtol(t, &end, 10);
-	if (end == t || *end || errno)
-		return false;
-	if (a < 1 || b < 1 || a > 16384 || b > 16384)
-		return false;
-	*w = (int)a;
-	*h = (int)b;
-	return true;
+	int hz;
+	return lx_parse_mode(s, w, h, &hz) && hz == 0;
 }
 
 /* An output's directory must exist and be writable before anything is rendered, so a
@@ -280,16 +270,10 @@ static int cmd_render(int argc, char **argv)
 							 "--at", "--fov", "--light", "--light-dir", "--time",
 							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias",
 							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels"};
-		bool known = false;
-		for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-			known |= !strcmp(a, with_value[k]);
-		if (!known) {
-			fprintf(stderr, "lixel render: unknown option '%s' (see lixel render --help)\n", a);
-			return 2;
-		}
-		if (i + 1 >= argc)
-			return bad(a, "a value", NULL);
-		const char *v = argv[++i];
+		const char *v;
+		int st = lx_arg_value("render", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
+		if (st)
+			return st;
 		double d;
 		if (!strcmp(a, "--method")) {
 			if (!lx_shadow_method_find(v))
@@ -367,12 +351,8 @@ static int cmd_render(int argc, char **argv)
 	    !writable_path("--atlas-out", job.atlas_png))
 		return 2;
 	char err[512];
-	if (!scene_file)
-		lx_scene_default(&job.scene);
-	else if (!lx_scene_builtin(scene_file, &job.scene) && !lx_scene_load(scene_file, &job.scene, err, sizeof err)) {
-		fprintf(stderr, "lixel: %s\n", err);
+	if (!lx_arg_scene(scene_file, &job.scene))
 		return 2;
-	}
 	if (config)
 		lx_config_apply(lx_config_find(config), &job.scene);
 	if (have_eye)

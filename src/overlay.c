@@ -13,6 +13,7 @@
 struct lx_overlay {
 	GLuint prog, tex, vbo;
 	GLint window, font;
+	GLsizei count; /* vertices uploaded */
 	float verts[(MAX_CHARS + 1) * 6 * 4];
 };
 
@@ -31,7 +32,7 @@ struct lx_overlay *lx_overlay_create(char *err, size_t errlen)
 	o->window = lx_gl.GetUniformLocation(o->prog, "u_window");
 	o->font = lx_gl.GetUniformLocation(o->prog, "u_font");
 	/* the font: a 6x8 cell per glyph, coverage 255 where the glyph has a pixel */
-	static unsigned char texels[8][GLYPHS * 6];
+	unsigned char texels[8][GLYPHS * 6];
 	memset(texels, 0, sizeof texels);
 	for (int g = 0; g < GLYPHS; g++) {
 		const uint8_t *rows = lx_font5x7((char)(FIRST + g));
@@ -70,7 +71,7 @@ static float *quad(float *v, float x0, float y0, float x1, float y1, float u0, f
 	return v + 24;
 }
 
-void lx_overlay_draw(struct lx_overlay *o, int width, int height, const char *const *lines, int n, int scale)
+void lx_overlay_set_text(struct lx_overlay *o, const char *const *lines, int n, int scale)
 {
 	float *v = o->verts;
 	int longest = 0, chars = 0;
@@ -87,7 +88,15 @@ void lx_overlay_draw(struct lx_overlay *o, int width, int height, const char *co
 			v = quad(v, x, y, x + cw, y + 8.0f * scale, (float)(g * 6) / (GLYPHS * 6), 0,
 				 (float)(g * 6 + 6) / (GLYPHS * 6), 1);
 		}
-	GLsizei count = (GLsizei)((v - o->verts) / 4);
+	o->count = (GLsizei)((v - o->verts) / 4);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, o->vbo);
+	lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(o->count * 4 * sizeof(float)), o->verts, GL_DYNAMIC_DRAW);
+}
+
+void lx_overlay_draw(struct lx_overlay *o, int width, int height)
+{
+	if (!o->count)
+		return;
 	lx_gl.Viewport(0, 0, width, height);
 	lx_gl.Disable(GL_DEPTH_TEST);
 	lx_gl.Disable(GL_CULL_FACE);
@@ -99,11 +108,10 @@ void lx_overlay_draw(struct lx_overlay *o, int width, int height, const char *co
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, o->tex);
 	lx_gl.BindBuffer(GL_ARRAY_BUFFER, o->vbo);
-	lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(count * 4 * sizeof(float)), o->verts, GL_STREAM_DRAW);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
 	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), (const void *)0);
-	lx_gl.DrawArrays(GL_TRIANGLES, 0, count);
+	lx_gl.DrawArrays(GL_TRIANGLES, 0, o->count);
 	lx_gl.Disable(GL_BLEND);
 }

@@ -435,7 +435,8 @@ static void overlay_draws_text(void **state)
 		if (!ov)
 			fail_msg("%s", err);
 		const char *lines[] = {"lixel  plane", "60.0 fps", "floor  lpp 1.00  m 1.00  aniso 1.00"};
-		lx_overlay_draw(ov, W, H, lines, 3, 2);
+		lx_overlay_set_text(ov, lines, 3, 2);
+		lx_overlay_draw(ov, W, H);
 		lx_renderer_read(mr.renderer, after);
 		if (p == 0 && getenv("LX_TEST_OVERLAY_PNG")) /* to look at it: LX_TEST_OVERLAY_PNG=file.png */
 			lx_png_write(getenv("LX_TEST_OVERLAY_PNG"), after, W, H, err, sizeof err);

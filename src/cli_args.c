@@ -1,0 +1,39 @@
+#include "cli_args.h"
+#include <stdio.h>
+#include <string.h>
+
+int lx_arg_bad(const char *cmd, const char *opt, const char *expected, const char *got)
+{
+	fprintf(stderr, "lixel %s: %s: expected %s, got '%s'\n", cmd, opt, expected, got ? got : "nothing");
+	return 2;
+}
+
+int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *const *names, size_t n,
+		 const char **value)
+{
+	const char *a = argv[*i];
+	size_t k = 0;
+	while (k < n && strcmp(a, names[k]))
+		k++;
+	if (k == n) {
+		fprintf(stderr, "lixel %s: unknown option '%s' (see lixel %s --help)\n", cmd, a, cmd);
+		return 2;
+	}
+	if (*i + 1 >= argc)
+		return lx_arg_bad(cmd, a, "a value", NULL);
+	*value = argv[++*i];
+	return 0;
+}
+
+bool lx_arg_scene(const char *arg, struct lx_scene *s)
+{
+	char err[512];
+	if (!arg) {
+		lx_scene_default(s);
+		return true;
+	}
+	if (lx_scene_builtin(arg, s) || lx_scene_load(arg, s, err, sizeof err))
+		return true;
+	fprintf(stderr, "lixel: %s\n", err);
+	return false;
+}

@@ -1,0 +1,19 @@
+/* What the commands (render, bench, kiosk) share in reading their arguments: the one
+ * line for bad input (exit status 2), options that take a value, the scene argument. */
+#ifndef LX_CLI_ARGS_H
+#define LX_CLI_ARGS_H
+#include "scene.h"
+#include <stdbool.h>
+#include <stddef.h>
+
+/* "lixel CMD: OPT: expected EXPECTED, got 'GOT'" on stderr; returns 2. */
+int lx_arg_bad(const char *cmd, const char *opt, const char *expected, const char *got);
+/* argv[*i] must be one of the n option names that take a value: on success *value is the
+ * next argument, *i steps over it, and 0 is returned; else one line and 2. */
+int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *const *names, size_t n,
+		 const char **value);
+/* The scene of --scene: NULL for the default, a built-in name, or a file. Prints the
+ * file's FILE:LINE error and returns false when it does not load. */
+bool lx_arg_scene(const char *arg, struct lx_scene *s);
+
+#endif
