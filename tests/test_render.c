@@ -142,12 +142,10 @@ static double check_config(const char *platform, const char *method, const char 
 static void uniform_matches_reference(void **state)
 {
 	(void)state;
-	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
-					      "floor-close", "horizon", "near-wall"};
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
-		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			check_config(platforms[p], "uniform", configs[c], false, dist);
+		for (int c = 0; c < lx_config_count; c++) /* every standard configuration */
+			check_config(platforms[p], "uniform", lx_configs[c].name, false, dist);
 	free(dist);
 }
 
@@ -158,13 +156,11 @@ static void uniform_matches_reference(void **state)
 static void plane_matches_reference_and_wins(void **state)
 {
 	(void)state;
-	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
-					      "floor-close", "horizon", "near-wall"};
 	static const char *const wins[] = {"low", "facing", "near-wall", "floor-close"};
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++) {
-		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
-			check_config(platforms[p], "plane", configs[c], false, dist);
+		for (int c = 0; c < lx_config_count; c++)
+			check_config(platforms[p], "plane", lx_configs[c].name, false, dist);
 		struct lx_scene table;
 		lx_scene_table(&table);
 		check_against_reference(platforms[p], "plane", &table, "table", false, dist, 0.5);
@@ -214,13 +210,11 @@ static void paper_bad_case_is_measured(void **state)
 static void warps_match_reference(void **state)
 {
 	(void)state;
-	static const char *const configs[] = {"default", "overhead", "low", "facing", "behind", "miner", "directional",
-					      "floor-close", "horizon", "near-wall"};
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
-		for (size_t c = 0; c < sizeof configs / sizeof configs[0]; c++)
+		for (int c = 0; c < lx_config_count; c++)
 			for (int m = 0; m < 3; m++)
-				check_config(platforms[p], m == 0 ? "psm" : m == 1 ? "lispsm" : "tsm", configs[c], false, dist);
+				check_config(platforms[p], m == 0 ? "psm" : m == 1 ? "lispsm" : "tsm", lx_configs[c].name, false, dist);
 	free(dist);
 }
 
