@@ -1,4 +1,5 @@
 #include "atlas.h"
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -26,51 +27,15 @@ static bool pack_shelves(struct lx_atlas *a, const int *order, int shelf_width, 
 	return a->width <= max_size && a->height <= max_size;
 }
 
-bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req, int count,
-		     int guard, int max_size, char *err, size_t errlen)
+/* The fixed-size layout: every prefix sum of widths as a shelf width, smallest area wins. */
+static bool layout_fixed(struct lx_atlas *atlas, int max_size)
 {
-	memset(atlas, 0, sizeof(*atlas));
-	if (count < 0 || count > LX_ATLAS_MAX_REGIONS) {
-		snprintf(err, errlen, "atlas: %d regions requested, expected 0 to %d", count, LX_ATLAS_MAX_REGIONS);
-		return false;
-	}
-	if (guard < 0 || max_size < 1) {
-		snprintf(err, errlen, "atlas: guard %d and maximum size %d, expected guard >= 0 and size >= 1", guard, max_size);
-		return false;
-	}
-	int order[LX_ATLAS_MAX_REGIONS];
+	int order[LX_ATLAS_MAX_REGIONS], count = atlas->count, guard = atlas->guard;
 	long min_width = 0;
 	for (int i = 0; i < count; i++) {
-		if (!req[i].name || !req[i].name[0] || strlen(req[i].name) >= LX_REGION_NAME_MAX) {
-			snprintf(err, errlen, "atlas: region %d has no name or a name longer than %d characters", i, LX_REGION_NAME_MAX - 1);
-			return false;
-		}
-		if (req[i].w < 1 || req[i].h < 1) {
-			snprintf(err, errlen, "atlas: region '%s' is %dx%d lixels, expected at least 1x1", req[i].name, req[i].w, req[i].h);
-			return false;
-		}
-		for (int j = 0; j < i; j++)
-			if (!strcmp(req[i].name, req[j].name)) {
-				snprintf(err, errlen, "atlas: region name '%s' appears twice", req[i].name);
-				return false;
-			}
-		if ((long)req[i].w + 2L * guard > max_size || (long)req[i].h + 2L * guard > max_size) {
-			snprintf(err, errlen, "atlas: region '%s' (%dx%d lixels plus a %d-lixel guard) exceeds the GL maximum texture size %d",
-				 req[i].name, req[i].w, req[i].h, guard, max_size);
-			return false;
-		}
-		strcpy(atlas->regions[i].name, req[i].name);
-		atlas->regions[i].w = req[i].w;
-		atlas->regions[i].h = req[i].h;
 		order[i] = i;
-		if (req[i].w + 2L * guard > min_width)
-			min_width = req[i].w + 2L * guard;
-	}
-	atlas->count = count;
-	atlas->guard = guard;
-	if (count == 0) { /* a method without maps still gets a valid 1x1 texture */
-		atlas->width = atlas->height = 1;
-		return true;
+		if (atlas->regions[i].w + 2L * guard > min_width)
+			min_width = atlas->regions[i].w + 2L * guard;
 	}
 	for (int i = 1; i < count; i++) /* insertion sort, tallest first; stable */
 		for (int j = i; j > 0 && atlas->regions[order[j]].h > atlas->regions[order[j - 1]].h; j--) {
@@ -78,7 +43,6 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 			order[j] = order[j - 1];
 			order[j - 1] = t;
 		}
-	/* Candidate shelf widths: every prefix sum of region widths in packing order. */
 	struct lx_atlas best = {0};
 	long best_area = -1;
 	int best_side = 0;
@@ -98,13 +62,221 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 			best_side = side;
 		}
 	}
-	if (best_area < 0) {
+	if (best_area < 0)
+		return false;
+	*atlas = best;
+	atlas->max_side = atlas->width - 2 * guard;
+	return true;
+}
+
+static long isqrt_floor(long n)
+{
+	long r = (long)sqrt((double)n);
+	while (r * r > n)
+		r--;
+	while ((r + 1) * (r + 1) <= n)
+		r++;
+	return r;
+}
+
+/* The texture for variable regions. Its width holds the most elongated shape any region
+ * may take (LX_ATLAS_MAX_ASPECT : 1); its height follows the bound of next-fit
+ * decreasing-height shelf packing (Coffman, Garey, Johnson and Tarjan, 1980): with items
+ * no wider than the strip, height <= tallest item + 2 x items' area / strip width. Items
+ * are the regions turned landscape and grown by one guard, in a strip width - guard wide. */
+static bool layout_variable(struct lx_atlas *a, int max_size)
+{
+	int g = a->guard, cap = max_size < LX_ATLAS_MAX_SIDE ? max_size : LX_ATLAS_MAX_SIDE;
+	long want = 1;
+	for (int i = 0; i < a->count; i++) {
+		const struct lx_region *r = &a->regions[i];
+		long side = r->variable ? isqrt_floor(LX_ATLAS_MAX_ASPECT * r->budget) + 1 : (r->w > r->h ? r->w : r->h);
+		if (side + 2L * g > want)
+			want = side + 2L * g;
+	}
+	int width = (int)(want < cap ? want : cap);
+	int max_side = width - 2 * g;
+	double area = 0;
+	long tallest = 0;
+	for (int i = 0; i < a->count; i++) {
+		const struct lx_region *r = &a->regions[i];
+		long tall, sum; /* the item's tallest landscape height and the most its w + h can be */
+		if (r->variable) {
+			long root = isqrt_floor(r->budget);
+			tall = root;
+			double longest = max_side + (double)r->budget / max_side;
+			sum = (long)ceil(fmax(2.0 * root + 2, longest + 1));
+		} else {
+			tall = r->w < r->h ? r->w : r->h;
+			sum = r->w + r->h;
+		}
+		area += (double)r->budget + (double)g * sum + (double)g * g;
+		if (tall > tallest)
+			tallest = tall;
+	}
+	long height = g + (tallest + g) + (long)ceil(2.0 * area / (width - g)) + 1;
+	if (height > cap)
+		height = cap; /* a frame that cannot fit shrinks its regions (lx_atlas_pack) */
+	a->width = width;
+	a->height = (int)height;
+	a->max_side = max_side;
+	return true;
+}
+
+bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req, int count,
+		     int guard, int max_size, char *err, size_t errlen)
+{
+	memset(atlas, 0, sizeof(*atlas));
+	if (count < 0 || count > LX_ATLAS_MAX_REGIONS) {
+		snprintf(err, errlen, "atlas: %d regions requested, expected 0 to %d", count, LX_ATLAS_MAX_REGIONS);
+		return false;
+	}
+	if (guard < 0 || max_size < 1) {
+		snprintf(err, errlen, "atlas: guard %d and maximum size %d, expected guard >= 0 and size >= 1", guard, max_size);
+		return false;
+	}
+	bool variable = false;
+	for (int i = 0; i < count; i++)
+		variable |= req[i].max_lixels > 0;
+	/* variable regions keep to a small board's texture limit, fixed ones to the GL's */
+	int side_cap = variable && max_size > LX_ATLAS_MAX_SIDE ? LX_ATLAS_MAX_SIDE : max_size;
+	for (int i = 0; i < count; i++) {
+		if (!req[i].name || !req[i].name[0] || strlen(req[i].name) >= LX_REGION_NAME_MAX) {
+			snprintf(err, errlen, "atlas: region %d has no name or a name longer than %d characters", i, LX_REGION_NAME_MAX - 1);
+			return false;
+		}
+		if (req[i].w < 1 || req[i].h < 1) {
+			snprintf(err, errlen, "atlas: region '%s' is %dx%d lixels, expected at least 1x1", req[i].name, req[i].w, req[i].h);
+			return false;
+		}
+		if (req[i].max_lixels < 0) {
+			snprintf(err, errlen, "atlas: region '%s' may hold %ld lixels, expected 0 (fixed) or more", req[i].name, req[i].max_lixels);
+			return false;
+		}
+		for (int j = 0; j < i; j++)
+			if (!strcmp(req[i].name, req[j].name)) {
+				snprintf(err, errlen, "atlas: region name '%s' appears twice", req[i].name);
+				return false;
+			}
+		if ((long)req[i].w + 2L * guard > side_cap || (long)req[i].h + 2L * guard > side_cap) {
+			snprintf(err, errlen, "atlas: region '%s' (%dx%d lixels plus a %d-lixel guard) exceeds the maximum texture size %d",
+				 req[i].name, req[i].w, req[i].h, guard, side_cap);
+			return false;
+		}
+		struct lx_region *r = &atlas->regions[i];
+		strcpy(r->name, req[i].name);
+		r->w = req[i].w;
+		r->h = req[i].h;
+		r->variable = req[i].max_lixels > 0;
+		r->budget = r->variable ? req[i].max_lixels : (long)req[i].w * req[i].h;
+		if (r->variable && r->budget < (long)r->w * r->h)
+			r->budget = (long)r->w * r->h;
+	}
+	atlas->count = count;
+	atlas->guard = guard;
+	if (count == 0) { /* a method without maps still gets a valid 1x1 texture */
+		atlas->width = atlas->height = 1;
+		return true;
+	}
+	if (!(variable ? layout_variable(atlas, max_size) : layout_fixed(atlas, max_size))) {
 		snprintf(err, errlen, "atlas: %d regions (%ld lixels) do not fit in a %dx%d texture", count,
 			 lx_atlas_lixels(atlas), max_size, max_size);
 		return false;
 	}
-	*atlas = best;
+	if (variable) {
+		int w[LX_ATLAS_MAX_REGIONS], h[LX_ATLAS_MAX_REGIONS];
+		for (int i = 0; i < count; i++)
+			w[i] = atlas->regions[i].w, h[i] = atlas->regions[i].h;
+		/* the start sizes must fit as they are: nothing may shrink before the first frame */
+		struct lx_atlas trial = *atlas;
+		if (lx_atlas_pack(&trial, w, h) != 0) {
+			snprintf(err, errlen, "atlas: %d regions (%ld lixels) do not fit in a %dx%d texture", count,
+				 lx_atlas_lixels(atlas), atlas->width, atlas->height);
+			return false;
+		}
+		*atlas = trial;
+	}
 	return true;
+}
+
+/* Next fit decreasing height; false when the shelves overflow the texture. */
+static bool pack_nfdh(struct lx_atlas *a)
+{
+	int order[LX_ATLAS_MAX_REGIONS], n = 0, g = a->guard;
+	for (int i = 0; i < a->count; i++)
+		if (a->regions[i].w > 0 && a->regions[i].h > 0)
+			order[n++] = i;
+	for (int i = 1; i < n; i++) /* tallest first; ties keep the regions' order */
+		for (int j = i; j > 0 && a->regions[order[j]].h > a->regions[order[j - 1]].h; j--) {
+			int t = order[j];
+			order[j] = order[j - 1];
+			order[j - 1] = t;
+		}
+	int x = g, y = g, shelf_h = 0;
+	for (int k = 0; k < n; k++) {
+		struct lx_region *r = &a->regions[order[k]];
+		if (x + r->w + g > a->width && x > g) {
+			y += shelf_h + g;
+			x = g;
+			shelf_h = 0;
+		}
+		if (x + r->w + g > a->width || y + r->h + g > a->height)
+			return false;
+		r->x = x;
+		r->y = y;
+		x += r->w + g;
+		if (r->h > shelf_h)
+			shelf_h = r->h;
+	}
+	return true;
+}
+
+int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
+{
+	bool variable = false;
+	for (int i = 0; i < a->count; i++)
+		variable |= a->regions[i].variable;
+	if (!variable)
+		return 0; /* fixed regions keep the layout of the start */
+	int cw[LX_ATLAS_MAX_REGIONS], ch[LX_ATLAS_MAX_REGIONS];
+	for (int i = 0; i < a->count; i++) {
+		struct lx_region *r = &a->regions[i];
+		if (!r->variable) {
+			/* a fixed region keeps its size (and its turn, if the start gave it one) */
+			cw[i] = r->turned ? r->h : r->w;
+			ch[i] = r->turned ? r->w : r->h;
+			continue;
+		}
+		cw[i] = w[i] > 0 && h[i] > 0 ? w[i] : 0;
+		ch[i] = w[i] > 0 && h[i] > 0 ? h[i] : 0;
+		/* within the region's budget and the texture's longest side */
+		if (cw[i] > a->max_side)
+			cw[i] = a->max_side;
+		if (ch[i] > a->max_side)
+			ch[i] = a->max_side;
+		while ((long)cw[i] * ch[i] > r->budget) {
+			if (cw[i] >= ch[i])
+				cw[i]--;
+			else
+				ch[i]--;
+		}
+	}
+	for (int shrunk = 0;; shrunk++) {
+		for (int i = 0; i < a->count; i++) {
+			struct lx_region *r = &a->regions[i];
+			r->turned = ch[i] > cw[i];
+			r->w = r->turned ? ch[i] : cw[i];
+			r->h = r->turned ? cw[i] : ch[i];
+			r->x = r->y = 0;
+		}
+		if (pack_nfdh(a))
+			return shrunk;
+		for (int i = 0; i < a->count; i++)
+			if (a->regions[i].variable) {
+				cw[i] = cw[i] > 1 ? (int)(cw[i] * 0.9) : cw[i];
+				ch[i] = ch[i] > 1 ? (int)(ch[i] * 0.9) : ch[i];
+			}
+	}
 }
 
 const struct lx_region *lx_atlas_find(const struct lx_atlas *atlas, const char *name)
@@ -119,6 +291,19 @@ long lx_atlas_lixels(const struct lx_atlas *atlas)
 {
 	long s = 0;
 	for (int i = 0; i < atlas->count; i++)
+		s += atlas->regions[i].budget;
+	return s;
+}
+
+long lx_atlas_placed(const struct lx_atlas *atlas)
+{
+	long s = 0;
+	for (int i = 0; i < atlas->count; i++)
 		s += (long)atlas->regions[i].w * atlas->regions[i].h;
 	return s;
+}
+
+double lx_atlas_fill(const struct lx_atlas *atlas)
+{
+	return (double)lx_atlas_placed(atlas) / ((double)atlas->width * atlas->height); /* width, height >= 1 */
 }

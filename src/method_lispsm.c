@@ -27,7 +27,7 @@ double lx_lispsm_warp(double y, double n, double d)
 static int lispsm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"lispsm", o->uniform_lixels, o->uniform_lixels};
+	out[0] = (struct lx_region_request){"lispsm", o->uniform_lixels, o->uniform_lixels, 0};
 	return 1;
 }
 
@@ -56,8 +56,10 @@ static vec3 project(const mat4 *m, vec3 p, bool *ok)
 	return *ok ? v3(q.x / q.w, q.y / q.w, q.z / q.w) : v3(0, 0, 0);
 }
 
-static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
+			 struct lx_shadow_result *out)
 {
+	(void)opt;
 	(void)atlas;
 	struct lx_light_space ls;
 	if (!lx_uniform_map(f, &ls, out, "lispsm", NULL))

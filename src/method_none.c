@@ -10,8 +10,10 @@ static int none_regions(const struct lx_scene *s, const struct lx_method_options
 	return 0;
 }
 
-static void none_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+static void none_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
+			 struct lx_shadow_result *out)
 {
+	(void)opt;
 	(void)f;
 	(void)atlas;
 	memset(out, 0, sizeof(*out));

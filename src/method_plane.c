@@ -18,10 +18,13 @@
 
 static int plane_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
-	int n = 0;
-	for (int i = 0; i < s->plane_count && i < PLANE_MAPS; i++)
-		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels};
-	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels};
+	int n = 0, planes = s->plane_count < PLANE_MAPS ? s->plane_count : PLANE_MAPS;
+	long budget = (long)o->plane_lixels * o->plane_lixels;
+	/* fitted maps vary their shape per frame; shared budgets let one take the others' rest */
+	long most = o->square_regions ? 0 : o->shared_budget ? budget * planes : budget;
+	for (int i = 0; i < planes; i++)
+		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most};
+	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, 0};
 	return n;
 }
 
@@ -98,16 +101,27 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 	return m;
 }
 
-/* Builds plane i's map; returns the rays it serves as a polygon on G (empty when none
- * or when they cannot be charted there). */
-static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
-			    int i, int next, const vec4 *faces, int nfaces, struct lx_shadow_map *map,
-			    struct lx_shadow_result *out, struct lx_poly *served)
+/* A plane's light image before A_l's scale: the plane-optimal camera, the visible
+ * polygon, the wanted rays (window coordinates on the plane) turned by the twist, and
+ * their bounding rectangle. */
+struct plane_chart {
+	struct lx_plane_camera cam;
+	struct lx_poly win;
+	vec3 world[32];
+	int nw;
+	double cs, sn;     /* the twist */
+	bool on_grid;      /* the twist is a multiple of a quarter turn: pixel centres stay on a grid */
+	bool twisted;
+	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
+};
+
+/* False when plane i gets no map this frame (warned where the user should know). */
+static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
+			struct lx_shadow_result *out, struct plane_chart *ch)
 {
 	const struct lx_scene *s = f->scene;
 	const struct lx_plane *P = &s->planes[i];
 	const struct lx_view *v = &f->view;
-	served->n = 0;
 	vec4 pi = lx_plane_equation(P);
 	vec3 n = v3(pi.x, pi.y, pi.z);
 	const struct lx_light *light = &f->light;
@@ -119,32 +133,28 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		lx_shadow_warn(out, light->directional ? "plane %s: the light grazes the plane; its map is skipped and the fallback map serves it"
 						     : "plane %s: the light is within %.3g m of the plane; its map is skipped and the fallback map serves it",
 			       P->name, near_limit);
-		return;
+		return false;
 	}
 	if (facing < 0)
-		return;
-	struct lx_poly win;
-	vec3 world[32];
-	int nw;
-	if (!lx_plane_visible(v, P, &win, world, &nw)) {
-		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && nw > 0)
+		return false;
+	if (!lx_plane_visible(v, P, &ch->win, ch->world, &ch->nw)) {
+		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && ch->nw > 0)
 			lx_shadow_warn(out, "plane %s is seen edge-on: no map for it this frame", P->name);
-		return; /* not in view: no pass, no fill */
+		return false; /* not in view: no pass, no fill */
 	}
 	vec3 c = v3(0, 0, 0);
-	for (int k = 0; k < nw; k++)
-		c = v3_add(c, v3_scale(world[k], 1.0 / nw));
-	struct lx_plane_camera cam;
-	enum lx_plane_camera_status st = lx_plane_camera_solve(v, lx_light_point(light), pi, (vec4){c.x, c.y, c.z, 1}, &cam);
+	for (int k = 0; k < ch->nw; k++)
+		c = v3_add(c, v3_scale(ch->world[k], 1.0 / ch->nw));
+	enum lx_plane_camera_status st = lx_plane_camera_solve(v, lx_light_point(light), pi, (vec4){c.x, c.y, c.z, 1}, &ch->cam);
 	if (st != LX_PLANE_CAMERA_OK) {
 		static const char *const why[] = {"", "the light lies in the plane", "the eye lies in the plane",
 						  "the five-point system is singular"};
 		lx_shadow_warn(out, "plane %s: %s; its map is skipped and the fallback map serves it", P->name, why[st]);
-		return;
+		return false;
 	}
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
 	 * plane, within what the casters can cover. */
-	struct lx_poly wanted = win, cast;
+	struct lx_poly wanted = ch->win, cast;
 	vec2 pts[4 * LX_POLY_MAX];
 	int np = 0;
 	bool bounded = true;
@@ -154,7 +164,7 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		for (int k = 0; k < 8; k++) {
 			vec3 q = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
 				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
-			vec4 h = m4_mul_point(&cam.m, q);
+			vec4 h = m4_mul_point(&ch->cam.m, q);
 			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z)))) {
 				bounded = false; /* a caster reaches behind the light image: no bound from casters */
 				break;
@@ -165,58 +175,106 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 	}
 	if (bounded) {
 		lx_poly_hull(pts, np, &cast);
-		lx_poly_intersect(&win, &cast, &wanted);
+		lx_poly_intersect(&ch->win, &cast, &wanted);
 	}
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
-		return; /* no caster over the visible plane: nothing to shadow there */
+		return false; /* no caster over the visible plane: nothing to shadow there */
 
-	/* A_l: twist, scale, translate. */
+	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
+	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
 	double angle = 0;
-	bool twisted = next >= 0 && twist_angle(v, P, &s->planes[next], &win, &angle);
-	/* A twist by a multiple of 90 degrees (a level camera facing the wall) keeps the
-	 * pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
+	ch->twisted = next >= 0 && twist_angle(v, P, &s->planes[next], &ch->win, &angle);
 	double quarter = round(angle / (M_PI / 2));
-	bool on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
-	double cs = cos(angle), sn = sin(angle);
-	if (on_grid) {
+	ch->on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
+	ch->cs = cos(angle), ch->sn = sin(angle);
+	if (ch->on_grid) {
 		int k = ((int)quarter % 4 + 4) % 4;
 		static const double c4[4] = {1, 0, -1, 0}, s4[4] = {0, 1, 0, -1};
-		cs = c4[k], sn = s4[k];
+		ch->cs = c4[k], ch->sn = s4[k];
 	}
 	struct lx_poly rot = wanted;
 	for (int k = 0; k < rot.n; k++)
-		rot.v[k] = (vec2){cs * wanted.v[k].x - sn * wanted.v[k].y, sn * wanted.v[k].x + cs * wanted.v[k].y};
-	double x0, y0, x1, y1;
-	lx_poly_bounds(&rot, &x0, &y0, &x1, &y1);
-	const struct lx_region *g = &atlas->regions[map->region];
-	double scale = fmin(1.0, fmin(g->w / (x1 - x0), g->h / (y1 - y0))); /* the area check above keeps x1 > x0 */
-	if (scale == 1.0 && on_grid && ceil(x1) - floor(x0) <= g->w && ceil(y1) - floor(y0) <= g->h) {
-		/* pixel centres, turned by quarter turns, stay at half-integers: a whole-lixel
-		 * translation puts each on a lixel centre */
-		x0 = floor(x0);
-		y0 = floor(y0);
-	}
-	double uw = fmin(g->w, scale * (x1 - x0)), vh = fmin(g->h, scale * (y1 - y0));
-	/* window (x q, y q, z q, q) -> region clip: x_clip = 2 u / w - 1 with u = scale (R p - p0) */
-	mat4 a = m4_identity();
-	double kx = 2.0 / g->w, ky = 2.0 / g->h;
-	a.m[0] = kx * scale * cs, a.m[4] = -kx * scale * sn, a.m[12] = -kx * scale * x0 - 1;
-	a.m[1] = ky * scale * sn, a.m[5] = ky * scale * cs, a.m[13] = -ky * scale * y0 - 1;
-	mat4 m = m4_mul(&a, &cam.m);
-	double b[4] = {-1, -1, kx * uw - 1, ky * vh - 1};
+		rot.v[k] = (vec2){ch->cs * wanted.v[k].x - ch->sn * wanted.v[k].y, ch->sn * wanted.v[k].x + ch->cs * wanted.v[k].y};
+	lx_poly_bounds(&rot, &ch->x0, &ch->y0, &ch->x1, &ch->y1);
+	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
+}
 
-	/* Depth: unit cube clipping inside the map's frustum. Receivers: the view frustum
-	 * within the scene box and the map's cone; casters: their boxes within the cone. */
-	vec4 wrow = row(&m, 3), zrow = row(&m, 2);
+/* A_l's scale and translation: u = scale (R p - (x0, y0)) + offset, in a map of w x h
+ * lixels whose used part is [offset, uw] x [offset, vh]. */
+struct plane_fit {
+	double scale, x0, y0, offset, uw, vh;
+	int w, h;
+};
+
+/* Sizes the map. A fixed (square) region: the paper's uniform scale down when the
+ * budget cannot give a lixel per pixel. A fitted region: the scale is set by area, so the
+ * budget's lixels all cover wanted pixels, in a w x h that follows the rectangle's
+ * aspect; where the budget gives a pixel one lixel or more on an unturned pixel grid the
+ * scale is a whole number and lixel centres fall on pixel centres. */
+static void fit_plane(const struct plane_chart *ch, const struct lx_region *g, const struct lx_atlas *atlas,
+		      long budget, double max_lpp, struct plane_fit *fit)
+{
+	double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
+	*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0};
+	if (!g->variable) {
+		fit->scale = fmin(1.0, fmin(g->w / rw, g->h / rh));
+		fit->w = g->w, fit->h = g->h;
+		if (fit->scale == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
+		    ceil(ch->y1) - floor(ch->y0) <= g->h) {
+			/* pixel centres, turned by quarter turns, stay at half-integers: a
+			 * whole-lixel translation puts each on a lixel centre */
+			fit->x0 = floor(ch->x0);
+			fit->y0 = floor(ch->y0);
+		}
+		fit->uw = fmin(g->w, fit->scale * (ch->x1 - fit->x0));
+		fit->vh = fmin(g->h, fit->scale * (ch->y1 - fit->y0));
+		return;
+	}
+	int side = atlas->max_side > 1 ? atlas->max_side : 1;
+	double s = sqrt((double)budget / (rw * rh));
+	if (max_lpp > 0)
+		s = fmin(s, sqrt(max_lpp));
+	s = fmin(s, fmin((side - 1) / rw, (side - 1) / rh)); /* the long side within the texture */
+	if (ch->on_grid && s >= 1) {
+		/* whole lixels per pixel, the translation in whole pixels: pixel centres land on
+		 * lixel centres (an even scale puts them on corners, half a lixel off) */
+		for (double k = floor(s); k >= 1; k--) {
+			double x0 = floor(ch->x0), y0 = floor(ch->y0), off = fmod(k, 2) == 0 ? 0.5 : 0;
+			double uw = k * (ch->x1 - x0) + off, vh = k * (ch->y1 - y0) + off;
+			int w = (int)ceil(uw), h = (int)ceil(vh);
+			if ((long)w * h <= budget && w <= side && h <= side) {
+				*fit = (struct plane_fit){k, x0, y0, off, uw, vh, w, h};
+				return;
+			}
+		}
+	}
+	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
+		int w = (int)ceil(s * rw), h = (int)ceil(s * rh);
+		w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
+		if (((long)w * h <= budget && w <= side && h <= side) || tries == 63) {
+			*fit = (struct plane_fit){s, ch->x0, ch->y0, 0, fmin(w, s * rw), fmin(h, s * rh), w, h};
+			return;
+		}
+		s *= 0.999 * fmin(sqrt((double)budget / ((double)w * h)), fmin((double)side / w, (double)side / h));
+	}
+}
+
+/* Depth: unit cube clipping inside the map's frustum. Receivers: the view frustum
+ * within the scene box and the map's cone; casters: their boxes within the cone.
+ * Writes the fitted z row into *m; false when no caster lies in front of a receiver. */
+static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, const double *b, const vec4 *faces,
+		      int nfaces, mat4 *m, struct lx_shadow_result *out, const char *name)
+{
+	vec4 wrow = row(m, 3), zrow = row(m, 2);
 	double wplane = INFINITY;
-	for (int k = 0; k < nw; k++)
-		wplane = fmin(wplane, dot4p(wrow, world[k]));
+	for (int k = 0; k < ch->nw; k++)
+		wplane = fmin(wplane, dot4p(wrow, ch->world[k]));
 	vec4 hs[20];
 	int nh = 0;
-	hs[nh++] = comb(row(&m, 0), 1, wrow, -b[0]);
-	hs[nh++] = comb(row(&m, 0), -1, wrow, b[2]);
-	hs[nh++] = comb(row(&m, 1), 1, wrow, -b[1]);
-	hs[nh++] = comb(row(&m, 1), -1, wrow, b[3]);
+	hs[nh++] = comb(row(m, 0), 1, wrow, -b[0]);
+	hs[nh++] = comb(row(m, 0), -1, wrow, b[2]);
+	hs[nh++] = comb(row(m, 1), 1, wrow, -b[1]);
+	hs[nh++] = comb(row(m, 1), -1, wrow, b[3]);
 	double wmin = 1e-4 * wplane; /* a hair in front of the light: depth is finite there */
 	hs[nh++] = comb(wrow, 1, (vec4){0, 0, 0, 1}, -wmin);
 	int ncone = nh;
@@ -267,86 +325,143 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		}
 	}
 	if (clipped)
-		lx_shadow_warn(out, "plane %s: a caster next to the light is clipped by the map's near plane", P->name);
+		lx_shadow_warn(out, "plane %s: a caster next to the light is clipped by the map's near plane", name);
 	if (!(znear < zfar) || !isfinite(znear) || !isfinite(zfar))
-		return; /* no caster in front of any receiver in this map */
+		return false; /* no caster in front of any receiver in this map */
 	double pad = (zfar - znear) * 1e-4;
 	znear -= pad, zfar += pad;
 	vec4 z2 = comb(zrow, 2 / (zfar - znear), wrow, -(zfar + znear) / (zfar - znear));
-	m.m[2] = z2.x, m.m[6] = z2.y, m.m[10] = z2.z, m.m[14] = z2.w;
-	if (!m4_finite(&m))
-		return;
-	map->light_clip = m;
-	memcpy(map->bounds, b, sizeof b);
-	map->lixel_scale = scale;
-	map->rendered = true;
+	m->m[2] = z2.x, m->m[6] = z2.y, m->m[10] = z2.z, m->m[14] = z2.w;
+	return m4_finite(m);
+}
 
-	/* Point-line tests: the map serves only rays that meet the plane's parallelogram
-	 * (a table top's rays, not the floor's around it). Its edges, projected to window
-	 * coordinates, are lines of the light image; valid as a convex test only when the
-	 * whole parallelogram lies in front of the eye. */
-	struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
+/* Point-line tests: the map serves only rays that meet the plane's parallelogram (a
+ * table top's rays, not the floor's around it). Its edges, projected to window
+ * coordinates, are lines of the light image; valid as a convex test only when the whole
+ * parallelogram lies in front of the eye. Clips *served_clip to them. */
+static void plane_edges(const struct lx_view *v, const struct lx_plane *P, const mat4 *a, struct lx_shadow_map *map,
+			struct lx_poly *served_clip)
+{
 	vec3 pc[4] = {P->corner, v3_add(P->corner, P->edge1), v3_add(v3_add(P->corner, P->edge1), P->edge2),
 		      v3_add(P->corner, P->edge2)};
 	double sp[4][3];
-	bool in_front = true;
 	for (int k = 0; k < 4; k++) {
 		vec4 cc = m4_mul_point(&v->view_proj, pc[k]);
-		in_front &= cc.w > 0;
+		if (!(cc.w > 0))
+			return;
 		/* window coordinates, then through A_l into region clip space (homogeneous) */
 		double wx = (cc.x + cc.w) * 0.5 * v->width, wy = (cc.y + cc.w) * 0.5 * v->height;
-		sp[k][0] = a.m[0] * wx + a.m[4] * wy + a.m[12] * cc.w;
-		sp[k][1] = a.m[1] * wx + a.m[5] * wy + a.m[13] * cc.w;
+		sp[k][0] = a->m[0] * wx + a->m[4] * wy + a->m[12] * cc.w;
+		sp[k][1] = a->m[1] * wx + a->m[5] * wy + a->m[13] * cc.w;
 		sp[k][2] = cc.w;
 	}
-	/* Only where a later plane map can take the rays that miss this plane and no twist
-	 * already sends them out of bounds (a table top over the floor). */
-	if (in_front && i == 0 && next >= 0 && !twisted) {
-		vec2 mid = {0, 0};
-		for (int k = 0; k < 4; k++)
-			mid.x += sp[k][0] / sp[k][2] / 4, mid.y += sp[k][1] / sp[k][2] / 4;
-		for (int k = 0; k < 4; k++) {
-			const double *p0 = sp[k], *p1 = sp[(k + 1) % 4];
-			double l0 = p0[1] * p1[2] - p0[2] * p1[1], l1 = p0[2] * p1[0] - p0[0] * p1[2],
-			       l2 = p0[0] * p1[1] - p0[1] * p1[0];
-			double norm = hypot(l0, l1);
-			if (!(norm > 0))
-				continue;
-			double sgn = l0 * mid.x + l1 * mid.y + l2 >= 0 ? 1 : -1;
-			map->edges[map->edge_count][0] = sgn * l0 / norm;
-			map->edges[map->edge_count][1] = sgn * l1 / norm;
-			map->edges[map->edge_count][2] = sgn * l2 / norm;
-			lx_poly_clip_halfplane(&served_clip, map->edges[map->edge_count][0], map->edges[map->edge_count][1],
-					       map->edges[map->edge_count][2], &served_clip);
-			map->edge_count++;
-		}
+	vec2 mid = {0, 0};
+	for (int k = 0; k < 4; k++)
+		mid.x += sp[k][0] / sp[k][2] / 4, mid.y += sp[k][1] / sp[k][2] / 4;
+	for (int k = 0; k < 4; k++) {
+		const double *p0 = sp[k], *p1 = sp[(k + 1) % 4];
+		double l0 = p0[1] * p1[2] - p0[2] * p1[1], l1 = p0[2] * p1[0] - p0[0] * p1[2],
+		       l2 = p0[0] * p1[1] - p0[1] * p1[0];
+		double norm = hypot(l0, l1);
+		if (!(norm > 0))
+			continue;
+		double sgn = l0 * mid.x + l1 * mid.y + l2 >= 0 ? 1 : -1;
+		double *e = map->edges[map->edge_count++];
+		e[0] = sgn * l0 / norm, e[1] = sgn * l1 / norm, e[2] = sgn * l2 / norm;
+		lx_poly_clip_halfplane(served_clip, e[0], e[1], e[2], served_clip);
 	}
-	/* The rays it serves, on G, for the fallback to leave out. The ray through clip
-	 * (x, y) holds X = inv(M) (x, y, 0, 1), linear in (x, y, 1); only the part of the
-	 * served polygon whose rays meet G can be charted (a half-plane), the rest stays
-	 * with the fallback. */
+}
+
+/* The rays a map serves, on G, for the fallback to leave out. The ray through clip
+ * (x, y) holds X = inv(M) (x, y, 0, 1), linear in (x, y, 1); only the part of the
+ * served polygon whose rays meet G can be charted (a half-plane), the rest stays with
+ * the fallback. */
+static void served_on_g(const struct lx_frame *f, const struct lx_light_space *ls, const mat4 *m,
+			struct lx_poly *served_clip, struct lx_poly *served)
+{
 	mat4 inv;
-	if (!m4_invert(&m, &inv))
+	if (!m4_invert(m, &inv))
 		return;
 	vec4 ex = {inv.m[0], inv.m[1], inv.m[2], inv.m[3]}, ey = {inv.m[4], inv.m[5], inv.m[6], inv.m[7]},
 	     e1 = {inv.m[12], inv.m[13], inv.m[14], inv.m[15]};
 	double fa = lx_light_space_front(ls, f, ex), fb = lx_light_space_front(ls, f, ey), fc = lx_light_space_front(ls, f, e1);
 	double fmargin = 1e-9 * (fabs(fa) + fabs(fb) + fabs(fc));
-	lx_poly_clip_halfplane(&served_clip, fa, fb, fc - fmargin, &served_clip);
+	lx_poly_clip_halfplane(served_clip, fa, fb, fc - fmargin, served_clip);
 	vec2 corners[LX_POLY_MAX];
 	int nc = 0;
-	for (int k = 0; k < served_clip.n; k++) {
-		vec4 X = {ex.x * served_clip.v[k].x + ey.x * served_clip.v[k].y + e1.x,
-			  ex.y * served_clip.v[k].x + ey.y * served_clip.v[k].y + e1.y,
-			  ex.z * served_clip.v[k].x + ey.z * served_clip.v[k].y + e1.z,
-			  ex.w * served_clip.v[k].x + ey.w * served_clip.v[k].y + e1.w};
+	for (int k = 0; k < served_clip->n; k++) {
+		vec4 X = {ex.x * served_clip->v[k].x + ey.x * served_clip->v[k].y + e1.x,
+			  ex.y * served_clip->v[k].x + ey.y * served_clip->v[k].y + e1.y,
+			  ex.z * served_clip->v[k].x + ey.z * served_clip->v[k].y + e1.z,
+			  ex.w * served_clip->v[k].x + ey.w * served_clip->v[k].y + e1.w};
 		if (lx_light_space_chart(ls, f, X, &corners[nc]))
 			nc++;
 	}
 	lx_poly_hull(corners, nc, served);
 }
 
-static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+/* Builds plane i's map from its chart and lixel budget; returns the rays it serves as
+ * a polygon on G (empty when none or when they cannot be charted there). */
+static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
+			    const struct plane_chart *ch, int i, int next, long budget, double max_lpp, const vec4 *faces,
+			    int nfaces, struct lx_shadow_map *map, struct lx_shadow_result *out, struct lx_poly *served)
+{
+	const struct lx_plane *P = &f->scene->planes[i];
+	const struct lx_region *g = &atlas->regions[map->region];
+	struct plane_fit fit;
+	fit_plane(ch, g, atlas, budget, max_lpp, &fit);
+	/* window (x q, y q, z q, q) -> region clip: x_clip = 2 u / w - 1 */
+	mat4 a = m4_identity();
+	double kx = 2.0 / fit.w, ky = 2.0 / fit.h, sc = fit.scale;
+	a.m[0] = kx * sc * ch->cs, a.m[4] = -kx * sc * ch->sn, a.m[12] = kx * (fit.offset - sc * fit.x0) - 1;
+	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (fit.offset - sc * fit.y0) - 1;
+	mat4 m = m4_mul(&a, &ch->cam.m);
+	double b[4] = {kx * fit.offset - 1, ky * fit.offset - 1, kx * fit.uw - 1, ky * fit.vh - 1};
+	if (!fit_depth(f, ch, b, faces, nfaces, &m, out, P->name))
+		return;
+	map->light_clip = m;
+	memcpy(map->bounds, b, sizeof b);
+	map->lixel_scale = sc;
+	map->w = fit.w, map->h = fit.h;
+	map->rendered = true;
+	struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
+	/* only where a later plane map can take the rays that miss this plane and no twist
+	 * already sends them out of bounds (a table top over the floor) */
+	if (i == 0 && next >= 0 && !ch->twisted)
+		plane_edges(&f->view, P, &a, map, &served_clip);
+	served_on_g(f, ls, &m, &served_clip, served);
+}
+
+/* Each plane map's lixels this frame: its own budget, or with shared budgets what the
+ * others do not need at the highest density asked for (lpp 1 when none is). */
+static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
+			  const struct plane_chart *ch, const bool *ok, int np, long *budget)
+{
+	long own = (long)o->plane_lixels * o->plane_lixels, pool = 0, need[PLANE_MAPS], want = 0;
+	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
+	for (int i = 0; i < np; i++) {
+		budget[i] = atlas->regions[i].variable ? own : (long)atlas->regions[i].w * atlas->regions[i].h;
+		need[i] = ok[i] ? (long)ceil(density * (ch[i].x1 - ch[i].x0 + 1) * (ch[i].y1 - ch[i].y0 + 1)) : 0;
+		pool += budget[i];
+	}
+	if (!o->shared_budget || o->square_regions)
+		return;
+	for (int i = 0; i < np; i++)
+		want += need[i];
+	if (want <= 0)
+		return;
+	/* every map gets what it needs where the pool holds it, the rest in proportion */
+	for (int i = 0; i < np; i++)
+		budget[i] = ok[i] ? (long)((double)pool * need[i] / want) : 0;
+	if (want <= pool) {
+		long spare = pool - want;
+		for (int i = 0; i < np; i++)
+			budget[i] = ok[i] ? need[i] + (long)((double)spare * need[i] / want) : 0;
+	}
+}
+
+static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
+			struct lx_shadow_result *out)
 {
 	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
 	int np = atlas->count - 1;
@@ -362,9 +477,17 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		return; /* no shadow can fall in the view: no pass at all */
 	vec4 faces[12];
 	int nfaces = receiver_faces(f, &ls, faces);
+	struct plane_chart ch[PLANE_MAPS];
+	bool ok[PLANE_MAPS];
+	long budget[PLANE_MAPS];
+	for (int i = 0; i < np; i++)
+		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, out, &ch[i]);
+	plane_budgets(atlas, o, ch, ok, np, budget);
 	struct lx_poly served[PLANE_MAPS] = {{0}};
 	for (int i = 0; i < np; i++)
-		build_plane_map(f, &ls, atlas, i, i + 1 < np ? i + 1 : -1, faces, nfaces, &out->maps[i], out, &served[i]);
+		if (ok[i])
+			build_plane_map(f, &ls, atlas, &ch[i], i, i + 1 < np ? i + 1 : -1, budget[i], o->plane_max_lpp,
+					faces, nfaces, &out->maps[i], out, &served[i]);
 	/* the fallback map: what is wanted and no plane map serves */
 	struct lx_shadow_map *fb = &out->maps[np];
 	struct lx_poly tot, rest;
@@ -380,6 +503,6 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",
-	.summary = "plane-optimal maps for the first two planes (350x350 each) and a 128x128 fallback",
+	.summary = "plane-optimal maps for the first two planes (350^2 lixels each, shaped per frame) and a 128x128 fallback",
 	.regions = plane_regions,
 	.build = plane_build};

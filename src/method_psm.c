@@ -21,7 +21,7 @@
 static int psm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"psm", o->uniform_lixels, o->uniform_lixels};
+	out[0] = (struct lx_region_request){"psm", o->uniform_lixels, o->uniform_lixels, 0};
 	return 1;
 }
 
@@ -40,8 +40,10 @@ static bool orthonormal(vec4 *v, const vec4 *u, int n)
 	return true;
 }
 
-static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
+			 struct lx_shadow_result *out)
 {
+	(void)opt;
 	(void)atlas;
 	/* the uniform map first: where PPS cannot hold the light's view, it stands in */
 	struct lx_light_space ls;

@@ -23,6 +23,7 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	}
 	mr->width = width;
 	mr->height = height;
+	mr->options = *budgets;
 	struct lx_region_request req[LX_MAX_MAPS];
 	int nreq = mr->method->regions(scene, budgets, req);
 	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
@@ -43,7 +44,7 @@ void lx_method_run_free(struct lx_method_run *mr)
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t)
 {
 	double t0 = now_ms();
-	mr->method->build(f, &mr->atlas, &mr->result);
+	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
 	double t1 = now_ms();
 	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
 	lx_renderer_finish();

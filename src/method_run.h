@@ -12,7 +12,8 @@
 
 struct lx_method_run {
 	const struct lx_shadow_method *method;
-	struct lx_atlas atlas;
+	struct lx_atlas atlas; /* laid out again each frame where the maps' shapes vary */
+	struct lx_method_options options;
 	struct lx_renderer *renderer;
 	struct lx_shadow_result result; /* of the last frame */
 	int width, height;

@@ -15,7 +15,7 @@
 static int tsm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"tsm", o->uniform_lixels, o->uniform_lixels};
+	out[0] = (struct lx_region_request){"tsm", o->uniform_lixels, o->uniform_lixels, 0};
 	return 1;
 }
 
@@ -28,8 +28,10 @@ static bool to_image(const mat4 *u, vec3 p, vec2 *q)
 	return true;
 }
 
-static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
+			 struct lx_shadow_result *out)
 {
+	(void)opt;
 	(void)atlas;
 	struct lx_light_space ls;
 	struct lx_uniform_fit fit;

@@ -8,12 +8,14 @@
 static int uniform_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"uniform", o->uniform_lixels, o->uniform_lixels};
+	out[0] = (struct lx_region_request){"uniform", o->uniform_lixels, o->uniform_lixels, 0};
 	return 1;
 }
 
-static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out)
+static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
+			 struct lx_shadow_result *out)
 {
+	(void)opt;
 	(void)atlas;
 	struct lx_light_space ls;
 	lx_uniform_map(f, &ls, out, "uniform", NULL);

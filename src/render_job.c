@@ -105,7 +105,6 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	if (status)
 		goto out;
 	status = 1;
-	rep->atlas = mr.atlas;
 	int timed = job->timed_frames > 0 ? job->timed_frames : 1;
 	times = calloc((size_t)timed * 4, sizeof(double));
 	long n = (long)job->width * job->height;
@@ -124,6 +123,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;
 	}
 	rep->result = mr.result;
+	rep->atlas = mr.atlas; /* as the last frame laid it out */
 	rep->frame_ms_min = INFINITY;
 	for (int k = 0; k < timed; k++) {
 		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);

@@ -260,9 +260,15 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 		if (!map->rendered)
 			continue;
 		const struct lx_region *g = &r->d.atlas->regions[map->region];
+		if (g->w < 1 || g->h < 1)
+			continue;
+		/* the region and its guard band start "far": a per-frame layout moves the
+		 * guards over what earlier frames drew; then draw inside the region only */
+		int gd = r->d.atlas->guard;
+		lx_gl.Scissor(g->x - gd, g->y - gd, g->w + 2 * gd, g->h + 2 * gd);
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 		lx_gl.Viewport(g->x, g->y, g->w, g->h);
 		lx_gl.Scissor(g->x, g->y, g->w, g->h);
-		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 		for (int id = 0; id < r->objects; id++) {
 			if (outside_map(map, f->bmin[id], f->bmax[id]))
 				continue; /* no fill and no vertices for what the map cannot see */

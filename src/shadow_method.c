@@ -81,6 +81,48 @@ void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f)
 	}
 }
 
+void lx_shadow_map_turn(struct lx_shadow_map *m)
+{
+	mat4 c = m->light_clip;
+	for (int col = 0; col < 4; col++) { /* row 0 <- -row 1, row 1 <- row 0 */
+		m->light_clip.m[col * 4] = -c.m[col * 4 + 1];
+		m->light_clip.m[col * 4 + 1] = c.m[col * 4];
+	}
+	double b[4] = {-m->bounds[3], m->bounds[0], -m->bounds[1], m->bounds[2]};
+	memcpy(m->bounds, b, sizeof b);
+	for (int e = 0; e < m->edge_count; e++) { /* a x + b y + c with x = y', y = -x' */
+		double a = m->edges[e][0];
+		m->edges[e][0] = -m->edges[e][1];
+		m->edges[e][1] = a;
+	}
+	int w = m->w;
+	m->w = m->h;
+	m->h = w;
+}
+
+void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_atlas *atlas,
+			    const struct lx_method_options *o, struct lx_shadow_result *out)
+{
+	m->build(f, atlas, o, out);
+	int w[LX_ATLAS_MAX_REGIONS] = {0}, h[LX_ATLAS_MAX_REGIONS] = {0};
+	for (int i = 0; i < out->map_count; i++) {
+		const struct lx_shadow_map *map = &out->maps[i];
+		if (!map->rendered || map->region < 0 || map->region >= atlas->count)
+			continue;
+		bool own = map->w > 0 && map->h > 0;
+		w[map->region] = own ? map->w : atlas->regions[map->region].w;
+		h[map->region] = own ? map->h : atlas->regions[map->region].h;
+	}
+	if (lx_atlas_pack(atlas, w, h) > 0)
+		lx_shadow_warn(out, "atlas: this frame's maps did not fit the %dx%d texture and were shrunk", atlas->width,
+			       atlas->height);
+	for (int i = 0; i < out->map_count; i++) {
+		struct lx_shadow_map *map = &out->maps[i];
+		if (map->rendered && map->region >= 0 && map->region < atlas->count && atlas->regions[map->region].turned)
+			lx_shadow_map_turn(map);
+	}
+}
+
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...)
 {
 	if (r->warning_count == LX_MAX_WARNINGS)

@@ -22,6 +22,7 @@ struct lx_shadow_map {
 	mat4 light_clip; /* world -> region clip space */
 	int plane;       /* the plane of interest this map is optimal for, or -1 */
 	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel) */
+	int w, h;           /* the lixels it takes this frame in its own axes; 0: its region's fixed size */
 	bool pancake;       /* casters may lie nearer than the near plane: the shadow pass flattens them onto it */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
 	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
@@ -44,21 +45,27 @@ struct lx_shadow_result {
 	char warnings[LX_MAX_WARNINGS][LX_WARNING_MAX];
 };
 
-/* Lixel budgets: each map is budget x budget lixels. */
+/* Lixel budgets: each map holds budget x budget lixels. */
 struct lx_method_options {
 	int uniform_lixels;  /* one-map methods (512) */
 	int plane_lixels;    /* each plane-optimal map (350) */
 	int fallback_lixels; /* the plane-optimal method's fallback map (128) */
+	bool square_regions; /* plane maps: the paper's square maps, not shapes fitted per frame */
+	bool shared_budget;  /* plane maps: one needing less than its budget hands the rest on */
+	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0: no cap) */
 };
-#define LX_METHOD_OPTIONS_DEFAULT ((struct lx_method_options){512, 350, 128})
+#define LX_METHOD_OPTIONS_DEFAULT \
+	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
 
 struct lx_shadow_method {
 	const char *name;
 	const char *summary;
 	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. */
 	int (*regions)(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out);
-	/* Fills one map per region, in the order regions() gave them; resets *out first. */
-	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, struct lx_shadow_result *out);
+	/* Fills one map per region, in the order regions() gave them; resets *out first. A
+	 * map of a variable region says the lixels it wants this frame (w, h). */
+	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
+		      struct lx_shadow_result *out);
 };
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name);
@@ -77,6 +84,15 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p);
  * image's x when a small triangle facing the light winds clockwise, tried at the scene's
  * centre, the camera's target and the view's near centre until one is in front. */
 void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f);
+
+/* One frame of a method: build, then place this frame's maps in the atlas (packed
+ * again when their shapes vary; a map placed a quarter turn round gets its matrix,
+ * bounds and edges turned with it). */
+void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_atlas *atlas,
+			    const struct lx_method_options *o, struct lx_shadow_result *out);
+/* Turns a map a quarter turn in its region's clip space: (x, y) -> (-y, x), which keeps
+ * the winding and takes lixel centres to lixel centres of the turned region. */
+void lx_shadow_map_turn(struct lx_shadow_map *m);
 
 void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 

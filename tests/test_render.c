@@ -308,7 +308,7 @@ static void gpu_depth_encoding_and_guards(void **state)
 		struct lx_atlas atlas;
 		assert_true(lx_atlas_layout(&atlas, req, me->regions(&s, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, req), 2, caps.max_texture_size, err, sizeof err));
 		struct lx_shadow_result res = {0};
-		me->build(&f, &atlas, &res);
+		lx_shadow_method_frame(me, &f, &atlas, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, &res);
 		assert_true(res.maps[0].rendered);
 		struct lx_renderer_desc d = {.scene = &s, .meshes = &m, .atlas = &atlas, .caps = &caps, .map_count = 1,
 					     .width = 64, .height = 64, .bias_codes = LX_DEFAULT_BIAS_CODES};
