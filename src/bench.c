@@ -31,6 +31,7 @@ struct bench {
 	bool json;
 	int nm, nc;
 	const char *methods[MAX_METHODS];
+	struct lx_method_options options; /* the plane maps' options (each method may add its own: plane/square) */
 	const char *configs[MAX_CONFIGS];
 	struct lx_scene scene;
 	struct row rows[MAX_METHODS][MAX_CONFIGS];
@@ -43,7 +44,8 @@ static void usage(FILE *f)
 {
 	fprintf(f, "usage: lixel bench [--size WxH] [--frames N] [--warmup N] [--methods LIST] [--configs LIST]\n"
 		   "                   [--platform osmesa|egl] [--scene NAME|FILE] [--csv FILE] [--plot FILE.png]\n"
-		   "                   [--strips DIR] [--json]\n"
+		   "                   [--strips DIR] [--json] [--region-shape S] [--budget-split S]\n"
+		   "                   [--plane-max-lpp X]\n"
 		   "\n"
 		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
 		   "(glFinish per frame, methods interleaved frame by frame so that they share the\n"
@@ -54,7 +56,12 @@ static void usage(FILE *f)
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
 		   "  --warmup N       warm-up frames (default 5)\n"
-		   "  --methods LIST   comma-separated, from %s (default none,uniform,psm,lispsm,tsm,plane)\n"
+		   "  --methods LIST   comma-separated, from %s (default none,uniform,psm,lispsm,tsm,plane);\n"
+		   "                   plane takes options after slashes to compare settings in one run:\n"
+		   "                   plane/square (the paper's square maps), plane/shared (shared\n"
+		   "                   budgets), plane/lpp1 (at most 1 lixel per pixel), combined freely\n"
+		   "  --region-shape, --budget-split, --plane-max-lpp: as in lixel render --help,\n"
+		   "                   for every plane method of the run\n"
 		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
 		   "  --csv FILE       every row as CSV\n"
@@ -387,6 +394,7 @@ int lx_bench_main(int argc, char **argv)
 	b.frames = 30;
 	b.warmup = 5;
 	b.platform = "osmesa";
+	b.options = LX_METHOD_OPTIONS_DEFAULT;
 	static char methods_buf[256] = "none,uniform,psm,lispsm,tsm,plane", configs_buf[512];
 	lx_scene_default(&b.scene);
 	const char *scene_arg = NULL;
@@ -401,14 +409,17 @@ int lx_bench_main(int argc, char **argv)
 			continue;
 		}
 		static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
-							 "--scene", "--csv", "--plot", "--strips"};
+							 "--scene", "--csv", "--plot", "--strips", LX_PLANE_OPTION_NAMES};
 		const char *v;
 		int st = lx_arg_value("bench", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
 		char *end;
 		int hz;
-		if (!strcmp(a, "--size")) {
+		if ((st = lx_arg_plane_option("bench", a, v, &b.options)) >= 0) {
+			if (st)
+				return st;
+		} else if (!strcmp(a, "--size")) {
 			if (!lx_parse_mode(v, &b.width, &b.height, &hz) || hz)
 				return bad(a, "WxH with W and H from 1 to 16384", v);
 		} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
@@ -442,9 +453,12 @@ int lx_bench_main(int argc, char **argv)
 	strcpy(list_copy, methods_buf);
 	if (!split(methods_buf, b.methods, MAX_METHODS, &b.nm))
 		return bad("--methods", "a comma-separated list of methods", list_copy);
-	for (int m = 0; m < b.nm; m++)
-		if (!lx_shadow_method_find(b.methods[m]))
-			return bad("--methods", lx_shadow_method_names(), b.methods[m]);
+	for (int m = 0; m < b.nm; m++) {
+		struct lx_method_options probe = b.options;
+		char why[200];
+		if (!lx_shadow_method_spec(b.methods[m], &probe, why, sizeof why))
+			return bad("--methods", "methods from " "none|uniform|psm|lispsm|tsm|plane, plane with /square, /shared or /lppX", b.methods[m]);
+	}
 	if (!configs_buf[0]) {
 		for (int c = 0; c < lx_config_count; c++)
 			b.configs[b.nc++] = lx_configs[c].name;
@@ -484,7 +498,7 @@ int lx_bench_main(int argc, char **argv)
 	}
 	struct lx_gl_caps caps;
 	lx_gl_caps_probe(&caps);
-	struct lx_method_options opt = LX_METHOD_OPTIONS_DEFAULT;
+	struct lx_method_options opt = b.options;
 	struct lx_method_run runs[MAX_METHODS];
 	int status = 0, ready = 0;
 	long n = (long)b.width * b.height;

@@ -1,4 +1,6 @@
 #include "cli_args.h"
+#include "shadow_method.h"
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -36,4 +38,25 @@ bool lx_arg_scene(const char *arg, struct lx_scene *s)
 		return true;
 	fprintf(stderr, "lixel: %s\n", err);
 	return false;
+}
+
+int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o)
+{
+	if (!strcmp(opt, "--region-shape")) {
+		if (strcmp(value, "square") && strcmp(value, "fitted"))
+			return lx_arg_bad(cmd, opt, "square or fitted", value);
+		o->square_regions = value[0] == 's';
+	} else if (!strcmp(opt, "--budget-split")) {
+		if (strcmp(value, "fixed") && strcmp(value, "shared"))
+			return lx_arg_bad(cmd, opt, "fixed or shared", value);
+		o->shared_budget = value[0] == 's';
+	} else if (!strcmp(opt, "--plane-max-lpp")) {
+		char *end;
+		double x = strtod(value, &end);
+		if (end == value || *end || !(x > 0 && x <= 1e4))
+			return lx_arg_bad(cmd, opt, "lixels per pixel, a number in (0, 10000]", value);
+		o->plane_max_lpp = x;
+	} else
+		return -1;
+	return 0;
 }

@@ -69,6 +69,7 @@ static void render_usage(FILE *f)
 		"  --uniform-lixels N   side of the one-map methods' map (default 512)\n"
 		"  --plane-lixels N     side of each plane-optimal map (default 350)\n"
 		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128)\n"
+		LX_PLANE_OPTION_HELP
 		"  --mediump            use the shaders' mediump path (11-bit depth) as boards without\n"
 		"                       fragment highp do\n"
 		"  -h, --help           this text\n"
@@ -143,7 +144,8 @@ static void print_text(const struct lx_render_report *r, const char *out)
 	       r->caps.renderer);
 	printf("frame: %.3f ms median (min %.3f, max %.3f): shadow passes %.3f ms, main pass %.3f ms; set-up %.1f us\n",
 	       r->frame_ms, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us);
-	printf("atlas: %dx%d, %ld lixels", r->atlas.width, r->atlas.height, lx_atlas_lixels(&r->atlas));
+	printf("atlas: %dx%d (%.0f%% filled), %ld lixels", r->atlas.width, r->atlas.height, 100 * lx_atlas_fill(&r->atlas),
+	       lx_atlas_lixels(&r->atlas));
 	for (int i = 0; i < r->result.map_count; i++) {
 		const struct lx_region *g = &r->atlas.regions[r->result.maps[i].region];
 		printf("; %s %dx%d at (%d, %d)%s", g->name, g->w, g->h, g->x, g->y,
@@ -161,10 +163,11 @@ static void print_text(const struct lx_render_report *r, const char *out)
 			if (!pr->present)
 				printf("plane %s: not measured (not visible or no map serves it)\n", pr->name);
 			else
-				printf("plane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g\n",
+				printf("plane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g, "
+				       "lixels used %.0f\n",
 				       pr->name,
 				       pr->s.map >= 0 ? r->atlas.regions[r->result.maps[pr->s.map].region].name : "serving",
-				       pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max);
+				       pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max, pr->s.lixels_used);
 		}
 	}
 }
@@ -191,10 +194,12 @@ static void print_json(const struct lx_render_report *r)
 		lx_json_key(&j, "y"), lx_json_int(&j, g->y);
 		lx_json_key(&j, "w"), lx_json_int(&j, g->w);
 		lx_json_key(&j, "h"), lx_json_int(&j, g->h);
+		lx_json_key(&j, "turned"), lx_json_bool(&j, g->turned);
 		lx_json_key(&j, "rendered"), lx_json_bool(&j, r->result.maps[i].rendered);
 		lx_json_end(&j);
 	}
 	lx_json_end(&j);
+	lx_json_key(&j, "atlas_fill"), lx_json_number(&j, lx_atlas_fill(&r->atlas));
 	lx_json_key(&j, "frame_ms"), lx_json_number(&j, r->frame_ms);
 	lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
 	lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
@@ -232,6 +237,11 @@ static void print_json(const struct lx_render_report *r)
 			lx_json_key(&j, "aniso_max"), lx_json_number(&j, pr->s.aniso_max);
 			lx_json_key(&j, "lpp_spread"), lx_json_number(&j, pr->s.lpp_min > 0 ? pr->s.lpp_max / pr->s.lpp_min : NAN);
 			lx_json_key(&j, "degenerate_pixels"), lx_json_int(&j, pr->s.degenerate);
+			lx_json_key(&j, "lixels_used"), lx_json_number(&j, pr->s.lixels_used);
+			if (pr->s.map >= 0) { /* budget use: of the plane's own map's lixels */
+				const struct lx_region *g = &r->atlas.regions[r->result.maps[pr->s.map].region];
+				lx_json_key(&j, "map_lixels"), lx_json_int(&j, (long)g->w * g->h);
+			}
 			lx_json_end(&j);
 		}
 		lx_json_end(&j);
@@ -269,14 +279,19 @@ static int cmd_render(int argc, char **argv)
 		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
 							 "--at", "--fov", "--light", "--light-dir", "--time",
 							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias",
-							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels"};
+							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES};
 		const char *v;
 		int st = lx_arg_value("render", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
 		double d;
-		if (!strcmp(a, "--method")) {
-			if (!lx_shadow_method_find(v))
+		if ((st = lx_arg_plane_option("render", a, v, &job.budgets)) >= 0) {
+			if (st)
+				return st;
+		} else if (!strcmp(a, "--method")) {
+			struct lx_method_options probe = job.budgets;
+			char why[200];
+			if (!lx_shadow_method_spec(v, &probe, why, sizeof why))
 				return bad(a, lx_shadow_method_names(), v);
 			job.method = v;
 		} else if (!strcmp(a, "--scene"))

@@ -16,16 +16,14 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		       double bias_codes, bool to_window, char *err, size_t errlen)
 {
 	memset(mr, 0, sizeof(*mr));
-	mr->method = lx_shadow_method_find(name);
-	if (!mr->method) {
-		snprintf(err, errlen, "unknown method '%s', expected %s", name, lx_shadow_method_names());
+	mr->options = *budgets;
+	mr->method = lx_shadow_method_spec(name, &mr->options, err, errlen);
+	if (!mr->method)
 		return 2;
-	}
 	mr->width = width;
 	mr->height = height;
-	mr->options = *budgets;
 	struct lx_region_request req[LX_MAX_MAPS];
-	int nreq = mr->method->regions(scene, budgets, req);
+	int nreq = mr->method->regions(scene, &mr->options, req);
 	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
 		return 2; /* budgets this GL cannot hold: the input asks too much */
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,

@@ -173,6 +173,7 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 			}
 			lpp[k] = smax * smin;
 			mm[k] = 1.0 / smin;
+			out->lixels_used += lpp[k] * stride * stride;
 			out->lpp_min = fmin(out->lpp_min, lpp[k]);
 			out->lpp_max = fmax(out->lpp_max, lpp[k]);
 			out->m_max = fmax(out->m_max, mm[k]);

@@ -24,6 +24,7 @@ struct lx_plane_sampling {
 	long unserved;   /* pixels of the plane no map serves, or (own map) another map serves */
 	long degenerate; /* pixels skipped: the map's projection is singular there */
 	double lpp_median, lpp_min, lpp_max, m_median, m_max, aniso_max;
+	double lixels_used; /* budget use: the lixels inside the footprint of these pixels (sum of lpp) */
 };
 
 /* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane, lx_method_lispsm,
@@ -17,6 +18,47 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 		if (!strcmp(methods[i]->name, name))
 			return methods[i];
 	return NULL;
+}
+
+const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx_method_options *o, char *err,
+						     size_t errlen)
+{
+	char buf[64];
+	if (strlen(spec) >= sizeof buf) {
+		snprintf(err, errlen, "method '%.20s...' is too long", spec);
+		return NULL;
+	}
+	strcpy(buf, spec);
+	char *rest = strchr(buf, '/');
+	if (rest)
+		*rest++ = 0;
+	const struct lx_shadow_method *m = lx_shadow_method_find(buf);
+	if (!m) {
+		snprintf(err, errlen, "unknown method '%s', expected %s", buf, lx_shadow_method_names());
+		return NULL;
+	}
+	while (rest) {
+		char *opt = rest;
+		rest = strchr(rest, '/');
+		if (rest)
+			*rest++ = 0;
+		char *end;
+		if (strcmp(m->name, "plane")) {
+			snprintf(err, errlen, "method '%s' takes no options, got '%s'", m->name, opt);
+			return NULL;
+		} else if (!strcmp(opt, "square") || !strcmp(opt, "fitted"))
+			o->square_regions = opt[0] == 's';
+		else if (!strcmp(opt, "shared") || !strcmp(opt, "fixed"))
+			o->shared_budget = opt[0] == 's';
+		else if (!strncmp(opt, "lpp", 3) && opt[3] && (o->plane_max_lpp = strtod(opt + 3, &end), !*end) &&
+			 o->plane_max_lpp > 0 && o->plane_max_lpp <= 1e4) {
+		} else {
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed or lppX (0 < X <= 10000)",
+				 spec, opt);
+			return NULL;
+		}
+	}
+	return m;
 }
 
 const char *lx_shadow_method_names(void) { return "none|uniform|psm|lispsm|tsm|plane"; }

@@ -69,6 +69,12 @@ struct lx_shadow_method {
 };
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name);
+/* A method with options, "NAME[/OPTION...]": for the plane method square or fitted
+ * (region shape), shared or fixed (budget split), lppX (the densest a plane map gets,
+ * lixels per pixel). Applies the options to *o; NULL with one line in err when the spec
+ * is not one. Lets the bench run the same method twice with different settings. */
+const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx_method_options *o, char *err,
+						     size_t errlen);
 /* The list of method names, separated by '|', for help and error messages. */
 const char *lx_shadow_method_names(void);
 

@@ -1,5 +1,6 @@
 #include "atlas.h"
 #include "test_util.h"
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -79,6 +80,134 @@ static void many_regions_and_guards(void **state)
 	}
 }
 
+
+/* This frame's regions lie inside the texture, guard bands included, apart from each
+ * other; a variable region holds at most its budget, within the longest side. */
+static void check_frame(const struct lx_atlas *a, const int *w, const int *h, bool exact)
+{
+	for (int i = 0; i < a->count; i++) {
+		const struct lx_region *r = &a->regions[i];
+		if (r->w == 0 && r->h == 0)
+			continue;
+		if (r->variable) {
+			assert_true((long)r->w * r->h <= r->budget);
+			assert_true(r->w <= a->max_side && r->h <= a->max_side);
+			assert_true(r->w >= r->h); /* laid landscape */
+			int ow = r->turned ? r->h : r->w, oh = r->turned ? r->w : r->h;
+			if (exact && (ow != w[i] || oh != h[i]))
+				fail_msg("region %s: asked %dx%d, placed %dx%d%s", r->name, w[i], h[i], r->w, r->h,
+					 r->turned ? " turned" : "");
+		}
+		assert_true(r->x - a->guard >= 0 && r->y - a->guard >= 0);
+		assert_true(r->x + r->w + a->guard <= a->width && r->y + r->h + a->guard <= a->height);
+		for (int j = 0; j < a->count; j++) {
+			const struct lx_region *o = &a->regions[j];
+			if (o == r || (o->w == 0 && o->h == 0))
+				continue;
+			bool apart = r->x + r->w + a->guard <= o->x || o->x + o->w + a->guard <= r->x ||
+				     r->y + r->h + a->guard <= o->y || o->y + o->h + a->guard <= r->y;
+			if (!apart)
+				fail_msg("regions %s and %s overlap or share a guard band", r->name, o->name);
+		}
+	}
+}
+
+/* The largest w x h of aspect w:h within a budget. */
+static void shape(long budget, double aspect, int *w, int *h)
+{
+	*w = (int)floor(sqrt(budget * aspect));
+	*h = (int)floor(*w / aspect);
+	if (*h < 1)
+		*h = 1;
+	while ((long)*w * *h > budget)
+		(*w)--;
+}
+
+static void plane_budgets_fit_every_aspect(void **state)
+{
+	(void)state;
+	struct lx_region_request req[] = {{"floor", 350, 350, 350 * 350}, {"wall", 350, 350, 350 * 350}, {"fallback", 128, 128, 0}};
+	struct lx_atlas start;
+	char err[256];
+	assert_true(lx_atlas_layout(&start, req, 3, 1, 4096, err, sizeof err));
+	print_message("fitted plane-optimal atlas: %dx%d (%.1f lixels per budget lixel)\n", start.width, start.height,
+		      (double)start.width * start.height / lx_atlas_lixels(&start));
+	assert_true(start.width <= LX_ATLAS_MAX_SIDE && start.height <= LX_ATLAS_MAX_SIDE);
+	int w[3], h[3], frames = 0;
+	/* every aspect from 1:32 to 32:1 in steps of 2^(1/4) for each map, alone and together */
+	for (int a = -20; a <= 20; a++)
+		for (int b = -21; b <= 20; b++) {
+			struct lx_atlas at = start;
+			shape(350 * 350, pow(2, a / 4.0), &w[0], &h[0]);
+			if (b == -21)
+				w[1] = h[1] = 0; /* the wall not placed this frame */
+			else
+				shape(350 * 350, pow(2, b / 4.0), &w[1], &h[1]);
+			w[2] = h[2] = 128;
+			assert_int_equal(lx_atlas_pack(&at, w, h), 0); /* nothing shrunk */
+			check_frame(&at, w, h, true);
+			/* deterministic: the same sizes give the same places */
+			struct lx_atlas again = start;
+			lx_atlas_pack(&again, w, h);
+			assert_memory_equal(&again, &at, sizeof at);
+			frames++;
+		}
+	/* one lixel wide, empty, one lixel in all */
+	struct lx_atlas at = start;
+	int thin_w[3] = {1, 350 * 350 > start.max_side ? start.max_side : 1, 0}, thin_h[3] = {1, 1, 0};
+	assert_int_equal(lx_atlas_pack(&at, thin_w, thin_h), 0);
+	check_frame(&at, thin_w, thin_h, true);
+	int none[3] = {0, 0, 0};
+	assert_int_equal(lx_atlas_pack(&at, none, none), 0);
+	assert_int_equal(at.regions[0].w, 0);
+	assert_int_equal(at.regions[2].w, 128); /* a fixed region keeps its size */
+	/* asked beyond the budget or the texture: clamped, never overlapping */
+	int big_w[3] = {5000, 400, 0}, big_h[3] = {300, 400, 0};
+	at = start;
+	lx_atlas_pack(&at, big_w, big_h);
+	check_frame(&at, big_w, big_h, false);
+	print_message("%d frames of aspects packed\n", frames);
+}
+
+/* Shared budgets: one map may take both plane budgets, in any aspect. */
+static void shared_budgets_fit(void **state)
+{
+	(void)state;
+	long pool = 2L * 350 * 350;
+	struct lx_region_request req[] = {{"floor", 350, 350, pool}, {"wall", 350, 350, pool}, {"fallback", 128, 128, 0}};
+	struct lx_atlas start;
+	char err[256];
+	assert_true(lx_atlas_layout(&start, req, 3, 1, 2048, err, sizeof err));
+	uint64_t s = 7;
+	for (int trial = 0; trial < 2000; trial++) {
+		struct lx_atlas at = start;
+		double share = test_rand(&s);
+		int w[3], h[3];
+		shape((long)(pool * share), pow(32, 2 * test_rand(&s) - 1), &w[0], &h[0]);
+		shape(pool - (long)(pool * share), pow(32, 2 * test_rand(&s) - 1), &w[1], &h[1]);
+		w[2] = h[2] = 128;
+		for (int i = 0; i < 2; i++) /* the texture's longest side bounds the most elongated */
+			if (w[i] > start.max_side || h[i] > start.max_side)
+				w[i] = h[i] = 0;
+		assert_int_equal(lx_atlas_pack(&at, w, h), 0);
+		check_frame(&at, w, h, true);
+	}
+}
+
+/* A texture too small for a frame: the regions shrink until they fit, never overlap. */
+static void a_frame_that_cannot_fit_shrinks(void **state)
+{
+	(void)state;
+	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100}, {"b", 100, 100, 100 * 100}};
+	struct lx_atlas at;
+	char err[256];
+	assert_true(lx_atlas_layout(&at, req, 2, 1, 256, err, sizeof err));
+	at.height = 60; /* as if the texture were smaller than the bound asks */
+	int w[2] = {250, 250}, h[2] = {40, 40};
+	assert_true(lx_atlas_pack(&at, w, h) > 0);
+	check_frame(&at, w, h, false);
+}
+
 static void size_limits_give_clear_errors(void **state)
 {
 	(void)state;
@@ -112,6 +241,9 @@ int main(void)
 		cmocka_unit_test(uniform_layout_has_its_guard),
 		cmocka_unit_test(many_regions_and_guards),
 		cmocka_unit_test(size_limits_give_clear_errors),
+		cmocka_unit_test(plane_budgets_fit_every_aspect),
+		cmocka_unit_test(shared_budgets_fit),
+		cmocka_unit_test(a_frame_that_cannot_fit_shrinks),
 	};
 	return cmocka_run_group_tests_name("atlas", tests, NULL, NULL);
 }
