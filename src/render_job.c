@@ -67,10 +67,9 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen)
 {
 	memset(rep, 0, sizeof(*rep));
-	if (!lx_shadow_method_find(job->method)) {
-		snprintf(err, errlen, "unknown method '%s', expected %s", job->method, lx_shadow_method_names());
+	struct lx_method_options probe = job->budgets;
+	if (!lx_shadow_method_spec(job->method, &probe, err, errlen))
 		return 2;
-	}
 	if (job->width < 1 || job->height < 1) {
 		snprintf(err, errlen, "size %dx%d, expected at least 1x1", job->width, job->height);
 		return 2;

@@ -284,14 +284,9 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 	lx_gl.Disable(GL_CULL_FACE);
 }
 
-void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-			   bool decision)
+/* The main-pass variant for a set of maps, built when first used. */
+static struct main_program *variant_for(struct lx_renderer *r, bool decision, bool edges, unsigned mask)
 {
-	/* the variant for the maps this frame renders: no work for a map that is not there */
-	unsigned mask = 0;
-	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
-		mask |= res->maps[m].rendered ? 1u << m : 0;
-	bool edges = res->map_count > 1 && res->maps[0].rendered && res->maps[0].edge_count > 0;
 	struct main_program *p = &r->variant[decision][edges][mask];
 	if (!p->prog) {
 		char err[1024];
@@ -302,6 +297,29 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 			p = &r->variant[decision][r->d.map_count > 1][all];
 		}
 	}
+	return p;
+}
+
+/* The maps a draw of object id looks up: a plane with a map of its own reads only that
+ * map (its pixels are that map's receivers: where it does not serve, no caster's shadow
+ * falls), so it fetches once like a one-map method; any other object tries the rendered
+ * maps in order. */
+static unsigned object_mask(const struct lx_shadow_result *res, int id, unsigned all)
+{
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
+		if (res->maps[m].rendered && res->maps[m].plane >= 0 && res->maps[m].plane == id)
+			return 1u << m;
+	return all;
+}
+
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			   bool decision)
+{
+	/* the variant for the maps this frame renders: no work for a map that is not there */
+	unsigned all = 0;
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
+		all |= res->maps[m].rendered ? 1u << m : 0;
+	bool has_edges = res->map_count > 1 && res->maps[0].rendered && res->maps[0].edge_count > 0;
 	const struct lx_atlas *atlas = r->d.atlas;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
 	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
@@ -313,64 +331,82 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	else
 		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-	lx_gl.UseProgram(p->prog);
 	float vp[16];
 	to_float(&f->view.view_proj, vp);
-	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
 	const struct lx_light *L = &f->light;
-	if (L->directional)
-		lx_gl.Uniform4f(p->light, (float)L->direction.x, (float)L->direction.y, (float)L->direction.z, 0);
-	else
-		lx_gl.Uniform4f(p->light, (float)L->position.x, (float)L->position.y, (float)L->position.z, 1);
-	if (r->d.map_count > 0) {
-		float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], edges[LX_MAX_MAP_EDGES][3];
-		for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
-			edges[e][0] = edges[e][1] = 0, edges[e][2] = 1;
-		for (int m = 0; m < r->d.map_count; m++) {
-			const struct lx_shadow_map *map = &res->maps[m];
-			mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
-			to_float(&t, tex[m]);
-			if (!map->rendered) { /* an empty box: every lookup misses and reads lit */
-				region[m][0] = region[m][1] = 2;
-				region[m][2] = region[m][3] = -1;
-				continue;
-			}
-			/* region clip space -> atlas texture space: tex = o + s * clip */
-			const struct lx_region *g = &atlas->regions[map->region];
-			double sx = 0.5 * g->w / atlas->width, ox = (g->x + 0.5 * g->w) / atlas->width;
-			double sy = 0.5 * g->h / atlas->height, oy = (g->y + 0.5 * g->h) / atlas->height;
-			region[m][0] = (float)(ox + sx * map->bounds[0]);
-			region[m][1] = (float)(oy + sy * map->bounds[1]);
-			region[m][2] = (float)(ox + sx * map->bounds[2]);
-			region[m][3] = (float)(oy + sy * map->bounds[3]);
-			/* only the first map may carry point-line tests (shadow_method.h) */
-			for (int e = 0; m == 0 && e < map->edge_count; e++) {
-				const double *q = map->edges[e];
-				edges[e][0] = (float)(q[0] / sx);
-				edges[e][1] = (float)(q[1] / sy);
-				edges[e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
-			}
+	float light[4] = {(float)(L->directional ? L->direction.x : L->position.x),
+			  (float)(L->directional ? L->direction.y : L->position.y),
+			  (float)(L->directional ? L->direction.z : L->position.z), L->directional ? 0.0f : 1.0f};
+	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], edges[LX_MAX_MAP_EDGES][3];
+	for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
+		edges[e][0] = edges[e][1] = 0, edges[e][2] = 1;
+	for (int m = 0; m < r->d.map_count; m++) {
+		const struct lx_shadow_map *map = &res->maps[m];
+		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
+		to_float(&t, tex[m]);
+		if (!map->rendered) { /* an empty box: every lookup misses and reads lit */
+			region[m][0] = region[m][1] = 2;
+			region[m][2] = region[m][3] = -1;
+			continue;
 		}
-		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
-		lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
-		if (r->d.map_count > 1)
-			lx_gl.Uniform3fv(p->edges, LX_MAX_MAP_EDGES, edges[0]);
-		lx_gl.Uniform1f(p->bias, r->bias_uniform);
-		lx_gl.Uniform1i(p->atlas, 0);
-		lx_gl.ActiveTexture(GL_TEXTURE0);
-		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+		/* region clip space -> atlas texture space: tex = o + s * clip */
+		const struct lx_region *g = &atlas->regions[map->region];
+		double sx = 0.5 * g->w / atlas->width, ox = (g->x + 0.5 * g->w) / atlas->width;
+		double sy = 0.5 * g->h / atlas->height, oy = (g->y + 0.5 * g->h) / atlas->height;
+		region[m][0] = (float)(ox + sx * map->bounds[0]);
+		region[m][1] = (float)(oy + sy * map->bounds[1]);
+		region[m][2] = (float)(ox + sx * map->bounds[2]);
+		region[m][3] = (float)(oy + sy * map->bounds[3]);
+		/* only the first map may carry point-line tests (shadow_method.h) */
+		for (int e = 0; m == 0 && e < map->edge_count; e++) {
+			const double *q = map->edges[e];
+			edges[e][0] = (float)(q[0] / sx);
+			edges[e][1] = (float)(q[1] / sy);
+			edges[e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
+		}
 	}
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	if (r->d.map_count > 0) {
+		lx_gl.ActiveTexture(GL_TEXTURE0);
+		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	}
+	/* one program per set of maps, each drawing the objects that use that set */
 	const struct lx_scene *s = r->d.scene;
-	for (int id = 0; id < r->objects; id++) {
-		vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
-		lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
-		lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
-		lx_gl.Uniform1f(p->object_id, (float)id);
-		bind_mesh(r, id, true);
-		lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+	unsigned done[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
+	int ndone = 0;
+	for (int first = 0; first < r->objects; first++) {
+		unsigned mask = object_mask(res, first, all);
+		bool seen = false;
+		for (int k = 0; k < ndone; k++)
+			seen |= done[k] == mask;
+		if (seen)
+			continue;
+		done[ndone++] = mask;
+		bool edges_here = has_edges && (mask & 1u) && mask != 1u; /* a plane's own map needs no edges */
+		struct main_program *p = variant_for(r, decision, edges_here, mask);
+		lx_gl.UseProgram(p->prog);
+		lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
+		lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
+		if (r->d.map_count > 0) {
+			lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
+			lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
+			if (edges_here)
+				lx_gl.Uniform3fv(p->edges, LX_MAX_MAP_EDGES, edges[0]);
+			lx_gl.Uniform1f(p->bias, r->bias_uniform);
+			lx_gl.Uniform1i(p->atlas, 0);
+		}
+		for (int id = first; id < r->objects; id++) {
+			if (object_mask(res, id, all) != mask)
+				continue;
+			vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+			lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+			lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+			lx_gl.Uniform1f(p->object_id, (float)id);
+			bind_mesh(r, id, true);
+			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+		}
 	}
 }
 
