@@ -8,8 +8,12 @@ void main()
 {
 	vec4 p = u_light_clip * vec4(a_position, 1.0);
 	// Casters nearer the light than the near plane are flattened onto it rather than
-	// clipped ("pancaking"): still nearer than every receiver, they still cast.
-	p.z = max(p.z, -p.w);
+	// clipped ("pancaking"): still nearer than every receiver, they still cast. Only in
+	// front of the light (w > 0): a vertex behind it (a plane map's w = 0 plane cuts
+	// through the scene) moved to z = -w would drag its edges' depth beyond the far
+	// plane, and the far clip would cut away the part in front.
+	if (p.w > 0.0)
+		p.z = max(p.z, -p.w);
 	v_zw = p.zw;
 	gl_Position = p;
 }

@@ -110,7 +110,7 @@ static bool layout_variable(struct lx_atlas *a, int max_size)
 			tall = r->w < r->h ? r->w : r->h;
 			sum = r->w + r->h;
 		}
-		area += (double)r->budget + (double)g * sum + (double)g * g;
+		area += (double)r->counted + (double)g * sum + (double)g * g; /* a frame holds the total budget at most */
 		if (tall > tallest)
 			tallest = tall;
 	}
@@ -171,6 +171,7 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 		r->budget = r->variable ? req[i].max_lixels : (long)req[i].w * req[i].h;
 		if (r->variable && r->budget < (long)r->w * r->h)
 			r->budget = (long)r->w * r->h;
+		r->counted = req[i].borrowed ? 0 : (long)req[i].w * req[i].h;
 	}
 	atlas->count = count;
 	atlas->guard = guard;
@@ -291,7 +292,7 @@ long lx_atlas_lixels(const struct lx_atlas *atlas)
 {
 	long s = 0;
 	for (int i = 0; i < atlas->count; i++)
-		s += atlas->regions[i].budget;
+		s += atlas->regions[i].counted;
 	return s;
 }
 

@@ -20,6 +20,7 @@
 struct lx_region {
 	char name[LX_REGION_NAME_MAX];
 	long budget;  /* the most lixels it may hold in a frame */
+	long counted; /* what it adds to the total budget: w x h as requested, 0 when borrowed */
 	bool variable; /* its shape changes per frame (else it is always its requested w x h) */
 	int w, h;     /* this frame's size in the texture, in lixels; 0 x 0 when not placed */
 	int x, y;     /* lower-left lixel inside the atlas texture */
@@ -39,12 +40,15 @@ struct lx_region_request {
 	int w, h;        /* its size at start; always, unless max_lixels is set */
 	long max_lixels; /* 0: a fixed region; else the region's shape follows the frame and
 			    it may hold up to this many lixels in one frame */
+	bool borrowed;   /* its lixels come out of other regions' budgets (a map's second
+			    piece, shared budgets): it adds nothing to the atlas's total */
 };
 
 /* Validates the requests and fixes the texture: for fixed regions only, the smallest
  * shelf packing (then the squarest); with variable regions, a size in which any frame's
  * shapes fit (each within its max_lixels and max_side, in any aspect), at most
- * min(max_size, LX_ATLAS_MAX_SIDE) on a side. The regions start at their requested
+ * min(max_size, LX_ATLAS_MAX_SIDE) on a side, provided a frame's regions together hold
+ * no more than the total budget. The regions start at their requested
  * sizes. Returns false with a one-line reason in err when a request is invalid or the
  * regions cannot fit. */
 bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req, int count,
@@ -57,7 +61,8 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
  * returns how many times that happened. */
 int lx_atlas_pack(struct lx_atlas *atlas, const int *w, const int *h);
 const struct lx_region *lx_atlas_find(const struct lx_atlas *atlas, const char *name);
-long lx_atlas_lixels(const struct lx_atlas *atlas);  /* sum of the budgets */
+/* The total budget: the most lixels a frame's regions hold together (sum of counted). */
+long lx_atlas_lixels(const struct lx_atlas *atlas);
 long lx_atlas_placed(const struct lx_atlas *atlas);  /* lixels of this frame's regions */
 double lx_atlas_fill(const struct lx_atlas *atlas);  /* placed lixels / texture texels */
 

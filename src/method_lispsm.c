@@ -27,7 +27,7 @@ double lx_lispsm_warp(double y, double n, double d)
 static int lispsm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"lispsm", o->uniform_lixels, o->uniform_lixels, 0};
+	out[0] = (struct lx_region_request){"lispsm", o->uniform_lixels, o->uniform_lixels, 0, false};
 	return 1;
 }
 

@@ -16,6 +16,9 @@
 
 #define PLANE_MAPS 2
 
+/* The regions: one per plane of interest (at most two), the fallback, and with fitted
+ * shapes a second piece that one plane map may take when its casters' footprints form two
+ * clusters apart (plane_pieces). */
 static int plane_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	int n = 0, planes = s->plane_count < PLANE_MAPS ? s->plane_count : PLANE_MAPS;
@@ -23,8 +26,21 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 	/* fitted maps vary their shape per frame; shared budgets let one take the others' rest */
 	long most = o->square_regions ? 0 : o->shared_budget ? budget * planes : budget;
 	for (int i = 0; i < planes; i++)
-		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most};
-	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, 0};
+		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most, false};
+	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, 0, false};
+	if (!o->square_regions && planes > 0) {
+		/* a name no plane has: the regions' names must differ */
+		static const char *const names[] = {"piece", "second-piece", "piece-2", "plane-piece"};
+		const char *name = NULL;
+		for (int k = 0; k < 4 && !name; k++) {
+			bool taken = !strcmp(names[k], "fallback");
+			for (int i = 0; i < planes; i++)
+				taken |= !strcmp(s->planes[i].name, names[k]);
+			name = taken ? NULL : names[k];
+		}
+		if (name)
+			out[n++] = (struct lx_region_request){name, 1, 1, most, true};
+	}
 	return n;
 }
 
@@ -110,9 +126,13 @@ struct plane_chart {
 	vec3 world[32];
 	int nw;
 	double cs, sn;     /* the twist */
+	double mx;         /* -1: the eye sees the plane from its unlit side, and the image is mirrored */
 	bool on_grid;      /* the twist is a multiple of a quarter turn: pixel centres stay on a grid */
 	bool twisted;
 	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
+	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
+	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
+	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
@@ -125,6 +145,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	vec4 pi = lx_plane_equation(P);
 	vec3 n = v3(pi.x, pi.y, pi.z);
 	const struct lx_light *light = &f->light;
+	ch->needs_fallback = false;
 	/* the lit side faces away from the light: every point of the plane is shadowed by
 	 * the facing rule, so its map would decide nothing */
 	double facing = light->directional ? -v3_dot(n, light->direction) : dot4p(pi, light->position);
@@ -133,13 +154,16 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		lx_shadow_warn(out, light->directional ? "plane %s: the light grazes the plane; its map is skipped and the fallback map serves it"
 						     : "plane %s: the light is within %.3g m of the plane; its map is skipped and the fallback map serves it",
 			       P->name, near_limit);
+		ch->needs_fallback = true;
 		return false;
 	}
 	if (facing < 0)
 		return false;
 	if (!lx_plane_visible(v, P, &ch->win, ch->world, &ch->nw)) {
-		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && ch->nw > 0)
-			lx_shadow_warn(out, "plane %s is seen edge-on: no map for it this frame", P->name);
+		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && ch->nw > 0) {
+			lx_shadow_warn(out, "plane %s is seen edge-on: no map for it this frame; the fallback map serves it", P->name);
+			ch->needs_fallback = true;
+		}
 		return false; /* not in view: no pass, no fill */
 	}
 	vec3 c = v3(0, 0, 0);
@@ -150,6 +174,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		static const char *const why[] = {"", "the light lies in the plane", "the eye lies in the plane",
 						  "the five-point system is singular"};
 		lx_shadow_warn(out, "plane %s: %s; its map is skipped and the fallback map serves it", P->name, why[st]);
+		ch->needs_fallback = true;
 		return false;
 	}
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
@@ -179,6 +204,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	}
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
 		return false; /* no caster over the visible plane: nothing to shadow there */
+	int ncast = np / 8; /* with every caster bounded, 8 corners each (np never hits its cap: 8 x 40 < 256) */
 
 	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
 	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
@@ -192,31 +218,95 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		static const double c4[4] = {1, 0, -1, 0}, s4[4] = {0, 1, 0, -1};
 		ch->cs = c4[k], ch->sn = s4[k];
 	}
+	/* The map's image of the plane is the view's: seen from the side away from the light
+	 * it is mirrored, and faces turned to the light would wind clockwise in it (the
+	 * shadow pass culls front faces and would store them): mirror x back. */
+	ch->mx = dot4p(pi, v->eye) < 0 ? -1 : 1;
 	struct lx_poly rot = wanted;
 	for (int k = 0; k < rot.n; k++)
-		rot.v[k] = (vec2){ch->cs * wanted.v[k].x - ch->sn * wanted.v[k].y, ch->sn * wanted.v[k].x + ch->cs * wanted.v[k].y};
+		rot.v[k] = (vec2){ch->mx * (ch->cs * wanted.v[k].x - ch->sn * wanted.v[k].y), ch->sn * wanted.v[k].x + ch->cs * wanted.v[k].y};
 	lx_poly_bounds(&rot, &ch->x0, &ch->y0, &ch->x1, &ch->y1);
+	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces) */
+	ch->feet = 0;
+	for (int c = 0; bounded && c < ncast; c++) {
+		struct lx_poly one, on;
+		lx_poly_hull(pts + 8 * c, 8, &one);
+		lx_poly_intersect(&ch->win, &one, &on);
+		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
+			continue;
+		for (int k = 0; k < on.n; k++)
+			on.v[k] = (vec2){ch->mx * (ch->cs * on.v[k].x - ch->sn * on.v[k].y), ch->sn * on.v[k].x + ch->cs * on.v[k].y};
+		double *b = ch->foot[ch->feet++];
+		lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+	}
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
-/* A_l's scale and translation: u = scale (R p - (x0, y0)) + offset, in a map of w x h
- * lixels whose used part is [offset, uw] x [offset, vh]. */
+/* The rectangles a plane's map is cut into: one around all the casters' footprints, or
+ * two around two clusters of them when those cover much less (one similarity for both,
+ * each rectangle its own region of the atlas). Clusters: the footprints sorted along x or
+ * along y, split where the two bounding rectangles' areas add up least. */
+#define PIECES_MAX 2
+struct plane_pieces {
+	int n;
+	double r[PIECES_MAX][4]; /* x0, y0, x1, y1 */
+};
+
+static double rect_area(const double *r) { return (r[2] - r[0] + 1) * (r[3] - r[1] + 1); }
+
+static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct plane_pieces *pc)
+{
+	pc->n = 1;
+	pc->r[0][0] = ch->x0, pc->r[0][1] = ch->y0, pc->r[0][2] = ch->x1, pc->r[0][3] = ch->y1;
+	if (!allow_two || ch->feet < 2)
+		return;
+	double best = 0.8 * rect_area(pc->r[0]); /* two pieces only where they save a fifth or more */
+	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
+	for (int axis = 0; axis < 2; axis++) {
+		for (int i = 0; i < ch->feet; i++)
+			order[i] = i;
+		for (int i = 1; i < ch->feet; i++) /* by the footprints' centres along the axis */
+			for (int j = i; j > 0 && ch->foot[order[j]][axis] + ch->foot[order[j]][axis + 2] <
+							 ch->foot[order[j - 1]][axis] + ch->foot[order[j - 1]][axis + 2]; j--) {
+				int t = order[j];
+				order[j] = order[j - 1];
+				order[j - 1] = t;
+			}
+		for (int cut = 1; cut < ch->feet; cut++) {
+			double g[2][4] = {{INFINITY, INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, -INFINITY, -INFINITY}};
+			for (int i = 0; i < ch->feet; i++) {
+				double *r = g[i >= cut], *b = (double *)ch->foot[order[i]];
+				r[0] = fmin(r[0], b[0]), r[1] = fmin(r[1], b[1]), r[2] = fmax(r[2], b[2]), r[3] = fmax(r[3], b[3]);
+			}
+			bool apart = g[0][2] + 2 < g[1][0] || g[1][2] + 2 < g[0][0] || g[0][3] + 2 < g[1][1] || g[1][3] + 2 < g[0][1];
+			double a = rect_area(g[0]) + rect_area(g[1]);
+			if (apart && a < best) {
+				best = a;
+				pc->n = 2;
+				memcpy(pc->r, g, sizeof g);
+			}
+		}
+	}
+}
+
+/* A_l's scale and translation for one piece: u = scale (R p - (x0, y0)) + offset, in a
+ * map of w x h lixels whose used part is [offset, uw] x [offset, vh]. */
 struct plane_fit {
 	double scale, x0, y0, offset, uw, vh;
 	int w, h;
 };
 
-/* Sizes the map. A fixed (square) region: the paper's uniform scale down when the
- * budget cannot give a lixel per pixel. A fitted region: the scale is set by area, so the
- * budget's lixels all cover wanted pixels, in a w x h that follows the rectangle's
- * aspect; where the budget gives a pixel one lixel or more on an unturned pixel grid the
- * scale is a whole number and lixel centres fall on pixel centres. */
-static void fit_plane(const struct plane_chart *ch, const struct lx_region *g, const struct lx_atlas *atlas,
-		      long budget, double max_lpp, struct plane_fit *fit)
+/* Sizes the pieces' maps, one scale for all. A fixed (square) region: the paper's
+ * uniform scale down when the budget cannot give a lixel per pixel. A fitted region: the
+ * scale is set by area, so the budget's lixels all cover wanted pixels, in shapes that
+ * follow the rectangles; where the budget gives a pixel one lixel or more on an unturned
+ * pixel grid the scale is a whole number and lixel centres fall on pixel centres. */
+static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *pc, const struct lx_region *g,
+		      const struct lx_atlas *atlas, long budget, double max_lpp, struct plane_fit *fit)
 {
-	double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
-	*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0};
-	if (!g->variable) {
+	if (!g->variable) { /* one piece (plane_build) */
+		double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
+		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0};
 		fit->scale = fmin(1.0, fmin(g->w / rw, g->h / rh));
 		fit->w = g->w, fit->h = g->h;
 		if (fit->scale == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
@@ -231,31 +321,47 @@ static void fit_plane(const struct plane_chart *ch, const struct lx_region *g, c
 		return;
 	}
 	int side = atlas->max_side > 1 ? atlas->max_side : 1;
-	double s = sqrt((double)budget / (rw * rh));
+	double area = 0, longest = 0;
+	for (int k = 0; k < pc->n; k++) {
+		area += (pc->r[k][2] - pc->r[k][0]) * (pc->r[k][3] - pc->r[k][1]); /* > 0: inside the chart's bounds */
+		longest = fmax(longest, fmax(pc->r[k][2] - pc->r[k][0], pc->r[k][3] - pc->r[k][1]));
+	}
+	double s = sqrt((double)budget / fmax(area, 1e-300));
 	if (max_lpp > 0)
 		s = fmin(s, sqrt(max_lpp));
-	s = fmin(s, fmin((side - 1) / rw, (side - 1) / rh)); /* the long side within the texture */
+	s = fmin(s, (side - 1) / longest); /* the long side within the texture */
 	if (ch->on_grid && s >= 1) {
 		/* whole lixels per pixel, the translation in whole pixels: pixel centres land on
 		 * lixel centres (an even scale puts them on corners, half a lixel off) */
 		for (double k = floor(s); k >= 1; k--) {
-			double x0 = floor(ch->x0), y0 = floor(ch->y0), off = fmod(k, 2) == 0 ? 0.5 : 0;
-			double uw = k * (ch->x1 - x0) + off, vh = k * (ch->y1 - y0) + off;
-			int w = (int)ceil(uw), h = (int)ceil(vh);
-			if ((long)w * h <= budget && w <= side && h <= side) {
-				*fit = (struct plane_fit){k, x0, y0, off, uw, vh, w, h};
-				return;
+			long total = 0;
+			bool fits = true;
+			for (int p = 0; p < pc->n; p++) {
+				double x0 = floor(pc->r[p][0]), y0 = floor(pc->r[p][1]), off = fmod(k, 2) == 0 ? 0.5 : 0;
+				double uw = k * (pc->r[p][2] - x0) + off, vh = k * (pc->r[p][3] - y0) + off;
+				int w = (int)ceil(uw), h = (int)ceil(vh);
+				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h};
+				total += (long)w * h;
+				fits &= w <= side && h <= side;
 			}
+			if (fits && total <= budget)
+				return;
 		}
 	}
 	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
-		int w = (int)ceil(s * rw), h = (int)ceil(s * rh);
-		w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-		if (((long)w * h <= budget && w <= side && h <= side) || tries == 63) {
-			*fit = (struct plane_fit){s, ch->x0, ch->y0, 0, fmin(w, s * rw), fmin(h, s * rh), w, h};
-			return;
+		long total = 0;
+		int worst = 0;
+		for (int p = 0; p < pc->n; p++) {
+			double rw = pc->r[p][2] - pc->r[p][0], rh = pc->r[p][3] - pc->r[p][1];
+			int w = (int)ceil(s * rw), h = (int)ceil(s * rh);
+			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
+			fit[p] = (struct plane_fit){s, pc->r[p][0], pc->r[p][1], 0, fmin(w, s * rw), fmin(h, s * rh), w, h};
+			total += (long)w * h;
+			worst = w > worst ? w : h > worst ? h : worst;
 		}
-		s *= 0.999 * fmin(sqrt((double)budget / ((double)w * h)), fmin((double)side / w, (double)side / h));
+		if ((total <= budget && worst <= side) || tries == 63)
+			return;
+		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
 	}
 }
 
@@ -400,36 +506,67 @@ static void served_on_g(const struct lx_frame *f, const struct lx_light_space *l
 	lx_poly_hull(corners, nc, served);
 }
 
-/* Builds plane i's map from its chart and lixel budget; returns the rays it serves as
- * a polygon on G (empty when none or when they cannot be charted there). */
+/* Builds plane i's map from its chart and lixel budget, and its second piece's map when
+ * `second` is given and two rectangles serve the plane better than one; returns the rays
+ * the first map serves as a polygon on G (empty when none or when they cannot be charted
+ * there). */
 static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
 			    const struct plane_chart *ch, int i, int next, long budget, double max_lpp, const vec4 *faces,
-			    int nfaces, struct lx_shadow_map *map, struct lx_shadow_result *out, struct lx_poly *served)
+			    int nfaces, struct lx_shadow_map *map, struct lx_shadow_map *second,
+			    struct lx_shadow_result *out, struct lx_poly *served)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
 	const struct lx_region *g = &atlas->regions[map->region];
-	struct plane_fit fit;
-	fit_plane(ch, g, atlas, budget, max_lpp, &fit);
-	/* window (x q, y q, z q, q) -> region clip: x_clip = 2 u / w - 1 */
+	bool edges = i == 0 && next >= 0 && !ch->twisted;
+	struct plane_pieces pc;
+	/* a second piece where the atlas has room for one and no point-line tests are needed
+	 * (only the first map carries them) */
+	plane_pieces(ch, g->variable && second && !edges, &pc);
+	struct plane_fit fit[PIECES_MAX];
+	fit_plane(ch, &pc, g, atlas, budget, max_lpp, fit);
+	/* Depth once for all pieces (A_l leaves z alone), over their common rectangle. */
 	mat4 a = m4_identity();
-	double kx = 2.0 / fit.w, ky = 2.0 / fit.h, sc = fit.scale;
-	a.m[0] = kx * sc * ch->cs, a.m[4] = -kx * sc * ch->sn, a.m[12] = kx * (fit.offset - sc * fit.x0) - 1;
-	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (fit.offset - sc * fit.y0) - 1;
+	double kx = 2.0 / fit[0].w, ky = 2.0 / fit[0].h, sc = fit[0].scale;
+	a.m[0] = kx * sc * ch->cs * ch->mx, a.m[4] = -kx * sc * ch->sn * ch->mx, a.m[12] = kx * (fit[0].offset - sc * fit[0].x0) - 1;
+	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (fit[0].offset - sc * fit[0].y0) - 1;
 	mat4 m = m4_mul(&a, &ch->cam.m);
-	double b[4] = {kx * fit.offset - 1, ky * fit.offset - 1, kx * fit.uw - 1, ky * fit.vh - 1};
-	if (!fit_depth(f, ch, b, faces, nfaces, &m, out, P->name))
+	double all[4] = {kx * fit[0].offset - 1, ky * fit[0].offset - 1, kx * fit[0].uw - 1, ky * fit[0].vh - 1};
+	if (pc.n > 1) { /* the bounds of both pieces in the first piece's clip space */
+		all[0] = fmin(all[0], kx * (sc * (pc.r[1][0] - fit[0].x0) + fit[0].offset) - 1);
+		all[1] = fmin(all[1], ky * (sc * (pc.r[1][1] - fit[0].y0) + fit[0].offset) - 1);
+		all[2] = fmax(all[2], kx * (sc * (pc.r[1][2] - fit[0].x0) + fit[0].offset) - 1);
+		all[3] = fmax(all[3], ky * (sc * (pc.r[1][3] - fit[0].y0) + fit[0].offset) - 1);
+	}
+	if (!fit_depth(f, ch, all, faces, nfaces, &m, out, P->name))
 		return;
-	map->light_clip = m;
-	memcpy(map->bounds, b, sizeof b);
-	map->lixel_scale = sc;
-	map->w = fit.w, map->h = fit.h;
-	map->rendered = true;
-	struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
-	/* only where a later plane map can take the rays that miss this plane and no twist
-	 * already sends them out of bounds (a table top over the floor) */
-	if (i == 0 && next >= 0 && !ch->twisted)
-		plane_edges(&f->view, P, &a, map, &served_clip);
-	served_on_g(f, ls, &m, &served_clip, served);
+	for (int k = 0; k < pc.n; k++) {
+		struct lx_shadow_map *mp = k == 0 ? map : second;
+		const struct plane_fit *ft = &fit[k];
+		double kxk = 2.0 / ft->w, kyk = 2.0 / ft->h;
+		mat4 ak = m4_identity();
+		ak.m[0] = kxk * sc * ch->cs * ch->mx, ak.m[4] = -kxk * sc * ch->sn * ch->mx, ak.m[12] = kxk * (ft->offset - sc * ft->x0) - 1;
+		ak.m[1] = kyk * sc * ch->sn, ak.m[5] = kyk * sc * ch->cs, ak.m[13] = kyk * (ft->offset - sc * ft->y0) - 1;
+		mat4 mk = m4_mul(&ak, &ch->cam.m);
+		for (int c = 0; c < 4; c++) /* the shared depth row */
+			mk.m[c * 4 + 2] = m.m[c * 4 + 2];
+		if (!m4_finite(&mk))
+			continue;
+		double b[4] = {kxk * ft->offset - 1, kyk * ft->offset - 1, kxk * ft->uw - 1, kyk * ft->vh - 1};
+		mp->light_clip = mk;
+		memcpy(mp->bounds, b, sizeof b);
+		mp->lixel_scale = sc;
+		mp->w = ft->w, mp->h = ft->h;
+		mp->plane = i;
+		mp->rendered = true;
+		if (k > 0)
+			continue;
+		struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
+		/* only where a later plane map can take the rays that miss this plane and no twist
+		 * already sends them out of bounds (a table top over the floor) */
+		if (edges)
+			plane_edges(&f->view, P, &ak, mp, &served_clip);
+		served_on_g(f, ls, &mk, &served_clip, served);
+	}
 }
 
 /* Each plane map's lixels this frame: its own budget, or with shared budgets what the
@@ -460,11 +597,65 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 	}
 }
 
+/* Whether a world box is outside the view frustum (all corners beyond one clip plane). */
+static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
+{
+	int out[6] = {0};
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_point(&v->view_proj, v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
+		out[0] += c.x < -c.w, out[1] += c.x > c.w, out[2] += c.y < -c.w;
+		out[3] += c.y > c.w, out[4] += c.z < -c.w, out[5] += c.z > c.w;
+	}
+	for (int i = 0; i < 6; i++)
+		if (out[i] == 8)
+			return true;
+	return false;
+}
+
+/* The fallback's rays on G (papers/003's unit cube clipping, on its own receivers): the
+ * casters' boxes in view (their surfaces are receivers no plane map serves) and the
+ * visible part of each plane that needs it, within what the casters cover. False when a
+ * point cannot be charted on G (a receiver behind the point light). */
+static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *needs,
+			    struct lx_poly *want)
+{
+	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
+	int n = 0;
+	for (int id = f->scene->plane_count; id < f->object_count; id++) {
+		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
+			continue;
+		for (int k = 0; k < 8; k++) {
+			vec4 X = {k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
+				  k & 4 ? f->bmax[id].z : f->bmin[id].z, 1};
+			if (!lx_light_space_chart(ls, f, X, &pts[n++]))
+				return false;
+		}
+	}
+	for (int p = 0; p < f->scene->plane_count; p++) {
+		struct lx_poly win;
+		vec3 world[32];
+		int nw = 0;
+		/* an edge-on plane is not "visible" but still gives its polygon in the view */
+		if (!needs[p] || (!lx_plane_visible(&f->view, &f->scene->planes[p], &win, world, &nw) && nw == 0))
+			continue;
+		for (int k = 0; k < nw && k < 32; k++)
+			if (!lx_light_space_chart(ls, f, (vec4){world[k].x, world[k].y, world[k].z, 1}, &pts[n++]))
+				return false;
+	}
+	struct lx_poly rec;
+	lx_poly_hull(pts, n, &rec);
+	if (ls->casters_unbounded || ls->receivers_behind || ls->casters.n < 3)
+		*want = rec;
+	else
+		lx_poly_intersect(&rec, &ls->casters, want);
+	return true;
+}
+
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
 	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
-	int np = atlas->count - 1;
+	int np = f->scene->plane_count < PLANE_MAPS ? f->scene->plane_count : PLANE_MAPS;
 	out->map_count = atlas->count;
 	for (int i = 0; i < atlas->count; i++) {
 		out->maps[i] = (struct lx_shadow_map){.region = i, .rendered = false, .light_clip = m4_identity()};
@@ -484,20 +675,30 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, out, &ch[i]);
 	plane_budgets(atlas, o, ch, ok, np, budget);
 	struct lx_poly served[PLANE_MAPS] = {{0}};
-	for (int i = 0; i < np; i++)
-		if (ok[i])
-			build_plane_map(f, &ls, atlas, &ch[i], i, i + 1 < np ? i + 1 : -1, budget[i], o->plane_max_lpp,
-					faces, nfaces, &out->maps[i], out, &served[i]);
-	/* the fallback map: what is wanted and no plane map serves */
+	struct lx_shadow_map *piece = atlas->count > np + 1 ? &out->maps[np + 1] : NULL;
+	for (int i = 0; i < np; i++) {
+		if (!ok[i])
+			continue;
+		build_plane_map(f, &ls, atlas, &ch[i], i, i + 1 < np ? i + 1 : -1, budget[i], o->plane_max_lpp, faces,
+				nfaces, &out->maps[i], piece, out, &served[i]);
+		if (piece && piece->rendered)
+			piece = NULL; /* taken */
+	}
+	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
-	struct lx_poly tot, rest;
+	bool needs[LX_MAX_PLANES] = {false};
+	for (int i = 0; i < f->scene->plane_count; i++)
+		needs[i] = i >= np || (ch[i].needs_fallback && !out->maps[i].rendered);
+	struct lx_poly want;
 	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (lx_light_space_wanted(&ls, &tot)) {
-		struct lx_poly none = {0};
-		lx_poly_hull_of_difference(&tot, &served[0], np > 1 ? &served[1] : &none, &rest);
-		if (rest.n < 3)
-			return; /* the plane maps serve every wanted ray */
-		lx_poly_bounds(&rest, &x0, &y0, &x1, &y1);
+	if (fallback_wanted(f, &ls, needs, &want)) {
+		if (want.n < 3)
+			return; /* no receiver off the planes in view */
+		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
+	} else if (lx_light_space_wanted(&ls, &want)) { /* not charted on G: all of C_tot */
+		if (want.n < 3)
+			return;
+		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
 }

@@ -21,7 +21,7 @@
 static int psm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	(void)s;
-	out[0] = (struct lx_region_request){"psm", o->uniform_lixels, o->uniform_lixels, 0};
+	out[0] = (struct lx_region_request){"psm", o->uniform_lixels, o->uniform_lixels, 0, false};
 	return 1;
 }
 

@@ -141,8 +141,8 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 	for (int m = 0; m < res->map_count; m++) {
 		if (res->maps[m].rendered)
 			hok[m] = lx_plane_homography(f, atlas, &res->maps[m], plane, &h[m]);
-		if (res->maps[m].rendered && res->maps[m].plane == plane)
-			out->map = m;
+		if (res->maps[m].rendered && res->maps[m].plane == plane && out->map < 0)
+			out->map = m; /* the first of the plane's own maps names them */
 	}
 	long n = (long)((w + stride - 1) / stride) * ((hgt + stride - 1) / stride); /* pixels visited */
 	double *lpp = malloc((size_t)n * sizeof(double)), *mm = malloc((size_t)n * sizeof(double));
@@ -160,8 +160,8 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 				continue;
 			if (!lx_pixel_on_plane(f, plane, x, y, &p))
 				continue;
-			int m = lx_shadow_select_map(res, p);
-			if (m < 0 || (out->map >= 0 && m != out->map) || !hok[m]) {
+			int m = lx_shadow_select_map(res, plane, p);
+			if (m < 0 || !hok[m]) {
 				out->unserved++;
 				continue;
 			}

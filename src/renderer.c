@@ -300,16 +300,12 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, bo
 	return p;
 }
 
-/* The maps a draw of object id looks up: a plane with a map of its own reads only that
- * map (its pixels are that map's receivers: where it does not serve, no caster's shadow
- * falls), so it fetches once like a one-map method; any other object tries the rendered
- * maps in order. */
+/* The maps a draw of object id looks up (lx_shadow_receiver_maps): a plane with maps of
+ * its own reads only those, once, like a one-map method. */
 static unsigned object_mask(const struct lx_shadow_result *res, int id, unsigned all)
 {
-	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
-		if (res->maps[m].rendered && res->maps[m].plane >= 0 && res->maps[m].plane == id)
-			return 1u << m;
-	return all;
+	(void)all;
+	return lx_shadow_receiver_maps(res, id);
 }
 
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,

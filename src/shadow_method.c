@@ -71,11 +71,27 @@ void lx_shadow_map_full(struct lx_shadow_map *m)
 	m->edge_count = 0;
 }
 
-int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p)
+unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
 {
-	for (int i = 0; i < r->map_count; i++) {
+	unsigned own = 0, shared = 0;
+	for (int i = 0; i < r->map_count && i < LX_MAX_MAPS; i++) {
 		const struct lx_shadow_map *m = &r->maps[i];
 		if (!m->rendered)
+			continue;
+		if (m->plane < 0)
+			shared |= 1u << i;
+		else if (m->plane == object)
+			own |= 1u << i;
+	}
+	return own ? own : shared;
+}
+
+int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p)
+{
+	unsigned mask = lx_shadow_receiver_maps(r, object);
+	for (int i = 0; i < r->map_count; i++) {
+		const struct lx_shadow_map *m = &r->maps[i];
+		if (!m->rendered || !(mask & 1u << i))
 			continue;
 		vec4 c = m4_mul_point(&m->light_clip, p);
 		if (!(c.w > 0))

@@ -80,9 +80,15 @@ const char *lx_shadow_method_names(void);
 
 /* A map that serves every ray of its region: bounds [-1, 1]^2, no edges, no plane. */
 void lx_shadow_map_full(struct lx_shadow_map *m);
-/* The map the main pass would use for world point p (the shader's choice, in double):
- * its index, or -1 when no rendered map serves p. */
-int lx_shadow_select_map(const struct lx_shadow_result *r, vec3 p);
+/* The maps a receiver object reads in the main pass, as a bit mask: a plane of interest
+ * with rendered maps of its own (map.plane == object) reads only those, since its pixels
+ * are their receivers and where they do not serve no caster's shadow falls; every other
+ * object reads the rendered maps that belong to no plane (the one map of a one-map
+ * method, the plane method's fallback). */
+unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object);
+/* The map the main pass would use for world point p of receiver object `object` (the
+ * shader's choice, in double): the first of its maps that serves p, or -1. */
+int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p);
 
 /* The shadow passes cull front faces in the map's image, so a face turned towards the
  * light must wind counter-clockwise there. A warp built in a mirrored space (a point

@@ -74,24 +74,42 @@ for platform in osmesa egl; do
   fi
 done
 
-# plane-optimal is the default: floor, wall and fallback maps with their budgets
+# The lixels of map NAME in the JSON of a render (w x h), or nothing.
+map_lixels() {
+  sed -n "s/.*\"name\": \"$1\", \"x\": [0-9]*, \"y\": [0-9]*, \"w\": \([0-9]*\), \"h\": \([0-9]*\).*/\1 \2/p" "$2" |
+    awk '{ print $1 * $2 }'
+}
+# plane-optimal is the default: floor, wall and fallback maps, the plane maps shaped per
+# frame within their budgets (350^2 lixels), the fallback 128x128
 if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr"; then
-  for key in '"method": "plane"' '"name": "floor", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' \
-      '"name": "wall", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' '"name": "fallback", "x": [0-9]*, "y": [0-9]*, "w": 128, "h": 128' \
-      '"lixels": 261384' '"lpp_spread": 1[,}]' '"aniso_max": 1[,}]'; do
+  for key in '"method": "plane"' '"name": "fallback", "x": [0-9]*, "y": [0-9]*, "w": 128, "h": 128' \
+      '"lixels": 261384' '"lpp_spread": 1[,}]' '"aniso_max": 1[,}]' '"atlas_fill": 0\.[0-9]'; do
     grep -q "$key" "$tmp/json" && ok || no "plane JSON lacks $key: $(cat "$tmp/json")"
+  done
+  for name in floor wall; do
+    n=$(map_lixels $name "$tmp/json")
+    [ -n "$n" ] && [ "$n" -gt 60000 ] && [ "$n" -le 122500 ] && ok || no "plane map $name holds '$n' lixels, expected its 350^2 budget mostly used"
   done
   grep -qiE 'nan|inf' "$tmp/json" && no "plane JSON holds NaN or Infinity" || ok
 else
   no "default render failed: $(cat "$tmp/stderr")"
 fi
+# the paper's square maps on request
+"$lixel" render --region-shape square --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>&1 &&
+  grep -q '"name": "floor", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' "$tmp/json" && ok ||
+  no "square maps: $(cat "$tmp/json")"
 "$lixel" render --scene table --plane-lixels 200 --fallback-lixels 64 --json --size 96x64 --frames 1 --out "$tmp/t.png" >"$tmp/json" 2>&1 &&
-  grep -q '"name": "table", "x": [0-9]*, "y": [0-9]*, "w": 200, "h": 200' "$tmp/json" && grep -q '"lixels": 84096' "$tmp/json" && ok ||
+  n=$(map_lixels table "$tmp/json") && [ -n "$n" ] && [ "$n" -le 40000 ] && grep -q '"lixels": 84096' "$tmp/json" && ok ||
   no "table scene with budgets: $(cat "$tmp/json")"
+expect_bad "region shape" render --region-shape round $out
+expect_bad "budget split" render --budget-split half $out
+expect_bad "max lpp" render --plane-max-lpp 0 $out
+expect_bad "method option" render --method plane/round $out
+expect_bad "bench method option" bench --methods uniform,plane/lpp-1 --frames 1
 expect_bad "zero budget" render --plane-lixels 0 $out
 expect_bad "huge budget" render --uniform-lixels 100000 $out
 expect_bad "atlas too big for the GL" render --plane-lixels 8192 $out
-grep -q "exceeds the GL maximum texture size\|do not fit" "$tmp/stderr" && ok || no "atlas error: $(cat "$tmp/stderr")"
+grep -q "exceeds the maximum texture size\|do not fit" "$tmp/stderr" && ok || no "atlas error: $(cat "$tmp/stderr")"
 
 # the scene file of the built-in scene and the text output
 if "$lixel" render --scene tests/data/default.scene --config low --size 64x64 --frames 1 --out "$tmp/s.png" >"$tmp/text" 2>&1; then

@@ -1,11 +1,13 @@
 /* The coverage check shared by the method tests: every shadow that can fall on a
  * visible receiver is captured. For caster points c (sampled in the casters' boxes) and
  * receiver points r beyond c on the same light ray inside the view frustum and the
- * scene box, the map that serves r (lx_shadow_select_map, the shader's choice) holds c
+ * scene box (on a plane, or in a caster's box), the map that serves r
+ * (lx_shadow_select_map for r's object, the shader's choice) holds c
  * on the same lixel with -1 <= depth(c) <= depth(r) <= 1 (a map that declares pancaking
  * clamps depth(c) to -1 as its shadow pass does). Include after test_util.h. */
 #ifndef LX_SHADOW_COVERAGE_H
 #define LX_SHADOW_COVERAGE_H
+#include "plane_optimal.h"
 #include "shadow_method.h"
 
 static bool in_receivers(const struct lx_frame *f, vec3 p)
@@ -17,7 +19,46 @@ static bool in_receivers(const struct lx_frame *f, vec3 p)
 	       p.z >= f->scene_min.z - e && p.z <= f->scene_max.z + e;
 }
 
-/* Returns the number of caster/receiver pairs checked; fails the test on the first miss. */
+/* The point where the ray from c along dir meets plane p's parallelogram beyond c. */
+static bool ray_on_plane(const struct lx_plane *P, vec3 c, vec3 dir, vec3 *r)
+{
+	vec4 e = lx_plane_equation(P);
+	double den = e.x * dir.x + e.y * dir.y + e.z * dir.z;
+	if (!(fabs(den) > 1e-12))
+		return false;
+	double t = -(e.x * c.x + e.y * c.y + e.z * c.z + e.w) / den;
+	if (!(t > 1e-9))
+		return false;
+	*r = v3_add(c, v3_scale(dir, t));
+	vec3 d = v3_sub(*r, P->corner);
+	double e11 = v3_dot(P->edge1, P->edge1), e22 = v3_dot(P->edge2, P->edge2), e12 = v3_dot(P->edge1, P->edge2);
+	double det = e11 * e22 - e12 * e12, r1 = v3_dot(d, P->edge1), r2 = v3_dot(d, P->edge2);
+	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det; /* det > 0: edges not parallel */
+	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+}
+
+/* Checks the map that serves receiver r of object `object` holds caster point c. */
+static void check_pair(const struct lx_shadow_result *res, int object, vec3 c, vec3 r, const char *what)
+{
+	int m = lx_shadow_select_map(res, object, r);
+	if (m < 0)
+		fail_msg("%s: receiver (%g, %g, %g) of object %d behind caster point (%g, %g, %g) is served by no map (%s)",
+			 what, r.x, r.y, r.z, object, c.x, c.y, c.z, res->warning_count ? res->warnings[0] : "no warning");
+	const mat4 *lc = &res->maps[m].light_clip;
+	vec4 pc = m4_mul_point(lc, c), pr = m4_mul_point(lc, r);
+	if (!(pc.w > 0 && pr.w > 0))
+		fail_msg("%s: map %d: caster or receiver behind the light image", what, m);
+	double zc = pc.z / pc.w, zr = pr.z / pr.w;
+	if (res->maps[m].pancake)
+		zc = fmax(zc, -1); /* the shadow pass flattens it onto the near plane */
+	if (!(zc >= -1 - 1e-7 && zr <= 1 + 1e-7 && zc <= zr + 1e-9))
+		fail_msg("%s: map %d: depths caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)", what, m, zc, zr);
+	assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6); /* same ray, same lixel */
+}
+
+/* Returns the number of caster/receiver pairs checked; fails the test on the first miss.
+ * Receivers are the points of the planes' parallelograms and of the casters' boxes, each
+ * looked up in the maps its object reads (lx_shadow_receiver_maps). */
 static long check_coverage(const struct lx_frame *f, const struct lx_shadow_result *res, int plane_count,
 			   uint64_t *seed, int samples, const char *what)
 {
@@ -31,26 +72,25 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
 			if (!v3_normalize(dir, &dir))
 				continue;
+			for (int p = 0; p < plane_count; p++) {
+				vec3 r;
+				if (ray_on_plane(&f->scene->planes[p], c, dir, &r) && in_receivers(f, r)) {
+					check_pair(res, p, c, r, what);
+					checked++;
+				}
+			}
 			for (int j = 1; j <= 40; j++) {
 				vec3 r = v3_add(c, v3_scale(dir, size * j / 40.0));
 				if (!in_receivers(f, r))
 					continue;
-				int m = lx_shadow_select_map(res, r);
-				if (m < 0)
-					fail_msg("%s: receiver (%g, %g, %g) behind caster point (%g, %g, %g) is served by no map (%s)",
-						 what, r.x, r.y, r.z, c.x, c.y, c.z,
-						 res->warning_count ? res->warnings[0] : "no warning");
-				const mat4 *lc = &res->maps[m].light_clip;
-				vec4 pc = m4_mul_point(lc, c), pr = m4_mul_point(lc, r);
-				if (!(pc.w > 0 && pr.w > 0))
-					fail_msg("%s: map %d: caster or receiver behind the light image", what, m);
-				double zc = pc.z / pc.w, zr = pr.z / pr.w;
-				if (res->maps[m].pancake)
-					zc = fmax(zc, -1); /* the shadow pass flattens it onto the near plane */
-				if (!(zc >= -1 - 1e-7 && zr <= 1 + 1e-7 && zc <= zr + 1e-9))
-					fail_msg("%s: map %d: depths caster %g, receiver %g (expected -1 <= caster <= receiver <= 1)",
-						 what, m, zc, zr);
-				assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6); /* same ray, same lixel */
+				int on = -1; /* the caster whose box holds r: an off-plane receiver */
+				for (int o = plane_count; o < f->object_count && on < 0; o++)
+					if (r.x >= f->bmin[o].x && r.x <= f->bmax[o].x && r.y >= f->bmin[o].y && r.y <= f->bmax[o].y &&
+					    r.z >= f->bmin[o].z && r.z <= f->bmax[o].z)
+						on = o;
+				if (on < 0)
+					continue;
+				check_pair(res, on, c, r, what);
 				checked++;
 			}
 		}

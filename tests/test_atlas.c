@@ -31,7 +31,7 @@ static void check_layout(const struct lx_atlas *a, const struct lx_region_reques
 static void plane_optimal_layout(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"floor", 350, 350, 0}, {"wall", 350, 350, 0}, {"fallback", 128, 128, 0}};
+	struct lx_region_request req[] = {{"floor", 350, 350, 0, false}, {"wall", 350, 350, 0, false}, {"fallback", 128, 128, 0, false}};
 	struct lx_atlas a;
 	char err[256];
 	assert_true(lx_atlas_layout(&a, req, 3, 1, 2048, err, sizeof err));
@@ -47,7 +47,7 @@ static void plane_optimal_layout(void **state)
 static void uniform_layout_has_its_guard(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"uniform", 512, 512, 0}};
+	struct lx_region_request req[] = {{"uniform", 512, 512, 0, false}};
 	struct lx_atlas a;
 	char err[256];
 	assert_true(lx_atlas_layout(&a, req, 1, 1, 2048, err, sizeof err));
@@ -68,7 +68,7 @@ static void many_regions_and_guards(void **state)
 		int n = 1 + (int)(test_rand(&s) * LX_ATLAS_MAX_REGIONS);
 		for (int i = 0; i < n; i++) {
 			snprintf(names[i], sizeof names[i], "r%d", i);
-			req[i] = (struct lx_region_request){names[i], 1 + (int)(test_rand(&s) * 400), 1 + (int)(test_rand(&s) * 400), 0};
+			req[i] = (struct lx_region_request){names[i], 1 + (int)(test_rand(&s) * 400), 1 + (int)(test_rand(&s) * 400), 0, false};
 		}
 		int guard = (int)(test_rand(&s) * 4);
 		struct lx_atlas a;
@@ -126,7 +126,7 @@ static void shape(long budget, double aspect, int *w, int *h)
 static void plane_budgets_fit_every_aspect(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"floor", 350, 350, 350 * 350}, {"wall", 350, 350, 350 * 350}, {"fallback", 128, 128, 0}};
+	struct lx_region_request req[] = {{"floor", 350, 350, 350 * 350, false}, {"wall", 350, 350, 350 * 350, false}, {"fallback", 128, 128, 0, false}};
 	struct lx_atlas start;
 	char err[256];
 	assert_true(lx_atlas_layout(&start, req, 3, 1, 4096, err, sizeof err));
@@ -174,7 +174,7 @@ static void shared_budgets_fit(void **state)
 {
 	(void)state;
 	long pool = 2L * 350 * 350;
-	struct lx_region_request req[] = {{"floor", 350, 350, pool}, {"wall", 350, 350, pool}, {"fallback", 128, 128, 0}};
+	struct lx_region_request req[] = {{"floor", 350, 350, pool, false}, {"wall", 350, 350, pool, false}, {"fallback", 128, 128, 0, false}};
 	struct lx_atlas start;
 	char err[256];
 	assert_true(lx_atlas_layout(&start, req, 3, 1, 2048, err, sizeof err));
@@ -198,7 +198,7 @@ static void shared_budgets_fit(void **state)
 static void a_frame_that_cannot_fit_shrinks(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100}, {"b", 100, 100, 100 * 100}};
+	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100, false}, {"b", 100, 100, 100 * 100, false}};
 	struct lx_atlas at;
 	char err[256];
 	assert_true(lx_atlas_layout(&at, req, 2, 1, 256, err, sizeof err));
@@ -213,19 +213,19 @@ static void size_limits_give_clear_errors(void **state)
 	(void)state;
 	struct lx_atlas a;
 	char err[256];
-	struct lx_region_request big[] = {{"huge", 2048, 2048, 0}};
+	struct lx_region_request big[] = {{"huge", 2048, 2048, 0, false}};
 	assert_false(lx_atlas_layout(&a, big, 1, 1, 2048, err, sizeof err)); /* the guard does not fit */
 	assert_non_null(strstr(err, "huge"));
 	assert_non_null(strstr(err, "2048"));
-	struct lx_region_request three[] = {{"a", 1100, 1100, 0}, {"b", 1100, 1100, 0}, {"c", 1100, 1100, 0}};
+	struct lx_region_request three[] = {{"a", 1100, 1100, 0, false}, {"b", 1100, 1100, 0, false}, {"c", 1100, 1100, 0, false}};
 	assert_false(lx_atlas_layout(&a, three, 3, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "do not fit"));
 	assert_true(lx_atlas_layout(&a, three, 3, 1, 4096, err, sizeof err));
 	check_layout(&a, three, 3);
-	struct lx_region_request bad[] = {{"zero", 0, 10, 0}};
+	struct lx_region_request bad[] = {{"zero", 0, 10, 0, false}};
 	assert_false(lx_atlas_layout(&a, bad, 1, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "zero"));
-	struct lx_region_request dup[] = {{"x", 10, 10, 0}, {"x", 10, 10, 0}};
+	struct lx_region_request dup[] = {{"x", 10, 10, 0, false}, {"x", 10, 10, 0, false}};
 	assert_false(lx_atlas_layout(&a, dup, 2, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "twice"));
 	/* no regions (method none): a valid 1x1 texture */

@@ -141,7 +141,7 @@ static void plane_homography_matches_projection(void **state)
 	lx_scene_default(&s);
 	assert_true(lx_meshes_build(&s, &m));
 	assert_true(lx_frame_setup(&f, &s, &m, 0, 200, 150, err, sizeof err));
-	struct lx_region_request req[] = {{"m", 300, 200}};
+	struct lx_region_request req[] = {{"m", 300, 200, 0, false}};
 	struct lx_atlas atlas;
 	assert_true(lx_atlas_layout(&atlas, req, 1, 1, 2048, err, sizeof err));
 	struct lx_shadow_map map = {.region = 0, .rendered = true};
