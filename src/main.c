@@ -60,6 +60,8 @@ static void render_usage(FILE *f)
 		"  --platform NAME      GL platform: %s (default osmesa)\n"
 		"  --out FILE.png       the shaded image (default lixel.png)\n"
 		"  --decision-out FILE.png  the per-pixel shadow decision: shadowed red, lit tinted by object\n"
+		"  --mismatch-out FILE.png  where the decision differs from the exact reference (implies\n"
+		"                       --measure): missing shadow red, false shadow blue, silhouette yellow\n"
 		"  --atlas-out FILE.png the shadow atlas: depth as grey (near dark, far white), guard bands red\n"
 		"  --measure            compare with the exact reference ray caster and compute the\n"
 		"                       sampling figures of each plane of interest\n"
@@ -278,7 +280,7 @@ static int cmd_render(int argc, char **argv)
 		}
 		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
 							 "--at", "--fov", "--light", "--light-dir", "--time",
-							 "--platform", "--out", "--decision-out", "--atlas-out", "--frames", "--bias",
+							 "--platform", "--out", "--decision-out", "--mismatch-out", "--atlas-out", "--frames", "--bias",
 							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES};
 		const char *v;
 		int st = lx_arg_value("render", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
@@ -334,6 +336,10 @@ static int cmd_render(int argc, char **argv)
 			job.out_png = v;
 		else if (!strcmp(a, "--decision-out"))
 			job.decision_png = v;
+		else if (!strcmp(a, "--mismatch-out")) {
+			job.mismatch_png = v;
+			job.measure = true;
+		}
 		else if (!strcmp(a, "--atlas-out"))
 			job.atlas_png = v;
 		else if (!strcmp(a, "--frames")) {
@@ -363,6 +369,7 @@ static int cmd_render(int argc, char **argv)
 		return 2;
 	}
 	if (!writable_path("--out", job.out_png) || !writable_path("--decision-out", job.decision_png) ||
+	    !writable_path("--mismatch-out", job.mismatch_png) ||
 	    !writable_path("--atlas-out", job.atlas_png))
 		return 2;
 	char err[512];

@@ -506,63 +506,65 @@ static void served_on_g(const struct lx_frame *f, const struct lx_light_space *l
 	lx_poly_hull(corners, nc, served);
 }
 
-/* Builds plane i's map from its chart and lixel budget, and its second piece's map when
- * `second` is given and two rectangles serve the plane better than one; returns the rays
- * the first map serves as a polygon on G (empty when none or when they cannot be charted
- * there). */
+/* A_l for one piece: window (x q, y q, z q, q) -> region clip, x_clip = 2 u / w - 1. */
+static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *ft)
+{
+	mat4 a = m4_identity();
+	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sc = ft->scale;
+	a.m[0] = kx * sc * ch->cs * ch->mx, a.m[4] = -kx * sc * ch->sn * ch->mx, a.m[12] = kx * (ft->offset - sc * ft->x0) - 1;
+	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (ft->offset - sc * ft->y0) - 1;
+	return a;
+}
+
+/* The plane map's depth row, shared by its pieces: A_l leaves z alone and the cone of
+ * rays is the same at any scale, so it is fitted once, with a lixel per pixel over the
+ * rectangle around all pieces, before the budgets are known. False when no caster lies
+ * in front of a receiver there (no map). */
+static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, const struct plane_pieces *pc,
+			const vec4 *faces, int nfaces, struct lx_shadow_result *out, const char *name, mat4 *depth)
+{
+	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+	for (int k = 0; k < pc->n; k++)
+		r[0] = fmin(r[0], pc->r[k][0]), r[1] = fmin(r[1], pc->r[k][1]), r[2] = fmax(r[2], pc->r[k][2]),
+		r[3] = fmax(r[3], pc->r[k][3]);
+	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1])};
+	ft.w = ft.w < 1 ? 1 : ft.w, ft.h = ft.h < 1 ? 1 : ft.h;
+	mat4 a = piece_matrix(ch, &ft);
+	*depth = m4_mul(&a, &ch->cam.m);
+	double b[4] = {-1, -1, 2.0 * ft.uw / ft.w - 1, 2.0 * ft.vh / ft.h - 1};
+	return fit_depth(f, ch, b, faces, nfaces, depth, out, name);
+}
+
+/* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
+ * lixel budget; returns the rays the first map serves as a polygon on G (empty when none
+ * or when they cannot be charted there). */
 static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
-			    const struct plane_chart *ch, int i, int next, long budget, double max_lpp, const vec4 *faces,
-			    int nfaces, struct lx_shadow_map *map, struct lx_shadow_map *second,
-			    struct lx_shadow_result *out, struct lx_poly *served)
+			    const struct plane_chart *ch, const struct plane_pieces *pc, const mat4 *depth, int i,
+			    bool edges, long budget, double max_lpp, struct lx_shadow_map *map,
+			    struct lx_shadow_map *second, struct lx_poly *served)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
-	const struct lx_region *g = &atlas->regions[map->region];
-	bool edges = i == 0 && next >= 0 && !ch->twisted;
-	struct plane_pieces pc;
-	/* a second piece where the atlas has room for one and no point-line tests are needed
-	 * (only the first map carries them) */
-	plane_pieces(ch, g->variable && second && !edges, &pc);
 	struct plane_fit fit[PIECES_MAX];
-	fit_plane(ch, &pc, g, atlas, budget, max_lpp, fit);
-	/* Depth once for all pieces (A_l leaves z alone), over their common rectangle. */
-	mat4 a = m4_identity();
-	double kx = 2.0 / fit[0].w, ky = 2.0 / fit[0].h, sc = fit[0].scale;
-	a.m[0] = kx * sc * ch->cs * ch->mx, a.m[4] = -kx * sc * ch->sn * ch->mx, a.m[12] = kx * (fit[0].offset - sc * fit[0].x0) - 1;
-	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (fit[0].offset - sc * fit[0].y0) - 1;
-	mat4 m = m4_mul(&a, &ch->cam.m);
-	double all[4] = {kx * fit[0].offset - 1, ky * fit[0].offset - 1, kx * fit[0].uw - 1, ky * fit[0].vh - 1};
-	if (pc.n > 1) { /* the bounds of both pieces in the first piece's clip space */
-		all[0] = fmin(all[0], kx * (sc * (pc.r[1][0] - fit[0].x0) + fit[0].offset) - 1);
-		all[1] = fmin(all[1], ky * (sc * (pc.r[1][1] - fit[0].y0) + fit[0].offset) - 1);
-		all[2] = fmax(all[2], kx * (sc * (pc.r[1][2] - fit[0].x0) + fit[0].offset) - 1);
-		all[3] = fmax(all[3], ky * (sc * (pc.r[1][3] - fit[0].y0) + fit[0].offset) - 1);
-	}
-	if (!fit_depth(f, ch, all, faces, nfaces, &m, out, P->name))
-		return;
-	for (int k = 0; k < pc.n; k++) {
+	fit_plane(ch, pc, &atlas->regions[map->region], atlas, budget, max_lpp, fit);
+	for (int k = 0; k < pc->n; k++) {
 		struct lx_shadow_map *mp = k == 0 ? map : second;
 		const struct plane_fit *ft = &fit[k];
-		double kxk = 2.0 / ft->w, kyk = 2.0 / ft->h;
-		mat4 ak = m4_identity();
-		ak.m[0] = kxk * sc * ch->cs * ch->mx, ak.m[4] = -kxk * sc * ch->sn * ch->mx, ak.m[12] = kxk * (ft->offset - sc * ft->x0) - 1;
-		ak.m[1] = kyk * sc * ch->sn, ak.m[5] = kyk * sc * ch->cs, ak.m[13] = kyk * (ft->offset - sc * ft->y0) - 1;
-		mat4 mk = m4_mul(&ak, &ch->cam.m);
+		mat4 ak = piece_matrix(ch, ft), mk = m4_mul(&ak, &ch->cam.m);
 		for (int c = 0; c < 4; c++) /* the shared depth row */
-			mk.m[c * 4 + 2] = m.m[c * 4 + 2];
+			mk.m[c * 4 + 2] = depth->m[c * 4 + 2];
 		if (!m4_finite(&mk))
 			continue;
-		double b[4] = {kxk * ft->offset - 1, kyk * ft->offset - 1, kxk * ft->uw - 1, kyk * ft->vh - 1};
+		double b[4] = {2.0 * ft->offset / ft->w - 1, 2.0 * ft->offset / ft->h - 1, 2.0 * ft->uw / ft->w - 1,
+			       2.0 * ft->vh / ft->h - 1};
 		mp->light_clip = mk;
 		memcpy(mp->bounds, b, sizeof b);
-		mp->lixel_scale = sc;
+		mp->lixel_scale = ft->scale;
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
 		if (k > 0)
 			continue;
 		struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
-		/* only where a later plane map can take the rays that miss this plane and no twist
-		 * already sends them out of bounds (a table top over the floor) */
 		if (edges)
 			plane_edges(&f->view, P, &ak, mp, &served_clip);
 		served_on_g(f, ls, &mk, &served_clip, served);
@@ -572,13 +574,16 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 /* Each plane map's lixels this frame: its own budget, or with shared budgets what the
  * others do not need at the highest density asked for (lpp 1 when none is). */
 static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
-			  const struct plane_chart *ch, const bool *ok, int np, long *budget)
+			  const struct plane_pieces *pc, const bool *ok, int np, long *budget)
 {
 	long own = (long)o->plane_lixels * o->plane_lixels, pool = 0, need[PLANE_MAPS], want = 0;
 	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
 	for (int i = 0; i < np; i++) {
 		budget[i] = atlas->regions[i].variable ? own : (long)atlas->regions[i].w * atlas->regions[i].h;
-		need[i] = ok[i] ? (long)ceil(density * (ch[i].x1 - ch[i].x0 + 1) * (ch[i].y1 - ch[i].y0 + 1)) : 0;
+		double area = 0;
+		for (int k = 0; ok[i] && k < pc[i].n; k++)
+			area += (pc[i].r[k][2] - pc[i].r[k][0] + 1) * (pc[i].r[k][3] - pc[i].r[k][1] + 1);
+		need[i] = (long)ceil(density * area);
 		pool += budget[i];
 	}
 	if (!o->shared_budget || o->square_regions)
@@ -651,6 +656,66 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	return true;
 }
 
+/* Lixels per pixel a map gives a box, roughly: the area of the box's image in the map's
+ * lixels (within the rays the map serves) over the area of its image on the screen.
+ * -1 where the box reaches behind the map's light or the eye. */
+static double box_density(const struct lx_frame *f, const struct lx_shadow_map *m, int w, int h, vec3 lo, vec3 hi)
+{
+	vec2 lix[8], pix[8];
+	for (int k = 0; k < 8; k++) {
+		vec3 q = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec4 c = m4_mul_point(&m->light_clip, q), e = m4_mul_point(&f->view.view_proj, q);
+		if (!(c.w > 0) || !(e.w > 0))
+			return -1;
+		lix[k] = (vec2){(c.x / c.w + 1) * 0.5 * w, (c.y / c.w + 1) * 0.5 * h};
+		pix[k] = (vec2){(e.x / e.w + 1) * 0.5 * f->view.width, (e.y / e.w + 1) * 0.5 * f->view.height};
+	}
+	struct lx_poly a, b, served = {4, {{(m->bounds[0] + 1) * 0.5 * w, (m->bounds[1] + 1) * 0.5 * h},
+					   {(m->bounds[2] + 1) * 0.5 * w, (m->bounds[1] + 1) * 0.5 * h},
+					   {(m->bounds[2] + 1) * 0.5 * w, (m->bounds[3] + 1) * 0.5 * h},
+					   {(m->bounds[0] + 1) * 0.5 * w, (m->bounds[3] + 1) * 0.5 * h}}};
+	struct lx_poly screen = {4, {{0, 0}, {f->view.width, 0}, {f->view.width, f->view.height}, {0, f->view.height}}};
+	lx_poly_hull(lix, 8, &a);
+	lx_poly_intersect(&a, &served, &a);
+	lx_poly_hull(pix, 8, &b);
+	lx_poly_intersect(&b, &screen, &b);
+	double pa = fabs(lx_poly_area(&b));
+	return pa > 0 ? fabs(lx_poly_area(&a)) / pa : -1;
+}
+
+/* Which maps a caster's own surfaces read. A plane map holds every caster in front of
+ * its plane, so it can serve a caster's rays too, and often more densely than the small
+ * fallback; but seen from the eye a caster may be stretched in it (a table leg over a
+ * foreshortened floor). A caster reads the plane maps first only where each plane map
+ * that sees it gives it as many lixels per pixel as the fallback does; else the fallback
+ * alone (which covers every caster in view). */
+static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, struct lx_shadow_result *out)
+{
+	const struct lx_shadow_map *fb = &out->maps[np];
+	if (!fb->rendered)
+		return;
+	const struct lx_region *fr = &atlas->regions[fb->region];
+	unsigned all = 0;
+	for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+		all |= out->maps[m].rendered ? 1u << m : 0;
+	for (int id = f->scene->plane_count; id < f->object_count; id++) {
+		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
+			continue;
+		double dfb = box_density(f, fb, fr->w, fr->h, f->bmin[id], f->bmax[id]);
+		bool planes_first = dfb >= 0;
+		for (int m = 0; m < out->map_count && planes_first; m++) {
+			const struct lx_shadow_map *pm = &out->maps[m];
+			if (!pm->rendered || pm->plane < 0)
+				continue;
+			double d = box_density(f, pm, pm->w, pm->h, f->bmin[id], f->bmax[id]);
+			planes_first = d != 0 && d >= dfb; /* 0: the map does not see it; -1: behind its light */
+			if (d == 0)
+				planes_first = true;
+		}
+		out->object_maps[id] = planes_first ? all : 1u << np;
+	}
+}
+
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
@@ -671,19 +736,29 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	struct plane_chart ch[PLANE_MAPS];
 	bool ok[PLANE_MAPS];
 	long budget[PLANE_MAPS];
-	for (int i = 0; i < np; i++)
-		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, out, &ch[i]);
-	plane_budgets(atlas, o, ch, ok, np, budget);
-	struct lx_poly served[PLANE_MAPS] = {{0}};
-	struct lx_shadow_map *piece = atlas->count > np + 1 ? &out->maps[np + 1] : NULL;
+	struct plane_pieces pc[PLANE_MAPS];
+	mat4 depth[PLANE_MAPS];
+	bool edges[PLANE_MAPS], piece_free = atlas->count > np + 1 && atlas->regions[0].variable;
+	int piece_of = -1;
 	for (int i = 0; i < np; i++) {
+		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, out, &ch[i]);
 		if (!ok[i])
 			continue;
-		build_plane_map(f, &ls, atlas, &ch[i], i, i + 1 < np ? i + 1 : -1, budget[i], o->plane_max_lpp, faces,
-				nfaces, &out->maps[i], piece, out, &served[i]);
-		if (piece && piece->rendered)
-			piece = NULL; /* taken */
+		/* only the first map carries point-line tests: where a later plane map can take
+		 * the rays that miss this plane and no twist already sends them out of bounds (a
+		 * table top over the floor); a map with them keeps to one piece */
+		edges[i] = i == 0 && i + 1 < np && !ch[i].twisted;
+		plane_pieces(&ch[i], piece_free && !edges[i], &pc[i]);
+		ok[i] = plane_depth(f, &ch[i], &pc[i], faces, nfaces, out, f->scene->planes[i].name, &depth[i]);
+		if (ok[i] && pc[i].n > 1)
+			piece_free = false, piece_of = i;
 	}
+	plane_budgets(atlas, o, pc, ok, np, budget);
+	struct lx_poly served[PLANE_MAPS] = {{0}};
+	for (int i = 0; i < np; i++)
+		if (ok[i])
+			build_plane_map(f, &ls, atlas, &ch[i], &pc[i], &depth[i], i, edges[i], budget[i], o->plane_max_lpp,
+					&out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL, &served[i]);
 	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
 	bool needs[LX_MAX_PLANES] = {false};
@@ -701,6 +776,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+	choose_caster_maps(f, atlas, np, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",

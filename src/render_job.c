@@ -35,6 +35,25 @@ static void decision_colors(const int16_t *object, const uint8_t *shadow, long n
 	}
 }
 
+/* The mismatch as a picture: false shadow blue, missing shadow red, silhouette pixels
+ * yellow, agreeing pixels a dim grey (lighter where shadowed). */
+static void mismatch_colors(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
+			    const uint8_t *shadow, long n, uint8_t *rgba)
+{
+	for (long i = 0; i < n; i++) {
+		uint8_t *p = rgba + i * 4, c[3] = {40, 40, 40};
+		if (ref_object[i] != object[i])
+			c[0] = 230, c[1] = 200, c[2] = 40;
+		else if (object[i] >= 0 && shadow[i] && !ref_shadow[i])
+			c[0] = 40, c[1] = 90, c[2] = 255;
+		else if (object[i] >= 0 && !shadow[i] && ref_shadow[i])
+			c[0] = 255, c[1] = 40, c[2] = 40;
+		else if (object[i] >= 0)
+			c[0] = c[1] = c[2] = shadow[i] ? 110 : 70;
+		p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
+	}
+}
+
 /* The atlas as a picture: depth codes as grey levels (far white), guard bands red. */
 static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, const char *path, char *err, size_t errlen)
 {
@@ -164,6 +183,11 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		lx_measure(&frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
 			   &rep->mismatch, rep->planes);
 		rep->measured = true;
+		if (job->mismatch_png) {
+			mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);
+			if (!lx_png_write(job->mismatch_png, rgba, job->width, job->height, err, errlen))
+				goto out;
+		}
 	}
 	status = 0;
 out:

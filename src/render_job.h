@@ -19,6 +19,7 @@ struct lx_render_job {
 	int reference_threads;
 	const char *out_png; /* shaded image, or NULL */
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
+	const char *mismatch_png; /* with measure: where the decision differs from the reference, or NULL */
 	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
 };
 

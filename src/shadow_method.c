@@ -74,6 +74,8 @@ void lx_shadow_map_full(struct lx_shadow_map *m)
 unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
 {
 	unsigned own = 0, shared = 0;
+	if (object >= 0 && object < LX_MAX_PLANES + LX_MAX_CASTERS && r->object_maps[object])
+		return r->object_maps[object];
 	for (int i = 0; i < r->map_count && i < LX_MAX_MAPS; i++) {
 		const struct lx_shadow_map *m = &r->maps[i];
 		if (!m->rendered)

@@ -43,6 +43,9 @@ struct lx_shadow_result {
 	struct lx_shadow_map maps[LX_MAX_MAPS];
 	int warning_count;
 	char warnings[LX_MAX_WARNINGS][LX_WARNING_MAX];
+	/* Per object, the maps it reads (a bit mask), where the method chose them; 0: the
+	 * rule of lx_shadow_receiver_maps. */
+	unsigned object_maps[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
 
 /* Lixel budgets: each map holds budget x budget lixels. */
@@ -84,7 +87,7 @@ void lx_shadow_map_full(struct lx_shadow_map *m);
  * with rendered maps of its own (map.plane == object) reads only those, since its pixels
  * are their receivers and where they do not serve no caster's shadow falls; every other
  * object reads the rendered maps that belong to no plane (the one map of a one-map
- * method, the plane method's fallback). */
+ * method, the plane method's fallback), unless the method chose its maps (object_maps). */
 unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object);
 /* The map the main pass would use for world point p of receiver object `object` (the
  * shader's choice, in double): the first of its maps that serves p, or -1. */
