@@ -131,6 +131,7 @@ struct plane_chart {
 	bool twisted;
 	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
+	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 };
@@ -180,7 +181,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
 	 * plane, within what the casters can cover. */
 	struct lx_poly wanted = ch->win, cast;
-	vec2 pts[4 * LX_POLY_MAX];
+	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	int np = 0;
 	bool bounded = true;
 	for (int id = 0; id < f->object_count && bounded; id++) {
@@ -194,8 +195,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 				bounded = false; /* a caster reaches behind the light image: no bound from casters */
 				break;
 			}
-			if (np < 4 * LX_POLY_MAX)
-				pts[np++] = (vec2){h.x / h.w, h.y / h.w};
+			pts[np++] = (vec2){h.x / h.w, h.y / h.w}; /* room for every object's 8 corners */
 		}
 	}
 	if (bounded) {
@@ -204,7 +204,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	}
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
 		return false; /* no caster over the visible plane: nothing to shadow there */
-	int ncast = np / 8; /* with every caster bounded, 8 corners each (np never hits its cap: 8 x 40 < 256) */
+	ch->wanted = wanted;
+	int ncast = np / 8; /* with every caster bounded, 8 corners each */
 
 	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
 	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
@@ -365,12 +366,43 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 	}
 }
 
-/* Depth: unit cube clipping inside the map's frustum. Receivers: the view frustum
- * within the scene box and the map's cone; casters: their boxes within the cone.
- * Writes the fitted z row into *m; false when no caster lies in front of a receiver. */
-static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, const double *b, const vec4 *faces,
-		      int nfaces, mat4 *m, struct lx_shadow_result *out, const char *name)
+/* The farthest depth (z / w of m) of the plane's wanted part: z / w is a ratio of linear
+ * functions on the plane, so over a convex polygon in front of the light its largest
+ * value is at a vertex. The vertices, in window coordinates, go back to the plane along
+ * their eye rays. False when one does not meet the plane in front of the light. */
+static bool plane_zfar(const struct lx_frame *f, const struct lx_plane *P, const struct lx_poly *wanted, const mat4 *m,
+		       double *zfar)
 {
+	const struct lx_view *v = &f->view;
+	vec4 e = lx_plane_equation(P);
+	*zfar = -INFINITY;
+	for (int k = 0; k < wanted->n; k++) {
+		double nx = 2 * wanted->v[k].x / v->width - 1, ny = 2 * wanted->v[k].y / v->height - 1;
+		vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+		if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
+			return false;
+		vec3 p0 = v3(a.x / a.w, a.y / a.w, a.z / a.w), d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), p0);
+		double den = e.x * d.x + e.y * d.y + e.z * d.z;
+		if (!(fabs(den) > 1e-300))
+			return false;
+		vec3 q = v3_add(p0, v3_scale(d, -dot4p(e, p0) / den));
+		double w = dot4p(row(m, 3), q);
+		if (!(w > 0))
+			return false;
+		*zfar = fmax(*zfar, dot4p(row(m, 2), q) / w);
+	}
+	return isfinite(*zfar);
+}
+
+/* Depth: unit cube clipping inside the map's frustum. Receivers: the plane's wanted
+ * part (only the plane's pixels, and casters whose depth lies within, read the map), or
+ * where that cannot be charted the view frustum within the scene box and the map's
+ * cone; casters: their boxes within the cone. Writes the fitted z row into *m; false
+ * when no caster lies in front of a receiver. */
+static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, const double *b, const vec4 *faces,
+		      int nfaces, mat4 *m, struct lx_shadow_result *out, const struct lx_plane *P)
+{
+	const char *name = P->name;
 	vec4 wrow = row(m, 3), zrow = row(m, 2);
 	double wplane = INFINITY;
 	for (int k = 0; k < ch->nw; k++)
@@ -386,11 +418,13 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 	int ncone = nh;
 	for (int k = 0; k < nfaces; k++)
 		hs[nh++] = faces[k];
-	vec3 vert[2048];
-	int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
 	double zfar = -INFINITY, znear = INFINITY;
-	for (int k = 0; k < nv; k++)
-		zfar = fmax(zfar, dot4p(zrow, vert[k]) / dot4p(wrow, vert[k])); /* w >= wmin > 0 there */
+	if (!plane_zfar(f, P, &ch->wanted, m, &zfar)) {
+		vec3 vert[2048];
+		int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
+		for (int k = 0; k < nv; k++)
+			zfar = fmax(zfar, dot4p(zrow, vert[k]) / dot4p(wrow, vert[k])); /* w >= wmin > 0 there */
+	}
 	bool clipped = false;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
@@ -521,7 +555,7 @@ static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *f
  * rectangle around all pieces, before the budgets are known. False when no caster lies
  * in front of a receiver there (no map). */
 static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, const struct plane_pieces *pc,
-			const vec4 *faces, int nfaces, struct lx_shadow_result *out, const char *name, mat4 *depth)
+			const vec4 *faces, int nfaces, struct lx_shadow_result *out, const struct lx_plane *P, mat4 *depth)
 {
 	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 	for (int k = 0; k < pc->n; k++)
@@ -532,7 +566,7 @@ static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, 
 	mat4 a = piece_matrix(ch, &ft);
 	*depth = m4_mul(&a, &ch->cam.m);
 	double b[4] = {-1, -1, 2.0 * ft.uw / ft.w - 1, 2.0 * ft.vh / ft.h - 1};
-	return fit_depth(f, ch, b, faces, nfaces, depth, out, name);
+	return fit_depth(f, ch, b, faces, nfaces, depth, out, P);
 }
 
 /* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
@@ -562,6 +596,16 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
+		/* the piece's rectangle back in window coordinates (undo mirror and twist): its
+		 * bounding box is where the plane's shadows in this piece can fall */
+		mp->has_screen = true;
+		mp->screen[0] = mp->screen[1] = INFINITY, mp->screen[2] = mp->screen[3] = -INFINITY;
+		for (int c = 0; c < 4; c++) {
+			double u = (c & 1 ? pc->r[k][2] : pc->r[k][0]) * ch->mx, v = c & 2 ? pc->r[k][3] : pc->r[k][1];
+			double x = ch->cs * u + ch->sn * v, y = -ch->sn * u + ch->cs * v;
+			mp->screen[0] = fmin(mp->screen[0], x), mp->screen[1] = fmin(mp->screen[1], y);
+			mp->screen[2] = fmax(mp->screen[2], x), mp->screen[3] = fmax(mp->screen[3], y);
+		}
 		if (k > 0)
 			continue;
 		struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
@@ -657,30 +701,26 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 }
 
 /* Lixels per pixel a map gives a box, roughly: the area of the box's image in the map's
- * lixels (within the rays the map serves) over the area of its image on the screen.
- * -1 where the box reaches behind the map's light or the eye. */
+ * lixels (its bounding rectangle, within the rays the map serves) over the area of its
+ * image on the screen (the same). 0 where the map does not see the box; -1 where the
+ * box reaches behind the map's light or the eye, or beyond the map's depth range. */
 static double box_density(const struct lx_frame *f, const struct lx_shadow_map *m, int w, int h, vec3 lo, vec3 hi)
 {
-	vec2 lix[8], pix[8];
+	double l[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY}, p[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 	for (int k = 0; k < 8; k++) {
 		vec3 q = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
 		vec4 c = m4_mul_point(&m->light_clip, q), e = m4_mul_point(&f->view.view_proj, q);
-		if (!(c.w > 0) || !(e.w > 0))
+		if (!(c.w > 0) || !(e.w > 0) || c.z > c.w)
 			return -1;
-		lix[k] = (vec2){(c.x / c.w + 1) * 0.5 * w, (c.y / c.w + 1) * 0.5 * h};
-		pix[k] = (vec2){(e.x / e.w + 1) * 0.5 * f->view.width, (e.y / e.w + 1) * 0.5 * f->view.height};
+		double x = c.x / c.w, y = c.y / c.w, sx = e.x / e.w, sy = e.y / e.w;
+		l[0] = fmin(l[0], x), l[1] = fmin(l[1], y), l[2] = fmax(l[2], x), l[3] = fmax(l[3], y);
+		p[0] = fmin(p[0], sx), p[1] = fmin(p[1], sy), p[2] = fmax(p[2], sx), p[3] = fmax(p[3], sy);
 	}
-	struct lx_poly a, b, served = {4, {{(m->bounds[0] + 1) * 0.5 * w, (m->bounds[1] + 1) * 0.5 * h},
-					   {(m->bounds[2] + 1) * 0.5 * w, (m->bounds[1] + 1) * 0.5 * h},
-					   {(m->bounds[2] + 1) * 0.5 * w, (m->bounds[3] + 1) * 0.5 * h},
-					   {(m->bounds[0] + 1) * 0.5 * w, (m->bounds[3] + 1) * 0.5 * h}}};
-	struct lx_poly screen = {4, {{0, 0}, {f->view.width, 0}, {f->view.width, f->view.height}, {0, f->view.height}}};
-	lx_poly_hull(lix, 8, &a);
-	lx_poly_intersect(&a, &served, &a);
-	lx_poly_hull(pix, 8, &b);
-	lx_poly_intersect(&b, &screen, &b);
-	double pa = fabs(lx_poly_area(&b));
-	return pa > 0 ? fabs(lx_poly_area(&a)) / pa : -1;
+	double lx = fmax(0, fmin(l[2], m->bounds[2]) - fmax(l[0], m->bounds[0])) * 0.5 * w;
+	double ly = fmax(0, fmin(l[3], m->bounds[3]) - fmax(l[1], m->bounds[1])) * 0.5 * h;
+	double px = fmax(0, fmin(p[2], 1) - fmax(p[0], -1)) * 0.5 * f->view.width;
+	double py = fmax(0, fmin(p[3], 1) - fmax(p[1], -1)) * 0.5 * f->view.height;
+	return px * py > 0 ? lx * ly / (px * py) : -1;
 }
 
 /* Which maps a caster's own surfaces read. A plane map holds every caster in front of
@@ -749,7 +789,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		 * table top over the floor); a map with them keeps to one piece */
 		edges[i] = i == 0 && i + 1 < np && !ch[i].twisted;
 		plane_pieces(&ch[i], piece_free && !edges[i], &pc[i]);
-		ok[i] = plane_depth(f, &ch[i], &pc[i], faces, nfaces, out, f->scene->planes[i].name, &depth[i]);
+		ok[i] = plane_depth(f, &ch[i], &pc[i], faces, nfaces, out, &f->scene->planes[i], &depth[i]);
 		if (ok[i] && pc[i].n > 1)
 			piece_free = false, piece_of = i;
 	}

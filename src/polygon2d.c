@@ -33,7 +33,16 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 			free(p);
 		return;
 	}
-	qsort(p, (size_t)m, sizeof(vec2), cmp_vec2);
+	if (m <= 32) /* the usual box of 8 corners: insertion sort beats qsort's set-up */
+		for (int i = 1; i < m; i++) {
+			vec2 t = p[i];
+			int j = i;
+			for (; j > 0 && cmp_vec2(&p[j - 1], &t) > 0; j--)
+				p[j] = p[j - 1];
+			p[j] = t;
+		}
+	else
+		qsort(p, (size_t)m, sizeof(vec2), cmp_vec2);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
 		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)

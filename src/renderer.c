@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "gl_api.h"
 #include "gl_program.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -300,12 +301,85 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, bo
 	return p;
 }
 
-/* The maps a draw of object id looks up (lx_shadow_receiver_maps): a plane with maps of
- * its own reads only those, once, like a one-map method. */
-static unsigned object_mask(const struct lx_shadow_result *res, int id, unsigned all)
+/* One draw of the main pass: an object, the maps it reads, and a scissor box (window
+ * pixels x0, y0, x1, y1) when only part of it is drawn with them. */
+struct draw {
+	int object;
+	unsigned mask;
+	bool scissor;
+	int box[4];
+};
+#define LX_MAX_DRAWS 256
+
+/* The draws of object id. A plane whose maps all carry screen rectangles: the screen cut
+ * into horizontal slabs at the rectangles' edges, and each slab into the spans inside a
+ * rectangle (its maps) and outside every one (no lookup: no shadow falls there). */
+static int object_draws(const struct lx_renderer *r, const struct lx_shadow_result *res, int id, struct draw *out, int n)
 {
-	(void)all;
-	return lx_shadow_receiver_maps(res, id);
+	unsigned mask = lx_shadow_receiver_maps(res, id);
+	int rect[LX_MAX_MAPS][4], nr = 0;
+	bool split = mask != 0 && id < r->d.scene->plane_count;
+	for (int m = 0; split && m < res->map_count && m < LX_MAX_MAPS; m++) {
+		if (!(mask & 1u << m))
+			continue;
+		const struct lx_shadow_map *map = &res->maps[m];
+		if (map->plane != id || !map->has_screen || !(map->screen[2] >= map->screen[0]) || !(map->screen[3] >= map->screen[1])) {
+			split = false;
+			break;
+		}
+		/* a pixel of margin: pixel centres on the rectangle's edge are inside it */
+		double lim[4] = {0, 0, r->d.width, r->d.height};
+		for (int k = 0; k < 4; k++) {
+			double v = k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1;
+			v = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], v));
+			rect[nr][k] = (int)v;
+		}
+		nr++;
+	}
+	if (!split || n + 1 + 3 * (2 * nr + 1) * (nr + 1) > LX_MAX_DRAWS) {
+		if (n < LX_MAX_DRAWS)
+			out[n++] = (struct draw){id, mask, false, {0, 0, 0, 0}};
+		return n;
+	}
+	int ys[2 * LX_MAX_MAPS + 2], ny = 0;
+	ys[ny++] = 0, ys[ny++] = r->d.height;
+	for (int k = 0; k < nr; k++)
+		ys[ny++] = rect[k][1], ys[ny++] = rect[k][3];
+	for (int i = 1; i < ny; i++) /* sort */
+		for (int j = i; j > 0 && ys[j] < ys[j - 1]; j--) {
+			int t = ys[j];
+			ys[j] = ys[j - 1];
+			ys[j - 1] = t;
+		}
+	for (int i = 0; i + 1 < ny; i++) {
+		int y0 = ys[i], y1 = ys[i + 1];
+		if (y1 <= y0)
+			continue;
+		/* the spans of this slab covered by a rectangle, merged */
+		int span[LX_MAX_MAPS][2], ns = 0;
+		for (int k = 0; k < nr; k++)
+			if (rect[k][1] <= y0 && rect[k][3] >= y1 && rect[k][2] > rect[k][0]) {
+				int j = ns++;
+				span[j][0] = rect[k][0], span[j][1] = rect[k][2];
+				for (; j > 0 && span[j][0] < span[j - 1][0]; j--) {
+					int a = span[j][0], b = span[j][1];
+					span[j][0] = span[j - 1][0], span[j][1] = span[j - 1][1];
+					span[j - 1][0] = a, span[j - 1][1] = b;
+				}
+			}
+		int x = 0;
+		for (int k = 0; k < ns; k++) {
+			int a = span[k][0] > x ? span[k][0] : x, b = span[k][1];
+			if (a > x)
+				out[n++] = (struct draw){id, 0, true, {x, y0, a, y1}};
+			if (b > a)
+				out[n++] = (struct draw){id, mask, true, {a, y0, b, y1}};
+			x = b > x ? b : x;
+		}
+		if (x < r->d.width)
+			out[n++] = (struct draw){id, 0, true, {x, y0, r->d.width, y1}};
+	}
+	return n;
 }
 
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
@@ -368,24 +442,26 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		lx_gl.ActiveTexture(GL_TEXTURE0);
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	}
-	/* one program per set of maps, each drawing the objects that use that set */
+	/* The draws: each object with the maps it reads, and a plane whose maps say where
+	 * its shadows can fall split into scissor boxes, looked up inside them and drawn
+	 * without a lookup outside (llvmpipe runs both sides of a branch; small GPUs pay for
+	 * every fetch); then one program per set of maps. */
+	struct draw items[LX_MAX_DRAWS];
+	int n = 0;
+	for (int id = 0; id < r->objects; id++)
+		n = object_draws(r, res, id, items, n);
 	const struct lx_scene *s = r->d.scene;
-	unsigned done[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
-	int ndone = 0;
-	for (int first = 0; first < r->objects; first++) {
-		unsigned mask = object_mask(res, first, all);
-		bool seen = false;
-		for (int k = 0; k < ndone; k++)
-			seen |= done[k] == mask;
-		if (seen)
+	bool done[LX_MAX_DRAWS] = {false};
+	for (int first = 0; first < n; first++) {
+		if (done[first])
 			continue;
-		done[ndone++] = mask;
-		bool edges_here = has_edges && (mask & 1u) && mask != 1u; /* a plane's own map needs no edges */
+		unsigned mask = items[first].mask;
+		bool edges_here = has_edges && (mask & 1u) && mask != 1u; /* a plane's own maps need no edges */
 		struct main_program *p = variant_for(r, decision, edges_here, mask);
 		lx_gl.UseProgram(p->prog);
 		lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
 		lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
-		if (r->d.map_count > 0) {
+		if (r->d.map_count > 0 && mask) {
 			lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
 			lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
 			if (edges_here)
@@ -393,17 +469,26 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 			lx_gl.Uniform1f(p->bias, r->bias_uniform);
 			lx_gl.Uniform1i(p->atlas, 0);
 		}
-		for (int id = first; id < r->objects; id++) {
-			if (object_mask(res, id, all) != mask)
+		for (int k = first; k < n; k++) {
+			const struct draw *d = &items[k];
+			if (done[k] || d->mask != mask)
 				continue;
+			done[k] = true;
+			int id = d->object;
 			vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
 			lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 			lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 			lx_gl.Uniform1f(p->object_id, (float)id);
+			if (d->scissor) {
+				lx_gl.Enable(GL_SCISSOR_TEST);
+				lx_gl.Scissor(d->box[0], d->box[1], d->box[2] - d->box[0], d->box[3] - d->box[1]);
+			} else
+				lx_gl.Disable(GL_SCISSOR_TEST);
 			bind_mesh(r, id, true);
 			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 		}
 	}
+	lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)

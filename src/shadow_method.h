@@ -32,6 +32,11 @@ struct lx_shadow_map {
 	double bounds[4];
 	int edge_count;
 	double edges[LX_MAX_MAP_EDGES][3];
+	/* A plane map's reach on the screen: window pixels (x0, y0, x1, y1) outside which
+	 * none of its plane's pixels can be shadowed (has_screen false: unknown). The main
+	 * pass draws the plane without a lookup outside its maps' rectangles. */
+	bool has_screen;
+	double screen[4];
 };
 
 /* PSM's kinds of light in post-perspective space (lx_shadow_result.variant) */
