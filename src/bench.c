@@ -23,6 +23,7 @@ struct row {
 	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
 	double mismatch_worst;
 	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
+	double lpp[LX_MAX_PLANES], used[LX_MAX_PLANES]; /* median lpp and lixels used (budget use), same */
 };
 
 struct bench {
@@ -193,7 +194,7 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 		memcpy(b->all_setup[m] + b->nframes[m], setup + m * b->frames, sizeof(double) * (size_t)b->frames);
 		b->nframes[m] += b->frames;
 		for (int p = 0; p < LX_MAX_PLANES; p++)
-			r->m_max[p] = NAN;
+			r->m_max[p] = r->lpp[p] = r->used[p] = NAN;
 	}
 	free(times);
 	/* accuracy: one reference per sampled time, shared by the methods */
@@ -215,10 +216,12 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 			lx_measure(&frame, &runs[m].atlas, &runs[m].result, ref_obj, ref_sh, obj, sh, &mm, planes);
 			mis[m][sidx] = mm.mismatch_pct, fal[m][sidx] = mm.false_shadow_pct, mss[m][sidx] = mm.missing_shadow_pct;
 			for (int p = 0; p < scene.plane_count && p < LX_MAX_PLANES; p++)
-				if (planes[p].present)
-					b->rows[m][ci].m_max[p] = isnan(b->rows[m][ci].m_max[p])
-									  ? planes[p].s.m_max
-									  : fmax(b->rows[m][ci].m_max[p], planes[p].s.m_max);
+				if (planes[p].present) {
+					struct row *rw = &b->rows[m][ci];
+					rw->m_max[p] = isnan(rw->m_max[p]) ? planes[p].s.m_max : fmax(rw->m_max[p], planes[p].s.m_max);
+					if (isnan(rw->lpp[p])) /* the first sampled time (the animation's first) */
+						rw->lpp[p] = planes[p].s.lpp_median, rw->used[p] = planes[p].s.lixels_used;
+				}
 		}
 	}
 	for (int m = 0; m < b->nm; m++) {
@@ -254,14 +257,15 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 			       r->mismatch_pct, r->false_pct, r->missing_pct);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (!isnan(r->m_max[p]))
-					printf(" m_max %s %.3g", b->scene.planes[p].name, r->m_max[p]);
+					printf(" %s: m_max %.3g lpp %.3g used %.0f", b->scene.planes[p].name, r->m_max[p], r->lpp[p],
+					       r->used[p]);
 			printf("\n");
 		}
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all_frames[none], b->nframes[none]) : NAN;
 	double uni_ms = uni >= 0 ? median_of(b->all_frames[uni], b->nframes[uni]) : NAN;
-	printf("\n%-8s %10s %19s %8s %8s %9s %10s %10s", "method", "frame ms", "(min-max)", "/none", "/uniform",
-	       "setup us", "mismatch%", "worst%");
+	printf("\n%-14s %10s %19s %8s %8s %9s %10s %10s %10s", "method", "frame ms", "(min-max)", "/none", "/uniform",
+	       "setup us", "mismatch%", "worst%", "-uniform");
 	for (int p = 0; p < b->scene.plane_count && p < 2; p++)
 		printf(" %8s", b->scene.planes[p].name);
 	printf("\n");
@@ -273,8 +277,12 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
 		char range[40];
 		snprintf(range, sizeof range, "(%.2f-%.2f)", lo, hi);
-		printf("%-8s %10.3f %19s %8.3f %8.3f %9.1f %10.4f %10.4f", b->methods[m], med, range, med / none_ms,
-		       med / uni_ms, median_of(b->all_setup[m], b->nframes[m]), median_of(mis, b->nc), worst);
+		double beyond = -INFINITY; /* the most this method's mismatch exceeds uniform's on one configuration */
+		for (int c = 0; uni >= 0 && c < b->nc; c++)
+			beyond = fmax(beyond, b->rows[m][c].mismatch_pct - b->rows[uni][c].mismatch_pct);
+		printf("%-14s %10.3f %19s %8.3f %8.3f %9.1f %10.4f %10.4f %10.4f", b->methods[m], med, range, med / none_ms,
+		       med / uni_ms, median_of(b->all_setup[m], b->nframes[m]), median_of(mis, b->nc), worst,
+		       uni >= 0 ? beyond : NAN);
 		for (int p = 0; p < b->scene.plane_count && p < 2; p++) {
 			double w = NAN;
 			for (int c = 0; c < b->nc; c++)
@@ -287,7 +295,8 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 		}
 		printf("\n");
 	}
-	printf("(the two plane columns: worst m_max over the configurations, lixel spans in pixels)\n");
+	printf("(-uniform: the most a method's mismatch exceeds uniform's on one configuration, in percentage\n"
+	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels)\n");
 }
 
 static void print_json(const struct bench *b)
@@ -352,7 +361,8 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,setup_us,mismatch_pct,false_shadow_pct,"
 		   "missing_shadow_pct,mismatch_worst");
 	for (int p = 0; p < b->scene.plane_count; p++)
-		fprintf(f, ",m_max_%s", b->scene.planes[p].name);
+		fprintf(f, ",m_max_%s,lpp_%s,lixels_used_%s", b->scene.planes[p].name, b->scene.planes[p].name,
+			b->scene.planes[p].name);
 	fprintf(f, "\n");
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
@@ -362,9 +372,9 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 				r->missing_pct, r->mismatch_worst);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
-					fprintf(f, ",");
+					fprintf(f, ",,,");
 				else
-					fprintf(f, ",%.4f", r->m_max[p]);
+					fprintf(f, ",%.4f,%.4f,%.0f", r->m_max[p], r->lpp[p], r->used[p]);
 			fprintf(f, "\n");
 		}
 	return fclose(f) == 0;
