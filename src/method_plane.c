@@ -429,9 +429,10 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
-		/* the box's corners against the cone: all inside (the usual case) gives the box's
-		 * corners as the vertices, all outside one side gives none; only a box crossing
-		 * the cone's sides needs the half-space enumeration */
+		/* the box's corners against the cone: all outside one side gives none; all in
+		 * front of the near plane (the usual case) gives the corners, a superset of the
+		 * box within the cone (a nearer znear is still correct); only a box reaching the
+		 * near plane needs the half-space enumeration */
 		vec3 cv[512];
 		int nc = 0, all_in = 1, out_one = 0;
 		vec3 corner[8];
@@ -442,7 +443,7 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 			int outside = 0;
 			for (int k = 0; k < 8; k++)
 				outside += dot4p(hs[q], corner[k]) < 0;
-			all_in &= outside == 0;
+			all_in &= q < ncone - 1 || outside == 0; /* the last cone plane is the near plane */
 			out_one |= outside == 8;
 		}
 		if (out_one)
@@ -700,59 +701,89 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	return true;
 }
 
-/* Lixels per pixel a map gives a box, roughly: the area of the box's image in the map's
- * lixels (its bounding rectangle, within the rays the map serves) over the area of its
- * image on the screen (the same). 0 where the map does not see the box; -1 where the
- * box reaches behind the map's light or the eye, or beyond the map's depth range. */
+/* The quad q taken through a projective matrix to 2D (sx, sy scale the clip
+ * coordinates): the lengths of its two edges from q[0]; false where a corner is behind
+ * the matrix's centre. */
+static bool quad_edges(const mat4 *m, const vec3 *q, double sx, double sy, double *e1, double *e2)
+{
+	vec2 p[3];
+	for (int k = 0; k < 3; k++) {
+		vec4 c = m4_mul_point(m, q[k == 2 ? 3 : k]);
+		if (!(c.w > 0))
+			return false;
+		p[k] = (vec2){c.x / c.w * sx, c.y / c.w * sy};
+	}
+	*e1 = hypot(p[1].x - p[0].x, p[1].y - p[0].y);
+	*e2 = hypot(p[2].x - p[0].x, p[2].y - p[0].y);
+	return true;
+}
+
+/* Lixels per pixel a map gives a box's surfaces along their worst direction: over the
+ * box's faces turned to both the eye and the light, and their two edge directions, the
+ * least ratio of an edge's length in the map's lixels to its length on the screen (a
+ * face stretched in the map along one direction only counts by that direction). -1
+ * where a corner is behind the map's light or the eye, or beyond the map's depth range;
+ * 0 when no face is turned to both. */
 static double box_density(const struct lx_frame *f, const struct lx_shadow_map *m, int w, int h, vec3 lo, vec3 hi)
 {
-	double l[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY}, p[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+	static const int face[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+	static const double normal[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+	vec3 c[8];
 	for (int k = 0; k < 8; k++) {
-		vec3 q = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-		vec4 c = m4_mul_point(&m->light_clip, q), e = m4_mul_point(&f->view.view_proj, q);
-		if (!(c.w > 0) || !(e.w > 0) || c.z > c.w)
+		c[k] = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec4 d = m4_mul_point(&m->light_clip, c[k]);
+		if (!(d.w > 0) || d.z > d.w)
 			return -1;
-		double x = c.x / c.w, y = c.y / c.w, sx = e.x / e.w, sy = e.y / e.w;
-		l[0] = fmin(l[0], x), l[1] = fmin(l[1], y), l[2] = fmax(l[2], x), l[3] = fmax(l[3], y);
-		p[0] = fmin(p[0], sx), p[1] = fmin(p[1], sy), p[2] = fmax(p[2], sx), p[3] = fmax(p[3], sy);
 	}
-	double lx = fmax(0, fmin(l[2], m->bounds[2]) - fmax(l[0], m->bounds[0])) * 0.5 * w;
-	double ly = fmax(0, fmin(l[3], m->bounds[3]) - fmax(l[1], m->bounds[1])) * 0.5 * h;
-	double px = fmax(0, fmin(p[2], 1) - fmax(p[0], -1)) * 0.5 * f->view.width;
-	double py = fmax(0, fmin(p[3], 1) - fmax(p[1], -1)) * 0.5 * f->view.height;
-	return px * py > 0 ? lx * ly / (px * py) : -1;
+	const struct lx_light *L = &f->light;
+	double worst = INFINITY;
+	for (int i = 0; i < 6; i++) {
+		vec3 n = v3(normal[i][0], normal[i][1], normal[i][2]), q[4];
+		for (int k = 0; k < 4; k++)
+			q[k] = c[face[i][k]];
+		vec3 mid = v3_scale(v3_add(q[0], q[2]), 0.5);
+		vec3 to_light = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, mid);
+		if (!(v3_dot(n, v3_sub(f->view.eye, mid)) > 0) || !(v3_dot(n, to_light) > 0))
+			continue;
+		double p1, p2, l1, l2;
+		if (!quad_edges(&f->view.view_proj, q, 0.5 * f->view.width, 0.5 * f->view.height, &p1, &p2) ||
+		    !quad_edges(&m->light_clip, q, 0.5 * w, 0.5 * h, &l1, &l2))
+			return -1;
+		if (p1 > 1e-9)
+			worst = fmin(worst, l1 / p1);
+		if (p2 > 1e-9)
+			worst = fmin(worst, l2 / p2);
+	}
+	return isfinite(worst) ? worst : 0;
 }
 
 /* Which maps a caster's own surfaces read. A plane map holds every caster in front of
  * its plane, so it can serve a caster's rays too, and often more densely than the small
  * fallback; but seen from the eye a caster may be stretched in it (a table leg over a
- * foreshortened floor). A caster reads the plane maps first only where each plane map
- * that sees it gives it as many lixels per pixel as the fallback does; else the fallback
- * alone (which covers every caster in view). */
+ * foreshortened floor), or lie beyond its depth range. A caster reads, in order, the
+ * plane maps that give it at least twice the fallback's lixels per pixel (a margin for
+ * an estimate made on its bounding box: measured, 1x lets table legs read a floor map
+ * that serves them worse than the fallback), then the fallback (which covers every
+ * caster in view). */
 static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, struct lx_shadow_result *out)
 {
 	const struct lx_shadow_map *fb = &out->maps[np];
 	if (!fb->rendered)
 		return;
 	const struct lx_region *fr = &atlas->regions[fb->region];
-	unsigned all = 0;
-	for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
-		all |= out->maps[m].rendered ? 1u << m : 0;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
 			continue;
 		double dfb = box_density(f, fb, fr->w, fr->h, f->bmin[id], f->bmax[id]);
-		bool planes_first = dfb >= 0;
-		for (int m = 0; m < out->map_count && planes_first; m++) {
+		if (!(dfb > 0))
+			continue; /* not measurable: the rule of lx_shadow_receiver_maps (the fallback) */
+		unsigned mask = 1u << np;
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 			const struct lx_shadow_map *pm = &out->maps[m];
-			if (!pm->rendered || pm->plane < 0)
-				continue;
-			double d = box_density(f, pm, pm->w, pm->h, f->bmin[id], f->bmax[id]);
-			planes_first = d != 0 && d >= dfb; /* 0: the map does not see it; -1: behind its light */
-			if (d == 0)
-				planes_first = true;
+			if (pm->rendered && pm->plane >= 0 && box_density(f, pm, pm->w, pm->h, f->bmin[id], f->bmax[id]) >= 2 * dfb)
+				mask |= 1u << m;
 		}
-		out->object_maps[id] = planes_first ? all : 1u << np;
+		out->object_maps[id] = mask;
 	}
 }
 
