@@ -137,7 +137,7 @@ struct plane_chart {
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
-static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
+static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next, bool twist,
 			struct lx_shadow_result *out, struct plane_chart *ch)
 {
 	const struct lx_scene *s = f->scene;
@@ -210,7 +210,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
 	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
 	double angle = 0;
-	ch->twisted = next >= 0 && twist_angle(v, P, &s->planes[next], &ch->win, &angle);
+	ch->twisted = twist && next >= 0 && twist_angle(v, P, &s->planes[next], &ch->win, &angle);
 	double quarter = round(angle / (M_PI / 2));
 	ch->on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
 	ch->cs = cos(angle), ch->sn = sin(angle);
@@ -476,71 +476,6 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 	return m4_finite(m);
 }
 
-/* Point-line tests: the map serves only rays that meet the plane's parallelogram (a
- * table top's rays, not the floor's around it). Its edges, projected to window
- * coordinates, are lines of the light image; valid as a convex test only when the whole
- * parallelogram lies in front of the eye. Clips *served_clip to them. */
-static void plane_edges(const struct lx_view *v, const struct lx_plane *P, const mat4 *a, struct lx_shadow_map *map,
-			struct lx_poly *served_clip)
-{
-	vec3 pc[4] = {P->corner, v3_add(P->corner, P->edge1), v3_add(v3_add(P->corner, P->edge1), P->edge2),
-		      v3_add(P->corner, P->edge2)};
-	double sp[4][3];
-	for (int k = 0; k < 4; k++) {
-		vec4 cc = m4_mul_point(&v->view_proj, pc[k]);
-		if (!(cc.w > 0))
-			return;
-		/* window coordinates, then through A_l into region clip space (homogeneous) */
-		double wx = (cc.x + cc.w) * 0.5 * v->width, wy = (cc.y + cc.w) * 0.5 * v->height;
-		sp[k][0] = a->m[0] * wx + a->m[4] * wy + a->m[12] * cc.w;
-		sp[k][1] = a->m[1] * wx + a->m[5] * wy + a->m[13] * cc.w;
-		sp[k][2] = cc.w;
-	}
-	vec2 mid = {0, 0};
-	for (int k = 0; k < 4; k++)
-		mid.x += sp[k][0] / sp[k][2] / 4, mid.y += sp[k][1] / sp[k][2] / 4;
-	for (int k = 0; k < 4; k++) {
-		const double *p0 = sp[k], *p1 = sp[(k + 1) % 4];
-		double l0 = p0[1] * p1[2] - p0[2] * p1[1], l1 = p0[2] * p1[0] - p0[0] * p1[2],
-		       l2 = p0[0] * p1[1] - p0[1] * p1[0];
-		double norm = hypot(l0, l1);
-		if (!(norm > 0))
-			continue;
-		double sgn = l0 * mid.x + l1 * mid.y + l2 >= 0 ? 1 : -1;
-		double *e = map->edges[map->edge_count++];
-		e[0] = sgn * l0 / norm, e[1] = sgn * l1 / norm, e[2] = sgn * l2 / norm;
-		lx_poly_clip_halfplane(served_clip, e[0], e[1], e[2], served_clip);
-	}
-}
-
-/* The rays a map serves, on G, for the fallback to leave out. The ray through clip
- * (x, y) holds X = inv(M) (x, y, 0, 1), linear in (x, y, 1); only the part of the
- * served polygon whose rays meet G can be charted (a half-plane), the rest stays with
- * the fallback. */
-static void served_on_g(const struct lx_frame *f, const struct lx_light_space *ls, const mat4 *m,
-			struct lx_poly *served_clip, struct lx_poly *served)
-{
-	mat4 inv;
-	if (!m4_invert(m, &inv))
-		return;
-	vec4 ex = {inv.m[0], inv.m[1], inv.m[2], inv.m[3]}, ey = {inv.m[4], inv.m[5], inv.m[6], inv.m[7]},
-	     e1 = {inv.m[12], inv.m[13], inv.m[14], inv.m[15]};
-	double fa = lx_light_space_front(ls, f, ex), fb = lx_light_space_front(ls, f, ey), fc = lx_light_space_front(ls, f, e1);
-	double fmargin = 1e-9 * (fabs(fa) + fabs(fb) + fabs(fc));
-	lx_poly_clip_halfplane(served_clip, fa, fb, fc - fmargin, served_clip);
-	vec2 corners[LX_POLY_MAX];
-	int nc = 0;
-	for (int k = 0; k < served_clip->n; k++) {
-		vec4 X = {ex.x * served_clip->v[k].x + ey.x * served_clip->v[k].y + e1.x,
-			  ex.y * served_clip->v[k].x + ey.y * served_clip->v[k].y + e1.y,
-			  ex.z * served_clip->v[k].x + ey.z * served_clip->v[k].y + e1.z,
-			  ex.w * served_clip->v[k].x + ey.w * served_clip->v[k].y + e1.w};
-		if (lx_light_space_chart(ls, f, X, &corners[nc]))
-			nc++;
-	}
-	lx_poly_hull(corners, nc, served);
-}
-
 /* A_l for one piece: window (x q, y q, z q, q) -> region clip, x_clip = 2 u / w - 1. */
 static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *ft)
 {
@@ -573,12 +508,10 @@ static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, 
 /* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
  * lixel budget; returns the rays the first map serves as a polygon on G (empty when none
  * or when they cannot be charted there). */
-static void build_plane_map(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_atlas *atlas,
-			    const struct plane_chart *ch, const struct plane_pieces *pc, const mat4 *depth, int i,
-			    bool edges, long budget, double max_lpp, struct lx_shadow_map *map,
-			    struct lx_shadow_map *second, struct lx_poly *served)
+static void build_plane_map(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
+			    const mat4 *depth, int i, long budget, double max_lpp, struct lx_shadow_map *map,
+			    struct lx_shadow_map *second)
 {
-	const struct lx_plane *P = &f->scene->planes[i];
 	struct plane_fit fit[PIECES_MAX];
 	fit_plane(ch, pc, &atlas->regions[map->region], atlas, budget, max_lpp, fit);
 	for (int k = 0; k < pc->n; k++) {
@@ -607,12 +540,6 @@ static void build_plane_map(const struct lx_frame *f, const struct lx_light_spac
 			mp->screen[0] = fmin(mp->screen[0], x), mp->screen[1] = fmin(mp->screen[1], y);
 			mp->screen[2] = fmax(mp->screen[2], x), mp->screen[3] = fmax(mp->screen[3], y);
 		}
-		if (k > 0)
-			continue;
-		struct lx_poly served_clip = {4, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}};
-		if (edges)
-			plane_edges(&f->view, P, &ak, mp, &served_clip);
-		served_on_g(f, ls, &mk, &served_clip, served);
 	}
 }
 
@@ -809,27 +736,22 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	long budget[PLANE_MAPS];
 	struct plane_pieces pc[PLANE_MAPS];
 	mat4 depth[PLANE_MAPS];
-	bool edges[PLANE_MAPS], piece_free = atlas->count > np + 1 && atlas->regions[0].variable;
+	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable;
 	int piece_of = -1;
 	for (int i = 0; i < np; i++) {
-		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, out, &ch[i]);
+		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o->plane_twist || o->square_regions, out, &ch[i]);
 		if (!ok[i])
 			continue;
-		/* only the first map carries point-line tests: where a later plane map can take
-		 * the rays that miss this plane and no twist already sends them out of bounds (a
-		 * table top over the floor); a map with them keeps to one piece */
-		edges[i] = i == 0 && i + 1 < np && !ch[i].twisted;
-		plane_pieces(&ch[i], piece_free && !edges[i], &pc[i]);
+		plane_pieces(&ch[i], piece_free, &pc[i]);
 		ok[i] = plane_depth(f, &ch[i], &pc[i], faces, nfaces, out, &f->scene->planes[i], &depth[i]);
 		if (ok[i] && pc[i].n > 1)
 			piece_free = false, piece_of = i;
 	}
 	plane_budgets(atlas, o, pc, ok, np, budget);
-	struct lx_poly served[PLANE_MAPS] = {{0}};
 	for (int i = 0; i < np; i++)
 		if (ok[i])
-			build_plane_map(f, &ls, atlas, &ch[i], &pc[i], &depth[i], i, edges[i], budget[i], o->plane_max_lpp,
-					&out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL, &served[i]);
+			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i],
+					piece_of == i ? &out->maps[np + 1] : NULL);
 	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
 	bool needs[LX_MAX_PLANES] = {false};

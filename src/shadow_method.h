@@ -61,6 +61,7 @@ struct lx_method_options {
 	bool square_regions; /* plane maps: the paper's square maps, not shapes fitted per frame */
 	bool shared_budget;  /* plane maps: one needing less than its budget hands the rest on */
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0: no cap) */
+	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 };
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
