@@ -543,12 +543,12 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 	}
 }
 
-/* Each plane map's lixels this frame: its own budget, or with shared budgets what the
- * others do not need at the highest density asked for (lpp 1 when none is). */
+/* Each plane map's lixels this frame: its own budget, and with shared budgets the
+ * budgets of the maps that serve nothing this frame. */
 static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
 			  const struct plane_pieces *pc, const bool *ok, int np, long *budget)
 {
-	long own = (long)o->plane_lixels * o->plane_lixels, pool = 0, need[PLANE_MAPS], want = 0;
+	long own = (long)o->plane_lixels * o->plane_lixels, pool = 0, need[PLANE_MAPS];
 	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
 	for (int i = 0; i < np; i++) {
 		budget[i] = atlas->regions[i].variable ? own : (long)atlas->regions[i].w * atlas->regions[i].h;
@@ -558,20 +558,25 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 		need[i] = (long)ceil(density * area);
 		pool += budget[i];
 	}
+	(void)pool;
 	if (!o->shared_budget || o->square_regions)
 		return;
-	for (int i = 0; i < np; i++)
-		want += need[i];
-	if (want <= 0)
-		return;
-	/* every map gets what it needs where the pool holds it, the rest in proportion */
-	for (int i = 0; i < np; i++)
-		budget[i] = ok[i] ? (long)((double)pool * need[i] / want) : 0;
-	if (want <= pool) {
-		long spare = pool - want;
-		for (int i = 0; i < np; i++)
-			budget[i] = ok[i] ? need[i] + (long)((double)spare * need[i] / want) : 0;
+	/* The budget of a map with nothing to serve this frame goes to the maps that need
+	 * more than their own (for lpp 1, or the cap), in proportion to their shortfall. A
+	 * map that needs less keeps its budget: beyond lpp 1 its lixels still serve the
+	 * casters that read it (measured: handing them over cost accuracy on every view). */
+	long spare = 0, short_by = 0;
+	for (int i = 0; i < np; i++) {
+		if (!ok[i])
+			spare += budget[i], budget[i] = 0;
+		else if (need[i] > budget[i])
+			short_by += need[i] - budget[i];
 	}
+	if (short_by <= 0 || spare <= 0)
+		return;
+	for (int i = 0; i < np; i++)
+		if (ok[i] && need[i] > budget[i])
+			budget[i] += (long)fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
 /* Whether a world box is outside the view frustum (all corners beyond one clip plane). */
