@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_METHODS 8
+#define MAX_METHODS 12
 #define MAX_CONFIGS 16
 #define ANIMATION_SAMPLES 5 /* times at which the animation's accuracy is measured */
 
