@@ -53,8 +53,10 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 	} else if (!strcmp(opt, "--plane-max-lpp")) {
 		char *end;
 		double x = strtod(value, &end);
-		if (end == value || *end || !(x > 0 && x <= 1e4))
-			return lx_arg_bad(cmd, opt, "lixels per pixel, a number in (0, 10000]", value);
+		if (!strcmp(value, "none"))
+			x = -1; /* no cap at all */
+		else if (end == value || *end || !(x > 0 && x <= 1e4))
+			return lx_arg_bad(cmd, opt, "lixels per pixel, a number in (0, 10000], or none", value);
 		o->plane_max_lpp = x;
 	} else
 		return -1;

@@ -27,6 +27,7 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
 	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (one\n" \
 	"                       that needs less hands the rest to the other)\n" \
-	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill)\n"
+	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
+	"                       default none: every lixel of the budget)\n"
 
 #endif

@@ -33,16 +33,17 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 			free(p);
 		return;
 	}
-	if (m <= 32) /* the usual box of 8 corners: insertion sort beats qsort's set-up */
-		for (int i = 1; i < m; i++) {
+	/* Shell sort (Ciura's gaps): the few hundred points here sort in place without qsort's
+	 * call per comparison; this runs several times per frame */
+	static const int gaps[] = {701, 301, 132, 57, 23, 10, 4, 1};
+	for (size_t g = 0; g < sizeof gaps / sizeof gaps[0]; g++)
+		for (int i = gaps[g]; i < m; i++) {
 			vec2 t = p[i];
 			int j = i;
-			for (; j > 0 && cmp_vec2(&p[j - 1], &t) > 0; j--)
-				p[j] = p[j - 1];
+			for (; j >= gaps[g] && cmp_vec2(&p[j - gaps[g]], &t) > 0; j -= gaps[g])
+				p[j] = p[j - gaps[g]];
 			p[j] = t;
 		}
-	else
-		qsort(p, (size_t)m, sizeof(vec2), cmp_vec2);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
 		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)

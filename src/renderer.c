@@ -318,6 +318,7 @@ static int object_draws(const struct lx_renderer *r, const struct lx_shadow_resu
 {
 	unsigned mask = lx_shadow_receiver_maps(res, id);
 	int rect[LX_MAX_MAPS][4], nr = 0;
+	unsigned bit[LX_MAX_MAPS];
 	bool split = mask != 0 && id < r->d.scene->plane_count;
 	for (int m = 0; split && m < res->map_count && m < LX_MAX_MAPS; m++) {
 		if (!(mask & 1u << m))
@@ -334,7 +335,7 @@ static int object_draws(const struct lx_renderer *r, const struct lx_shadow_resu
 			v = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], v));
 			rect[nr][k] = (int)v;
 		}
-		nr++;
+		bit[nr++] = 1u << m;
 	}
 	if (!split || n + 1 + 3 * (2 * nr + 1) * (nr + 1) > LX_MAX_DRAWS) {
 		if (n < LX_MAX_DRAWS)
@@ -355,26 +356,34 @@ static int object_draws(const struct lx_renderer *r, const struct lx_shadow_resu
 		int y0 = ys[i], y1 = ys[i + 1];
 		if (y1 <= y0)
 			continue;
-		/* the spans of this slab covered by a rectangle, merged */
-		int span[LX_MAX_MAPS][2], ns = 0;
+		/* the spans of this slab covered by a rectangle, by start, each with its map;
+		 * overlapping spans merge and read both maps */
+		struct {
+			int a, b;
+			unsigned m;
+		} span[LX_MAX_MAPS], t;
+		int ns = 0;
 		for (int k = 0; k < nr; k++)
 			if (rect[k][1] <= y0 && rect[k][3] >= y1 && rect[k][2] > rect[k][0]) {
 				int j = ns++;
-				span[j][0] = rect[k][0], span[j][1] = rect[k][2];
-				for (; j > 0 && span[j][0] < span[j - 1][0]; j--) {
-					int a = span[j][0], b = span[j][1];
-					span[j][0] = span[j - 1][0], span[j][1] = span[j - 1][1];
-					span[j - 1][0] = a, span[j - 1][1] = b;
-				}
+				span[j].a = rect[k][0], span[j].b = rect[k][2], span[j].m = bit[k];
+				for (; j > 0 && span[j].a < span[j - 1].a; j--)
+					t = span[j], span[j] = span[j - 1], span[j - 1] = t;
 			}
 		int x = 0;
 		for (int k = 0; k < ns; k++) {
-			int a = span[k][0] > x ? span[k][0] : x, b = span[k][1];
+			int a = span[k].a, b = span[k].b;
+			unsigned m = span[k].m;
+			while (k + 1 < ns && span[k + 1].a < b) { /* overlapping: one span, both maps */
+				k++;
+				b = span[k].b > b ? span[k].b : b;
+				m |= span[k].m;
+			}
 			if (a > x)
 				out[n++] = (struct draw){id, 0, true, {x, y0, a, y1}};
 			if (b > a)
-				out[n++] = (struct draw){id, mask, true, {a, y0, b, y1}};
-			x = b > x ? b : x;
+				out[n++] = (struct draw){id, m, true, {a, y0, b, y1}};
+			x = b;
 		}
 		if (x < r->d.width)
 			out[n++] = (struct draw){id, 0, true, {x, y0, r->d.width, y1}};

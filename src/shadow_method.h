@@ -60,7 +60,7 @@ struct lx_method_options {
 	int fallback_lixels; /* the plane-optimal method's fallback map (128) */
 	bool square_regions; /* plane maps: the paper's square maps, not shapes fitted per frame */
 	bool shared_budget;  /* plane maps: one needing less than its budget hands the rest on */
-	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0: no cap) */
+	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
 	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 };
 #define LX_METHOD_OPTIONS_DEFAULT \
