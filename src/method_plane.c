@@ -633,59 +633,57 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	return true;
 }
 
-/* The quad q taken through a projective matrix to 2D (sx, sy scale the clip
- * coordinates): the lengths of its two edges from q[0]; false where a corner is behind
- * the matrix's centre. */
-static bool quad_edges(const mat4 *m, const vec3 *q, double sx, double sy, double *e1, double *e2)
+/* A box's corners through a projective matrix, in 2D units (sx, sy scale clip x, y);
+ * false where a corner lies behind the matrix's centre or (depth_limited) beyond its far
+ * plane. */
+static bool box_image(const mat4 *m, const vec3 *c, double sx, double sy, bool depth_limited, vec2 *out)
 {
-	vec2 p[3];
-	for (int k = 0; k < 3; k++) {
-		vec4 c = m4_mul_point(m, q[k == 2 ? 3 : k]);
-		if (!(c.w > 0))
+	for (int k = 0; k < 8; k++) {
+		vec4 d = m4_mul_point(m, c[k]);
+		if (!(d.w > 0) || (depth_limited && d.z > d.w))
 			return false;
-		p[k] = (vec2){c.x / c.w * sx, c.y / c.w * sy};
+		out[k] = (vec2){d.x / d.w * sx, d.y / d.w * sy};
 	}
-	*e1 = hypot(p[1].x - p[0].x, p[1].y - p[0].y);
-	*e2 = hypot(p[2].x - p[0].x, p[2].y - p[0].y);
 	return true;
 }
 
-/* Lixels per pixel a map gives a box's surfaces along their worst direction: over the
- * box's faces turned to both the eye and the light, and their two edge directions, the
- * least ratio of an edge's length in the map's lixels to its length on the screen (a
- * face stretched in the map along one direction only counts by that direction). -1
- * where a corner is behind the map's light or the eye, or beyond the map's depth range;
- * 0 when no face is turned to both. */
-static double box_density(const struct lx_frame *f, const struct lx_shadow_map *m, int w, int h, vec3 lo, vec3 hi)
+/* The box's faces turned to both the eye and the light, as corner index triples: a face's
+ * corner and its two edges' far ends. Returns the count. */
+static int box_faces(const struct lx_frame *f, const vec3 *c, int (*faces)[3])
 {
-	static const int face[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+	static const int face[6][3] = {{0, 2, 4}, {1, 5, 3}, {0, 4, 1}, {2, 3, 6}, {0, 1, 2}, {4, 6, 5}};
 	static const double normal[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-	vec3 c[8];
-	for (int k = 0; k < 8; k++) {
-		c[k] = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-		vec4 d = m4_mul_point(&m->light_clip, c[k]);
-		if (!(d.w > 0) || d.z > d.w)
-			return -1;
-	}
 	const struct lx_light *L = &f->light;
-	double worst = INFINITY;
+	int n = 0;
 	for (int i = 0; i < 6; i++) {
-		vec3 n = v3(normal[i][0], normal[i][1], normal[i][2]), q[4];
-		for (int k = 0; k < 4; k++)
-			q[k] = c[face[i][k]];
-		vec3 mid = v3_scale(v3_add(q[0], q[2]), 0.5);
+		vec3 nrm = v3(normal[i][0], normal[i][1], normal[i][2]);
+		vec3 mid = v3_scale(v3_add(c[face[i][1]], c[face[i][2]]), 0.5);
 		vec3 to_light = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, mid);
-		if (!(v3_dot(n, v3_sub(f->view.eye, mid)) > 0) || !(v3_dot(n, to_light) > 0))
-			continue;
-		double p1, p2, l1, l2;
-		if (!quad_edges(&f->view.view_proj, q, 0.5 * f->view.width, 0.5 * f->view.height, &p1, &p2) ||
-		    !quad_edges(&m->light_clip, q, 0.5 * w, 0.5 * h, &l1, &l2))
-			return -1;
-		if (p1 > 1e-9)
-			worst = fmin(worst, l1 / p1);
-		if (p2 > 1e-9)
-			worst = fmin(worst, l2 / p2);
+		if (v3_dot(nrm, v3_sub(f->view.eye, mid)) > 0 && v3_dot(nrm, to_light) > 0)
+			memcpy(faces[n++], face[i], sizeof face[i]);
 	}
+	return n;
+}
+
+/* Lixels per pixel a map gives a box's surfaces along their worst direction: over the
+ * given faces and their two edge directions, the least ratio of an edge's length in the
+ * map's lixels to its length on the screen (pix: the corners in pixels). A face stretched
+ * in the map along one direction counts by that direction. -1 where a corner is behind
+ * the map's light or beyond its depth range; 0 without faces. */
+static double box_density(const struct lx_shadow_map *m, int w, int h, const vec3 *c, const vec2 *pix,
+			  int (*faces)[3], int nf)
+{
+	vec2 lix[8];
+	if (!box_image(&m->light_clip, c, 0.5 * w, 0.5 * h, true, lix))
+		return -1;
+	double worst = INFINITY;
+	for (int i = 0; i < nf; i++)
+		for (int e = 1; e <= 2; e++) {
+			int a = faces[i][0], b = faces[i][e];
+			double p = hypot(pix[b].x - pix[a].x, pix[b].y - pix[a].y);
+			if (p > 1e-9)
+				worst = fmin(worst, hypot(lix[b].x - lix[a].x, lix[b].y - lix[a].y) / p);
+		}
 	return isfinite(worst) ? worst : 0;
 }
 
@@ -706,13 +704,22 @@ static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
 			continue;
-		double dfb = box_density(f, fb, fr->w, fr->h, f->bmin[id], f->bmax[id]);
+		vec3 c[8];
+		vec2 pix[8];
+		int faces[6][3];
+		for (int k = 0; k < 8; k++)
+			c[k] = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
+				  k & 4 ? f->bmax[id].z : f->bmin[id].z);
+		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
+			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
+		int nf = box_faces(f, c, faces);
+		double dfb = box_density(fb, fr->w, fr->h, c, pix, faces, nf);
 		if (!(dfb > 0))
-			continue; /* not measurable: the rule of lx_shadow_receiver_maps (the fallback) */
+			continue;
 		unsigned mask = 1u << np;
 		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 			const struct lx_shadow_map *pm = &out->maps[m];
-			if (pm->rendered && pm->plane >= 0 && box_density(f, pm, pm->w, pm->h, f->bmin[id], f->bmax[id]) >= 2 * dfb)
+			if (pm->rendered && pm->plane >= 0 && box_density(pm, pm->w, pm->h, c, pix, faces, nf) >= 2 * dfb)
 				mask |= 1u << m;
 		}
 		out->object_maps[id] = mask;
