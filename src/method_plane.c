@@ -748,7 +748,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	long budget[PLANE_MAPS];
 	struct plane_pieces pc[PLANE_MAPS];
 	mat4 depth[PLANE_MAPS];
-	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable;
+	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	for (int i = 0; i < np; i++) {
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o->plane_twist || o->square_regions, out, &ch[i]);

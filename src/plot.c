@@ -42,9 +42,11 @@ static int text(struct canvas *c, int x, int y, const char *s, int scale, const 
 
 void lx_plot_color(int i, uint8_t rgb[3])
 {
-	static const uint8_t pal[8][3] = {{90, 90, 90},  {31, 119, 180}, {214, 39, 40}, {44, 160, 44},
-					  {255, 127, 14}, {148, 103, 189}, {23, 190, 207}, {140, 86, 75}};
-	memcpy(rgb, pal[((i % 8) + 8) % 8], 3);
+	/* as many colours as the bench takes methods (12) */
+	static const uint8_t pal[12][3] = {{90, 90, 90},    {31, 119, 180}, {214, 39, 40},  {44, 160, 44},
+					   {255, 127, 14},  {148, 103, 189}, {23, 190, 207}, {140, 86, 75},
+					   {227, 119, 194}, {188, 189, 34},  {0, 0, 0},      {174, 199, 232}};
+	memcpy(rgb, pal[((i % 12) + 12) % 12], 3);
 }
 
 /* A "nice" tick step for a range. */

@@ -54,10 +54,12 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 			o->plane_twist = opt[0] == 't';
 		else if (!strcmp(opt, "uncapped"))
 			o->plane_max_lpp = -1;
+		else if (!strcmp(opt, "onepiece"))
+			o->plane_one_piece = true;
 		else if (!strncmp(opt, "lpp", 3) && opt[3] && (o->plane_max_lpp = strtod(opt + 3, &end), !*end) &&
 			 o->plane_max_lpp > 0 && o->plane_max_lpp <= 1e4) {
 		} else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped or lppX (0 < X <= 10000)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece or lppX (0 < X <= 10000)",
 				 spec, opt);
 			return NULL;
 		}
