@@ -665,11 +665,19 @@ static int box_faces(const struct lx_frame *f, const vec3 *c, int (*faces)[3])
 	return n;
 }
 
+/* The smaller singular value of the 2x2 matrix (a b; c d). */
+static double sigma_min(double a, double b, double c, double d)
+{
+	double p = a * a + b * b + c * c + d * d, q = a * d - b * c; /* sum of squares, determinant */
+	double disc = sqrt(fmax(0, p * p - 4 * q * q));
+	return sqrt(fmax(0, 0.5 * (p - disc)));
+}
+
 /* Lixels per pixel a map gives a box's surfaces along their worst direction: over the
- * given faces and their two edge directions, the least ratio of an edge's length in the
- * map's lixels to its length on the screen (pix: the corners in pixels). A face stretched
- * in the map along one direction counts by that direction. -1 where a corner is behind
- * the map's light or beyond its depth range; 0 without faces. */
+ * given faces, the least singular value of the map from the face's screen image to its
+ * lixel image (taken affine per face, from its two edges; pix: the corners in pixels).
+ * -1 where a corner is behind the map's light or beyond its depth range; 0 without a
+ * face seen larger than a pixel. */
 static double box_density(const struct lx_shadow_map *m, int w, int h, const vec3 *c, const vec2 *pix,
 			  int (*faces)[3], int nf)
 {
@@ -677,24 +685,28 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 	if (!box_image(&m->light_clip, c, 0.5 * w, 0.5 * h, true, lix))
 		return -1;
 	double worst = INFINITY;
-	for (int i = 0; i < nf; i++)
-		for (int e = 1; e <= 2; e++) {
-			int a = faces[i][0], b = faces[i][e];
-			double p = hypot(pix[b].x - pix[a].x, pix[b].y - pix[a].y);
-			if (p > 1e-9)
-				worst = fmin(worst, hypot(lix[b].x - lix[a].x, lix[b].y - lix[a].y) / p);
-		}
+	for (int i = 0; i < nf; i++) {
+		int o = faces[i][0], u = faces[i][1], v = faces[i][2];
+		/* P: the face's edges on the screen, L: in lixels; J = L P^-1 */
+		double p11 = pix[u].x - pix[o].x, p12 = pix[v].x - pix[o].x, p21 = pix[u].y - pix[o].y, p22 = pix[v].y - pix[o].y;
+		double l11 = lix[u].x - lix[o].x, l12 = lix[v].x - lix[o].x, l21 = lix[u].y - lix[o].y, l22 = lix[v].y - lix[o].y;
+		double det = p11 * p22 - p12 * p21;
+		if (!(fabs(det) > 1)) /* seen edge-on, or under a pixel: no pixels to serve */
+			continue;
+		double i11 = p22 / det, i12 = -p12 / det, i21 = -p21 / det, i22 = p11 / det;
+		worst = fmin(worst, sigma_min(l11 * i11 + l12 * i21, l11 * i12 + l12 * i22, l21 * i11 + l22 * i21,
+					      l21 * i12 + l22 * i22));
+	}
 	return isfinite(worst) ? worst : 0;
 }
 
 /* Which maps a caster's own surfaces read. A plane map holds every caster in front of
  * its plane, so it can serve a caster's rays too, and often more densely than the small
- * fallback; but seen from the eye a caster may be stretched in it (a table leg over a
- * foreshortened floor), or lie beyond its depth range. A caster reads, in order, the
- * plane maps that give it at least twice the fallback's lixels per pixel (a margin for
- * an estimate made on its bounding box: measured, 1x lets table legs read a floor map
- * that serves them worse than the fallback), then the fallback (which covers every
- * caster in view). */
+ * fallback; but seen from the eye a caster may be squeezed in it along some direction (a
+ * sphere over a floor seen from a millimetre above it: the floor map is three lixels
+ * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
+ * its faces at least the fallback's lixels per pixel in their worst direction, then the
+ * fallback (which covers every caster in view). */
 static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, struct lx_shadow_result *out)
 {
 	const struct lx_shadow_map *fb = &out->maps[np];
@@ -719,7 +731,7 @@ static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *
 		unsigned mask = 1u << np;
 		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 			const struct lx_shadow_map *pm = &out->maps[m];
-			if (pm->rendered && pm->plane >= 0 && box_density(pm, pm->w, pm->h, c, pix, faces, nf) >= 2 * dfb)
+			if (pm->rendered && pm->plane >= 0 && box_density(pm, pm->w, pm->h, c, pix, faces, nf) >= dfb)
 				mask |= 1u << m;
 		}
 		out->object_maps[id] = mask;

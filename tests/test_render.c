@@ -205,7 +205,8 @@ static void paper_bad_case_is_measured(void **state)
 
 /* Views where the plane method once lost shadows without a word (a caster's vertex
  * behind a plane map's light flattened onto its near plane, a plane's image mirrored
- * when the eye sees its unlit side, table legs served by a foreshortened floor map): on
+ * when the eye sees its unlit side, table legs and a sphere served by a foreshortened
+ * floor map): on
  * each its mismatch stays within 0.05 percentage points of uniform's, or it says on
  * which plane it fell back. */
 static void plane_keeps_every_shadow(void **state)
@@ -261,6 +262,30 @@ static void plane_keeps_every_shadow(void **state)
 		lx_render_report_free(&u);
 		lx_render_report_free(&p);
 	}
+	/* The eye a millimetre above the floor, at the default size (at 320x240 the floor's
+	 * band is too thin for a caster to pick its map): the sphere once read the floor map,
+	 * three lixels tall there, and lost 10% of the pixels' shadows. Known gap: it now
+	 * reads the 128x128 fallback while it fills a third of the screen, measured +0.093
+	 * points; held to 0.15 so that the loss cannot come back unnoticed. */
+	struct lx_scene s;
+	lx_scene_default(&s);
+	s.camera.eye = v3(0, 0.001, 3), s.camera.at = v3(0, 0.001, 0);
+	double pct[2];
+	for (int k = 0; k < 2; k++) {
+		struct lx_render_job job = {.method = k ? "plane" : "uniform", .platform = "osmesa", .scene = s, .width = 1024,
+					    .height = 768, .timed_frames = 1, .measure = true, .bias_codes = LX_DEFAULT_BIAS_CODES,
+					    .reference_threads = 2};
+		struct lx_render_report r;
+		char err[512];
+		if (lx_render_run(&job, &r, err, sizeof err))
+			fail_msg("%s", err);
+		pct[k] = r.mismatch.mismatch_pct;
+		lx_render_report_free(&r);
+	}
+	print_message("%-36s plane %.4f%%, uniform %.4f%%: %+.4f points\n", "eye a millimetre above the floor", pct[1], pct[0],
+		      pct[1] - pct[0]);
+	if (!(pct[1] - pct[0] <= 0.15))
+		fail_msg("eye a millimetre above the floor: plane-optimal %.4f%% against uniform's %.4f%%", pct[1], pct[0]);
 }
 
 /* PSM, LiSPSM and TSM under the same edge bound on every configuration. */
