@@ -240,15 +240,16 @@ int lx_kiosk_main(int argc, char **argv)
 		}
 		plat->swap(plat);
 		frame++, window_frames++;
-		/* input: keys, then the button's edges and the time that passed */
-		enum lx_button_event ev = LX_BUTTON_NONE;
+		/* input: keys, then the button's edges and the time that passed; every press
+		 * counts, even several within one frame (a slow frame must not swallow one) */
+		int shorts = 0, longs = 0;
 		for (int key; (key = plat->poll_key(plat)) != 0;) {
 			if (key == 'q' || key == 27 || key < 0)
 				stop_requested = 1;
 			else if (key == ' ')
-				ev = LX_BUTTON_SHORT;
+				shorts++;
 			else if (key == 'l')
-				ev = LX_BUTTON_LONG;
+				longs++;
 		}
 		if (gpio) {
 			struct pollfd pfd = {.fd = lx_gpio_button_fd(gpio), .events = POLLIN};
@@ -259,18 +260,19 @@ int lx_kiosk_main(int argc, char **argv)
 					break;
 				for (int i = 0; i < n; i++) {
 					enum lx_button_event e = lx_button_edge(&button, edges[i].high, edges[i].t_ns);
-					ev = e != LX_BUTTON_NONE ? e : ev;
+					shorts += e == LX_BUTTON_SHORT, longs += e == LX_BUTTON_LONG;
 				}
 			}
 			enum lx_button_event e = lx_button_tick(&button, now_ns());
-			ev = e != LX_BUTTON_NONE ? e : ev;
+			shorts += e == LX_BUTTON_SHORT, longs += e == LX_BUTTON_LONG;
 		}
-		if (ev == LX_BUTTON_SHORT && board.method_count > 1) {
+		for (int k = 0; k < shorts && board.method_count > 1; k++) {
 			int next = (current + 1) % board.method_count;
 			printf("method: %s -> %s\n", board.methods[current], board.methods[next]);
 			fflush(stdout);
 			current = next;
-		} else if (ev == LX_BUTTON_LONG) {
+		}
+		for (int k = 0; k < longs; k++) {
 			overlay = !overlay;
 			nlines = 0; /* fresh text at once */
 			printf("overlay: %s\n", overlay ? "on" : "off");
