@@ -1,14 +1,17 @@
 /* Plane-optimal shadow maps (papers/000, Chong and Gortler): one map per plane of
  * interest (the scene's first two planes: floor and wall, or table and floor) whose
  * light image samples that plane exactly where the view's pixels do, and a small
- * conventional fallback map for the wanted rays no plane map serves,
- * C_fallback = HULL(C_tot - C_plane1 - C_plane2).
+ * conventional fallback map, focused on the receivers no plane map takes (the casters
+ * in view, and planes left without a map).
  *
- * Per plane map: the plane-optimal camera (plane_optimal.c), then A_l: a twist that
- * makes the line where this plane meets the next one horizontal with this plane below
- * it, a uniform scale when the budget cannot give a lixel per pixel, and a translation
- * of the wanted rays' bounding rectangle to lixel (0, 0); then depth fitted to the
- * casters and receivers in the map's frustum (unit cube clipping in z). */
+ * Per plane map: the plane-optimal camera (plane_optimal.c), then A_l: a mirror when the
+ * eye sees the plane's unlit side, optionally the paper's twist (the line where this
+ * plane meets the next one level), and per piece (one rectangle around the casters'
+ * footprints, or two around two clusters of them) a scale set by the lixel budget and a
+ * translation to lixel (0, 0); the map's w x h follows the pieces' aspect. Depth is
+ * fitted once per plane to the casters and the plane's wanted part (unit cube clipping
+ * in z). Each plane's pixels read only its own maps; a caster reads the plane maps that
+ * are dense enough for it, then the fallback. */
 #include "light_space.h"
 #include "plane_optimal.h"
 #include <math.h>
