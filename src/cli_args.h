@@ -25,8 +25,8 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
-	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (one\n" \
-	"                       that needs less hands the rest to the other)\n" \
+	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (a\n" \
+	"                       map with nothing to serve this frame hands its budget on)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
 	"                       default none: every lixel of the budget)\n"
 

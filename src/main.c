@@ -69,7 +69,8 @@ static void render_usage(FILE *f)
 		"  --frames N           timed frames after 3 warm-up frames (default 10)\n"
 		"  --bias CODES         depth bias in 24-bit depth codes (default %g)\n"
 		"  --uniform-lixels N   side of the one-map methods' map (default 512)\n"
-		"  --plane-lixels N     side of each plane-optimal map (default 350)\n"
+		"  --plane-lixels N     each plane-optimal map holds N^2 lixels, in a shape fitted\n"
+		"                       per frame (default 350)\n"
 		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128)\n"
 		LX_PLANE_OPTION_HELP
 		"  --mediump            use the shaders' mediump path (11-bit depth) as boards without\n"
