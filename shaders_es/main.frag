@@ -11,9 +11,6 @@
 #ifndef LX_USE_3
 #define LX_USE_3 0
 #endif
-#ifndef LX_EDGES
-#define LX_EDGES 0
-#endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
 #else
@@ -22,7 +19,7 @@ precision mediump float;
 // Main pass: shading and the shadow decision. With LX_DECISION defined it writes the
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255.
 // The loader compiles one variant per set of maps a frame uses: LX_USE_i is 1 for each
-// map i that is rendered, LX_EDGES is 1 when map 0 has point-line tests.
+// map i that a draw reads.
 // With no maps (method none) nothing is shadowed.
 //!include depth_rgba.glsl
 uniform vec4 u_light; // xyz: position (w = 1) or direction of travel (w = 0)
@@ -32,10 +29,6 @@ uniform float u_object_id;
 uniform sampler2D u_atlas;
 uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
                                 // empty when not rendered
-#if LX_EDGES
-uniform vec3 u_edges[4]; // the first map's a x + b y + c >= 0 on each edge (a table top's
-                         // point-line tests)
-#endif
 uniform float u_bias;           // in depth codes
 varying vec4 v_shadow[LX_MAPS];
 #endif
@@ -53,13 +46,8 @@ bool serves(vec3 p, float w, vec4 region)
 }
 // The first map, in order, that serves the point wins; later maps are only looked at
 // where the earlier ones fail (coherent regions skip them), then one fetch.
-#define TRY(i, extra) if (!found) { p = v_shadow[i].xyz / v_shadow[i].w; \
-	found = serves(p, v_shadow[i].w, u_region[i]) extra; }
-#if LX_EDGES
-#define EDGES(q) && min(min(dot(u_edges[0], q), dot(u_edges[1], q)), min(dot(u_edges[2], q), dot(u_edges[3], q))) >= 0.0
-#else
-#define EDGES(q)
-#endif
+#define TRY(i) if (!found) { p = v_shadow[i].xyz / v_shadow[i].w; \
+	found = serves(p, v_shadow[i].w, u_region[i]); }
 #endif
 
 void main()
@@ -73,16 +61,16 @@ void main()
 		vec3 p = vec3(0.0);
 		bool found = false;
 #if LX_USE_0
-		TRY(0, EDGES(vec3(p.xy, 1.0)))
+		TRY(0)
 #endif
 #if LX_USE_1
-		TRY(1, )
+		TRY(1)
 #endif
 #if LX_USE_2
-		TRY(2, )
+		TRY(2)
 #endif
 #if LX_USE_3
-		TRY(3, )
+		TRY(3)
 #endif
 		if (found) {
 			float stored = lx_decode_code(texture2D(u_atlas, p.xy));

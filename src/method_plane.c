@@ -131,7 +131,6 @@ struct plane_chart {
 	double cs, sn;     /* the twist */
 	double mx;         /* -1: the eye sees the plane from its unlit side, and the image is mirrored */
 	bool on_grid;      /* the twist is a multiple of a quarter turn: pixel centres stay on a grid */
-	bool twisted;
 	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
@@ -213,7 +212,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
 	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
 	double angle = 0;
-	ch->twisted = twist && next >= 0 && twist_angle(v, P, &s->planes[next], &ch->win, &angle);
+	if (twist && next >= 0 && !twist_angle(v, P, &s->planes[next], &ch->win, &angle))
+		angle = 0;
 	double quarter = round(angle / (M_PI / 2));
 	ch->on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
 	ch->cs = cos(angle), ch->sn = sin(angle);

@@ -12,7 +12,7 @@
 
 struct main_program {
 	GLuint prog;
-	GLint view_proj, offset, shadow_tex, region, edges, bias, light, color, object_id, atlas;
+	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 };
 
 struct lx_renderer {
@@ -24,8 +24,8 @@ struct lx_renderer {
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog;
 	GLint shadow_light_clip;
-	/* main-pass variants, built when first used: [decision][edges][mask of maps used] */
-	struct main_program variant[2][2][1 << LX_MAX_MAPS];
+	/* main-pass variants, built when first used: [decision][mask of the maps a draw reads] */
+	struct main_program variant[2][1 << LX_MAX_MAPS];
 	bool mediump;
 	float bias_uniform;
 };
@@ -57,14 +57,14 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, bool decision, bool edges, unsigned mask, bool mediump,
-			 char *err, size_t errlen)
+static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump, char *err,
+			 size_t errlen)
 {
 	char defines[320];
 	snprintf(defines, sizeof defines,
-		 "#define LX_MAPS %d\n#define LX_EDGES %d\n#define LX_USE_0 %d\n"
+		 "#define LX_MAPS %d\n#define LX_USE_0 %d\n"
 		 "#define LX_USE_1 %d\n#define LX_USE_2 %d\n#define LX_USE_3 %d\n%s%s",
-		 maps, edges, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
+		 maps, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
 		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
 	if (!p->prog)
@@ -73,7 +73,6 @@ static bool main_program(struct main_program *p, int maps, bool decision, bool e
 	p->offset = lx_gl.GetUniformLocation(p->prog, "u_offset");
 	p->shadow_tex = lx_gl.GetUniformLocation(p->prog, "u_shadow_tex");
 	p->region = lx_gl.GetUniformLocation(p->prog, "u_region");
-	p->edges = lx_gl.GetUniformLocation(p->prog, "u_edges");
 	p->bias = lx_gl.GetUniformLocation(p->prog, "u_bias");
 	p->light = lx_gl.GetUniformLocation(p->prog, "u_light");
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
@@ -111,9 +110,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->mediump = mediump;
 	/* the variants with every map, built now so that a shader error shows at start */
 	unsigned all = (1u << d->map_count) - 1;
-	bool edges = d->map_count > 1;
-	if (!r->shadow_prog || !main_program(&r->variant[0][edges][all], d->map_count, false, edges, all, mediump, err, errlen) ||
-	    !main_program(&r->variant[1][edges][all], d->map_count, true, edges, all, mediump, err, errlen)) {
+	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, mediump, err, errlen) ||
+	    !main_program(&r->variant[1][all], d->map_count, true, all, mediump, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -191,10 +189,9 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->shadow_prog)
 		lx_gl.DeleteProgram(r->shadow_prog);
 	for (int a = 0; a < 2; a++)
-		for (int b = 0; b < 2; b++)
-			for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
-				if (r->variant[a][b][c].prog)
-					lx_gl.DeleteProgram(r->variant[a][b][c].prog);
+		for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
+			if (r->variant[a][c].prog)
+				lx_gl.DeleteProgram(r->variant[a][c].prog);
 	free(r);
 }
 
@@ -286,16 +283,16 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 }
 
 /* The main-pass variant for a set of maps, built when first used. */
-static struct main_program *variant_for(struct lx_renderer *r, bool decision, bool edges, unsigned mask)
+static struct main_program *variant_for(struct lx_renderer *r, bool decision, unsigned mask)
 {
-	struct main_program *p = &r->variant[decision][edges][mask];
+	struct main_program *p = &r->variant[decision][mask];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, decision, edges, mask, r->mediump, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, err, sizeof err)) {
 			/* cannot happen once the full variant compiled; fall back to it */
 			fprintf(stderr, "lixel: %s\n", err);
 			unsigned all = (1u << r->d.map_count) - 1;
-			p = &r->variant[decision][r->d.map_count > 1][all];
+			p = &r->variant[decision][all];
 		}
 	}
 	return p;
@@ -398,7 +395,6 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	unsigned all = 0;
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
 		all |= res->maps[m].rendered ? 1u << m : 0;
-	bool has_edges = res->map_count > 1 && res->maps[0].rendered && res->maps[0].edge_count > 0;
 	const struct lx_atlas *atlas = r->d.atlas;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
 	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
@@ -416,9 +412,7 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	float light[4] = {(float)(L->directional ? L->direction.x : L->position.x),
 			  (float)(L->directional ? L->direction.y : L->position.y),
 			  (float)(L->directional ? L->direction.z : L->position.z), L->directional ? 0.0f : 1.0f};
-	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], edges[LX_MAX_MAP_EDGES][3];
-	for (int e = 0; e < LX_MAX_MAP_EDGES; e++)
-		edges[e][0] = edges[e][1] = 0, edges[e][2] = 1;
+	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4];
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
@@ -436,13 +430,6 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		region[m][1] = (float)(oy + sy * map->bounds[1]);
 		region[m][2] = (float)(ox + sx * map->bounds[2]);
 		region[m][3] = (float)(oy + sy * map->bounds[3]);
-		/* only the first map may carry point-line tests (shadow_method.h) */
-		for (int e = 0; m == 0 && e < map->edge_count; e++) {
-			const double *q = map->edges[e];
-			edges[e][0] = (float)(q[0] / sx);
-			edges[e][1] = (float)(q[1] / sy);
-			edges[e][2] = (float)(q[2] - q[0] * ox / sx - q[1] * oy / sy);
-		}
 	}
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
@@ -460,44 +447,47 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	for (int id = 0; id < r->objects; id++)
 		n = object_draws(r, res, id, items, n);
 	const struct lx_scene *s = r->d.scene;
-	bool done[LX_MAX_DRAWS] = {false};
+	bool done[LX_MAX_DRAWS] = {false}, scissor = false;
 	for (int first = 0; first < n; first++) {
 		if (done[first])
 			continue;
 		unsigned mask = items[first].mask;
-		bool edges_here = has_edges && (mask & 1u) && mask != 1u; /* a plane's own maps need no edges */
-		struct main_program *p = variant_for(r, decision, edges_here, mask);
+		struct main_program *p = variant_for(r, decision, mask);
 		lx_gl.UseProgram(p->prog);
 		lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
 		lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
 		if (r->d.map_count > 0 && mask) {
 			lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
 			lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
-			if (edges_here)
-				lx_gl.Uniform3fv(p->edges, LX_MAX_MAP_EDGES, edges[0]);
 			lx_gl.Uniform1f(p->bias, r->bias_uniform);
 			lx_gl.Uniform1i(p->atlas, 0);
 		}
+		int bound = -1; /* the object whose mesh and uniforms are set in this program */
 		for (int k = first; k < n; k++) {
 			const struct draw *d = &items[k];
 			if (done[k] || d->mask != mask)
 				continue;
 			done[k] = true;
 			int id = d->object;
-			vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
-			lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
-			lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
-			lx_gl.Uniform1f(p->object_id, (float)id);
-			if (d->scissor) {
-				lx_gl.Enable(GL_SCISSOR_TEST);
+			if (id != bound) { /* a plane's spans follow each other: set it up once */
+				vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+				lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+				lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+				lx_gl.Uniform1f(p->object_id, (float)id);
+				bind_mesh(r, id, true);
+				bound = id;
+			}
+			if (d->scissor != scissor) {
+				(d->scissor ? lx_gl.Enable : lx_gl.Disable)(GL_SCISSOR_TEST);
+				scissor = d->scissor;
+			}
+			if (d->scissor)
 				lx_gl.Scissor(d->box[0], d->box[1], d->box[2] - d->box[0], d->box[3] - d->box[1]);
-			} else
-				lx_gl.Disable(GL_SCISSOR_TEST);
-			bind_mesh(r, id, true);
 			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 		}
 	}
-	lx_gl.Disable(GL_SCISSOR_TEST);
+	if (scissor)
+		lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)

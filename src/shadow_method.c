@@ -74,7 +74,6 @@ void lx_shadow_map_full(struct lx_shadow_map *m)
 	m->plane = -1;
 	m->bounds[0] = m->bounds[1] = -1;
 	m->bounds[2] = m->bounds[3] = 1;
-	m->edge_count = 0;
 }
 
 unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
@@ -105,12 +104,7 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p)
 		if (!(c.w > 0))
 			continue;
 		double x = c.x / c.w, y = c.y / c.w;
-		if (x < m->bounds[0] || y < m->bounds[1] || x >= m->bounds[2] || y >= m->bounds[3])
-			continue;
-		bool inside = true;
-		for (int e = 0; e < m->edge_count; e++)
-			inside &= m->edges[e][0] * x + m->edges[e][1] * y + m->edges[e][2] >= 0;
-		if (inside)
+		if (x >= m->bounds[0] && y >= m->bounds[1] && x < m->bounds[2] && y < m->bounds[3])
 			return i;
 	}
 	return -1;
@@ -156,11 +150,6 @@ void lx_shadow_map_turn(struct lx_shadow_map *m)
 	}
 	double b[4] = {-m->bounds[3], m->bounds[0], -m->bounds[1], m->bounds[2]};
 	memcpy(m->bounds, b, sizeof b);
-	for (int e = 0; e < m->edge_count; e++) { /* a x + b y + c with x = y', y = -x' */
-		double a = m->edges[e][0];
-		m->edges[e][0] = -m->edges[e][1];
-		m->edges[e][1] = a;
-	}
 	int w = m->w;
 	m->w = m->h;
 	m->h = w;

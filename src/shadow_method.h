@@ -14,8 +14,6 @@
 #define LX_MAX_WARNINGS 8
 #define LX_WARNING_MAX 160
 
-#define LX_MAX_MAP_EDGES 4
-
 struct lx_shadow_map {
 	int region; /* index into the atlas */
 	bool rendered;
@@ -25,13 +23,9 @@ struct lx_shadow_map {
 	int w, h;           /* the lixels it takes this frame in its own axes; 0: its region's fixed size */
 	bool pancake;       /* casters may lie nearer than the near plane: the shadow pass flattens them onto it */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
-	 * bounds (x0, y0, x1, y1), and inside it the points with a x + b y + c >= 0 for each
-	 * of edge_count edges (a table top's polygon; only the first of several maps may
-	 * have edges, which keeps the shader cheap). The main pass uses the first map, in
-	 * order, that serves a ray. */
+	 * bounds (x0, y0, x1, y1). A draw's maps are tried in order; the first that serves a
+	 * ray is read. */
 	double bounds[4];
-	int edge_count;
-	double edges[LX_MAX_MAP_EDGES][3];
 	/* A plane map's reach on the screen: window pixels (x0, y0, x1, y1) outside which
 	 * none of its plane's pixels can be shadowed (has_screen false: unknown). The main
 	 * pass draws the plane without a lookup outside its maps' rectangles. */
@@ -88,7 +82,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 /* The list of method names, separated by '|', for help and error messages. */
 const char *lx_shadow_method_names(void);
 
-/* A map that serves every ray of its region: bounds [-1, 1]^2, no edges, no plane. */
+/* A map that serves every ray of its region: bounds [-1, 1]^2, no plane. */
 void lx_shadow_map_full(struct lx_shadow_map *m);
 /* The maps a receiver object reads in the main pass, as a bit mask: a plane of interest
  * with rendered maps of its own (map.plane == object) reads only those, since its pixels
@@ -108,8 +102,8 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p);
 void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f);
 
 /* One frame of a method: build, then place this frame's maps in the atlas (packed
- * again when their shapes vary; a map placed a quarter turn round gets its matrix,
- * bounds and edges turned with it). */
+ * again when their shapes vary; a map placed a quarter turn round gets its matrix and
+ * bounds turned with it). */
 void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_atlas *atlas,
 			    const struct lx_method_options *o, struct lx_shadow_result *out);
 /* Turns a map a quarter turn in its region's clip space: (x, y) -> (-y, x), which keeps
