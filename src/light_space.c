@@ -94,8 +94,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 			continue;
 		ncasters++;
 		for (int k = 0; k < 8; k++) {
-			vec3 c = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
 			vec2 g;
 			double depth;
 			if (project(ls, c, &g, &depth)) {

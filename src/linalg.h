@@ -15,6 +15,11 @@ static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z 
 static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline vec3 v3_scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
 static inline double v3_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/* Corner k (0..7) of the box [lo, hi]: bit 0 picks x, bit 1 y, bit 2 z from hi. */
+static inline vec3 v3_box_corner(vec3 lo, vec3 hi, int k)
+{
+	return (vec3){k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+}
 static inline vec3 v3_cross(vec3 a, vec3 b)
 {
 	return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);

@@ -41,8 +41,7 @@ static int body_points(const struct lx_frame *f, const struct lx_light_space *ls
 		if (!lx_object_can_cast(f, id))
 			continue;
 		for (int k = 0; k < 8 && n < max; k++) {
-			pts[n] = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			pts[n] = v3_box_corner(f->bmin[id], f->bmax[id], k);
 			caster[n++] = true;
 		}
 	}

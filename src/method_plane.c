@@ -91,7 +91,7 @@ static bool twist_angle(const struct lx_view *v, const struct lx_plane *self, co
 
 /* The planes bounding the receiver volume (view frustum within the scene box), as
  * half-spaces: only those that carry a face of it (three of its vertices or more), so
- * that each map's depth fit enumerates as few plane triples as it can. */
+ * that a depth fit that needs them enumerates as few plane triples as it can. */
 static int receiver_faces(const struct lx_frame *f, const struct lx_light_space *ls, vec4 *out)
 {
 	const mat4 *vp = &f->view.view_proj;
@@ -190,8 +190,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		if (!lx_object_can_cast(f, id))
 			continue;
 		for (int k = 0; k < 8; k++) {
-			vec3 q = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			vec3 q = v3_box_corner(f->bmin[id], f->bmax[id], k);
 			vec4 h = m4_mul_point(&ch->cam.m, q);
 			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z)))) {
 				bounded = false; /* a caster reaches behind the light image: no bound from casters */
@@ -402,8 +401,8 @@ static bool plane_zfar(const struct lx_frame *f, const struct lx_plane *P, const
  * where that cannot be charted the view frustum within the scene box and the map's
  * cone; casters: their boxes within the cone. Writes the fitted z row into *m; false
  * when no caster lies in front of a receiver. */
-static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, const double *b, const vec4 *faces,
-		      int nfaces, mat4 *m, struct lx_shadow_result *out, const struct lx_plane *P)
+static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls, const struct plane_chart *ch,
+		      const double *b, mat4 *m, struct lx_shadow_result *out, const struct lx_plane *P)
 {
 	const char *name = P->name;
 	vec4 wrow = row(m, 3), zrow = row(m, 2);
@@ -419,10 +418,9 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 	double wmin = 1e-4 * wplane; /* a hair in front of the light: depth is finite there */
 	hs[nh++] = comb(wrow, 1, (vec4){0, 0, 0, 1}, -wmin);
 	int ncone = nh;
-	for (int k = 0; k < nfaces; k++)
-		hs[nh++] = faces[k];
 	double zfar = -INFINITY, znear = INFINITY;
-	if (!plane_zfar(f, P, &ch->wanted, m, &zfar)) {
+	if (!plane_zfar(f, P, &ch->wanted, m, &zfar)) { /* rare: the receiver volume in the cone */
+		nh += receiver_faces(f, ls, hs + nh);
 		vec3 vert[2048];
 		int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
 		for (int k = 0; k < nv; k++)
@@ -440,8 +438,7 @@ static bool fit_depth(const struct lx_frame *f, const struct plane_chart *ch, co
 		int nc = 0, all_in = 1, out_one = 0;
 		vec3 corner[8];
 		for (int k = 0; k < 8; k++)
-			corner[k] = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				       k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			corner[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
 		for (int q = 0; q < ncone; q++) {
 			int outside = 0;
 			for (int k = 0; k < 8; k++)
@@ -493,8 +490,8 @@ static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *f
  * rays is the same at any scale, so it is fitted once, with a lixel per pixel over the
  * rectangle around all pieces, before the budgets are known. False when no caster lies
  * in front of a receiver there (no map). */
-static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, const struct plane_pieces *pc,
-			const vec4 *faces, int nfaces, struct lx_shadow_result *out, const struct lx_plane *P, mat4 *depth)
+static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *ls, const struct plane_chart *ch,
+			const struct plane_pieces *pc, struct lx_shadow_result *out, const struct lx_plane *P, mat4 *depth)
 {
 	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 	for (int k = 0; k < pc->n; k++)
@@ -505,12 +502,11 @@ static bool plane_depth(const struct lx_frame *f, const struct plane_chart *ch, 
 	mat4 a = piece_matrix(ch, &ft);
 	*depth = m4_mul(&a, &ch->cam.m);
 	double b[4] = {-1, -1, 2.0 * ft.uw / ft.w - 1, 2.0 * ft.vh / ft.h - 1};
-	return fit_depth(f, ch, b, faces, nfaces, depth, out, P);
+	return fit_depth(f, ls, ch, b, depth, out, P);
 }
 
 /* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
- * lixel budget; returns the rays the first map serves as a polygon on G (empty when none
- * or when they cannot be charted there). */
+ * lixel budget, with each piece's reach on the screen. */
 static void build_plane_map(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
 			    const mat4 *depth, int i, long budget, double max_lpp, struct lx_shadow_map *map,
 			    struct lx_shadow_map *second)
@@ -551,19 +547,18 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
 			  const struct plane_pieces *pc, const bool *ok, int np, long *budget)
 {
-	long own = (long)o->plane_lixels * o->plane_lixels, pool = 0, need[PLANE_MAPS];
-	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
-	for (int i = 0; i < np; i++) {
+	long own = (long)o->plane_lixels * o->plane_lixels, need[PLANE_MAPS];
+	for (int i = 0; i < np; i++)
 		budget[i] = atlas->regions[i].variable ? own : (long)atlas->regions[i].w * atlas->regions[i].h;
-		double area = 0;
-		for (int k = 0; ok[i] && k < pc[i].n; k++)
-			area += (pc[i].r[k][2] - pc[i].r[k][0] + 1) * (pc[i].r[k][3] - pc[i].r[k][1] + 1);
-		need[i] = (long)ceil(density * area);
-		pool += budget[i];
-	}
-	(void)pool;
 	if (!o->shared_budget || o->square_regions)
 		return;
+	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
+	for (int i = 0; i < np; i++) {
+		double area = 0;
+		for (int k = 0; ok[i] && k < pc[i].n; k++)
+			area += rect_area(pc[i].r[k]);
+		need[i] = (long)ceil(density * area);
+	}
 	/* The budget of a map with nothing to serve this frame goes to the maps that need
 	 * more than their own (for lpp 1, or the cap), in proportion to their shortfall. A
 	 * map that needs less keeps its budget: beyond lpp 1 its lixels still serve the
@@ -587,7 +582,7 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 {
 	int out[6] = {0};
 	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_point(&v->view_proj, v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
+		vec4 c = m4_mul_point(&v->view_proj, v3_box_corner(lo, hi, k));
 		out[0] += c.x < -c.w, out[1] += c.x > c.w, out[2] += c.y < -c.w;
 		out[3] += c.y > c.w, out[4] += c.z < -c.w, out[5] += c.z > c.w;
 	}
@@ -601,18 +596,17 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
  * casters' boxes in view (their surfaces are receivers no plane map serves) and the
  * visible part of each plane that needs it, within what the casters cover. False when a
  * point cannot be charted on G (a receiver behind the point light). */
-static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *needs,
-			    struct lx_poly *want)
+static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *in_view,
+			    const bool *needs, struct lx_poly *want)
 {
 	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
 	int n = 0;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
+		if (!in_view[id])
 			continue;
 		for (int k = 0; k < 8; k++) {
-			vec4 X = {k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				  k & 4 ? f->bmax[id].z : f->bmin[id].z, 1};
-			if (!lx_light_space_chart(ls, f, X, &pts[n++]))
+			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
+			if (!lx_light_space_chart(ls, f, (vec4){c.x, c.y, c.z, 1}, &pts[n++]))
 				return false;
 		}
 	}
@@ -710,21 +704,21 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
  * its faces at least the fallback's lixels per pixel in their worst direction, then the
  * fallback (which covers every caster in view). */
-static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, struct lx_shadow_result *out)
+static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, const bool *in_view,
+			       struct lx_shadow_result *out)
 {
 	const struct lx_shadow_map *fb = &out->maps[np];
 	if (!fb->rendered)
 		return;
 	const struct lx_region *fr = &atlas->regions[fb->region];
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		if (box_out_of_view(&f->view, f->bmin[id], f->bmax[id]))
+		if (!in_view[id])
 			continue;
 		vec3 c[8];
 		vec2 pix[8];
 		int faces[6][3];
 		for (int k = 0; k < 8; k++)
-			c[k] = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-				  k & 4 ? f->bmax[id].z : f->bmin[id].z);
+			c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
 		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
 		int nf = box_faces(f, c, faces);
@@ -756,8 +750,6 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	lx_light_space_build(f, &ls);
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
-	vec4 faces[12];
-	int nfaces = receiver_faces(f, &ls, faces);
 	struct plane_chart ch[PLANE_MAPS];
 	bool ok[PLANE_MAPS];
 	long budget[PLANE_MAPS];
@@ -770,7 +762,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		if (!ok[i])
 			continue;
 		plane_pieces(&ch[i], piece_free, &pc[i]);
-		ok[i] = plane_depth(f, &ch[i], &pc[i], faces, nfaces, out, &f->scene->planes[i], &depth[i]);
+		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
 		if (ok[i] && pc[i].n > 1)
 			piece_free = false, piece_of = i;
 	}
@@ -784,9 +776,12 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool needs[LX_MAX_PLANES] = {false};
 	for (int i = 0; i < f->scene->plane_count; i++)
 		needs[i] = i >= np || (ch[i].needs_fallback && !out->maps[i].rendered);
+	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		in_view[id] = !box_out_of_view(&f->view, f->bmin[id], f->bmax[id]);
 	struct lx_poly want;
 	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (fallback_wanted(f, &ls, needs, &want)) {
+	if (fallback_wanted(f, &ls, in_view, needs, &want)) {
 		if (want.n < 3)
 			return; /* no receiver off the planes in view */
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
@@ -796,7 +791,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
-	choose_caster_maps(f, atlas, np, out);
+	choose_caster_maps(f, atlas, np, in_view, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",

@@ -58,8 +58,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	for (int id = 0; id < f->object_count; id++)
 		if (lx_object_can_cast(f, id))
 			for (int k = 0; k < 8; k++) {
-				vec3 c = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-					    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+				vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
 				cmin = fmin(cmin, v3_dot(v3_sub(c, cam->eye), dir));
 			}
 	double slide = fmax(0, v->near - cmin);
@@ -157,8 +156,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	for (int id = 0; id < f->object_count; id++)
 		if (lx_object_can_cast(f, id))
 			for (int k = 0; k < 8; k++) {
-				vec3 p = v3(k & 1 ? f->bmax[id].x : f->bmin[id].x, k & 2 ? f->bmax[id].y : f->bmin[id].y,
-					    k & 4 ? f->bmax[id].z : f->bmin[id].z);
+				vec3 p = v3_box_corner(f->bmin[id], f->bmax[id], k);
 				vec4 h = m4_mul_point(&m0, p);
 				if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z)))) {
 					/* a box reaching the light camera's plane: its image is unbounded and its

@@ -213,7 +213,7 @@ static bool outside_map(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 {
 	int out[5] = {0, 0, 0, 0, 0}, behind = 0;
 	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_point(&map->light_clip, v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
+		vec4 c = m4_mul_point(&map->light_clip, v3_box_corner(lo, hi, k));
 		if (!(c.w > 0)) {
 			behind++;
 			continue;
