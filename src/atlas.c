@@ -3,46 +3,55 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Shelf packing for a given maximum shelf width; regions in order of decreasing height. */
-static bool pack_shelves(struct lx_atlas *a, const int *order, int shelf_width, int guard, int max_size)
+/* The placed regions (w, h > 0) in packing order: tallest first, ties in the regions'
+ * order. Returns their count. */
+static int tallest_first(const struct lx_atlas *a, int *order)
 {
-	int x = guard, y = guard, shelf_h = 0, width = 0;
-	for (int i = 0; i < a->count; i++) {
+	int n = 0;
+	for (int i = 0; i < a->count; i++)
+		if (a->regions[i].w > 0 && a->regions[i].h > 0)
+			order[n++] = i;
+	for (int i = 1; i < n; i++) /* insertion sort: stable */
+		for (int j = i; j > 0 && a->regions[order[j]].h > a->regions[order[j - 1]].h; j--) {
+			int t = order[j];
+			order[j] = order[j - 1];
+			order[j - 1] = t;
+		}
+	return n;
+}
+
+/* Next-fit shelf packing of the n regions in order, shelves at most shelf_width wide;
+ * gives the extent used (guards included). */
+static void pack_shelves(struct lx_atlas *a, const int *order, int n, int shelf_width, int *width, int *height)
+{
+	int g = a->guard, x = g, y = g, shelf_h = 0;
+	*width = 0;
+	for (int i = 0; i < n; i++) {
 		struct lx_region *r = &a->regions[order[i]];
-		if (x + r->w + guard > shelf_width && x > guard) {
-			y += shelf_h + guard;
-			x = guard;
+		if (x + r->w + g > shelf_width && x > g) {
+			y += shelf_h + g;
+			x = g;
 			shelf_h = 0;
 		}
 		r->x = x;
 		r->y = y;
-		x += r->w + guard;
-		if (x > width)
-			width = x;
+		x += r->w + g;
+		if (x > *width)
+			*width = x;
 		if (r->h > shelf_h)
 			shelf_h = r->h;
 	}
-	a->width = width;
-	a->height = y + shelf_h + guard;
-	return a->width <= max_size && a->height <= max_size;
+	*height = y + shelf_h + g;
 }
 
 /* The fixed-size layout: every prefix sum of widths as a shelf width, smallest area wins. */
 static bool layout_fixed(struct lx_atlas *atlas, int max_size)
 {
-	int order[LX_ATLAS_MAX_REGIONS], count = atlas->count, guard = atlas->guard;
+	int order[LX_ATLAS_MAX_REGIONS], count = tallest_first(atlas, order), guard = atlas->guard;
 	long min_width = 0;
-	for (int i = 0; i < count; i++) {
-		order[i] = i;
+	for (int i = 0; i < count; i++)
 		if (atlas->regions[i].w + 2L * guard > min_width)
 			min_width = atlas->regions[i].w + 2L * guard;
-	}
-	for (int i = 1; i < count; i++) /* insertion sort, tallest first; stable */
-		for (int j = i; j > 0 && atlas->regions[order[j]].h > atlas->regions[order[j - 1]].h; j--) {
-			int t = order[j];
-			order[j] = order[j - 1];
-			order[j - 1] = t;
-		}
 	struct lx_atlas best = {0};
 	long best_area = -1;
 	int best_side = 0;
@@ -52,7 +61,8 @@ static bool layout_fixed(struct lx_atlas *atlas, int max_size)
 		if (shelf < min_width || shelf > max_size)
 			continue;
 		struct lx_atlas trial = *atlas;
-		if (!pack_shelves(&trial, order, (int)shelf, guard, max_size))
+		pack_shelves(&trial, order, count, (int)shelf, &trial.width, &trial.height);
+		if (trial.width > max_size || trial.height > max_size)
 			continue;
 		long area = (long)trial.width * trial.height;
 		int side = trial.width > trial.height ? trial.width : trial.height;
@@ -200,36 +210,15 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 	return true;
 }
 
-/* Next fit decreasing height; false when the shelves overflow the texture. */
+/* Next fit decreasing height in the fixed texture; false when the shelves overflow it. */
 static bool pack_nfdh(struct lx_atlas *a)
 {
-	int order[LX_ATLAS_MAX_REGIONS], n = 0, g = a->guard;
-	for (int i = 0; i < a->count; i++)
-		if (a->regions[i].w > 0 && a->regions[i].h > 0)
-			order[n++] = i;
-	for (int i = 1; i < n; i++) /* tallest first; ties keep the regions' order */
-		for (int j = i; j > 0 && a->regions[order[j]].h > a->regions[order[j - 1]].h; j--) {
-			int t = order[j];
-			order[j] = order[j - 1];
-			order[j - 1] = t;
-		}
-	int x = g, y = g, shelf_h = 0;
-	for (int k = 0; k < n; k++) {
-		struct lx_region *r = &a->regions[order[k]];
-		if (x + r->w + g > a->width && x > g) {
-			y += shelf_h + g;
-			x = g;
-			shelf_h = 0;
-		}
-		if (x + r->w + g > a->width || y + r->h + g > a->height)
+	int order[LX_ATLAS_MAX_REGIONS], n = tallest_first(a, order), width, height;
+	for (int k = 0; k < n; k++)
+		if (a->regions[order[k]].w + 2 * a->guard > a->width)
 			return false;
-		r->x = x;
-		r->y = y;
-		x += r->w + g;
-		if (r->h > shelf_h)
-			shelf_h = r->h;
-	}
-	return true;
+	pack_shelves(a, order, n, a->width, &width, &height);
+	return height <= a->height;
 }
 
 int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
