@@ -375,19 +375,13 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 static bool plane_zfar(const struct lx_frame *f, const struct lx_plane *P, const struct lx_poly *wanted, const mat4 *m,
 		       double *zfar)
 {
-	const struct lx_view *v = &f->view;
 	vec4 e = lx_plane_equation(P);
 	*zfar = -INFINITY;
 	for (int k = 0; k < wanted->n; k++) {
-		double nx = 2 * wanted->v[k].x / v->width - 1, ny = 2 * wanted->v[k].y / v->height - 1;
-		vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
-		if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
+		vec3 q;
+		double t;
+		if (!lx_window_on_plane(&f->view, e, wanted->v[k].x, wanted->v[k].y, &q, &t))
 			return false;
-		vec3 p0 = v3(a.x / a.w, a.y / a.w, a.z / a.w), d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), p0);
-		double den = e.x * d.x + e.y * d.y + e.z * d.z;
-		if (!(fabs(den) > 1e-300))
-			return false;
-		vec3 q = v3_add(p0, v3_scale(d, -dot4p(e, p0) / den));
 		double w = dot4p(row(m, 3), q);
 		if (!(w > 0))
 			return false;

@@ -1,4 +1,5 @@
 #include "metrics.h"
+#include "plane_optimal.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,26 +109,9 @@ double lx_median(double *v, long n)
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
 {
 	const struct lx_plane *p = &f->scene->planes[plane];
-	const struct lx_view *v = &f->view;
-	double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
-	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
-	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
-	vec3 n = v3_cross(p->edge1, p->edge2), d = v3_sub(pf, pn);
-	double den = v3_dot(n, d);
-	if (fabs(den) < 1e-300)
-		return false; /* the ray runs along the plane */
-	double t = v3_dot(n, v3_sub(p->corner, pn)) / den;
-	if (!(t >= 0 && t <= 1))
-		return false;
-	vec3 q = v3_add(pn, v3_scale(d, t)), r = v3_sub(q, p->corner);
-	/* parallelogram coordinates: solve r = s e1 + u e2 in the plane (n != 0: validated) */
-	double e11 = v3_dot(p->edge1, p->edge1), e12 = v3_dot(p->edge1, p->edge2), e22 = v3_dot(p->edge2, p->edge2);
-	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, p->edge1), r2 = v3_dot(r, p->edge2);
-	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det;
-	if (s < 0 || s > 1 || u < 0 || u > 1)
-		return false;
-	*out = q;
-	return true;
+	double t;
+	return lx_window_on_plane(&f->view, lx_plane_equation(p), x + 0.5, y + 0.5, out, &t) && t >= 0 && t <= 1 &&
+	       lx_plane_contains(p, *out);
 }
 
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

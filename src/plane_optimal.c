@@ -15,6 +15,33 @@ vec4 lx_plane_equation(const struct lx_plane *p)
 	return (vec4){n.x, n.y, n.z, -v3_dot(n, p->corner)};
 }
 
+bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double wy, vec3 *q, double *t)
+{
+	double nx = 2 * wx / v->width - 1, ny = 2 * wy / v->height - 1;
+	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+	if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
+		return false;
+	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), pn);
+	vec3 n = v3(plane.x, plane.y, plane.z);
+	double den = v3_dot(n, d);
+	if (!(fabs(den) > 1e-300))
+		return false; /* the ray runs along the plane */
+	*t = -(v3_dot(n, pn) + plane.w) / den;
+	*q = v3_add(pn, v3_scale(d, *t));
+	return true;
+}
+
+bool lx_plane_contains(const struct lx_plane *p, vec3 q)
+{
+	/* parallelogram coordinates: solve q - corner = s e1 + u e2 in the plane (the edges
+	 * are not parallel: the scene parser checks it) */
+	vec3 r = v3_sub(q, p->corner);
+	double e11 = v3_dot(p->edge1, p->edge1), e12 = v3_dot(p->edge1, p->edge2), e22 = v3_dot(p->edge2, p->edge2);
+	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, p->edge1), r2 = v3_dot(r, p->edge2);
+	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det;
+	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+}
+
 static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
 static double len4(vec4 a) { return sqrt(dot4(a, a)); }
 static vec4 scale4(vec4 a, double s) { return (vec4){a.x * s, a.y * s, a.z * s, a.w * s}; }

@@ -33,6 +33,14 @@ vec4 lx_plane_equation(const struct lx_plane *p);
 enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 light, vec4 plane, vec4 inside,
 						   struct lx_plane_camera *out);
 
+/* Where the eye ray through window point (wx, wy) meets the plane (n . x + d = 0): the
+ * point, and t, its place on the ray from the near plane (0) to the far plane (1). False
+ * when the ray runs along the plane. */
+bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double wy, vec3 *q, double *t);
+/* Whether point q of the plane lies on its parallelogram (corner + s edge1 + u edge2,
+ * s, u in [0, 1]). */
+bool lx_plane_contains(const struct lx_plane *p, vec3 q);
+
 /* The part of a plane's parallelogram inside the view frustum: window-coordinate
  * polygon (counter-clockwise) and its world vertices; false when nothing is visible. */
 bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct lx_poly *window, vec3 *world,

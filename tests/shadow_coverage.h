@@ -30,11 +30,7 @@ static bool ray_on_plane(const struct lx_plane *P, vec3 c, vec3 dir, vec3 *r)
 	if (!(t > 1e-9))
 		return false;
 	*r = v3_add(c, v3_scale(dir, t));
-	vec3 d = v3_sub(*r, P->corner);
-	double e11 = v3_dot(P->edge1, P->edge1), e22 = v3_dot(P->edge2, P->edge2), e12 = v3_dot(P->edge1, P->edge2);
-	double det = e11 * e22 - e12 * e12, r1 = v3_dot(d, P->edge1), r2 = v3_dot(d, P->edge2);
-	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det; /* det > 0: edges not parallel */
-	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+	return lx_plane_contains(P, *r);
 }
 
 /* Checks the map that serves receiver r of object `object` holds caster point c. */
