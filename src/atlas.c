@@ -261,11 +261,19 @@ int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
 		}
 		if (pack_nfdh(a))
 			return shrunk;
+		bool smaller = false;
 		for (int i = 0; i < a->count; i++)
-			if (a->regions[i].variable) {
+			if (a->regions[i].variable && (cw[i] > 1 || ch[i] > 1)) {
 				cw[i] = cw[i] > 1 ? (int)(cw[i] * 0.9) : cw[i];
 				ch[i] = ch[i] > 1 ? (int)(ch[i] * 0.9) : ch[i];
+				smaller = true;
 			}
+		if (!smaller) { /* nothing left to shrink (the fixed regions alone overflow) */
+			for (int i = 0; i < a->count; i++)
+				if (a->regions[i].variable)
+					a->regions[i].w = a->regions[i].h = 0;
+			return -1;
+		}
 	}
 }
 

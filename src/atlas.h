@@ -58,7 +58,8 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
  * landscape and packed by height in shelves (next fit decreasing height), deterministic
  * for given sizes. Should a frame's shapes not fit, the variable regions shrink by 10%
  * until they do (a map's light matrix covers its region whatever its lixel count);
- * returns how many times that happened. */
+ * returns how many times that happened, or -1 when even 1x1 does not fit (the variable
+ * regions are then left unplaced, 0 x 0). */
 int lx_atlas_pack(struct lx_atlas *atlas, const int *w, const int *h);
 const struct lx_region *lx_atlas_find(const struct lx_atlas *atlas, const char *name);
 /* The total budget: the most lixels a frame's regions hold together (sum of counted). */

@@ -168,12 +168,19 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 		w[map->region] = own ? map->w : atlas->regions[map->region].w;
 		h[map->region] = own ? map->h : atlas->regions[map->region].h;
 	}
-	if (lx_atlas_pack(atlas, w, h) > 0)
-		lx_shadow_warn(out, "atlas: this frame's maps did not fit the %dx%d texture and were shrunk", atlas->width,
-			       atlas->height);
+	int shrunk = lx_atlas_pack(atlas, w, h);
+	if (shrunk != 0)
+		lx_shadow_warn(out, shrunk > 0 ? "atlas: this frame's maps did not fit the %dx%d texture and were shrunk"
+					       : "atlas: this frame's maps do not fit the %dx%d texture; they are skipped",
+			       atlas->width, atlas->height);
 	for (int i = 0; i < out->map_count; i++) {
 		struct lx_shadow_map *map = &out->maps[i];
-		if (map->rendered && map->region >= 0 && map->region < atlas->count && atlas->regions[map->region].turned)
+		if (!map->rendered || map->region < 0 || map->region >= atlas->count)
+			continue;
+		const struct lx_region *g = &atlas->regions[map->region];
+		if (g->w < 1 || g->h < 1)
+			map->rendered = false; /* not placed: no pass, every lookup reads lit */
+		else if (g->turned)
 			lx_shadow_map_turn(map);
 	}
 }

@@ -206,6 +206,11 @@ static void a_frame_that_cannot_fit_shrinks(void **state)
 	int w[2] = {250, 250}, h[2] = {40, 40};
 	assert_true(lx_atlas_pack(&at, w, h) > 0);
 	check_frame(&at, w, h, false);
+	/* a texture that holds nothing: the packing ends, the regions left unplaced */
+	at.height = 2;
+	assert_int_equal(lx_atlas_pack(&at, w, h), -1);
+	assert_int_equal(at.regions[0].w, 0);
+	assert_int_equal(at.regions[1].h, 0);
 }
 
 static void size_limits_give_clear_errors(void **state)
