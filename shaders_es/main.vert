@@ -11,38 +11,54 @@
 #ifndef LX_USE_3
 #define LX_USE_3 0
 #endif
-// Main pass. LX_MAPS (0 to 3) shadow maps are looked up; the loader defines it.
+// Main pass. LX_MAPS (0 to 4) shadow maps exist; a variant reads those with LX_USE_i = 1
+// and declares nothing for the others: every varying costs an interpolation per pixel.
 uniform mat4 u_view_proj;
 uniform vec3 u_offset; // object translation in world space
+uniform vec4 u_light;  // xyz: position (w = 1) or direction of travel (w = 0)
 #if LX_MAPS > 0
 uniform mat4 u_shadow_tex[LX_MAPS]; // atlas (s, t, depth, q) <- world
-varying vec4 v_shadow[LX_MAPS];
+// Which side of its face a point is on, as seen from the light: affine in the position,
+// so one interpolated float is exact where the face normal and the light would be three.
+varying float v_facing;
+#endif
+#if LX_USE_0
+varying vec4 v_shadow0;
+#endif
+#if LX_USE_1
+varying vec4 v_shadow1;
+#endif
+#if LX_USE_2
+varying vec4 v_shadow2;
+#endif
+#if LX_USE_3
+varying vec4 v_shadow3;
 #endif
 attribute vec3 a_position;
 attribute vec3 a_normal;
 attribute vec3 a_face_normal;
-varying vec3 v_world;
+varying vec3 v_to_light; // affine in the position: interpolated exactly
 varying vec3 v_normal;
-varying vec3 v_face_normal;
 
 void main()
 {
 	vec4 world = vec4(a_position + u_offset, 1.0);
-	v_world = world.xyz;
+	v_to_light = u_light.w > 0.5 ? u_light.xyz - world.xyz : -u_light.xyz;
 	v_normal = a_normal;
-	v_face_normal = a_face_normal;
-	// only the maps this variant uses (LX_USE_i, see main.frag)
+#if LX_MAPS > 0
+	v_facing = dot(a_face_normal, v_to_light);
+#endif
 #if LX_USE_0
-	v_shadow[0] = u_shadow_tex[0] * world;
+	v_shadow0 = u_shadow_tex[0] * world;
 #endif
 #if LX_USE_1
-	v_shadow[1] = u_shadow_tex[1] * world;
+	v_shadow1 = u_shadow_tex[1] * world;
 #endif
 #if LX_USE_2
-	v_shadow[2] = u_shadow_tex[2] * world;
+	v_shadow2 = u_shadow_tex[2] * world;
 #endif
 #if LX_USE_3
-	v_shadow[3] = u_shadow_tex[3] * world;
+	v_shadow3 = u_shadow_tex[3] * world;
 #endif
 	gl_Position = u_view_proj * world;
 }

@@ -18,8 +18,11 @@
 #define MAX_CONFIGS 16
 #define ANIMATION_SAMPLES 5 /* times at which the animation's accuracy is measured */
 
+/* the timed figures of a frame, kept per method over every configuration */
+enum { T_FRAME, T_SETUP, T_SHADOW, T_MAIN, T_KINDS };
+
 struct row {
-	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us;
+	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us, shadow_ms, main_ms;
 	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
 	double mismatch_worst;
 	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
@@ -36,9 +39,8 @@ struct bench {
 	const char *configs[MAX_CONFIGS];
 	struct lx_scene scene;
 	struct row rows[MAX_METHODS][MAX_CONFIGS];
-	double *all_frames[MAX_METHODS]; /* every timed frame of a method over all configurations */
+	double *all[MAX_METHODS][T_KINDS]; /* every timed frame of a method over all configurations */
 	int nframes[MAX_METHODS];
-	double *all_setup[MAX_METHODS];
 };
 
 static void usage(FILE *f)
@@ -49,10 +51,13 @@ static void usage(FILE *f)
 		   "                   [--plane-max-lpp X]\n"
 		   "\n"
 		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
-		   "(glFinish per frame, methods interleaved frame by frame so that they share the\n"
-		   "machine's noise), then the accuracy against the exact reference. Prints a line per\n"
-		   "method and configuration, then a summary per method with ratios to no shadows and\n"
-		   "to uniform. Run with LP_NUM_THREADS=1 to stand in for a fill-limited board GPU.\n"
+		   "(glFinish after the shadow passes and after the main pass; the methods interleaved\n"
+		   "frame by frame in a fresh order each frame, so that they share the machine's noise\n"
+		   "and the order of --methods does not matter), then the\n"
+		   "accuracy against the exact reference. Prints a line per method and configuration,\n"
+		   "then a summary per method: medians of the frame, its shadow passes and its main\n"
+		   "pass, with ratios to no shadows and to uniform. Run with LP_NUM_THREADS=1 to stand\n"
+		   "in for a fill-limited board GPU.\n"
 		   "\n"
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
@@ -130,25 +135,38 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 	bool anim = is_animation(config);
 	struct lx_scene scene;
 	config_scene(b, config, &scene);
-	double *times = malloc(sizeof(double) * (size_t)b->frames * 2 * b->nm);
+	/* times[(kind * nm + method) * frames + frame] */
+	double *times = malloc(sizeof(double) * (size_t)b->frames * T_KINDS * b->nm);
 	if (!times) {
 		snprintf(err, errlen, "out of memory");
 		return 1;
 	}
-	double *setup = times + (size_t)b->frames * b->nm;
 	struct lx_frame frame;
+	unsigned long long shuffle = 0x6c697865ull; /* the order's sequence (a 64-bit LCG) */
 	for (int i = 0; i < b->warmup + b->frames; i++) {
 		double t = anim ? i / 30.0 : 0.0;
 		if (!lx_frame_setup(&frame, &scene, meshes, t, b->width, b->height, err, errlen)) {
 			free(times);
 			return 2;
 		}
-		for (int m = 0; m < b->nm; m++) {
+		/* a fresh order each frame (a fixed sequence, so runs repeat): no method always
+		 * runs first or always follows the same one, whatever the order of --methods */
+		int order[MAX_METHODS];
+		for (int k = 0; k < b->nm; k++)
+			order[k] = k;
+		for (int k = b->nm - 1; k > 0; k--) {
+			shuffle = shuffle * 6364136223846793005ull + 1442695040888963407ull;
+			int j = (int)((shuffle >> 33) % (unsigned long long)(k + 1)), t = order[k];
+			order[k] = order[j], order[j] = t;
+		}
+		for (int k = 0; k < b->nm; k++) {
+			int m = order[k];
 			struct lx_frame_times ft;
 			lx_method_run_frame(&runs[m], &frame, &ft);
 			if (i >= b->warmup) {
-				times[m * b->frames + i - b->warmup] = ft.frame_ms;
-				setup[m * b->frames + i - b->warmup] = ft.setup_us;
+				double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms};
+				for (int q = 0; q < T_KINDS; q++)
+					times[((size_t)q * b->nm + m) * b->frames + i - b->warmup] = v[q];
 			}
 		}
 	}
@@ -185,16 +203,21 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 	}
 	for (int m = 0; m < b->nm; m++) {
 		struct row *r = &b->rows[m][ci];
-		r->frame_ms_median = median_of(times + m * b->frames, b->frames);
+		const double *own[T_KINDS];
+		for (int q = 0; q < T_KINDS; q++) {
+			own[q] = times + ((size_t)q * b->nm + m) * b->frames;
+			memcpy(b->all[m][q] + b->nframes[m], own[q], sizeof(double) * (size_t)b->frames);
+		}
+		b->nframes[m] += b->frames;
+		r->frame_ms_median = median_of(own[T_FRAME], b->frames);
 		r->frame_ms_min = INFINITY, r->frame_ms_max = 0;
 		for (int k = 0; k < b->frames; k++) {
-			r->frame_ms_min = fmin(r->frame_ms_min, times[m * b->frames + k]);
-			r->frame_ms_max = fmax(r->frame_ms_max, times[m * b->frames + k]);
+			r->frame_ms_min = fmin(r->frame_ms_min, own[T_FRAME][k]);
+			r->frame_ms_max = fmax(r->frame_ms_max, own[T_FRAME][k]);
 		}
-		r->setup_us = median_of(setup + m * b->frames, b->frames);
-		memcpy(b->all_frames[m] + b->nframes[m], times + m * b->frames, sizeof(double) * (size_t)b->frames);
-		memcpy(b->all_setup[m] + b->nframes[m], setup + m * b->frames, sizeof(double) * (size_t)b->frames);
-		b->nframes[m] += b->frames;
+		r->setup_us = median_of(own[T_SETUP], b->frames);
+		r->shadow_ms = median_of(own[T_SHADOW], b->frames);
+		r->main_ms = median_of(own[T_MAIN], b->frames);
 		for (int p = 0; p < LX_MAX_PLANES; p++)
 			r->m_max[p] = r->lpp[p] = r->used[p] = NAN;
 	}
@@ -253,10 +276,10 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
-			printf("[%s] config=%s: FrameTime: %.3f ms (%.3f-%.3f) setup: %.1f us mismatch: %.4f%% "
-			       "(false %.4f%%, missing %.4f%%)",
-			       b->methods[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->setup_us,
-			       r->mismatch_pct, r->false_pct, r->missing_pct);
+			printf("[%s] config=%s: FrameTime: %.3f ms (%.3f-%.3f) shadow: %.3f ms main: %.3f ms setup: %.1f us "
+			       "mismatch: %.4f%% (false %.4f%%, missing %.4f%%)",
+			       b->methods[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms,
+			       r->main_ms, r->setup_us, r->mismatch_pct, r->false_pct, r->missing_pct);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (!isnan(r->m_max[p]))
 					printf(" %s: m_max %.3g lpp %.3g used %.0f", b->scene.planes[p].name, r->m_max[p], r->lpp[p],
@@ -264,17 +287,17 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 			printf("\n");
 		}
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
-	double none_ms = none >= 0 ? median_of(b->all_frames[none], b->nframes[none]) : NAN;
-	double uni_ms = uni >= 0 ? median_of(b->all_frames[uni], b->nframes[uni]) : NAN;
-	printf("\n%-14s %10s %19s %8s %8s %9s %10s %10s %10s", "method", "frame ms", "(min-max)", "/none", "/uniform",
-	       "setup us", "mismatch%", "worst%", "-uniform");
+	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
+	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
+	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %10s %9s %9s", "method", "frame ms", "(min-max)", "/none",
+	       "/uniform", "shadow ms", "main ms", "setup us", "mismatch%", "worst%", "-uniform");
 	for (int p = 0; p < b->scene.plane_count && p < 2; p++)
 		printf(" %8s", b->scene.planes[p].name);
 	printf("\n");
 	for (int m = 0; m < b->nm; m++) {
-		double med = median_of(b->all_frames[m], b->nframes[m]), lo = INFINITY, hi = 0, mis[MAX_CONFIGS], worst = 0;
+		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), lo = INFINITY, hi = 0, mis[MAX_CONFIGS], worst = 0;
 		for (int k = 0; k < b->nframes[m]; k++)
-			lo = fmin(lo, b->all_frames[m][k]), hi = fmax(hi, b->all_frames[m][k]);
+			lo = fmin(lo, b->all[m][T_FRAME][k]), hi = fmax(hi, b->all[m][T_FRAME][k]);
 		for (int c = 0; c < b->nc; c++)
 			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
 		char range[40];
@@ -282,9 +305,10 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 		double beyond = -INFINITY; /* the most this method's mismatch exceeds uniform's on one configuration */
 		for (int c = 0; uni >= 0 && c < b->nc; c++)
 			beyond = fmax(beyond, b->rows[m][c].mismatch_pct - b->rows[uni][c].mismatch_pct);
-		printf("%-14s %10.3f %19s %8.3f %8.3f %9.1f %10.4f %10.4f %10.4f", b->methods[m], med, range, med / none_ms,
-		       med / uni_ms, median_of(b->all_setup[m], b->nframes[m]), median_of(mis, b->nc), worst,
-		       uni >= 0 ? beyond : NAN);
+		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.1f %10.4f %9.4f %9.4f", b->methods[m], med, range,
+		       med / none_ms, med / uni_ms, median_of(b->all[m][T_SHADOW], b->nframes[m]),
+		       median_of(b->all[m][T_MAIN], b->nframes[m]), median_of(b->all[m][T_SETUP], b->nframes[m]),
+		       median_of(mis, b->nc), worst, uni >= 0 ? beyond : NAN);
 		for (int p = 0; p < b->scene.plane_count && p < 2; p++) {
 			double w = NAN;
 			for (int c = 0; c < b->nc; c++)
@@ -298,7 +322,8 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 		printf("\n");
 	}
 	printf("(-uniform: the most a method's mismatch exceeds uniform's on one configuration, in percentage\n"
-	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels)\n");
+	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels;\n"
+	       " shadow ms and main ms: medians of the shadow passes and of the main pass, apart)\n");
 }
 
 static void print_json(const struct bench *b)
@@ -321,6 +346,8 @@ static void print_json(const struct bench *b)
 			lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, r->frame_ms_median);
 			lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
 			lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
+			lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, r->shadow_ms);
+			lx_json_key(&j, "main_ms_median"), lx_json_number(&j, r->main_ms);
 			lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
 			lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, r->mismatch_pct);
 			lx_json_key(&j, "m_max"), lx_json_object(&j);
@@ -332,11 +359,11 @@ static void print_json(const struct bench *b)
 		}
 	lx_json_end(&j);
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
-	double none_ms = none >= 0 ? median_of(b->all_frames[none], b->nframes[none]) : NAN;
-	double uni_ms = uni >= 0 ? median_of(b->all_frames[uni], b->nframes[uni]) : NAN;
+	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
+	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
 	lx_json_key(&j, "summary"), lx_json_array(&j);
 	for (int m = 0; m < b->nm; m++) {
-		double med = median_of(b->all_frames[m], b->nframes[m]), mis[MAX_CONFIGS], worst = 0;
+		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), mis[MAX_CONFIGS], worst = 0;
 		for (int c = 0; c < b->nc; c++)
 			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
 		lx_json_object(&j);
@@ -344,7 +371,9 @@ static void print_json(const struct bench *b)
 		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, med);
 		lx_json_key(&j, "ratio_none"), lx_json_number(&j, med / none_ms);
 		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, med / uni_ms);
-		lx_json_key(&j, "setup_us"), lx_json_number(&j, median_of(b->all_setup[m], b->nframes[m]));
+		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
+		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
+		lx_json_key(&j, "setup_us"), lx_json_number(&j, median_of(b->all[m][T_SETUP], b->nframes[m]));
 		lx_json_key(&j, "mismatch_median"), lx_json_number(&j, median_of(mis, b->nc));
 		lx_json_key(&j, "mismatch_worst"), lx_json_number(&j, worst);
 		lx_json_end(&j);
@@ -360,7 +389,8 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 		snprintf(err, errlen, "%s: cannot write: %s", b->csv, strerror(errno));
 		return false;
 	}
-	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,setup_us,mismatch_pct,false_shadow_pct,"
+	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
+		   "mismatch_pct,false_shadow_pct,"
 		   "missing_shadow_pct,mismatch_worst");
 	for (int p = 0; p < b->scene.plane_count; p++)
 		fprintf(f, ",m_max_%s,lpp_%s,lixels_used_%s", b->scene.planes[p].name, b->scene.planes[p].name,
@@ -369,9 +399,9 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
-			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.2f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
-				r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->setup_us, r->mismatch_pct, r->false_pct,
-				r->missing_pct, r->mismatch_worst);
+			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
+				r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us,
+				r->mismatch_pct, r->false_pct, r->missing_pct, r->mismatch_worst);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
 					fprintf(f, ",,,");
@@ -389,7 +419,7 @@ static bool write_plot(const struct bench *b, char *err, size_t errlen)
 		double mis[MAX_CONFIGS];
 		for (int c = 0; c < b->nc; c++)
 			mis[c] = b->rows[m][c].mismatch_pct;
-		pts[m] = (struct lx_plot_point){.x = median_of(b->all_frames[m], b->nframes[m]), .y = median_of(mis, b->nc),
+		pts[m] = (struct lx_plot_point){.x = median_of(b->all[m][T_FRAME], b->nframes[m]), .y = median_of(mis, b->nc),
 						.label = b->methods[m]};
 		lx_plot_color(m, pts[m].rgb);
 	}
@@ -522,9 +552,10 @@ int lx_bench_main(int argc, char **argv)
 		goto out;
 	}
 	for (int m = 0; m < b.nm; m++) {
-		b.all_frames[m] = malloc(sizeof(double) * (size_t)b.frames * b.nc);
-		b.all_setup[m] = malloc(sizeof(double) * (size_t)b.frames * b.nc);
-		if (!b.all_frames[m] || !b.all_setup[m]) {
+		bool ok = true;
+		for (int q = 0; q < T_KINDS; q++)
+			ok &= (b.all[m][q] = malloc(sizeof(double) * (size_t)b.frames * b.nc)) != NULL;
+		if (!ok) {
 			snprintf(err, sizeof err, "out of memory");
 			status = 1;
 			goto out;
@@ -554,7 +585,8 @@ out:
 	for (int m = 0; m < ready; m++)
 		lx_method_run_free(&runs[m]);
 	for (int m = 0; m < b.nm; m++)
-		free(b.all_frames[m]), free(b.all_setup[m]);
+		for (int q = 0; q < T_KINDS; q++)
+			free(b.all[m][q]);
 	free(rgba), free(sh), free(ref_sh), free(obj), free(ref_obj);
 	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);

@@ -50,6 +50,10 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 		if (strcmp(value, "fixed") && strcmp(value, "shared"))
 			return lx_arg_bad(cmd, opt, "fixed or shared", value);
 		o->shared_budget = value[0] == 's';
+	} else if (!strcmp(opt, "--lookup-region")) {
+		if (strcmp(value, "footprint") && strcmp(value, "all"))
+			return lx_arg_bad(cmd, opt, "footprint or all", value);
+		o->lookup_everywhere = value[0] == 'a';
 	} else if (!strcmp(opt, "--plane-max-lpp")) {
 		char *end;
 		double x = strtod(value, &end);

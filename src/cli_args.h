@@ -16,12 +16,12 @@ int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *con
  * file's FILE:LINE error and returns false when it does not load. */
 bool lx_arg_scene(const char *arg, struct lx_scene *s);
 
-/* The plane maps' options shared by render and bench: --region-shape square|fitted,
- * --budget-split fixed|shared, --plane-max-lpp X. Returns 0 when opt is one of them and
+/* The maps' options shared by render and bench: --region-shape square|fitted,
+ * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all. Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 struct lx_method_options;
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
-#define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp"
+#define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \

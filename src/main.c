@@ -157,6 +157,8 @@ static void print_text(const struct lx_render_report *r, const char *out)
 	printf("\n");
 	for (int i = 0; i < r->result.warning_count; i++)
 		printf("warning: %s\n", r->result.warnings[i]);
+	if (r->lookup_pct >= 0)
+		printf("lookups: %.2f%% of the pixels ran a shadow lookup\n", r->lookup_pct);
 	if (r->measured) {
 		const struct lx_mismatch *m = &r->mismatch;
 		printf("mismatch: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels\n",
@@ -210,6 +212,8 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_key(&j, "main_ms"), lx_json_number(&j, r->main_ms);
 	lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
 	lx_json_key(&j, "fragment_highp"), lx_json_bool(&j, r->caps.fragment_highp);
+	if (r->lookup_pct >= 0)
+		lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
 	lx_json_key(&j, "warnings");
 	lx_json_array(&j);
 	for (int i = 0; i < r->result.warning_count; i++)

@@ -28,7 +28,8 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 2; /* budgets this GL cannot hold: the input asks too much */
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
 				      .map_count = nreq, .width = width, .height = height,
-				      .force_mediump = force_mediump, .bias_codes = bias_codes, .to_window = to_window};
+				      .force_mediump = force_mediump, .bias_codes = bias_codes, .to_window = to_window,
+				      .lookup_everywhere = mr->options.lookup_everywhere};
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
 	return mr->renderer ? 0 : 1;
 }
@@ -54,16 +55,19 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 				     .frame_ms = t3 - t0};
 }
 
-void lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
+long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
 			    uint8_t *shadow)
 {
+	long lookups = 0;
 	lx_renderer_main_pass(mr->renderer, f, &mr->result, true);
 	lx_renderer_read(mr->renderer, rgba);
 	long n = (long)mr->width * mr->height;
 	for (long i = 0; i < n; i++) {
 		shadow[i] = rgba[i * 4] > 127;
 		object[i] = (int16_t)(rgba[i * 4 + 1] - 1); /* (id + 1.25) / 255 stores id + 1 */
+		lookups += rgba[i * 4 + 2] > 127;
 	}
+	return lookups;
 }
 
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

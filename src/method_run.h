@@ -42,8 +42,9 @@ void lx_method_run_free(struct lx_method_run *mr);
 /* Light matrices, shadow passes and the shaded main pass, each step timed. */
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
 /* The main pass's shadow decision for the last frame's matrices: per pixel the visible
- * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4. */
-void lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
+ * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4.
+ * Returns how many pixels ran a shadow lookup. */
+long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
 			    uint8_t *shadow);
 /* The mismatch against the reference, and each plane's sampling figures. */
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -86,6 +86,7 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen)
 {
 	memset(rep, 0, sizeof(*rep));
+	rep->lookup_pct = -1;
 	struct lx_method_options probe = job->budgets;
 	if (!lx_shadow_method_spec(job->method, &probe, err, errlen))
 		return 2;
@@ -164,7 +165,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 			snprintf(err, errlen, "out of memory");
 			goto out;
 		}
-		lx_method_run_decision(&mr, &frame, rgba, rep->object, rep->shadow);
+		rep->lookup_pct = 100.0 * lx_method_run_decision(&mr, &frame, rgba, rep->object, rep->shadow) / n;
 		if (job->decision_png) {
 			decision_colors(rep->object, rep->shadow, n, rgba);
 			if (!lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen))

@@ -31,6 +31,9 @@ struct lx_render_report {
 	struct lx_shadow_result result;
 	double frame_ms, frame_ms_min, frame_ms_max, shadow_ms, main_ms, setup_us;
 	bool measured;
+	/* with the decision (measure, keep_pixels or decision_png): the share of the image's
+	 * pixels that ran a shadow lookup, in percent; negative when not known */
+	double lookup_pct;
 	struct lx_mismatch mismatch;
 	int plane_count;
 	struct lx_plane_report planes[LX_MAX_PLANES];

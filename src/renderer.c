@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "gl_api.h"
 #include "gl_program.h"
+#include "lookup_region.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,9 +16,32 @@ struct main_program {
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 };
 
+/* A window rectangle of a plane and the maps it reads there. */
+struct span {
+	unsigned mask;
+	struct lx_rect box;
+};
+
+/* One draw of the main pass: an object with the maps it reads, its whole mesh or (a plane
+ * in pieces) `count` vertices from `first` of the frame's piece buffer. */
+struct draw {
+	int object;
+	unsigned mask;
+	bool pieces;
+	int first, count;
+};
+
+/* the most draws slab_draws makes of k rectangles */
+#define SLAB_DRAWS(k) ((2 * (k) + 1) * (2 * (k) + 1))
+
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
+	struct draw draws[LX_MAX_PLANES * (1 << LX_MAX_MAPS) + LX_MAX_CASTERS]; /* a frame's main-pass draws */
+	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
+	float *piece_v;
+	int piece_vertices, piece_room;
+	GLuint piece_vbo;
 	GLuint vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
@@ -118,6 +142,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
 
 	lx_gl.GenBuffers(r->objects, r->vbo);
+	lx_gl.GenBuffers(1, &r->piece_vbo);
 	for (int i = 0; i < r->objects; i++) {
 		const struct lx_mesh *m = &d->meshes->mesh[i];
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[i]);
@@ -192,12 +217,15 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
 			if (r->variant[a][c].prog)
 				lx_gl.DeleteProgram(r->variant[a][c].prog);
+	if (r->piece_vbo)
+		lx_gl.DeleteBuffers(1, &r->piece_vbo);
+	free(r->piece_v);
 	free(r);
 }
 
-static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
+/* The vertex attributes from the bound buffer (positions, then normals and face normals). */
+static void set_attributes(bool normals)
 {
-	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[id]);
 	const GLsizei stride = LX_VERTEX_FLOATS * sizeof(float);
 	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, stride, (const void *)0);
 	if (normals) {
@@ -207,31 +235,10 @@ static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
 	}
 }
 
-/* Whether a world box lies entirely outside the rays a map serves or beyond its far
- * plane (never culled for the near plane: the pass flattens casters onto it). */
-static bool outside_map(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
+static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
 {
-	int out[5] = {0, 0, 0, 0, 0}, behind = 0;
-	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_point(&map->light_clip, v3_box_corner(lo, hi, k));
-		if (!(c.w > 0)) {
-			behind++;
-			continue;
-		}
-		out[0] += c.x < map->bounds[0] * c.w;
-		out[1] += c.x > map->bounds[2] * c.w;
-		out[2] += c.y < map->bounds[1] * c.w;
-		out[3] += c.y > map->bounds[3] * c.w;
-		out[4] += c.z > c.w;
-	}
-	if (behind == 8)
-		return true;
-	if (behind)
-		return false; /* a box crossing the light's plane: keep it */
-	for (int i = 0; i < 5; i++)
-		if (out[i] == 8)
-			return true;
-	return false;
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[id]);
+	set_attributes(normals);
 }
 
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
@@ -268,7 +275,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 		lx_gl.Viewport(g->x, g->y, g->w, g->h);
 		lx_gl.Scissor(g->x, g->y, g->w, g->h);
 		for (int id = 0; id < r->objects; id++) {
-			if (outside_map(map, f->bmin[id], f->bmax[id]))
+			if (!lx_shadow_map_sees_box(map, f->bmin[id], f->bmax[id]))
 				continue; /* no fill and no vertices for what the map cannot see */
 			mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
 			float lcf[16];
@@ -298,51 +305,16 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, un
 	return p;
 }
 
-/* One draw of the main pass: an object, the maps it reads, and a scissor box (window
- * pixels x0, y0, x1, y1) when only part of it is drawn with them. */
-struct draw {
-	int object;
-	unsigned mask;
-	bool scissor;
-	int box[4];
-};
-#define LX_MAX_DRAWS 256
-
-/* The draws of object id. A plane whose maps all carry screen rectangles: the screen cut
- * into horizontal slabs at the rectangles' edges, and each slab into the spans inside a
- * rectangle (its maps) and outside every one (no lookup: no shadow falls there). */
-static int object_draws(const struct lx_renderer *r, const struct lx_shadow_result *res, int id, struct draw *out, int n)
+/* Box cut into horizontal slabs at the rectangles' edges, and each slab into spans:
+ * inside rectangles (their masks together: overlapping rectangles read every map of
+ * each) and outside every one (mask 0, no lookup). Returns the new count. */
+static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsigned *bit, int nr, struct span *out,
+		      int n)
 {
-	unsigned mask = lx_shadow_receiver_maps(res, id);
-	int rect[LX_MAX_MAPS][4], nr = 0;
-	unsigned bit[LX_MAX_MAPS];
-	bool split = mask != 0 && id < r->d.scene->plane_count;
-	for (int m = 0; split && m < res->map_count && m < LX_MAX_MAPS; m++) {
-		if (!(mask & 1u << m))
-			continue;
-		const struct lx_shadow_map *map = &res->maps[m];
-		if (map->plane != id || !map->has_screen || !(map->screen[2] >= map->screen[0]) || !(map->screen[3] >= map->screen[1])) {
-			split = false;
-			break;
-		}
-		/* a pixel of margin: pixel centres on the rectangle's edge are inside it */
-		double lim[4] = {0, 0, r->d.width, r->d.height};
-		for (int k = 0; k < 4; k++) {
-			double v = k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1;
-			v = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], v));
-			rect[nr][k] = (int)v;
-		}
-		bit[nr++] = 1u << m;
-	}
-	if (!split || n + 1 + 3 * (2 * nr + 1) * (nr + 1) > LX_MAX_DRAWS) {
-		if (n < LX_MAX_DRAWS)
-			out[n++] = (struct draw){id, mask, false, {0, 0, 0, 0}};
-		return n;
-	}
-	int ys[2 * LX_MAX_MAPS + 2], ny = 0;
-	ys[ny++] = 0, ys[ny++] = r->d.height;
+	int ys[2 * LX_LOOKUP_MAX_RECTS + 2], ny = 0;
+	ys[ny++] = box.y0, ys[ny++] = box.y1;
 	for (int k = 0; k < nr; k++)
-		ys[ny++] = rect[k][1], ys[ny++] = rect[k][3];
+		ys[ny++] = rect[k].y0, ys[ny++] = rect[k].y1;
 	for (int i = 1; i < ny; i++) /* sort */
 		for (int j = i; j > 0 && ys[j] < ys[j - 1]; j--) {
 			int t = ys[j];
@@ -351,39 +323,149 @@ static int object_draws(const struct lx_renderer *r, const struct lx_shadow_resu
 		}
 	for (int i = 0; i + 1 < ny; i++) {
 		int y0 = ys[i], y1 = ys[i + 1];
-		if (y1 <= y0)
+		if (y1 <= y0 || y0 < box.y0 || y1 > box.y1)
 			continue;
-		/* the spans of this slab covered by a rectangle, by start, each with its map;
-		 * overlapping spans merge and read both maps */
 		struct {
 			int a, b;
 			unsigned m;
-		} span[LX_MAX_MAPS], t;
+		} span[LX_LOOKUP_MAX_RECTS], t;
 		int ns = 0;
 		for (int k = 0; k < nr; k++)
-			if (rect[k][1] <= y0 && rect[k][3] >= y1 && rect[k][2] > rect[k][0]) {
+			if (rect[k].y0 <= y0 && rect[k].y1 >= y1 && rect[k].x1 > rect[k].x0) {
 				int j = ns++;
-				span[j].a = rect[k][0], span[j].b = rect[k][2], span[j].m = bit[k];
-				for (; j > 0 && span[j].a < span[j - 1].a; j--)
+				span[j].a = rect[k].x0, span[j].b = rect[k].x1, span[j].m = bit[k];
+				for (; j > 0 && span[j].a < span[j - 1].a; j--) /* by start */
 					t = span[j], span[j] = span[j - 1], span[j - 1] = t;
 			}
-		int x = 0;
+		int x = box.x0;
 		for (int k = 0; k < ns; k++) {
 			int a = span[k].a, b = span[k].b;
 			unsigned m = span[k].m;
-			while (k + 1 < ns && span[k + 1].a < b) { /* overlapping: one span, both maps */
+			while (k + 1 < ns && span[k + 1].a < b) { /* overlapping: one span */
 				k++;
 				b = span[k].b > b ? span[k].b : b;
 				m |= span[k].m;
 			}
 			if (a > x)
-				out[n++] = (struct draw){id, 0, true, {x, y0, a, y1}};
-			if (b > a)
-				out[n++] = (struct draw){id, m, true, {a, y0, b, y1}};
-			x = b;
+				out[n++] = (struct span){0, {x, y0, a, y1}};
+			if (b > a && b > x)
+				out[n++] = (struct span){m, {a > x ? a : x, y0, b, y1}};
+			x = b > x ? b : x;
 		}
-		if (x < r->d.width)
-			out[n++] = (struct draw){id, 0, true, {x, y0, r->d.width, y1}};
+		if (x < box.x1)
+			out[n++] = (struct span){0, {x, y0, box.x1, y1}};
+	}
+	return n;
+}
+
+/* A plane's spans: the window cut at its own maps' screen rectangles (one map per
+ * rectangle), then each part with maps cut at the region where they can shadow it. */
+static int plane_spans(const struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+		       int id, unsigned mask, struct span *out)
+{
+	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
+	unsigned bit[LX_LOOKUP_MAX_RECTS];
+	struct span first[SLAB_DRAWS(LX_MAX_MAPS)];
+	int nf = 0, nr = 0, n = 0;
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS && nr >= 0; m++) {
+		const struct lx_shadow_map *map = &res->maps[m];
+		if (!(mask & 1u << m))
+			continue;
+		if (map->plane != id || !map->has_screen || !(map->screen[2] >= map->screen[0]) ||
+		    !(map->screen[3] >= map->screen[1])) {
+			nr = -1; /* a map that does not say where it reaches: no cut */
+			break;
+		}
+		/* a pixel of margin: pixel centres on the rectangle's edge are inside it */
+		double lim[4] = {0, 0, r->d.width, r->d.height}, v[4];
+		for (int k = 0; k < 4; k++)
+			v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
+		rect[nr] = (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
+		bit[nr++] = 1u << m;
+	}
+	if (nr >= 0)
+		nf = slab_spans(screen, rect, bit, nr, first, 0);
+	else
+		first[nf++] = (struct span){mask, screen};
+	for (int i = 0; i < nf; i++) {
+		if (!first[i].mask || r->d.lookup_everywhere) {
+			out[n++] = first[i];
+			continue;
+		}
+		nr = lx_lookup_rects(f, r->d.atlas, res, id, first[i].mask, first[i].box, rect);
+		for (int k = 0; k < nr; k++)
+			bit[k] = first[i].mask;
+		n = slab_spans(first[i].box, rect, bit, nr, out, n);
+	}
+	return n;
+}
+
+/* Appends the part of plane id inside a window rectangle to the piece buffer as a
+ * triangle fan, with the plane mesh's normals. */
+static void add_piece(struct lx_renderer *r, const struct lx_frame *f, int id, struct lx_rect box)
+{
+	vec3 poly[LX_WINDOW_POLY_MAX];
+	int n = lx_plane_in_window(f, id, box, poly);
+	if (n < 3)
+		return;
+	int need = r->piece_vertices + 3 * (n - 2);
+	if (need > r->piece_room) {
+		int room = need * 2;
+		float *v = realloc(r->piece_v, (size_t)room * LX_VERTEX_FLOATS * sizeof(float));
+		if (!v)
+			return; /* the piece is not drawn; cannot happen at these sizes */
+		r->piece_v = v;
+		r->piece_room = room;
+	}
+	const float *normals = r->d.meshes->mesh[id].v + 3; /* a plane's normals are all one */
+	for (int t = 1; t + 1 < n; t++) {
+		vec3 tri[3] = {poly[0], poly[t], poly[t + 1]};
+		for (int k = 0; k < 3; k++) {
+			float *o = r->piece_v + (size_t)r->piece_vertices++ * LX_VERTEX_FLOATS;
+			vec3 q = v3_sub(tri[k], f->offset[id]); /* object space: the shader adds the offset */
+			o[0] = (float)q.x, o[1] = (float)q.y, o[2] = (float)q.z;
+			memcpy(o + 3, normals, (LX_VERTEX_FLOATS - 3) * sizeof(float));
+		}
+	}
+}
+
+/* The draws of object id: with every map it reads over the region where one of them can
+ * shadow it (lx_lookup_rects), without a lookup elsewhere (llvmpipe runs both sides of a
+ * branch, and small GPUs pay for every fetch). A plane, large on the screen, is cut into
+ * window spans and drawn as the pieces of itself inside them, one draw per set of maps
+ * (on llvmpipe a draw, scissored or not, costs about a tenth of a millisecond). A caster,
+ * small on the screen and costly to draw twice, is one draw: with its maps where a shadow
+ * can fall on it, else without. */
+static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int id,
+			struct draw *out, int n)
+{
+	unsigned mask = lx_shadow_receiver_maps(res, id);
+	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
+	if (id >= r->d.scene->plane_count || !mask) {
+		if (mask && !r->d.lookup_everywhere && lx_lookup_rects(f, r->d.atlas, res, id, mask, screen, rect) == 0)
+			mask = 0; /* no shadow can fall on it */
+		out[n++] = (struct draw){id, mask, false, 0, 0};
+		return n;
+	}
+	struct span span[SLAB_DRAWS(LX_MAX_MAPS) * SLAB_DRAWS(LX_LOOKUP_MAX_RECTS)];
+	int ns = plane_spans(r, f, res, id, mask, span);
+	if (r->d.lookup_everywhere)
+		for (int i = 0; i < ns; i++)
+			span[i].mask = mask;
+	/* one draw per set of maps, its spans' pieces together */
+	for (int i = 0; i < ns; i++) {
+		unsigned m = span[i].mask;
+		bool seen = false;
+		for (int j = 0; j < i && !seen; j++)
+			seen = span[j].mask == m;
+		if (seen)
+			continue;
+		int first = r->piece_vertices;
+		for (int j = i; j < ns; j++)
+			if (span[j].mask == m)
+				add_piece(r, f, id, span[j].box);
+		if (r->piece_vertices > first)
+			out[n++] = (struct draw){id, m, true, first, r->piece_vertices - first};
 	}
 	return n;
 }
@@ -442,12 +524,18 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	 * its shadows can fall split into scissor boxes, looked up inside them and drawn
 	 * without a lookup outside (llvmpipe runs both sides of a branch; small GPUs pay for
 	 * every fetch); then one program per set of maps. */
-	struct draw items[LX_MAX_DRAWS];
+	struct draw *items = r->draws;
+	bool done[sizeof r->draws / sizeof r->draws[0]] = {false};
 	int n = 0;
+	r->piece_vertices = 0;
 	for (int id = 0; id < r->objects; id++)
-		n = object_draws(r, res, id, items, n);
+		n = object_draws(r, f, res, id, items, n);
+	if (r->piece_vertices > 0) {
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
+		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
+				 r->piece_v, GL_STREAM_DRAW);
+	}
 	const struct lx_scene *s = r->d.scene;
-	bool done[LX_MAX_DRAWS] = {false}, scissor = false;
 	for (int first = 0; first < n; first++) {
 		if (done[first])
 			continue;
@@ -462,32 +550,26 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 			lx_gl.Uniform1f(p->bias, r->bias_uniform);
 			lx_gl.Uniform1i(p->atlas, 0);
 		}
-		int bound = -1; /* the object whose mesh and uniforms are set in this program */
 		for (int k = first; k < n; k++) {
 			const struct draw *d = &items[k];
 			if (done[k] || d->mask != mask)
 				continue;
 			done[k] = true;
 			int id = d->object;
-			if (id != bound) { /* a plane's spans follow each other: set it up once */
-				vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
-				lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
-				lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
-				lx_gl.Uniform1f(p->object_id, (float)id);
+			vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+			lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+			lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+			lx_gl.Uniform1f(p->object_id, (float)id);
+			if (d->pieces) {
+				lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
+				set_attributes(true);
+				lx_gl.DrawArrays(GL_TRIANGLES, d->first, d->count);
+			} else {
 				bind_mesh(r, id, true);
-				bound = id;
+				lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 			}
-			if (d->scissor != scissor) {
-				(d->scissor ? lx_gl.Enable : lx_gl.Disable)(GL_SCISSOR_TEST);
-				scissor = d->scissor;
-			}
-			if (d->scissor)
-				lx_gl.Scissor(d->box[0], d->box[1], d->box[2] - d->box[0], d->box[3] - d->box[1]);
-			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 		}
 	}
-	if (scissor)
-		lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)

@@ -18,6 +18,8 @@ struct lx_renderer_desc {
 	bool force_mediump; /* take the fragment shaders' mediump path even where highp exists */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
 	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
+	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
+				 * only where a shadow can fall (lookup_region.h) */
 };
 
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen);

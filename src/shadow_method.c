@@ -43,8 +43,10 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		if (rest)
 			*rest++ = 0;
 		char *end;
-		if (strcmp(m->name, "plane")) {
-			snprintf(err, errlen, "method '%s' takes no options, got '%s'", m->name, opt);
+		if (!strcmp(opt, "all") || !strcmp(opt, "footprint"))
+			o->lookup_everywhere = opt[0] == 'a';
+		else if (strcmp(m->name, "plane")) {
+			snprintf(err, errlen, "method '%s': option '%s', expected all or footprint", m->name, opt);
 			return NULL;
 		} else if (!strcmp(opt, "square") || !strcmp(opt, "fitted"))
 			o->square_regions = opt[0] == 's';
@@ -59,7 +61,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		else if (!strncmp(opt, "lpp", 3) && opt[3] && (o->plane_max_lpp = strtod(opt + 3, &end), !*end) &&
 			 o->plane_max_lpp > 0 && o->plane_max_lpp <= 1e4) {
 		} else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece or lppX (0 < X <= 10000)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, lppX (0 < X <= 10000), all or footprint",
 				 spec, opt);
 			return NULL;
 		}

@@ -57,6 +57,9 @@ struct lx_method_options {
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
 	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
+	/* The main pass (every method): every receiver pixel reads its maps, not only where a
+	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
+	bool lookup_everywhere;
 };
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})

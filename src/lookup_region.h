@@ -1,0 +1,50 @@
+/* Where a shadow can fall on the screen, GL-free.
+ *
+ * The main pass looks a receiver's maps up only inside window rectangles that hold
+ * every pixel one of its maps could shadow, and draws the rest of it with the lit-only
+ * program: on a fill-limited GPU the lookup is most of the frame.
+ *
+ * A map shadows a point only where a caster was drawn in front of it: the point's image
+ * in the map lies within a few lixels of that caster's image, and its depth lies beyond
+ * the caster's nearest depth. For one caster that set is a convex volume in world space,
+ * six half-spaces taken from the rows of the map's matrix (so it holds for every
+ * method's warp); its part inside the receiver and in front of the eye, projected,
+ * bounds the pixels. */
+#ifndef LX_LOOKUP_REGION_H
+#define LX_LOOKUP_REGION_H
+#include "shadow_method.h"
+
+/* Window pixels [x0, x1) x [y0, y1), GL's origin (bottom left), as glScissor takes them. */
+struct lx_rect {
+	int x0, y0, x1, y1;
+};
+
+/* Lixels of margin around a caster's image: NEAREST lookups round to the lixel whose
+ * centre the caster covered, and a mediump shader's coordinates are off by a lixel or
+ * two more. */
+#define LX_LOOKUP_MARGIN_LIXELS 4.0
+/* Rectangles a receiver's lookup region is merged into at most (each is a few draws). */
+#define LX_LOOKUP_MAX_RECTS 4
+
+/* Whether the shadow pass of a map draws a world box: false when the box lies entirely
+ * outside the rays the map serves or beyond its far plane (never culled for the near
+ * plane: the pass flattens casters onto it). */
+bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
+
+/* The window rectangles, inside `within`, that hold every pixel of receiver object
+ * `receiver` which one of the maps in `mask` could shadow; returns their count (0: no
+ * shadow can fall there), at most LX_LOOKUP_MAX_RECTS, disjoint or overlapping. */
+int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		    int receiver, unsigned mask, struct lx_rect within, struct lx_rect *out);
+
+/* The most vertices lx_plane_in_window returns */
+#define LX_WINDOW_POLY_MAX 12
+
+/* The part of plane of interest `id` seen through window rectangle `box`: a convex
+ * polygon in world space (returns its vertex count; 0: none), cut only by the rectangle's
+ * sides and by a plane between the eye and its near plane, so that GL's own near clip is
+ * what cuts there. The main pass draws a plane as such pieces, with and without a lookup,
+ * in one draw each: on llvmpipe every scissored draw costs about a tenth of a millisecond. */
+int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec3 *out);
+
+#endif
