@@ -48,12 +48,14 @@ varying vec3 v_to_light; // towards the light, not normalised
 varying vec3 v_normal;
 
 #if LX_MAPS > 0
-// Whether a map serves the point: in front of its light and inside its bounds.
-// Written without branches, and called with constant indices only: indexing uniform
-// arrays with a variable is slow or unsupported on small GPUs.
-bool serves(vec3 p, float w, vec4 region)
+// 1.0 where a map serves the point (in front of its light, inside its bounds), else 0.0.
+// No branches and no && (it short-circuits): llvmpipe runs both sides of every branch
+// and small GPUs pay for each; called with constant indices only, since indexing
+// uniform arrays with a variable is slow or unsupported on small GPUs.
+float served(vec3 p, float w, vec4 region)
 {
-	return w > 0.0 && all(greaterThanEqual(p.xy, region.xy)) && all(lessThan(p.xy, region.zw));
+	bvec4 inside = bvec4(greaterThanEqual(p.xy, region.xy), lessThan(p.xy, region.zw));
+	return float(all(inside)) * float(w > 0.0);
 }
 #endif
 
@@ -61,41 +63,37 @@ void main()
 {
 	float shadowed = 0.0;
 #if LX_MAPS > 0
-	if (v_facing <= 0.0) {
-		shadowed = 1.0; // faces away from the light
-	} else {
-		// The first map, in order, that serves the point wins; later maps are only
-		// looked at where the earlier ones fail (coherent regions skip them), then one
-		// fetch. (GLSL ES 1.00 has no token pasting, so each is written out.)
-		vec3 p = vec3(0.0);
-		bool found = false;
+	// The first map, in order, that serves the point is read: each later one only takes
+	// over where no earlier one served (GLSL ES 1.00 has no token pasting, so each is
+	// written out). Then one fetch and the compare; a point no map serves is lit.
+	vec3 p = vec3(0.0), q;
+	float found = 0.0, s;
 #if LX_USE_0
-		p = v_shadow0.xyz / v_shadow0.w;
-		found = serves(p, v_shadow0.w, u_region[0]);
+	q = v_shadow0.xyz / v_shadow0.w;
+	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
+	p = mix(p, q, s), found += s;
 #endif
 #if LX_USE_1
-		if (!found) {
-			p = v_shadow1.xyz / v_shadow1.w;
-			found = serves(p, v_shadow1.w, u_region[1]);
-		}
+	q = v_shadow1.xyz / v_shadow1.w;
+	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
+	p = mix(p, q, s), found += s;
 #endif
 #if LX_USE_2
-		if (!found) {
-			p = v_shadow2.xyz / v_shadow2.w;
-			found = serves(p, v_shadow2.w, u_region[2]);
-		}
+	q = v_shadow2.xyz / v_shadow2.w;
+	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
+	p = mix(p, q, s), found += s;
 #endif
 #if LX_USE_3
-		if (!found) {
-			p = v_shadow3.xyz / v_shadow3.w;
-			found = serves(p, v_shadow3.w, u_region[3]);
-		}
+	q = v_shadow3.xyz / v_shadow3.w;
+	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
+	p = mix(p, q, s), found += s;
 #endif
-		if (found) {
-			float stored = lx_decode_code(texture2D(u_atlas, p.xy));
-			shadowed = lx_depth_code(p.z) > stored + u_bias ? 1.0 : 0.0;
-		}
-	}
+#if LX_USE_0 || LX_USE_1 || LX_USE_2 || LX_USE_3
+	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
+	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
+#endif
+	// a face turned away from the light is in its own shadow
+	shadowed = max(shadowed, float(v_facing <= 0.0));
 #endif
 #ifdef LX_DECISION
 	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_USE_0 + LX_USE_1 + LX_USE_2 + LX_USE_3 > 0 ? 1.0 : 0.0,

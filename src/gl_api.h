@@ -25,6 +25,7 @@
 	X(GLuint, CreateProgram, (void))                                                     \
 	X(GLuint, CreateShader, (GLenum))                                                    \
 	X(void, CullFace, (GLenum))                                                          \
+	X(void, DepthFunc, (GLenum))                                                         \
 	X(void, DeleteBuffers, (GLsizei, const GLuint *))                                    \
 	X(void, DeleteFramebuffers, (GLsizei, const GLuint *))                               \
 	X(void, DeleteProgram, (GLuint))                                                     \

@@ -71,13 +71,19 @@ static bool plane_culled(const struct lx_shadow_map *map, const struct lx_frame 
 	return area > 1e-6 * scale * scale; /* counter-clockwise by a clear margin: a front face */
 }
 
+bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id)
+{
+	return lx_shadow_map_sees_box(map, f->bmin[id], f->bmax[id]) &&
+	       !(id < f->scene->plane_count && plane_culled(map, f, id));
+}
+
 /* The volume where caster `id` can shadow a point through `map` (see the header), as
  * half-spaces; returns their count, or -1 when it shadows nothing there. */
 static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
-			 int id, vec4 *pl)
+			 int id, double margin, vec4 *pl)
 {
 	vec3 lo = f->bmin[id], hi = f->bmax[id];
-	if (!lx_shadow_map_sees_box(map, lo, hi) || (id < f->scene->plane_count && plane_culled(map, f, id)))
+	if (!lx_shadow_map_draws(map, f, id))
 		return -1;
 	const mat4 *m = &map->light_clip;
 	vec4 r0 = row(m, 0), r1 = row(m, 1), r2 = row(m, 2), r3 = row(m, 3);
@@ -93,8 +99,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas,
 	}
 	/* the caster's image and the rays the map serves; regions are at least 1 lixel */
 	const struct lx_region *g = &atlas->regions[map->region];
-	double ex = LX_LOOKUP_MARGIN_LIXELS * 2.0 / (g->w > 1 ? g->w : 1);
-	double ey = LX_LOOKUP_MARGIN_LIXELS * 2.0 / (g->h > 1 ? g->h : 1);
+	double ex = margin * 2.0 / (g->w > 1 ? g->w : 1);
+	double ey = margin * 2.0 / (g->h > 1 ? g->h : 1);
 	x0 = fmax(x0, map->bounds[0]) - ex, x1 = fmin(x1, map->bounds[2]) + ex;
 	y0 = fmax(y0, map->bounds[1]) - ey, y1 = fmin(y1, map->bounds[3]) + ey;
 	if (!(x0 <= x1 && y0 <= y1))
@@ -224,7 +230,7 @@ static int merge(struct lx_rect *r, int n)
 }
 
 int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, struct lx_rect *out)
+		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_rect *out)
 {
 	struct lx_rect r[LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	int n = 0;
@@ -235,7 +241,7 @@ int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, cons
 			continue;
 		for (int c = 0; c < f->object_count; c++) {
 			vec4 pl[VOLUME_PLANES];
-			int np = caster_volume(f, atlas, map, c, pl);
+			int np = caster_volume(f, atlas, map, c, margin_lixels, pl);
 			if (np < 0 || !add_plane(pl, &np, near))
 				continue;
 			double bb[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -287,4 +293,34 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	for (int i = 0; i < n && i < LX_WINDOW_POLY_MAX; i++)
 		out[i] = a[i];
 	return n < LX_WINDOW_POLY_MAX ? n : LX_WINDOW_POLY_MAX;
+}
+
+unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_shadow_result *res, int receiver, unsigned mask)
+{
+	const double tol = 1e-4; /* region clip units: a tenth of a lixel of a 2048-wide map */
+	unsigned out = 0;
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
+		const struct lx_shadow_map *map = &res->maps[m];
+		if (!(mask & 1u << m))
+			continue;
+		int behind = 0, all_in = 0, out_side[4] = {0, 0, 0, 0};
+		for (int k = 0; k < 8; k++) {
+			vec4 c = m4_mul_point(&map->light_clip, v3_box_corner(f->bmin[receiver], f->bmax[receiver], k));
+			if (!(c.w > 0)) {
+				behind++;
+				continue;
+			}
+			double x = c.x / c.w, y = c.y / c.w;
+			all_in += x >= map->bounds[0] + tol && y >= map->bounds[1] + tol && x < map->bounds[2] - tol &&
+				  y < map->bounds[3] - tol;
+			out_side[0] += x < map->bounds[0] - tol, out_side[1] += y < map->bounds[1] - tol;
+			out_side[2] += x >= map->bounds[2] + tol, out_side[3] += y >= map->bounds[3] + tol;
+		}
+		if (behind == 8 || (!behind && (out_side[0] == 8 || out_side[1] == 8 || out_side[2] == 8 || out_side[3] == 8)))
+			continue; /* serves no point of it */
+		out |= 1u << m;
+		if (all_in == 8)
+			break; /* serves every point of it: the later maps are never read */
+	}
+	return out;
 }

@@ -19,23 +19,35 @@ struct lx_rect {
 	int x0, y0, x1, y1;
 };
 
-/* Lixels of margin around a caster's image: NEAREST lookups round to the lixel whose
- * centre the caster covered, and a mediump shader's coordinates are off by a lixel or
- * two more. */
-#define LX_LOOKUP_MARGIN_LIXELS 4.0
-/* Rectangles a receiver's lookup region is merged into at most (each is a few draws). */
-#define LX_LOOKUP_MAX_RECTS 4
+/* Lixels of margin around a caster's image. A lixel is written where the caster covers
+ * its centre, and a NEAREST lookup reads the lixel it falls in: half a lixel, and a
+ * float's rounding. A mediump (fp16) shader's texture coordinates are off by up to 2^-11
+ * of the atlas, a lixel of a 2048-wide one: two more. */
+#define LX_LOOKUP_MARGIN_HIGHP 1.0
+#define LX_LOOKUP_MARGIN_MEDIUMP 3.0
+/* Rectangles a receiver's lookup region is merged into at most. */
+#define LX_LOOKUP_MAX_RECTS 8
 
 /* Whether the shadow pass of a map draws a world box: false when the box lies entirely
  * outside the rays the map serves or beyond its far plane (never culled for the near
  * plane: the pass flattens casters onto it). */
 bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
+/* Whether the shadow pass of a map draws anything of object id: its box is seen, and a
+ * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
+bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
 /* The window rectangles, inside `within`, that hold every pixel of receiver object
- * `receiver` which one of the maps in `mask` could shadow; returns their count (0: no
- * shadow can fall there), at most LX_LOOKUP_MAX_RECTS, disjoint or overlapping. */
+ * `receiver` which one of the maps in `mask` could shadow, each caster's image grown by
+ * margin_lixels (LX_LOOKUP_MARGIN_*); returns their count (0: no shadow can fall there),
+ * at most LX_LOOKUP_MAX_RECTS, disjoint or overlapping. */
 int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, struct lx_rect *out);
+		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_rect *out);
+
+/* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
+ * the shader reads the first map, in order, that serves a point, so a map that serves no
+ * point of the receiver's box is dropped, and so are the maps after one that serves all
+ * of it (by a margin for the shader's float rounding). */
+unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_shadow_result *res, int receiver, unsigned mask);
 
 /* The most vertices lx_plane_in_window returns */
 #define LX_WINDOW_POLY_MAX 12

@@ -31,7 +31,8 @@ struct draw {
 	int first, count;
 };
 
-/* the most draws slab_draws makes of k rectangles */
+/* the most spans slab_spans makes of k rectangles (k <= LX_LOOKUP_MAX_RECTS) */
+_Static_assert(LX_MAX_MAPS <= LX_LOOKUP_MAX_RECTS, "slab_spans cuts at a plane's maps' rectangles too");
 #define SLAB_DRAWS(k) ((2 * (k) + 1) * (2 * (k) + 1))
 
 struct lx_renderer {
@@ -46,7 +47,7 @@ struct lx_renderer {
 	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint target_color, target_depth, target_fbo;
-	GLuint shadow_prog;
+	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip;
 	/* main-pass variants, built when first used: [decision][mask of the maps a draw reads] */
 	struct main_program variant[2][1 << LX_MAX_MAPS];
@@ -140,6 +141,15 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 		return NULL;
 	}
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
+	r->clear_prog = lx_program_build("atlas_clear.vert", "atlas_clear.frag", NULL, err, errlen);
+	if (!r->clear_prog) {
+		lx_renderer_destroy(r);
+		return NULL;
+	}
+	static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+	lx_gl.GenBuffers(1, &r->clear_vbo);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
 
 	lx_gl.GenBuffers(r->objects, r->vbo);
 	lx_gl.GenBuffers(1, &r->piece_vbo);
@@ -213,6 +223,10 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	}
 	if (r->shadow_prog)
 		lx_gl.DeleteProgram(r->shadow_prog);
+	if (r->clear_prog)
+		lx_gl.DeleteProgram(r->clear_prog);
+	if (r->clear_vbo)
+		lx_gl.DeleteBuffers(1, &r->clear_vbo);
 	for (int a = 0; a < 2; a++)
 		for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
 			if (r->variant[a][c].prog)
@@ -241,6 +255,33 @@ static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
 	set_attributes(normals);
 }
 
+/* Sets an atlas region and its guard ring to "far". llvmpipe clears a scissored
+ * rectangle by a slow path (about 0.15 ms however small), so the whole atlas is cleared
+ * with no scissor when the ring spans it, a small region by a far quad (it pays only
+ * its fill), a large one by a scissored clear. */
+#define QUAD_CLEAR_MAX 65536 /* lixels: the fill of a far quad, about 2 ns each, against that */
+static void clear_region(struct lx_renderer *r, const struct lx_region *g)
+{
+	const struct lx_atlas *a = r->d.atlas;
+	int gd = a->guard, x = g->x - gd, y = g->y - gd, w = g->w + 2 * gd, h = g->h + 2 * gd;
+	if (x <= 0 && y <= 0 && x + w >= a->width && y + h >= a->height) {
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	} else if ((long)w * h > QUAD_CLEAR_MAX) {
+		lx_gl.Enable(GL_SCISSOR_TEST);
+		lx_gl.Scissor(x, y, w, h);
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		lx_gl.Disable(GL_SCISSOR_TEST);
+	} else {
+		lx_gl.Viewport(x, y, w, h);
+		lx_gl.UseProgram(r->clear_prog);
+		lx_gl.Disable(GL_CULL_FACE);
+		lx_gl.DepthFunc(GL_ALWAYS);
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+	}
+}
+
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
 {
 	bool any = false;
@@ -249,16 +290,11 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 	if (!any)
 		return;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
-	lx_gl.UseProgram(r->shadow_prog);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
-	lx_gl.Enable(GL_SCISSOR_TEST);
-	/* Back faces only (second-depth shadow maps): lit front faces never compare against
-	 * themselves, so there is no acne; the meshes are closed or are planes. */
-	lx_gl.Enable(GL_CULL_FACE);
-	lx_gl.CullFace(GL_FRONT);
 	lx_gl.ClearColor(1, 1, 1, 1);
 	for (int m = 0; m < res->map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
@@ -267,15 +303,19 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 		const struct lx_region *g = &r->d.atlas->regions[map->region];
 		if (g->w < 1 || g->h < 1)
 			continue;
-		/* the region and its guard band start "far": a per-frame layout moves the
-		 * guards over what earlier frames drew; then draw inside the region only */
-		int gd = r->d.atlas->guard;
-		lx_gl.Scissor(g->x - gd, g->y - gd, g->w + 2 * gd, g->h + 2 * gd);
-		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		/* the region and its guard ring start "far" (a per-frame layout moves the guards
+		 * over what earlier frames drew) */
+		clear_region(r, g);
+		/* then the casters it can see, inside the region. Back faces only (second-depth
+		 * shadow maps): lit front faces never compare against themselves, so there is no
+		 * acne; the meshes are closed or are planes. */
 		lx_gl.Viewport(g->x, g->y, g->w, g->h);
-		lx_gl.Scissor(g->x, g->y, g->w, g->h);
+		lx_gl.UseProgram(r->shadow_prog);
+		lx_gl.Enable(GL_CULL_FACE);
+		lx_gl.CullFace(GL_FRONT);
+		lx_gl.DepthFunc(GL_LESS);
 		for (int id = 0; id < r->objects; id++) {
-			if (!lx_shadow_map_sees_box(map, f->bmin[id], f->bmax[id]))
+			if (!lx_shadow_map_draws(map, f, id))
 				continue; /* no fill and no vertices for what the map cannot see */
 			mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
 			float lcf[16];
@@ -285,7 +325,6 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 		}
 	}
-	lx_gl.Disable(GL_SCISSOR_TEST);
 	lx_gl.Disable(GL_CULL_FACE);
 }
 
@@ -358,10 +397,15 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsi
 	return n;
 }
 
+static double lookup_margin(const struct lx_renderer *r)
+{
+	return r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP;
+}
+
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
  * rectangle), then each part with maps cut at the region where they can shadow it. */
 static int plane_spans(const struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-		       int id, unsigned mask, struct span *out)
+		       int id, unsigned mask, struct span *out, int room)
 {
 	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
 	unsigned bit[LX_LOOKUP_MAX_RECTS];
@@ -388,11 +432,12 @@ static int plane_spans(const struct lx_renderer *r, const struct lx_frame *f, co
 	else
 		first[nf++] = (struct span){mask, screen};
 	for (int i = 0; i < nf; i++) {
-		if (!first[i].mask || r->d.lookup_everywhere) {
+		/* split while the room left keeps a place for each later span */
+		if (!first[i].mask || n + SLAB_DRAWS(LX_LOOKUP_MAX_RECTS) + nf - i > room) {
 			out[n++] = first[i];
 			continue;
 		}
-		nr = lx_lookup_rects(f, r->d.atlas, res, id, first[i].mask, first[i].box, rect);
+		nr = lx_lookup_rects(f, r->d.atlas, res, id, first[i].mask, first[i].box, lookup_margin(r), rect);
 		for (int k = 0; k < nr; k++)
 			bit[k] = first[i].mask;
 		n = slab_spans(first[i].box, rect, bit, nr, out, n);
@@ -442,16 +487,24 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	unsigned mask = lx_shadow_receiver_maps(res, id);
 	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
 	if (id >= r->d.scene->plane_count || !mask) {
-		if (mask && !r->d.lookup_everywhere && lx_lookup_rects(f, r->d.atlas, res, id, mask, screen, rect) == 0)
+		if (!r->d.lookup_everywhere)
+			mask = lx_lookup_maps(f, res, id, mask);
+		if (mask && !r->d.lookup_everywhere && lx_lookup_rects(f, r->d.atlas, res, id, mask, screen, lookup_margin(r), rect) == 0)
 			mask = 0; /* no shadow can fall on it */
 		out[n++] = (struct draw){id, mask, false, 0, 0};
 		return n;
 	}
-	struct span span[SLAB_DRAWS(LX_MAX_MAPS) * SLAB_DRAWS(LX_LOOKUP_MAX_RECTS)];
-	int ns = plane_spans(r, f, res, id, mask, span);
+	struct span span[4 * SLAB_DRAWS(LX_LOOKUP_MAX_RECTS)];
+	int ns = plane_spans(r, f, res, id, mask, span, sizeof span / sizeof span[0]);
+	/* --lookup-region all: the same pieces, each reading every map of the plane (the
+	 * same geometry, so that the two ways differ in their lookups only) */
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
+	if (getenv("LX_DEBUG_SPANS"))
+		for (int i = 0; i < ns; i++)
+			if (span[i].mask)
+				fprintf(stderr, "span %d mask %u: %d %d %d %d\n", id, span[i].mask, span[i].box.x0, span[i].box.y0, span[i].box.x1, span[i].box.y1);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
 		unsigned m = span[i].mask;
@@ -535,6 +588,17 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
 				 r->piece_v, GL_STREAM_DRAW);
 	}
+	if (getenv("LX_DEBUG_MASK0"))
+		for (int k = 0; k < n; k++)
+			items[k].mask = 0;
+	if (getenv("LX_DEBUG_CASTER0"))
+		for (int k = 0; k < n; k++)
+			if (items[k].object >= r->d.scene->plane_count)
+				items[k].mask = 0;
+	if (getenv("LX_DEBUG_PLANE0"))
+		for (int k = 0; k < n; k++)
+			if (items[k].object < r->d.scene->plane_count)
+				items[k].mask = 0;
 	const struct lx_scene *s = r->d.scene;
 	for (int first = 0; first < n; first++) {
 		if (done[first])
