@@ -1,4 +1,5 @@
 #include "lookup_region.h"
+#include "convex.h"
 #include "plane_optimal.h"
 #include <math.h>
 
@@ -295,31 +296,45 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	return n < LX_WINDOW_POLY_MAX ? n : LX_WINDOW_POLY_MAX;
 }
 
-unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_shadow_result *res, int receiver, unsigned mask)
+unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			int receiver, unsigned mask, double margin_lixels)
 {
-	const double tol = 1e-4; /* region clip units: a tenth of a lixel of a 2048-wide map */
+	/* the receiver's part in view: its box clipped to the view frustum */
+	vec3 fc[8], pts[LX_CONVEX_MAX_POINTS];
+	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
+	for (int i = 0; i < 8; i++) {
+		vec4 p = m4_mul_v4(&f->view.inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
+		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w); /* w > 0 for a valid perspective frustum */
+	}
+	int np = lx_frustum_box_points(fc, f->bmin[receiver], f->bmax[receiver], pts, LX_CONVEX_MAX_POINTS);
+	if (np == 0)
+		return 0; /* not in view */
 	unsigned out = 0;
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		if (!(mask & 1u << m))
 			continue;
+		/* inside by a margin the shader's rounding cannot cross (regions >= 1 lixel) */
+		const struct lx_region *g = &atlas->regions[map->region];
+		double tx = margin_lixels * 2.0 / (g->w > 1 ? g->w : 1), ty = margin_lixels * 2.0 / (g->h > 1 ? g->h : 1);
 		int behind = 0, all_in = 0, out_side[4] = {0, 0, 0, 0};
-		for (int k = 0; k < 8; k++) {
-			vec4 c = m4_mul_point(&map->light_clip, v3_box_corner(f->bmin[receiver], f->bmax[receiver], k));
+		for (int k = 0; k < np; k++) {
+			vec4 c = m4_mul_point(&map->light_clip, pts[k]);
 			if (!(c.w > 0)) {
 				behind++;
 				continue;
 			}
 			double x = c.x / c.w, y = c.y / c.w;
-			all_in += x >= map->bounds[0] + tol && y >= map->bounds[1] + tol && x < map->bounds[2] - tol &&
-				  y < map->bounds[3] - tol;
-			out_side[0] += x < map->bounds[0] - tol, out_side[1] += y < map->bounds[1] - tol;
-			out_side[2] += x >= map->bounds[2] + tol, out_side[3] += y >= map->bounds[3] + tol;
+			all_in += x >= map->bounds[0] + tx && y >= map->bounds[1] + ty && x < map->bounds[2] - tx &&
+				  y < map->bounds[3] - ty;
+			out_side[0] += x < map->bounds[0] - tx, out_side[1] += y < map->bounds[1] - ty;
+			out_side[2] += x >= map->bounds[2] + tx, out_side[3] += y >= map->bounds[3] + ty;
 		}
-		if (behind == 8 || (!behind && (out_side[0] == 8 || out_side[1] == 8 || out_side[2] == 8 || out_side[3] == 8)))
+		if (behind == np || (!behind && (out_side[0] == np || out_side[1] == np || out_side[2] == np ||
+						   out_side[3] == np)))
 			continue; /* serves no point of it */
 		out |= 1u << m;
-		if (all_in == 8)
+		if (all_in == np)
 			break; /* serves every point of it: the later maps are never read */
 	}
 	return out;

@@ -45,9 +45,10 @@ int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, cons
 
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
  * the shader reads the first map, in order, that serves a point, so a map that serves no
- * point of the receiver's box is dropped, and so are the maps after one that serves all
- * of it (by a margin for the shader's float rounding). */
-unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_shadow_result *res, int receiver, unsigned mask);
+ * point of the receiver's part in view is dropped, and so are the maps after one that
+ * serves all of it, by margin_lixels (the shader's rounding). */
+unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			int receiver, unsigned mask, double margin_lixels);
 
 /* The most vertices lx_plane_in_window returns */
 #define LX_WINDOW_POLY_MAX 12

@@ -488,23 +488,20 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
-			mask = lx_lookup_maps(f, res, id, mask);
+			mask = lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
 		if (mask && !r->d.lookup_everywhere && lx_lookup_rects(f, r->d.atlas, res, id, mask, screen, lookup_margin(r), rect) == 0)
 			mask = 0; /* no shadow can fall on it */
 		out[n++] = (struct draw){id, mask, false, 0, 0};
 		return n;
 	}
+	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
 	struct span span[4 * SLAB_DRAWS(LX_LOOKUP_MAX_RECTS)];
-	int ns = plane_spans(r, f, res, id, mask, span, sizeof span / sizeof span[0]);
-	/* --lookup-region all: the same pieces, each reading every map of the plane (the
-	 * same geometry, so that the two ways differ in their lookups only) */
+	int ns = plane_spans(r, f, res, id, need, span, sizeof span / sizeof span[0]);
+	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
+	 * only), each reading every map of the plane */
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
-	if (getenv("LX_DEBUG_SPANS"))
-		for (int i = 0; i < ns; i++)
-			if (span[i].mask)
-				fprintf(stderr, "span %d mask %u: %d %d %d %d\n", id, span[i].mask, span[i].box.x0, span[i].box.y0, span[i].box.x1, span[i].box.y1);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
 		unsigned m = span[i].mask;
@@ -588,17 +585,6 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
 				 r->piece_v, GL_STREAM_DRAW);
 	}
-	if (getenv("LX_DEBUG_MASK0"))
-		for (int k = 0; k < n; k++)
-			items[k].mask = 0;
-	if (getenv("LX_DEBUG_CASTER0"))
-		for (int k = 0; k < n; k++)
-			if (items[k].object >= r->d.scene->plane_count)
-				items[k].mask = 0;
-	if (getenv("LX_DEBUG_PLANE0"))
-		for (int k = 0; k < n; k++)
-			if (items[k].object < r->d.scene->plane_count)
-				items[k].mask = 0;
 	const struct lx_scene *s = r->d.scene;
 	for (int first = 0; first < n; first++) {
 		if (done[first])

@@ -2,6 +2,7 @@
 #include "configs.h"
 #include "depth_rgba.h"
 #include "gl_program.h"
+#include "method_run.h"
 #include "metrics.h"
 #include "overlay.h"
 #include "png_out.h"
@@ -344,6 +345,77 @@ static void none_shadows_nothing(void **state)
 	}
 }
 
+/* --lookup-region footprint (the default) draws without a lookup wherever no shadow can
+ * fall, and casters with only the maps that serve them: no pixel's decision or object may
+ * change against --lookup-region all. Every method, every standard configuration of both
+ * built-in scenes, on the highp and the mediump path (whose fp16 rounding differs). */
+static void lookup_region_changes_no_decision(void **state)
+{
+	(void)state;
+	enum { w = 256, h = 192 };
+	char err[512];
+	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+	if (!plat)
+		fail_msg("%s", err);
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
+	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
+	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	char names[128];
+	snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+	long compared = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(*sn, &base));
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		for (int mediump = 0; mediump < 2; mediump++) {
+			char list[128];
+			memcpy(list, names, sizeof list);
+			for (char *save = NULL, *m = strtok_r(list, "|", &save); m; m = strtok_r(NULL, "|", &save)) {
+				struct lx_method_run run[2];
+				long looked[2] = {0, 0};
+				for (int k = 0; k < 2; k++) {
+					struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+					o.lookup_everywhere = k == 1;
+					if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h, mediump,
+							       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+						fail_msg("%s: %s", m, err);
+				}
+				for (int c = 0; c < lx_config_count; c++) {
+					struct lx_scene scene = base;
+					lx_config_apply(&lx_configs[c], &scene);
+					struct lx_frame frame;
+					assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
+					for (int k = 0; k < 2; k++) {
+						struct lx_frame_times t;
+						lx_method_run_frame(&run[k], &frame, &t);
+						looked[k] += lx_method_run_decision(&run[k], &frame, rgba, obj[k], sh[k]);
+					}
+					long differ = 0;
+					for (long i = 0; i < (long)w * h; i++)
+						differ += obj[0][i] != obj[1][i] || sh[0][i] != sh[1][i];
+					if (differ)
+						fail_msg("%s scene, %s, %s, %s: %ld pixels differ between --lookup-region footprint and all",
+							 *sn, lx_configs[c].name, m, mediump ? "mediump" : "highp", differ);
+					compared++;
+				}
+				if (looked[1] > 0)
+					print_message("%-7s %-7s %-7s: footprint looks up %.1f%% of the pixels all does\n", *sn, m,
+						      mediump ? "mediump" : "highp", 100.0 * looked[0] / looked[1]);
+				assert_true(looked[0] <= looked[1]);
+				lx_method_run_free(&run[0]);
+				lx_method_run_free(&run[1]);
+			}
+		}
+		lx_meshes_free(&meshes);
+	}
+	print_message("%ld frames compared, all identical\n", compared);
+	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_platform_destroy(plat);
+}
+
 /* Both platforms see the same objects at the same pixels. */
 static void platforms_agree(void **state)
 {
@@ -552,6 +624,7 @@ int main(void)
 		cmocka_unit_test(paper_bad_case_is_measured),
 		cmocka_unit_test(plane_keeps_every_shadow),
 		cmocka_unit_test(none_shadows_nothing),
+		cmocka_unit_test(lookup_region_changes_no_decision),
 		cmocka_unit_test(platforms_agree),
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
 		cmocka_unit_test(unknown_platform_and_method_are_bad_input),
