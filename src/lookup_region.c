@@ -1,10 +1,11 @@
 #include "lookup_region.h"
 #include "convex.h"
+#include "polygon2d.h"
 #include "plane_optimal.h"
 #include <math.h>
 
-#define VOLUME_PLANES 7 /* a caster's six, and the eye's near plane */
-#define FACE_MAX 16     /* a quad clipped by VOLUME_PLANES planes: at most 4 + 7 vertices */
+#define VOLUME_PLANES 11 /* a caster's ten, and the eye's near plane */
+#define FACE_MAX 16     /* a quad clipped by VOLUME_PLANES planes: at most 4 + 11 vertices */
 
 bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 {
@@ -55,21 +56,31 @@ static bool add_plane(vec4 *pl, int *n, vec4 p)
 }
 
 /* A plane of interest is one quad, drawn into a map only where its back faces the
- * light (the pass culls front faces): true when the map sees its front side only. */
+ * light (the pass culls front faces): true when the map sees its front side only. Its
+ * first triangle's winding in the map, when in front of the light; else which side of it
+ * the light is on (lx_shadow_fix_winding makes faces turned to the light wind
+ * counter-clockwise, and the part behind the light is clipped). */
 static bool plane_culled(const struct lx_shadow_map *map, const struct lx_frame *f, int id)
 {
 	const struct lx_plane *p = &f->scene->planes[id];
 	vec3 q[3] = {p->corner, v3_add(p->corner, p->edge1), v3_add(v3_add(p->corner, p->edge1), p->edge2)};
 	double x[3], y[3];
-	for (int k = 0; k < 3; k++) {
+	bool front = true;
+	for (int k = 0; k < 3 && front; k++) {
 		vec4 c = m4_mul_point(&map->light_clip, v3_add(q[k], f->offset[id]));
-		if (!(c.w > 0))
-			return false;
+		front = c.w > 0;
 		x[k] = c.x / c.w, y[k] = c.y / c.w;
 	}
-	double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-	double scale = fabs(x[1] - x[0]) + fabs(x[2] - x[0]) + fabs(y[1] - y[0]) + fabs(y[2] - y[0]);
-	return area > 1e-6 * scale * scale; /* counter-clockwise by a clear margin: a front face */
+	if (front) {
+		double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+		double scale = fabs(x[1] - x[0]) + fabs(x[2] - x[0]) + fabs(y[1] - y[0]) + fabs(y[2] - y[0]);
+		return area > 1e-6 * scale * scale; /* counter-clockwise by a clear margin: a front face */
+	}
+	vec3 n = v3_cross(p->edge1, p->edge2); /* the quad's front side (mesh.c's winding) */
+	const struct lx_light *l = &f->light;
+	vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, v3_add(q[0], f->offset[id]));
+	double len = v3_len(n) * v3_len(to_light);
+	return v3_dot(n, to_light) > 1e-6 * len; /* the light clearly on the front side */
 }
 
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id)
@@ -78,8 +89,31 @@ bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame 
 	       !(id < f->scene->plane_count && plane_culled(map, f, id));
 }
 
-/* The volume where caster `id` can shadow a point through `map` (see the header), as
- * half-spaces; returns their count, or -1 when it shadows nothing there. */
+/* The range of (N . X) / (D . X) over a sphere (centre c, radius r) in front of D's
+ * plane, from the planes N - k D tangent to it: ((N - k D) . c)^2 = r^2 |n - k d|^2, a
+ * quadratic in k whose roots are the two extremes. False when the sphere reaches D's
+ * plane or rounding leaves no real root. */
+static bool sphere_range(vec4 nn, vec4 dd, vec3 c, double r, double *lo, double *hi)
+{
+	double a = nn.x * c.x + nn.y * c.y + nn.z * c.z + nn.w, b = dd.x * c.x + dd.y * c.y + dd.z * c.z + dd.w;
+	double n2 = nn.x * nn.x + nn.y * nn.y + nn.z * nn.z, d2 = dd.x * dd.x + dd.y * dd.y + dd.z * dd.z;
+	double nd = nn.x * dd.x + nn.y * dd.y + nn.z * dd.z;
+	double qa = b * b - r * r * d2, qb = a * b - r * r * nd, qc = a * a - r * r * n2;
+	if (!(b > 0) || !(qa > 1e-12 * b * b)) /* the sphere reaches the plane w = 0 */
+		return false;
+	double disc = qb * qb - qa * qc;
+	if (!(disc >= 0) || !isfinite(disc))
+		return false;
+	double sq = sqrt(disc); /* disc >= 0 */
+	*lo = (qb - sq) / qa, *hi = (qb + sq) / qa; /* qa > 0 */
+	return *lo <= *hi;
+}
+
+/* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
+ * image, an octagon (x, y, x + y and x - y bounded: tight for the round shapes) grown by
+ * the margin and cut to the rays the map serves, swept beyond the caster's nearest depth.
+ * Returns the count, or -1 when it shadows nothing there. */
+#define OCTAGON 4
 static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
 			 int id, double margin, vec4 *pl)
 {
@@ -88,32 +122,75 @@ static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas,
 		return -1;
 	const mat4 *m = &map->light_clip;
 	vec4 r0 = row(m, 0), r1 = row(m, 1), r2 = row(m, 2), r3 = row(m, 3);
+	vec4 dir[OCTAGON] = {r0, r1, lin(1, r0, 1, r1), lin(1, r0, -1, r1)}; /* x, y, x + y, x - y */
 	int n = 0;
-	double x0 = INFINITY, y0 = INFINITY, z0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	double b0[OCTAGON], b1[OCTAGON], z0 = INFINITY;
+	for (int d = 0; d < OCTAGON; d++)
+		b0[d] = INFINITY, b1[d] = -INFINITY;
+	/* The box's part in front of the light: its corners there, and where its edges cross
+	 * the light's plane (w = 0), points at infinity in the image: a bound that such a
+	 * point exceeds is no bound (-/+ infinity). */
+	vec4 c[8];
+	bool crosses = false;
 	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_point(m, v3_box_corner(lo, hi, k));
-		if (!(c.w > 0) || !isfinite(c.x + c.y + c.z + c.w)) /* it reaches the light's plane */
-			return add_plane(pl, &n, r3) ? n : -1;
-		x0 = fmin(x0, c.x / c.w), x1 = fmax(x1, c.x / c.w);
-		y0 = fmin(y0, c.y / c.w), y1 = fmax(y1, c.y / c.w);
-		z0 = fmin(z0, c.z / c.w);
+		c[k] = m4_mul_point(m, v3_box_corner(lo, hi, k));
+		if (!isfinite(c[k].x + c[k].y + c[k].z + c[k].w))
+			return add_plane(pl, &n, r3) ? n : -1; /* no bound at all */
+		if (!(c[k].w > 0)) {
+			crosses = true;
+			continue;
+		}
+		double x = c[k].x / c[k].w, y = c[k].y / c[k].w, v[OCTAGON] = {x, y, x + y, x - y};
+		for (int d = 0; d < OCTAGON; d++)
+			b0[d] = fmin(b0[d], v[d]), b1[d] = fmax(b1[d], v[d]);
+		z0 = fmin(z0, c[k].z / c[k].w);
 	}
-	/* the caster's image and the rays the map serves; regions are at least 1 lixel */
+	if (crosses) {
+		for (int k = 0; k < 8; k++)
+			for (int bit = 1; bit < 8; bit <<= 1) { /* the 12 edges: corners k and k | bit */
+				int j = k | bit;
+				if (j == k || (c[k].w > 0) == (c[j].w > 0))
+					continue;
+				double t = c[k].w / (c[k].w - c[j].w); /* signs differ: no zero division */
+				double x = c[k].x + t * (c[j].x - c[k].x), y = c[k].y + t * (c[j].y - c[k].y);
+				double z = c[k].z + t * (c[j].z - c[k].z), v[OCTAGON] = {x, y, x + y, x - y};
+				for (int d = 0; d < OCTAGON; d++) {
+					if (v[d] < 0)
+						b0[d] = -INFINITY;
+					if (v[d] > 0)
+						b1[d] = INFINITY;
+				}
+				if (z < 0)
+					z0 = -INFINITY;
+			}
+	}
+	if (id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape == LX_SPHERE) {
+		/* the sphere itself, not its box (its mesh lies inside it) */
+		double r = f->scene->casters[id - f->scene->plane_count].size.x, l, h;
+		vec3 centre = v3_add(f->offset[id], v3(0, r, 0));
+		for (int d = 0; d < OCTAGON; d++)
+			if (sphere_range(dir[d], r3, centre, r, &l, &h))
+				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
+	}
+	/* grown by the margin and cut to the rays the map serves; regions are >= 1 lixel */
 	const struct lx_region *g = &atlas->regions[map->region];
-	double ex = margin * 2.0 / (g->w > 1 ? g->w : 1);
-	double ey = margin * 2.0 / (g->h > 1 ? g->h : 1);
-	x0 = fmax(x0, map->bounds[0]) - ex, x1 = fmin(x1, map->bounds[2]) + ex;
-	y0 = fmax(y0, map->bounds[1]) - ey, y1 = fmin(y1, map->bounds[3]) + ey;
-	if (!(x0 <= x1 && y0 <= y1))
-		return -1;
-	/* depth: a few 11-bit codes nearer, for the mediump path's rounding */
-	z0 -= 0.01;
-	/* x >= x0 w, x <= x1 w, the same in y, z >= z0 w, w >= 0 */
-	vec4 h[6] = {lin(1, r0, -x0, r3), lin(x1, r3, -1, r0), lin(1, r1, -y0, r3), lin(y1, r3, -1, r1),
-		     lin(1, r2, -z0, r3), r3};
-	for (int i = 0; i < 6; i++)
-		if (!add_plane(pl, &n, h[i]))
+	double ex = margin * 2.0 / (g->w > 1 ? g->w : 1), ey = margin * 2.0 / (g->h > 1 ? g->h : 1);
+	double grow[OCTAGON] = {ex, ey, ex + ey, ex + ey};
+	b0[0] = fmax(b0[0], map->bounds[0]), b1[0] = fmin(b1[0], map->bounds[2]);
+	b0[1] = fmax(b0[1], map->bounds[1]), b1[1] = fmin(b1[1], map->bounds[3]);
+	for (int d = 0; d < OCTAGON; d++) {
+		b0[d] -= grow[d], b1[d] += grow[d];
+		if (!(b0[d] <= b1[d]))
+			return -1; /* nothing of it in front of the light, or outside the rays served */
+		/* N >= b0 w and N <= b1 w, where bounded */
+		if ((isfinite(b0[d]) && !add_plane(pl, &n, lin(1, dir[d], -b0[d], r3))) ||
+		    (isfinite(b1[d]) && !add_plane(pl, &n, lin(b1[d], r3, -1, dir[d]))))
 			return -1;
+	}
+	/* depth: beyond the caster's nearest point, a few 11-bit codes nearer for the mediump
+	 * path's rounding; and in front of the light */
+	if ((isfinite(z0) && !add_plane(pl, &n, lin(1, r2, -(z0 - 0.01), r3))) || !add_plane(pl, &n, r3))
+		return -1;
 	return n;
 }
 
@@ -132,23 +209,28 @@ static int clip(const vec3 *in, int n, vec4 p, vec3 *out)
 	return m;
 }
 
-/* Grows a window bounding box (x0, y0, x1, y1) by a world point in front of the eye. */
-static void extend(const struct lx_view *v, vec3 p, double *bb)
+/* Window points of a volume, for its hull. */
+struct window_points {
+	int n;
+	bool everything; /* a point on the eye's plane (rounding at the near clip): no bound */
+	vec2 p[6 * FACE_MAX + 64];
+};
+
+static void add_point(const struct lx_view *v, vec3 q, struct window_points *w)
 {
-	vec4 c = m4_mul_point(&v->view_proj, p);
-	if (!(c.w > 0)) { /* on the eye's plane (rounding at the near clip): everything */
-		bb[0] = bb[1] = -INFINITY, bb[2] = bb[3] = INFINITY;
-		return;
-	}
+	vec4 c = m4_mul_point(&v->view_proj, q);
 	double x = (c.x / c.w + 1) * 0.5 * v->width, y = (c.y / c.w + 1) * 0.5 * v->height;
-	bb[0] = fmin(bb[0], x), bb[1] = fmin(bb[1], y);
-	bb[2] = fmax(bb[2], x), bb[3] = fmax(bb[3], y);
+	if (!(c.w > 0) || !isfinite(x) || !isfinite(y))
+		w->everything = true;
+	else if (w->n < (int)(sizeof w->p / sizeof w->p[0]))
+		w->p[w->n++] = (vec2){x, y};
 }
 
-/* The window box of (receiver object) n (volume): the vertices of an intersection of two
- * convex sets lie on a face of one inside the other, so the receiver's faces clipped by
- * the volume, and for a solid receiver the volume's own vertices inside its box. */
-static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, double *bb)
+/* The window points of (receiver object id) n (volume): the vertices of an intersection
+ * of two convex sets lie on a face of one inside the other, so the receiver's faces
+ * clipped by the volume, and for a solid receiver the volume's own vertices inside its
+ * box. */
+static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, struct window_points *w)
 {
 	vec3 face[6][4];
 	int faces;
@@ -177,7 +259,7 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 				a[i] = b[i];
 		}
 		for (int i = 0; i < n; i++)
-			extend(&f->view, a[i], bb);
+			add_point(&f->view, a[i], w);
 	}
 	if (!solid)
 		return;
@@ -189,85 +271,130 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 		vec3 c = corner[i];
 		if (c.x >= lo.x - tol && c.y >= lo.y - tol && c.z >= lo.z - tol && c.x <= hi.x + tol && c.y <= hi.y + tol &&
 		    c.z <= hi.z + tol)
-			extend(&f->view, c, bb);
+			add_point(&f->view, c, w);
 	}
 }
 
-static long area(struct lx_rect r) { return (long)(r.x1 - r.x0) * (r.y1 - r.y0); }
-
-static struct lx_rect hull(struct lx_rect a, struct lx_rect b)
+/* Per caster and map of `mask`, the window hull of where it can shadow the receiver;
+ * returns their count, or -1 when one has no bound (the receiver reaches the eye's plane
+ * inside it). */
+#define MAX_HULLS (LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS))
+static int shadow_hulls(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			int receiver, unsigned mask, double margin, struct lx_poly *hull)
 {
-	return (struct lx_rect){a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0, a.x1 > b.x1 ? a.x1 : b.x1,
-				a.y1 > b.y1 ? a.y1 : b.y1};
-}
-
-/* Merges rectangles that overlap or touch, then the pair that grows least, until at most
- * LX_LOOKUP_MAX_RECTS are left. */
-static int merge(struct lx_rect *r, int n)
-{
-	for (bool again = true; again;) {
-		again = false;
-		for (int i = 0; i < n && !again; i++)
-			for (int j = i + 1; j < n && !again; j++)
-				if (r[i].x0 <= r[j].x1 && r[j].x0 <= r[i].x1 && r[i].y0 <= r[j].y1 && r[j].y0 <= r[i].y1) {
-					r[i] = hull(r[i], r[j]);
-					r[j] = r[--n];
-					again = true;
-				}
-	}
-	while (n > LX_LOOKUP_MAX_RECTS) {
-		int bi = 0, bj = 1;
-		long best = -1;
-		for (int i = 0; i < n; i++)
-			for (int j = i + 1; j < n; j++) {
-				long grow = area(hull(r[i], r[j])) - area(r[i]) - area(r[j]);
-				if (best < 0 || grow < best)
-					best = grow, bi = i, bj = j;
-			}
-		r[bi] = hull(r[bi], r[bj]);
-		r[bj] = r[--n];
-	}
-	return n;
-}
-
-int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_rect *out)
-{
-	struct lx_rect r[LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	int n = 0;
 	vec4 near = lin(1, row(&f->view.view_proj, 2), 1, row(&f->view.view_proj, 3)); /* z + w >= 0 */
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		if (!(mask & 1u << m) || !map->rendered)
 			continue;
-		for (int c = 0; c < f->object_count; c++) {
+		for (int c = 0; c < f->object_count && n < MAX_HULLS; c++) {
 			vec4 pl[VOLUME_PLANES];
-			int np = caster_volume(f, atlas, map, c, margin_lixels, pl);
+			int np = caster_volume(f, atlas, map, c, margin, pl);
 			if (np < 0 || !add_plane(pl, &np, near))
 				continue;
-			double bb[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
-			receiver_in_volume(f, receiver, pl, np, bb);
-			if (!(bb[2] >= bb[0]) || !(bb[3] >= bb[1]))
-				continue; /* the receiver is outside the volume */
-			/* whole pixels whose centres may lie in the box, and one more for rounding */
-			struct lx_rect q = within;
-			if (bb[0] > within.x0)
-				q.x0 = (int)fmin(floor(bb[0]) - 1, within.x1);
-			if (bb[1] > within.y0)
-				q.y0 = (int)fmin(floor(bb[1]) - 1, within.y1);
-			if (bb[2] < within.x1)
-				q.x1 = (int)fmax(ceil(bb[2]) + 1, within.x0);
-			if (bb[3] < within.y1)
-				q.y1 = (int)fmax(ceil(bb[3]) + 1, within.y0);
-			q.x0 = q.x0 < within.x0 ? within.x0 : q.x0, q.y0 = q.y0 < within.y0 ? within.y0 : q.y0;
-			q.x1 = q.x1 > within.x1 ? within.x1 : q.x1, q.y1 = q.y1 > within.y1 ? within.y1 : q.y1;
-			if (q.x1 > q.x0 && q.y1 > q.y0)
-				r[n++] = q;
+			struct window_points w;
+			w.n = 0, w.everything = false;
+			receiver_in_volume(f, receiver, pl, np, &w);
+			if (w.everything)
+				return -1;
+			if (w.n > 0)
+				lx_poly_hull(w.p, w.n, &hull[n++]);
 		}
 	}
-	n = merge(r, n);
-	for (int i = 0; i < n; i++)
-		out[i] = r[i];
+	return n;
+}
+
+/* The x-range of a convex polygon (1 or more vertices) within y0 <= y <= y1. */
+static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0, double *x1)
+{
+	*x0 = INFINITY, *x1 = -INFINITY;
+	for (int i = 0; i < h->n; i++) {
+		vec2 a = h->v[i], b = h->v[(i + 1) % h->n];
+		double t0 = 0, t1 = 1;
+		if (b.y != a.y) { /* the part of edge ab inside the band */
+			double ta = (y0 - a.y) / (b.y - a.y), tb = (y1 - a.y) / (b.y - a.y);
+			t0 = fmax(0, fmin(ta, tb)), t1 = fmin(1, fmax(ta, tb));
+		} else if (a.y < y0 || a.y > y1) {
+			continue;
+		}
+		if (t0 > t1)
+			continue;
+		double xa = a.x + (b.x - a.x) * t0, xb = a.x + (b.x - a.x) * t1;
+		*x0 = fmin(*x0, fmin(xa, xb)), *x1 = fmax(*x1, fmax(xa, xb));
+	}
+	return *x0 <= *x1;
+}
+
+bool lx_lookup_any(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		   int receiver, unsigned mask, double margin_lixels)
+{
+	struct lx_poly hull[MAX_HULLS];
+	return shadow_hulls(f, atlas, res, receiver, mask, margin_lixels, hull) != 0;
+}
+
+int lx_lookup_spans(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_span *out, int max)
+{
+	if (max < 1)
+		return -1;
+	struct lx_poly hull[MAX_HULLS];
+	int nh = shadow_hulls(f, atlas, res, receiver, mask, margin_lixels, hull), n = 0;
+	if (nh < 0) {
+		out[0] = (struct lx_span){within, true};
+		return 1;
+	}
+	/* bands on a fixed grid (so that the cuts move seldom as the casters do): per band
+	 * the x-ranges of the hulls, whole pixels whose centres may lie inside and one more
+	 * for rounding, merged; a band cut like the one before it extends that one */
+	int prev_first = -1;
+	for (int y = within.y0 - within.y0 % LX_LOOKUP_BAND; y < within.y1; y += LX_LOOKUP_BAND) {
+		int y0 = y < within.y0 ? within.y0 : y, y1 = y + LX_LOOKUP_BAND > within.y1 ? within.y1 : y + LX_LOOKUP_BAND;
+		int a[MAX_HULLS], b[MAX_HULLS], k = 0;
+		for (int h = 0; h < nh; h++) {
+			double x0, x1;
+			if (!band_range(&hull[h], y0 - 1.0, y1 + 1.0, &x0, &x1))
+				continue;
+			int i0 = (int)fmax(within.x0, fmin(within.x1, floor(x0) - 1));
+			int i1 = (int)fmax(within.x0, fmin(within.x1, ceil(x1) + 1));
+			if (i1 <= i0)
+				continue;
+			int j = k++; /* insert by start */
+			for (; j > 0 && a[j - 1] > i0; j--)
+				a[j] = a[j - 1], b[j] = b[j - 1];
+			a[j] = i0, b[j] = i1;
+		}
+		/* this band's spans: the lookup ranges merged, the gaps between them without */
+		struct lx_span band[2 * MAX_HULLS + 1];
+		int nb = 0, x = within.x0;
+		for (int i = 0; i < k; i++) {
+			int lo = a[i], hi = b[i];
+			while (i + 1 < k && a[i + 1] <= hi)
+				hi = b[i + 1] > hi ? b[i + 1] : hi, i++;
+			if (lo > x)
+				band[nb++] = (struct lx_span){{x, y0, lo, y1}, false};
+			band[nb++] = (struct lx_span){{lo, y0, hi, y1}, true};
+			x = hi;
+		}
+		if (x < within.x1)
+			band[nb++] = (struct lx_span){{x, y0, within.x1, y1}, false};
+		bool same = prev_first >= 0 && n - prev_first == nb;
+		for (int i = 0; same && i < nb; i++)
+			same = out[prev_first + i].box.x0 == band[i].box.x0 && out[prev_first + i].box.x1 == band[i].box.x1 &&
+			       out[prev_first + i].lookup == band[i].lookup;
+		if (same) {
+			for (int i = 0; i < nb; i++)
+				out[prev_first + i].box.y1 = y1;
+			continue;
+		}
+		if (n + nb + 1 > max) { /* no room (one place is always kept): the rest with a lookup */
+			out[n++] = (struct lx_span){{within.x0, y0, within.x1, within.y1}, true};
+			return n;
+		}
+		prev_first = n;
+		for (int i = 0; i < nb; i++)
+			out[n++] = band[i];
+	}
 	return n;
 }
 

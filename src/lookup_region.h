@@ -25,8 +25,14 @@ struct lx_rect {
  * of the atlas, a lixel of a 2048-wide one: two more. */
 #define LX_LOOKUP_MARGIN_HIGHP 1.0
 #define LX_LOOKUP_MARGIN_MEDIUMP 3.0
-/* Rectangles a receiver's lookup region is merged into at most. */
-#define LX_LOOKUP_MAX_RECTS 8
+/* The lookup region is cut in horizontal bands this many pixels tall, on a fixed grid. */
+#define LX_LOOKUP_BAND 32
+
+/* A window rectangle drawn with a lookup or without. */
+struct lx_span {
+	struct lx_rect box;
+	bool lookup;
+};
 
 /* Whether the shadow pass of a map draws a world box: false when the box lies entirely
  * outside the rays the map serves or beyond its far plane (never culled for the near
@@ -36,12 +42,16 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
  * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
-/* The window rectangles, inside `within`, that hold every pixel of receiver object
- * `receiver` which one of the maps in `mask` could shadow, each caster's image grown by
- * margin_lixels (LX_LOOKUP_MARGIN_*); returns their count (0: no shadow can fall there),
- * at most LX_LOOKUP_MAX_RECTS, disjoint or overlapping. */
-int lx_lookup_rects(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_rect *out);
+/* `within` cut into spans: with a lookup where one of the maps in `mask` could shadow a
+ * pixel of receiver object `receiver` (each caster's image grown by margin_lixels,
+ * LX_LOOKUP_MARGIN_*), without elsewhere. Per band of LX_LOOKUP_BAND rows, the x-ranges of
+ * the casters' regions; bands cut alike are one. Returns the count (at most max; short of
+ * room, the rest of `within` is one span with a lookup), or -1 when max < 1. */
+int lx_lookup_spans(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_span *out, int max);
+/* Whether one of the maps in `mask` can shadow some point of receiver object `receiver`. */
+bool lx_lookup_any(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		   int receiver, unsigned mask, double margin_lixels);
 
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
  * the shader reads the first map, in order, that serves a point, so a map that serves no

@@ -31,14 +31,17 @@ struct draw {
 	int first, count;
 };
 
-/* the most spans slab_spans makes of k rectangles (k <= LX_LOOKUP_MAX_RECTS) */
-_Static_assert(LX_MAX_MAPS <= LX_LOOKUP_MAX_RECTS, "slab_spans cuts at a plane's maps' rectangles too");
-#define SLAB_DRAWS(k) ((2 * (k) + 1) * (2 * (k) + 1))
+/* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
+#define SLAB_SPANS(k) ((2 * (k) + 1) * (2 * (k) + 1))
+/* room for a plane's spans in a frame */
+#define PLANE_SPANS 2048
 
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
 	struct draw draws[LX_MAX_PLANES * (1 << LX_MAX_MAPS) + LX_MAX_CASTERS]; /* a frame's main-pass draws */
+	struct span spans[PLANE_SPANS];    /* a plane's spans */
+	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
 	float *piece_v;
 	int piece_vertices, piece_room;
@@ -350,7 +353,7 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, un
 static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsigned *bit, int nr, struct span *out,
 		      int n)
 {
-	int ys[2 * LX_LOOKUP_MAX_RECTS + 2], ny = 0;
+	int ys[2 * LX_MAX_MAPS + 2], ny = 0;
 	ys[ny++] = box.y0, ys[ny++] = box.y1;
 	for (int k = 0; k < nr; k++)
 		ys[ny++] = rect[k].y0, ys[ny++] = rect[k].y1;
@@ -367,7 +370,7 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsi
 		struct {
 			int a, b;
 			unsigned m;
-		} span[LX_LOOKUP_MAX_RECTS], t;
+		} span[LX_MAX_MAPS], t;
 		int ns = 0;
 		for (int k = 0; k < nr; k++)
 			if (rect[k].y0 <= y0 && rect[k].y1 >= y1 && rect[k].x1 > rect[k].x0) {
@@ -403,13 +406,13 @@ static double lookup_margin(const struct lx_renderer *r)
 }
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
- * rectangle), then each part with maps cut at the region where they can shadow it. */
-static int plane_spans(const struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+ * rectangle), then each part with maps cut where they can shadow it (lookup_region.h). */
+static int plane_spans(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
 		       int id, unsigned mask, struct span *out, int room)
 {
-	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
-	unsigned bit[LX_LOOKUP_MAX_RECTS];
-	struct span first[SLAB_DRAWS(LX_MAX_MAPS)];
+	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_MAX_MAPS];
+	unsigned bit[LX_MAX_MAPS];
+	struct span first[SLAB_SPANS(LX_MAX_MAPS)];
 	int nf = 0, nr = 0, n = 0;
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS && nr >= 0; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
@@ -432,15 +435,17 @@ static int plane_spans(const struct lx_renderer *r, const struct lx_frame *f, co
 	else
 		first[nf++] = (struct span){mask, screen};
 	for (int i = 0; i < nf; i++) {
-		/* split while the room left keeps a place for each later span */
-		if (!first[i].mask || n + SLAB_DRAWS(LX_LOOKUP_MAX_RECTS) + nf - i > room) {
+		/* the room left keeps a place for each later span */
+		struct lx_span *part = r->parts;
+		int np = first[i].mask ? lx_lookup_spans(f, r->d.atlas, res, id, first[i].mask, first[i].box,
+							 lookup_margin(r), part, room - n - (nf - i - 1))
+				       : -1;
+		if (np < 0) {
 			out[n++] = first[i];
 			continue;
 		}
-		nr = lx_lookup_rects(f, r->d.atlas, res, id, first[i].mask, first[i].box, lookup_margin(r), rect);
-		for (int k = 0; k < nr; k++)
-			bit[k] = first[i].mask;
-		n = slab_spans(first[i].box, rect, bit, nr, out, n);
+		for (int k = 0; k < np; k++)
+			out[n++] = (struct span){part[k].lookup ? first[i].mask : 0, part[k].box};
 	}
 	return n;
 }
@@ -475,7 +480,7 @@ static void add_piece(struct lx_renderer *r, const struct lx_frame *f, int id, s
 }
 
 /* The draws of object id: with every map it reads over the region where one of them can
- * shadow it (lx_lookup_rects), without a lookup elsewhere (llvmpipe runs both sides of a
+ * shadow it (lookup_region.h), without a lookup elsewhere (llvmpipe runs both sides of a
  * branch, and small GPUs pay for every fetch). A plane, large on the screen, is cut into
  * window spans and drawn as the pieces of itself inside them, one draw per set of maps
  * (on llvmpipe a draw, scissored or not, costs about a tenth of a millisecond). A caster,
@@ -485,18 +490,17 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			struct draw *out, int n)
 {
 	unsigned mask = lx_shadow_receiver_maps(res, id);
-	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_LOOKUP_MAX_RECTS];
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
 			mask = lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
-		if (mask && !r->d.lookup_everywhere && lx_lookup_rects(f, r->d.atlas, res, id, mask, screen, lookup_margin(r), rect) == 0)
+		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(f, r->d.atlas, res, id, mask, lookup_margin(r)))
 			mask = 0; /* no shadow can fall on it */
 		out[n++] = (struct draw){id, mask, false, 0, 0};
 		return n;
 	}
 	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
-	struct span span[4 * SLAB_DRAWS(LX_LOOKUP_MAX_RECTS)];
-	int ns = plane_spans(r, f, res, id, need, span, sizeof span / sizeof span[0]);
+	struct span *span = r->spans;
+	int ns = plane_spans(r, f, res, id, need, span, PLANE_SPANS);
 	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
 	 * only), each reading every map of the plane */
 	if (r->d.lookup_everywhere)
