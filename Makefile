@@ -37,7 +37,7 @@ BOARDS = $(sort $(wildcard board/*.profile))
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/shaders_embedded.o
 
-TESTS = test_gpio test_kms_select test_linalg test_button test_board test_depth_rgba test_atlas test_scene test_uniform test_plane test_warps test_reference test_render
+TESTS = test_gpio test_kms_select test_linalg test_button test_board test_depth_rgba test_atlas test_lookup test_scene test_uniform test_plane test_warps test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan

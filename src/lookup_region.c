@@ -329,8 +329,28 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 bool lx_lookup_any(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		   int receiver, unsigned mask, double margin_lixels)
 {
-	struct lx_poly hull[MAX_HULLS];
-	return shadow_hulls(f, atlas, res, receiver, mask, margin_lixels, hull) != 0;
+	vec4 near = lin(1, row(&f->view.view_proj, 2), 1, row(&f->view.view_proj, 3)); /* z + w >= 0 */
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
+		const struct lx_shadow_map *map = &res->maps[m];
+		if (!(mask & 1u << m) || !map->rendered)
+			continue;
+		vec4 pl[VOLUME_PLANES];
+		/* a caster lies in its own volume (whose image holds its image, beyond its
+		 * nearest depth) wherever the map draws it: the common case, found first */
+		if (receiver >= f->scene->plane_count && caster_volume(f, atlas, map, receiver, margin_lixels, pl) >= 0)
+			return true;
+		for (int c = 0; c < f->object_count; c++) {
+			int np = caster_volume(f, atlas, map, c, margin_lixels, pl);
+			if (np < 0 || !add_plane(pl, &np, near))
+				continue;
+			struct window_points w;
+			w.n = 0, w.everything = false;
+			receiver_in_volume(f, receiver, pl, np, &w);
+			if (w.everything || w.n > 0)
+				return true;
+		}
+	}
+	return false;
 }
 
 int lx_lookup_spans(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -166,10 +166,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 			goto out;
 		}
 		rep->lookup_pct = 100.0 * lx_method_run_decision(&mr, &frame, rgba, rep->object, rep->shadow) / n;
-		if (job->decision_png && getenv("LX_DEBUG_RAW")) {
-			for (long i = 0; i < n; i++) rgba[i*4+1] = (uint8_t)(rgba[i*4+1] * 20);
-			lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen);
-		} else if (job->decision_png) {
+		if (job->decision_png) {
 			decision_colors(rep->object, rep->shadow, n, rgba);
 			if (!lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen))
 				goto out;

@@ -22,12 +22,15 @@ struct span {
 	struct lx_rect box;
 };
 
-/* One draw of the main pass: an object with the maps it reads, its whole mesh or (a plane
- * in pieces) `count` vertices from `first` of the frame's piece buffer. */
+/* One draw of the main pass: an object with the maps it reads, and what of it: its whole
+ * mesh, `count` vertices from `first` of the frame's piece buffer (a plane in pieces), or
+ * `count` indices from `first` of the frame's index buffer (a caster's triangles facing
+ * the light, or the others). */
+enum draw_kind { WHOLE, PIECES, INDEXED };
 struct draw {
 	int object;
 	unsigned mask;
-	bool pieces;
+	enum draw_kind kind;
 	int first, count;
 };
 
@@ -39,7 +42,11 @@ struct draw {
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
-	struct draw draws[LX_MAX_PLANES * (1 << LX_MAX_MAPS) + LX_MAX_CASTERS]; /* a frame's main-pass draws */
+	struct draw draws[LX_MAX_PLANES * (1 << LX_MAX_MAPS) + 2 * LX_MAX_CASTERS];
+	/* casters' triangles sorted by facing this frame, 16-bit indices into their meshes */
+	unsigned short *facing_index;
+	int facing_count, facing_room;
+	GLuint facing_ibo; /* a frame's main-pass draws */
 	struct span spans[PLANE_SPANS];    /* a plane's spans */
 	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
@@ -48,6 +55,11 @@ struct lx_renderer {
 	GLuint piece_vbo;
 	GLuint vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* the shadow passes' meshes: positions only, each once, and triangles as indices
+	 * (llvmpipe's draw module shades each index once; the sphere's 2976 vertices are
+	 * 482 positions) */
+	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
+	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
@@ -109,6 +121,51 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 	return true;
 }
 
+struct keyed_position {
+	float p[3];
+	int vertex;
+};
+
+static int cmp_position(const void *pa, const void *pb)
+{
+	const struct keyed_position *a = pa, *b = pb;
+	for (int k = 0; k < 3; k++)
+		if (a->p[k] != b->p[k])
+			return a->p[k] < b->p[k] ? -1 : 1;
+	return 0;
+}
+
+/* Mesh id for the shadow passes: its distinct positions and its triangles as 16-bit
+ * indices into them, the same triangles in the same winding. */
+static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
+{
+	int n = m->vertex_count;
+	struct keyed_position *key = malloc((size_t)n * sizeof *key);
+	float *pos = malloc((size_t)n * 3 * sizeof(float));
+	unsigned short *index = malloc((size_t)n * sizeof(unsigned short));
+	bool ok = key && pos && index && n <= 65536;
+	if (ok) {
+		for (int i = 0; i < n; i++) {
+			memcpy(key[i].p, m->v + (size_t)i * LX_VERTEX_FLOATS, sizeof key[i].p);
+			key[i].vertex = i;
+		}
+		qsort(key, (size_t)n, sizeof *key, cmp_position);
+		int np = 0;
+		for (int i = 0; i < n; i++) {
+			if (np == 0 || cmp_position(&key[i - 1], &key[i]))
+				memcpy(pos + 3 * np++, key[i].p, sizeof key[i].p);
+			index[key[i].vertex] = (unsigned short)(np - 1);
+		}
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
+		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
+		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
+		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)n * sizeof(unsigned short), index, GL_STATIC_DRAW);
+		r->shadow_indices[id] = n;
+	}
+	free(key), free(pos), free(index);
+	return ok;
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -155,13 +212,31 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
 
 	lx_gl.GenBuffers(r->objects, r->vbo);
+	lx_gl.GenBuffers(r->objects, r->shadow_vbo);
+	lx_gl.GenBuffers(r->objects, r->shadow_ibo);
 	lx_gl.GenBuffers(1, &r->piece_vbo);
+	lx_gl.GenBuffers(1, &r->facing_ibo);
+	int triangles = 0;
+	for (int i = 0; i < r->objects; i++)
+		triangles += d->meshes->mesh[i].vertex_count;
+	r->facing_room = triangles;
+	r->facing_index = malloc((size_t)triangles * sizeof(unsigned short) + 1);
+	if (!r->facing_index) {
+		snprintf(err, errlen, "out of memory");
+		lx_renderer_destroy(r);
+		return NULL;
+	}
 	for (int i = 0; i < r->objects; i++) {
 		const struct lx_mesh *m = &d->meshes->mesh[i];
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[i]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
 				 GL_STATIC_DRAW);
 		r->vertices[i] = m->vertex_count;
+		if (!shadow_mesh(r, i, m)) {
+			snprintf(err, errlen, "out of memory indexing the meshes");
+			lx_renderer_destroy(r);
+			return NULL;
+		}
 	}
 
 	/* The atlas: RGBA8, NEAREST (depths must not be blended), CLAMP_TO_EDGE (NPOT in ES 2.0). */
@@ -214,8 +289,11 @@ void lx_renderer_destroy(struct lx_renderer *r)
 {
 	if (!r)
 		return;
-	if (r->objects)
+	if (r->objects) {
 		lx_gl.DeleteBuffers(r->objects, r->vbo);
+		lx_gl.DeleteBuffers(r->objects, r->shadow_vbo);
+		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
+	}
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
 	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
@@ -236,7 +314,10 @@ void lx_renderer_destroy(struct lx_renderer *r)
 				lx_gl.DeleteProgram(r->variant[a][c].prog);
 	if (r->piece_vbo)
 		lx_gl.DeleteBuffers(1, &r->piece_vbo);
+	if (r->facing_ibo)
+		lx_gl.DeleteBuffers(1, &r->facing_ibo);
 	free(r->piece_v);
+	free(r->facing_index);
 	free(r);
 }
 
@@ -324,8 +405,10 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 			float lcf[16];
 			to_float(&lc, lcf);
 			lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
-			bind_mesh(r, id, false);
-			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+			lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
+			lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
+			lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
+			lx_gl.DrawElements(GL_TRIANGLES, r->shadow_indices[id], GL_UNSIGNED_SHORT, (const void *)0);
 		}
 	}
 	lx_gl.Disable(GL_CULL_FACE);
@@ -479,6 +562,31 @@ static void add_piece(struct lx_renderer *r, const struct lx_frame *f, int id, s
 	}
 }
 
+/* Appends caster id's triangles to the frame's index buffer, those turned towards the
+ * light (or nearly: the shader decides those) first; returns how many indices those are,
+ * or -1 when its mesh cannot be indexed so. */
+static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int id)
+{
+	const struct lx_mesh *m = &r->d.meshes->mesh[id];
+	if (m->vertex_count > 65536 || r->facing_count + m->vertex_count > r->facing_room)
+		return -1;
+	const struct lx_light *l = &f->light;
+	unsigned short *front = r->facing_index + r->facing_count, *back = front + m->vertex_count;
+	int nf = 0;
+	for (int t = 0; t < m->vertex_count / 3; t++) {
+		/* the shader's v_facing, dot(face normal, to the light), is one value over a flat
+		 * triangle: its first vertex's, in world space */
+		const float *v = m->v + (size_t)t * 3 * LX_VERTEX_FLOATS;
+		vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
+		vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
+		bool away = v3_dot(n, to_light) < -1e-4 * v3_len(n) * v3_len(to_light);
+		unsigned short *o = away ? (back -= 3) : front + (nf += 3) - 3;
+		o[0] = (unsigned short)(3 * t), o[1] = (unsigned short)(3 * t + 1), o[2] = (unsigned short)(3 * t + 2);
+	}
+	r->facing_count += m->vertex_count;
+	return nf;
+}
+
 /* The draws of object id: with every map it reads over the region where one of them can
  * shadow it (lookup_region.h), without a lookup elsewhere (llvmpipe runs both sides of a
  * branch, and small GPUs pay for every fetch). A plane, large on the screen, is cut into
@@ -495,10 +603,28 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			mask = lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
 		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(f, r->d.atlas, res, id, mask, lookup_margin(r)))
 			mask = 0; /* no shadow can fall on it */
-		out[n++] = (struct draw){id, mask, false, 0, 0};
+		int first = r->facing_count, facing = mask ? sort_by_facing(r, f, id) : -1;
+		if (facing < 0) {
+			out[n++] = (struct draw){id, mask, WHOLE, 0, 0};
+			return n;
+		}
+		/* the triangles turned away from the light are in their own shadow: the face
+		 * test decides them, without a lookup (--lookup-region all: with one) */
+		if (facing > 0)
+			out[n++] = (struct draw){id, mask, INDEXED, first, facing};
+		if (r->facing_count - first - facing > 0)
+			out[n++] = (struct draw){id, r->d.lookup_everywhere ? mask : 0, INDEXED, first + facing,
+						 r->facing_count - first - facing};
 		return n;
 	}
 	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
+	/* a plane turned away from the light is all in its own shadow: the face test */
+	const struct lx_plane *pl = &r->d.scene->planes[id];
+	vec3 nrm = v3_cross(pl->edge1, pl->edge2), to_light = f->light.directional
+							      ? v3_scale(f->light.direction, -1)
+							      : v3_sub(f->light.position, v3_add(pl->corner, f->offset[id]));
+	if (v3_dot(nrm, to_light) < -1e-4 * v3_len(nrm) * v3_len(to_light))
+		need = 0;
 	struct span *span = r->spans;
 	int ns = plane_spans(r, f, res, id, need, span, PLANE_SPANS);
 	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
@@ -519,7 +645,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			if (span[j].mask == m)
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
-			out[n++] = (struct draw){id, m, true, first, r->piece_vertices - first};
+			out[n++] = (struct draw){id, m, PIECES, first, r->piece_vertices - first};
 	}
 	return n;
 }
@@ -578,50 +704,59 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	 * its shadows can fall split into scissor boxes, looked up inside them and drawn
 	 * without a lookup outside (llvmpipe runs both sides of a branch; small GPUs pay for
 	 * every fetch); then one program per set of maps. */
+	/* The draws, casters first (the planes' pixels behind them then fail the depth test
+	 * before their shading), each object cut by where a shadow can fall on it; a program
+	 * set up whenever the maps read change. */
 	struct draw *items = r->draws;
-	bool done[sizeof r->draws / sizeof r->draws[0]] = {false};
 	int n = 0;
-	r->piece_vertices = 0;
-	for (int id = 0; id < r->objects; id++)
-		n = object_draws(r, f, res, id, items, n);
+	r->piece_vertices = r->facing_count = 0;
+	for (int k = 0; k < r->objects; k++)
+		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, items, n);
 	if (r->piece_vertices > 0) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
 				 r->piece_v, GL_STREAM_DRAW);
 	}
+	if (r->facing_count > 0) {
+		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->facing_ibo);
+		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->facing_count * sizeof(unsigned short),
+				 r->facing_index, GL_STREAM_DRAW);
+	}
 	const struct lx_scene *s = r->d.scene;
-	for (int first = 0; first < n; first++) {
-		if (done[first])
-			continue;
-		unsigned mask = items[first].mask;
-		struct main_program *p = variant_for(r, decision, mask);
-		lx_gl.UseProgram(p->prog);
-		lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
-		lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
-		if (r->d.map_count > 0 && mask) {
-			lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
-			lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
-			lx_gl.Uniform1f(p->bias, r->bias_uniform);
-			lx_gl.Uniform1i(p->atlas, 0);
-		}
-		for (int k = first; k < n; k++) {
-			const struct draw *d = &items[k];
-			if (done[k] || d->mask != mask)
-				continue;
-			done[k] = true;
-			int id = d->object;
-			vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
-			lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
-			lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
-			lx_gl.Uniform1f(p->object_id, (float)id);
-			if (d->pieces) {
-				lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
-				set_attributes(true);
-				lx_gl.DrawArrays(GL_TRIANGLES, d->first, d->count);
-			} else {
-				bind_mesh(r, id, true);
-				lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+	struct main_program *p = NULL;
+	unsigned current = 0;
+	for (int k = 0; k < n; k++) {
+		const struct draw *d = &items[k];
+		if (!p || d->mask != current) {
+			current = d->mask;
+			p = variant_for(r, decision, current);
+			lx_gl.UseProgram(p->prog);
+			lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
+			lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
+			if (r->d.map_count > 0 && current) {
+				lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
+				lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
+				lx_gl.Uniform1f(p->bias, r->bias_uniform);
+				lx_gl.Uniform1i(p->atlas, 0);
 			}
+		}
+		int id = d->object;
+		vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+		lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+		lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+		lx_gl.Uniform1f(p->object_id, (float)id);
+		if (d->kind == PIECES) {
+			lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
+			set_attributes(true);
+			lx_gl.DrawArrays(GL_TRIANGLES, d->first, d->count);
+		} else if (d->kind == INDEXED) {
+			bind_mesh(r, id, true);
+			lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->facing_ibo);
+			lx_gl.DrawElements(GL_TRIANGLES, d->count, GL_UNSIGNED_SHORT,
+					   (const void *)((size_t)d->first * sizeof(unsigned short)));
+		} else {
+			bind_mesh(r, id, true);
+			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 		}
 	}
 }

@@ -127,12 +127,13 @@ if "$lixel" bench --size 64x48 --frames 2 --warmup 1 --json --csv "$tmp/b.csv" -
     >"$tmp/bench.json" 2>"$tmp/bench.err"; then
   ok
   for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "config": "default", "frame_ms_median"' \
-      '"frame_ms_min"' '"frame_ms_max"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
+      '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
       '"summary": \[{"method": "none", "frame_ms_median": [0-9.e-]*, "ratio_none": 1, "ratio_uniform"' '"mismatch_median"' '"mismatch_worst"'; do
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
   grep -qiE 'nan|inf' "$tmp/bench.json" && no "bench JSON holds NaN or Infinity" || ok
   [ "$(wc -l <"$tmp/b.csv")" -eq $((6 * 11 + 1)) ] && ok || no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected 67"
+  head -1 "$tmp/b.csv" | grep -q ',shadow_ms_median,main_ms_median,' && ok || no "bench CSV header: $(head -1 "$tmp/b.csv")"
   [ "$(head -c 4 "$tmp/b.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "bench plot is not a PNG"
   [ "$(ls "$tmp/strips" | wc -l)" -eq 11 ] && ok || no "bench wrote $(ls "$tmp/strips" | wc -l) strips, expected 11"
   grep -q "configuration 11/11: animation" "$tmp/bench.err" && ok || no "bench shows no progress on stderr"
@@ -142,6 +143,22 @@ fi
 "$lixel" bench --size 48x32 --frames 2 --warmup 0 --methods uniform,plane --configs low >"$tmp/bench.txt" 2>&1 &&
   grep -q '^\[plane\] config=low: FrameTime: ' "$tmp/bench.txt" && grep -q '^uniform ' "$tmp/bench.txt" && ok ||
   no "bench text: $(cat "$tmp/bench.txt")"
+# the shadow passes and the main pass apart, per method
+grep -q '^method .*shadow ms *main ms' "$tmp/bench.txt" && grep -q '^\[uniform\] config=low: .* shadow: [0-9.]* ms main: [0-9.]* ms' "$tmp/bench.txt" && ok ||
+  no "bench text lacks the pass columns: $(cat "$tmp/bench.txt")"
+# where the main pass looks the maps up: footprint (the default) or everywhere, the
+# same decisions; a lookup share in the JSON, smaller for footprint
+for lr in footprint all; do
+  "$lixel" render --lookup-region $lr --json --size 160x120 --frames 1 --out "$tmp/l.png" --decision-out "$tmp/d-$lr.png" \
+    >"$tmp/l-$lr.json" 2>&1 && grep -q '"lookup_pct": [0-9]' "$tmp/l-$lr.json" && ok || no "render --lookup-region $lr: $(cat "$tmp/l-$lr.json")"
+done
+cmp -s "$tmp/d-footprint.png" "$tmp/d-all.png" && ok || no "--lookup-region footprint and all decide differently"
+fp=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-footprint.json"); al=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-all.json")
+awk -v a="$fp" -v b="$al" 'BEGIN { exit !(a > 0 && a < b) }' && ok || no "lookup share footprint $fp, all $al"
+"$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods uniform,uniform/all,tsm/footprint --configs default >/dev/null 2>&1 && ok ||
+  no "bench with /all and /footprint methods"
+expect_bad "lookup region" render --lookup-region some $out
+expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot
 expect_bad "bench zero frames" bench --frames 0
 expect_bad "bench unknown config" bench --configs sideways

@@ -1,0 +1,257 @@
+/* Where the main pass looks a map up (lookup_region.c), GL-free: the spans cut a window
+ * into pieces that cover it once, every point a caster shadows is inside a lookup span,
+ * a plane's pieces cover it once, and the maps left to a caster are the ones its points
+ * read. Over the standard configurations of both built-in scenes and some extremes. */
+#include "configs.h"
+#include "lookup_region.h"
+#include "plane_optimal.h"
+#include "test_util.h"
+#include "method_fixture.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { W = 160, H = 120 };
+static const char *const methods[] = {"uniform", "psm", "lispsm", "tsm", "plane"};
+
+/* Coverage of the window by the spans: each pixel once. Returns the lookup pixels. */
+static long check_partition(const struct lx_span *s, int n, struct lx_rect within, uint8_t *hit)
+{
+	memset(hit, 0, (size_t)W * H);
+	long looked = 0;
+	for (int i = 0; i < n; i++) {
+		assert_true(s[i].box.x0 >= within.x0 && s[i].box.x1 <= within.x1 && s[i].box.x0 < s[i].box.x1);
+		assert_true(s[i].box.y0 >= within.y0 && s[i].box.y1 <= within.y1 && s[i].box.y0 < s[i].box.y1);
+		for (int y = s[i].box.y0; y < s[i].box.y1; y++)
+			for (int x = s[i].box.x0; x < s[i].box.x1; x++) {
+				assert_int_equal(hit[y * W + x], 0);
+				hit[y * W + x] = s[i].lookup ? 2 : 1;
+				looked += s[i].lookup;
+			}
+	}
+	for (int y = within.y0; y < within.y1; y++)
+		for (int x = within.x0; x < within.x1; x++)
+			assert_int_not_equal(hit[y * W + x], 0);
+	return looked;
+}
+
+/* Whether the segment from p towards the light (to the light, or on for a directional
+ * one) meets caster c: its sphere, or the box of any other shape (the region of a box
+ * holds its image, so anything the box shadows lies in it). */
+static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
+{
+	const struct lx_light *l = &f->light;
+	vec3 d = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
+	double tmax = l->directional ? 1e9 : 1;
+	const struct lx_caster *cs = &f->scene->casters[c - f->scene->plane_count];
+	if (cs->shape == LX_SPHERE) {
+		vec3 centre = v3_add(f->offset[c], v3(0, cs->size.x, 0)), o = v3_sub(p, centre);
+		double a = v3_dot(d, d), b = v3_dot(o, d), cc = v3_dot(o, o) - cs->size.x * cs->size.x;
+		double disc = b * b - a * cc;
+		if (disc < 0)
+			return false;
+		double t1 = (-b + sqrt(disc)) / a, t0 = (-b - sqrt(disc)) / a;
+		return t1 > 1e-9 && t0 < tmax;
+	}
+	double t0 = 1e-9, t1 = tmax, o[3] = {p.x, p.y, p.z}, dd[3] = {d.x, d.y, d.z};
+	double lo[3] = {f->bmin[c].x, f->bmin[c].y, f->bmin[c].z}, hi[3] = {f->bmax[c].x, f->bmax[c].y, f->bmax[c].z};
+	for (int k = 0; k < 3; k++) {
+		if (dd[k] == 0) {
+			if (o[k] < lo[k] || o[k] > hi[k])
+				return false;
+			continue;
+		}
+		double a = (lo[k] - o[k]) / dd[k], b = (hi[k] - o[k]) / dd[k];
+		t0 = fmax(t0, fmin(a, b)), t1 = fmin(t1, fmax(a, b));
+	}
+	return t0 <= t1;
+}
+
+/* Every plane pixel whose point a caster shadows, and which a map of the plane serves,
+ * lies in a lookup span; the spans partition the window. */
+static void check_scene(struct setup *s, const char *what, long *checked, long *looked_total)
+{
+	uint8_t *hit = malloc((size_t)W * H);
+	assert_non_null(hit);
+	struct lx_rect screen = {0, 0, W, H};
+	struct lx_span span[4096];
+	for (int id = 0; id < s->scene.plane_count; id++) {
+		unsigned mask = lx_shadow_receiver_maps(&s->res, id);
+		if (!mask)
+			continue;
+		int n = lx_lookup_spans(&s->frame, &s->atlas, &s->res, id, mask, screen, LX_LOOKUP_MARGIN_HIGHP, span, 4096);
+		assert_true(n >= 1);
+		*looked_total += check_partition(span, n, screen, hit);
+		vec4 pe = lx_plane_equation(&s->scene.planes[id]);
+		for (int y = 0; y < H; y++)
+			for (int x = 0; x < W; x++) {
+				vec3 q;
+				double t;
+				if (!lx_window_on_plane(&s->frame.view, pe, x + 0.5, y + 0.5, &q, &t) ||
+				    !lx_plane_contains(&s->scene.planes[id], q) || lx_shadow_select_map(&s->res, id, q) < 0)
+					continue;
+				for (int c = s->scene.plane_count; c < s->frame.object_count; c++)
+					if (caster_shadows(&s->frame, c, q)) {
+						if (hit[y * W + x] != 2)
+							fail_msg("%s: plane %d pixel (%d, %d) is shadowed by object %d but not looked up",
+								 what, id, x, y, c);
+						++*checked;
+						break;
+					}
+			}
+	}
+	free(hit);
+}
+
+static void shadowed_points_are_looked_up(void **state)
+{
+	(void)state;
+	long checked = 0, looked = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
+		for (size_t m = 0; m < sizeof methods / sizeof methods[0]; m++)
+			for (int c = 0; c < lx_config_count; c++) {
+				struct setup s;
+				assert_true(lx_scene_builtin(*sn, &s.scene));
+				lx_config_apply(&lx_configs[c], &s.scene);
+				if (!build(&s, methods[m], W, H, 0.4))
+					continue;
+				char what[96];
+				snprintf(what, sizeof what, "%s scene, %s, %s", *sn, lx_configs[c].name, methods[m]);
+				check_scene(&s, what, &checked, &looked);
+				lx_meshes_free(&s.meshes);
+			}
+	print_message("%ld shadowed plane pixels, every one inside a lookup span; %ld pixels looked up in all\n",
+		      checked, looked);
+	assert_true(checked > 10000); /* there were shadows to check */
+}
+
+/* The extremes: the eye a millimetre above the floor, the light inside a caster, on the
+ * floor, under it, far away; each still a partition with every shadowed pixel in it. */
+static void extremes_stay_conservative(void **state)
+{
+	(void)state;
+	struct {
+		const char *name;
+		vec3 eye, at, light;
+	} cases[] = {
+		{"eye 1 mm above the floor", {0.5, 0.001, 3.5}, {0, 0.5, -3}, {1, 4, 2}},
+		{"light inside the sphere", {0, 2.5, 6}, {0, 0.5, 0}, {-1.2, 0.6, 0.4}},
+		{"light on the floor", {0, 2.5, 6}, {0, 0.5, 0}, {2, 0, 1}},
+		{"light under the floor", {0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}},
+		{"light far away", {0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}},
+	};
+	long checked = 0, looked = 0;
+	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+		for (size_t m = 0; m < sizeof methods / sizeof methods[0]; m++) {
+			struct setup s;
+			lx_scene_default(&s.scene);
+			s.scene.camera.eye = cases[k].eye, s.scene.camera.at = cases[k].at;
+			s.scene.light = (struct lx_light){.directional = false, .position = cases[k].light,
+							  .direction = v3(0, -1, 0)};
+			if (!build(&s, methods[m], W, H, 0.0))
+				continue;
+			char what[96];
+			snprintf(what, sizeof what, "%s, %s", cases[k].name, methods[m]);
+			check_scene(&s, what, &checked, &looked);
+			lx_meshes_free(&s.meshes);
+		}
+	print_message("%ld shadowed plane pixels at the extremes, every one looked up\n", checked);
+}
+
+/* A plane cut along window lines: the pieces' areas on the screen add up to the whole
+ * plane's, so nothing is drawn twice or left out. */
+static double window_area(const struct lx_view *v, const vec3 *p, int n)
+{
+	double a = 0, x[LX_WINDOW_POLY_MAX], y[LX_WINDOW_POLY_MAX];
+	for (int i = 0; i < n; i++) {
+		vec4 c = m4_mul_point(&v->view_proj, p[i]);
+		x[i] = (c.x / c.w + 1) * 0.5 * v->width, y[i] = (c.y / c.w + 1) * 0.5 * v->height;
+	}
+	for (int i = 0; i < n; i++)
+		a += x[i] * y[(i + 1) % n] - x[(i + 1) % n] * y[i];
+	return fabs(a) / 2;
+}
+
+static void plane_pieces_cover_the_plane_once(void **state)
+{
+	(void)state;
+	for (int c = 0; c < lx_config_count; c++) {
+		struct setup s;
+		lx_scene_default(&s.scene);
+		lx_config_apply(&lx_configs[c], &s.scene);
+		assert_true(build(&s, "uniform", W, H, 0.0));
+		for (int id = 0; id < s.scene.plane_count; id++) {
+			vec3 p[LX_WINDOW_POLY_MAX];
+			double whole = window_area(&s.frame.view, p, lx_plane_in_window(&s.frame, id, (struct lx_rect){0, 0, W, H}, p));
+			double parts = 0;
+			int cut[3] = {0, 37, W}, cuty[3] = {0, 81, H};
+			for (int i = 0; i < 2; i++)
+				for (int j = 0; j < 2; j++) {
+					int n = lx_plane_in_window(&s.frame, id, (struct lx_rect){cut[i], cuty[j], cut[i + 1], cuty[j + 1]}, p);
+					assert_true(n == 0 || n >= 3);
+					parts += n ? window_area(&s.frame.view, p, n) : 0;
+				}
+			assert_near(parts, whole, 1e-6 * W * H);
+		}
+		lx_meshes_free(&s.meshes);
+	}
+}
+
+/* The first map of a mask that serves a point. */
+static int first_serving(const struct lx_shadow_result *r, unsigned mask, vec3 p)
+{
+	for (int i = 0; i < r->map_count; i++) {
+		const struct lx_shadow_map *m = &r->maps[i];
+		if (!m->rendered || !(mask & 1u << i))
+			continue;
+		vec4 c = m4_mul_point(&m->light_clip, p);
+		if (c.w > 0 && c.x / c.w >= m->bounds[0] && c.y / c.w >= m->bounds[1] && c.x / c.w < m->bounds[2] &&
+		    c.y / c.w < m->bounds[3])
+			return i;
+	}
+	return -1;
+}
+
+/* The maps left to a caster read the same map at every point of it in view. */
+static void casters_keep_the_maps_they_read(void **state)
+{
+	(void)state;
+	uint64_t seed = 7;
+	long points = 0, fewer = 0;
+	for (int c = 0; c < lx_config_count; c++) {
+		struct setup s;
+		lx_scene_builtin("table", &s.scene);
+		lx_config_apply(&lx_configs[c], &s.scene);
+		assert_true(build(&s, "plane", W, H, 0.4));
+		for (int id = s.scene.plane_count; id < s.frame.object_count; id++) {
+			unsigned full = lx_shadow_receiver_maps(&s.res, id);
+			unsigned kept = lx_lookup_maps(&s.frame, &s.atlas, &s.res, id, full, LX_LOOKUP_MARGIN_HIGHP);
+			assert_int_equal(kept & ~full, 0);
+			fewer += kept != full;
+			for (int k = 0; k < 400; k++) {
+				vec3 lo = s.frame.bmin[id], hi = s.frame.bmax[id];
+				vec3 p = v3(lo.x + (hi.x - lo.x) * test_rand(&seed), lo.y + (hi.y - lo.y) * test_rand(&seed),
+					    lo.z + (hi.z - lo.z) * test_rand(&seed));
+				vec4 v = m4_mul_point(&s.frame.view.view_proj, p);
+				if (!(v.w > 0) || fabs(v.x) > v.w || fabs(v.y) > v.w || fabs(v.z) > v.w)
+					continue; /* not in view */
+				assert_int_equal(first_serving(&s.res, kept, p), first_serving(&s.res, full, p));
+				points++;
+			}
+		}
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("%ld caster points read the same map; %ld casters read fewer maps\n", points, fewer);
+	assert_true(points > 1000 && fewer > 0);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(shadowed_points_are_looked_up),
+		cmocka_unit_test(extremes_stay_conservative),
+		cmocka_unit_test(plane_pieces_cover_the_plane_once),
+		cmocka_unit_test(casters_keep_the_maps_they_read),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
