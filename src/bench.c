@@ -24,6 +24,7 @@ enum { T_FRAME, T_SETUP, T_SHADOW, T_MAIN, T_KINDS };
 struct row {
 	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us, shadow_ms, main_ms;
 	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
+	double lookup_pct; /* share of the image's pixels that ran a shadow lookup (the first sample) */
 	double mismatch_worst;
 	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
 	double lpp[LX_MAX_PLANES], used[LX_MAX_PLANES]; /* median lpp and lixels used (budget use), same */
@@ -235,7 +236,9 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 		}
 		for (int m = 0; m < b->nm; m++) {
 			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
-			lx_method_run_decision(&runs[m], &frame, rgba, obj, sh);
+			long looked = lx_method_run_decision(&runs[m], &frame, rgba, obj, sh);
+			if (sidx == 0)
+				b->rows[m][ci].lookup_pct = 100.0 * looked / ((double)b->width * b->height);
 			struct lx_mismatch mm;
 			struct lx_plane_report planes[LX_MAX_PLANES];
 			lx_measure(&frame, &runs[m].atlas, &runs[m].result, ref_obj, ref_sh, obj, sh, &mm, planes);
@@ -277,9 +280,9 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
 			printf("[%s] config=%s: FrameTime: %.3f ms (%.3f-%.3f) shadow: %.3f ms main: %.3f ms setup: %.1f us "
-			       "mismatch: %.4f%% (false %.4f%%, missing %.4f%%)",
+			       "lookups: %.2f%% mismatch: %.4f%% (false %.4f%%, missing %.4f%%)",
 			       b->methods[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms,
-			       r->main_ms, r->setup_us, r->mismatch_pct, r->false_pct, r->missing_pct);
+			       r->main_ms, r->setup_us, r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (!isnan(r->m_max[p]))
 					printf(" %s: m_max %.3g lpp %.3g used %.0f", b->scene.planes[p].name, r->m_max[p], r->lpp[p],
@@ -289,26 +292,29 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
 	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
-	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %10s %9s %9s", "method", "frame ms", "(min-max)", "/none",
-	       "/uniform", "shadow ms", "main ms", "setup us", "mismatch%", "worst%", "-uniform");
+	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %8s %10s %9s %9s", "method", "frame ms", "(min-max)", "/none",
+	       "/uniform", "shadow ms", "main ms", "lookups%", "setup us", "mismatch%", "worst%", "-uniform");
 	for (int p = 0; p < b->scene.plane_count && p < 2; p++)
 		printf(" %8s", b->scene.planes[p].name);
 	printf("\n");
 	for (int m = 0; m < b->nm; m++) {
 		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), lo = INFINITY, hi = 0, mis[MAX_CONFIGS], worst = 0;
+		double looked[MAX_CONFIGS];
 		for (int k = 0; k < b->nframes[m]; k++)
 			lo = fmin(lo, b->all[m][T_FRAME][k]), hi = fmax(hi, b->all[m][T_FRAME][k]);
-		for (int c = 0; c < b->nc; c++)
+		for (int c = 0; c < b->nc; c++) {
 			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
+			looked[c] = b->rows[m][c].lookup_pct;
+		}
 		char range[40];
 		snprintf(range, sizeof range, "(%.2f-%.2f)", lo, hi);
 		double beyond = -INFINITY; /* the most this method's mismatch exceeds uniform's on one configuration */
 		for (int c = 0; uni >= 0 && c < b->nc; c++)
 			beyond = fmax(beyond, b->rows[m][c].mismatch_pct - b->rows[uni][c].mismatch_pct);
-		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.1f %10.4f %9.4f %9.4f", b->methods[m], med, range,
+		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.2f %8.1f %10.4f %9.4f %9.4f", b->methods[m], med, range,
 		       med / none_ms, med / uni_ms, median_of(b->all[m][T_SHADOW], b->nframes[m]),
-		       median_of(b->all[m][T_MAIN], b->nframes[m]), median_of(b->all[m][T_SETUP], b->nframes[m]),
-		       median_of(mis, b->nc), worst, uni >= 0 ? beyond : NAN);
+		       median_of(b->all[m][T_MAIN], b->nframes[m]), median_of(looked, b->nc),
+		       median_of(b->all[m][T_SETUP], b->nframes[m]), median_of(mis, b->nc), worst, uni >= 0 ? beyond : NAN);
 		for (int p = 0; p < b->scene.plane_count && p < 2; p++) {
 			double w = NAN;
 			for (int c = 0; c < b->nc; c++)
@@ -323,7 +329,8 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	}
 	printf("(-uniform: the most a method's mismatch exceeds uniform's on one configuration, in percentage\n"
 	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels;\n"
-	       " shadow ms and main ms: medians of the shadow passes and of the main pass, apart)\n");
+	       " shadow ms and main ms: medians of the shadow passes and of the main pass, apart; lookups%%:\n"
+	       " the median share of the pixels that ran a shadow lookup)\n");
 }
 
 static void print_json(const struct bench *b)
@@ -349,6 +356,7 @@ static void print_json(const struct bench *b)
 			lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, r->shadow_ms);
 			lx_json_key(&j, "main_ms_median"), lx_json_number(&j, r->main_ms);
 			lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
+			lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
 			lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, r->mismatch_pct);
 			lx_json_key(&j, "m_max"), lx_json_object(&j);
 			for (int p = 0; p < b->scene.plane_count; p++)
@@ -363,9 +371,11 @@ static void print_json(const struct bench *b)
 	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
 	lx_json_key(&j, "summary"), lx_json_array(&j);
 	for (int m = 0; m < b->nm; m++) {
-		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), mis[MAX_CONFIGS], worst = 0;
-		for (int c = 0; c < b->nc; c++)
+		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), mis[MAX_CONFIGS], worst = 0, looked[MAX_CONFIGS];
+		for (int c = 0; c < b->nc; c++) {
 			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
+			looked[c] = b->rows[m][c].lookup_pct;
+		}
 		lx_json_object(&j);
 		lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
 		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, med);
@@ -373,6 +383,7 @@ static void print_json(const struct bench *b)
 		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, med / uni_ms);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
 		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
+		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, median_of(looked, b->nc));
 		lx_json_key(&j, "setup_us"), lx_json_number(&j, median_of(b->all[m][T_SETUP], b->nframes[m]));
 		lx_json_key(&j, "mismatch_median"), lx_json_number(&j, median_of(mis, b->nc));
 		lx_json_key(&j, "mismatch_worst"), lx_json_number(&j, worst);
@@ -390,7 +401,7 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 		return false;
 	}
 	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
-		   "mismatch_pct,false_shadow_pct,"
+		   "lookup_pct,mismatch_pct,false_shadow_pct,"
 		   "missing_shadow_pct,mismatch_worst");
 	for (int p = 0; p < b->scene.plane_count; p++)
 		fprintf(f, ",m_max_%s,lpp_%s,lixels_used_%s", b->scene.planes[p].name, b->scene.planes[p].name,
@@ -399,9 +410,9 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
-			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
+			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
 				r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us,
-				r->mismatch_pct, r->false_pct, r->missing_pct, r->mismatch_worst);
+				r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct, r->mismatch_worst);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
 					fprintf(f, ",,,");
