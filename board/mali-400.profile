@@ -1,5 +1,7 @@
 # A generic Allwinner/Rockchip board with an ARM Mali-400 (Mesa lima): fragment shaders
-# run in fp16, so lixel takes its 11-bit depth path there by itself.
+# run in fp16 although lima reports highp, so lixel's start-up depth self-test fails the
+# 24-bit path and takes the 11-bit one (the log says "depth mediump11, self-test
+# fell-back"); depth-precision mediump would force it.
 name mali-400
 description generic Mali-400 board (lima), display chosen automatically
 gpio-chip gpiochip0
@@ -14,4 +16,5 @@ mode 1280x720
 plane-lixels 350
 fallback-lixels 128
 uniform-lixels 512
+depth-precision auto
 methods plane,uniform,lispsm,none

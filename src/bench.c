@@ -37,6 +37,8 @@ struct bench {
 	int nm, nc;
 	const char *methods[MAX_METHODS];
 	struct lx_method_options options; /* the plane maps' options (each method may add its own: plane/square) */
+	enum lx_depth_precision depth_precision;
+	struct lx_depth_choice depth; /* the path every method's run took (one driver, one choice) */
 	const char *configs[MAX_CONFIGS];
 	struct lx_scene scene;
 	struct row rows[MAX_METHODS][MAX_CONFIGS];
@@ -49,7 +51,7 @@ static void usage(FILE *f)
 	fprintf(f, "usage: lixel bench [--size WxH] [--frames N] [--warmup N] [--methods LIST] [--configs LIST]\n"
 		   "                   [--platform osmesa|egl] [--scene NAME|FILE] [--csv FILE] [--plot FILE.png]\n"
 		   "                   [--strips DIR] [--json] [--region-shape S] [--budget-split S]\n"
-		   "                   [--plane-max-lpp X]\n"
+		   "                   [--plane-max-lpp X] [--lookup-region R] [--depth-precision P]\n"
 		   "\n"
 		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
 		   "(glFinish after the shadow passes and after the main pass; the methods interleaved\n"
@@ -78,6 +80,7 @@ static void usage(FILE *f)
 		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods\n"
 		   "                   order, each panel scaled down to at most 512 pixels wide\n"
 		   "  --json           one JSON object on stdout instead of the text\n"
+		   "  --depth-precision, --mediump: as in lixel render --help\n"
 		   "\n"
 		   "Progress goes to stderr. Exit status: 0 done; 1 GL failure; 2 bad input.\n",
 		lx_shadow_method_names());
@@ -274,8 +277,8 @@ static int method_index(const struct bench *b, const char *name)
 
 static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 {
-	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s\n", b->width, b->height, b->frames,
-	       b->warmup, b->platform, caps->renderer);
+	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s, depth %s (self-test %s)\n", b->width,
+	       b->height, b->frames, b->warmup, b->platform, caps->renderer, b->depth.path, b->depth.selftest);
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
@@ -339,6 +342,8 @@ static void print_json(const struct bench *b)
 	lx_json_begin(&j, stdout);
 	lx_json_object(&j);
 	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, b->width), lx_json_int(&j, b->height), lx_json_end(&j);
+	lx_json_key(&j, "depth_path"), lx_json_string(&j, b->depth.path);
+	lx_json_key(&j, "depth_selftest"), lx_json_string(&j, b->depth.selftest);
 	lx_json_key(&j, "configs"), lx_json_array(&j);
 	for (int c = 0; c < b->nc; c++)
 		lx_json_string(&j, b->configs[c]);
@@ -461,15 +466,22 @@ int lx_bench_main(int argc, char **argv)
 			b.json = true;
 			continue;
 		}
+		if (!strcmp(a, "--mediump")) {
+			b.depth_precision = LX_DEPTH_MEDIUMP;
+			continue;
+		}
 		static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
-							 "--scene", "--csv", "--plot", "--strips", LX_PLANE_OPTION_NAMES};
+							 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES};
 		const char *v;
 		int st = lx_arg_value("bench", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
 		char *end;
 		int hz;
-		if ((st = lx_arg_plane_option("bench", a, v, &b.options)) >= 0) {
+		if ((st = lx_arg_depth_precision("bench", a, v, &b.depth_precision)) >= 0) {
+			if (st)
+				return st;
+		} else if ((st = lx_arg_plane_option("bench", a, v, &b.options)) >= 0) {
 			if (st)
 				return st;
 		} else if (!strcmp(a, "--size")) {
@@ -574,9 +586,12 @@ int lx_bench_main(int argc, char **argv)
 	}
 	for (; ready < b.nm; ready++) {
 		status = lx_method_run_init(&runs[ready], b.methods[ready], &b.scene, &meshes, &caps, &opt, b.width, b.height,
-					    false, LX_DEFAULT_BIAS_CODES, false, err, sizeof err);
+					    b.depth_precision, LX_DEFAULT_BIAS_CODES, false, err, sizeof err);
 		if (status)
 			goto out;
+		b.depth = runs[ready].depth;
+		if (ready == 0 && b.depth.warning[0])
+			fprintf(stderr, "lixel bench: warning: %s\n", b.depth.warning);
 	}
 	for (int c = 0; c < b.nc; c++) {
 		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b.nc, b.configs[c]);

@@ -137,6 +137,9 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 											     : &b->lixels.uniform_lixels;
 			if (!whole(value, 1, 8192, field))
 				return fail(err, errlen, file, line, "expected %s from 1 to 8192, got '%s'", key, value);
+		} else if (!strcmp(key, "depth-precision")) {
+			if (!lx_depth_precision_parse(value, &b->depth_precision))
+				return fail(err, errlen, file, line, "expected depth-precision auto, highp or mediump, got '%s'", value);
 		} else if (!strcmp(key, "methods")) {
 			b->method_count = 0;
 			for (char *t = strtok(value, ", "); t; t = strtok(NULL, ", ")) {
@@ -150,7 +153,8 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 		} else
 			return fail(err, errlen, file, line,
 				    "expected name, description, gpio-chip, gpio-line, gpio-active, gpio-bias, debounce-ms, "
-				    "long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels or methods, got '%s'",
+				    "long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, depth-precision "
+				    "or methods, got '%s'",
 				    key);
 	}
 	if (b->gpio_chip[0] && b->gpio_line < 0)

@@ -3,6 +3,7 @@
  * files in board/ built into the binary; --board NAME|FILE. GL-free. */
 #ifndef LX_BOARD_H
 #define LX_BOARD_H
+#include "depth_selftest.h"
 #include "shadow_method.h"
 #include <stdbool.h>
 #include <stddef.h>
@@ -22,6 +23,7 @@ struct lx_board {
 	char display[128]; /* a DRM device path, or empty for the first that can mode-set */
 	int mode_w, mode_h, mode_hz; /* 0: the connector's preferred mode / any refresh */
 	struct lx_method_options lixels;
+	enum lx_depth_precision depth_precision; /* auto: the start-up self-test decides */
 	int method_count;
 	char methods[LX_BOARD_MAX_METHODS][16];
 };

@@ -40,6 +40,15 @@ bool lx_arg_scene(const char *arg, struct lx_scene *s)
 	return false;
 }
 
+int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, enum lx_depth_precision *out)
+{
+	if (strcmp(opt, "--depth-precision"))
+		return -1;
+	if (!lx_depth_precision_parse(value, out))
+		return lx_arg_bad(cmd, opt, "auto, highp or mediump", value);
+	return 0;
+}
+
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o)
 {
 	if (!strcmp(opt, "--region-shape")) {

@@ -20,6 +20,15 @@ bool lx_arg_scene(const char *arg, struct lx_scene *s);
  * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all. Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 struct lx_method_options;
+/* --depth-precision auto|highp|mediump (render, bench, kiosk): 0 when opt is it and its
+ * value is good, 2 (after the one line) when the value is bad, -1 for another option. */
+#include "depth_selftest.h"
+int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, enum lx_depth_precision *out);
+#define LX_DEPTH_OPTION_HELP \
+	"  --depth-precision P  the shaders' depth path: auto (default: the 24-bit highp one where\n" \
+	"                       a start-up self-test passes, else the 11-bit mediump one), highp\n" \
+	"                       or mediump (forced; a warning when its self-test fails)\n" \
+	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
 #define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region"
 #define LX_PLANE_OPTION_HELP \

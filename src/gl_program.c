@@ -1,5 +1,6 @@
 #include "gl_program.h"
 #include "embedded.h"
+#include "shader_text.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,71 +13,9 @@ static void trim(char *log)
 		log[--n] = 0;
 }
 
-struct text {
-	char *s;
-	size_t len, cap;
-	bool oom;
-};
-
-static void append(struct text *t, const char *s, size_t n)
-{
-	if (t->oom)
-		return;
-	if (t->len + n + 1 > t->cap) {
-		size_t cap = (t->len + n + 1) * 2;
-		char *p = realloc(t->s, cap);
-		if (!p) {
-			t->oom = true;
-			return;
-		}
-		t->s = p;
-		t->cap = cap;
-	}
-	memcpy(t->s + t->len, s, n);
-	t->len += n;
-	t->s[t->len] = 0;
-}
-
-/* The file's text with defines after line 1 and includes expanded (one level). */
-static char *assemble(const char *name, const char *src, const char *defines, char *err, size_t errlen)
-{
-	struct text t = {0};
-	const char *line = src;
-	int n = 0;
-	while (*line) {
-		const char *eol = strchr(line, '\n');
-		size_t len = eol ? (size_t)(eol - line + 1) : strlen(line);
-		static const char tag[] = "//!include ";
-		if (!strncmp(line, tag, sizeof tag - 1)) {
-			char inc[64];
-			size_t m = len - (sizeof tag - 1);
-			while (m && (line[sizeof tag - 2 + m] == '\n' || line[sizeof tag - 2 + m] == '\r'))
-				m--;
-			snprintf(inc, sizeof inc, "%.*s", (int)m, line + sizeof tag - 1);
-			const char *body = lx_embedded_text(lx_shader_files, inc);
-			if (!body) {
-				snprintf(err, errlen, "%s:%d: included file '%s' is not built in", name, n + 1, inc);
-				free(t.s);
-				return NULL;
-			}
-			append(&t, body, strlen(body));
-		} else
-			append(&t, line, len);
-		if (n++ == 0 && defines)
-			append(&t, defines, strlen(defines));
-		line += len;
-	}
-	if (t.oom) {
-		free(t.s);
-		snprintf(err, errlen, "%s: out of memory", name);
-		return NULL;
-	}
-	return t.s;
-}
-
 static GLuint compile(GLenum type, const char *name, const char *text, const char *defines, char *err, size_t errlen)
 {
-	char *src = assemble(name, text, defines, err, errlen);
+	char *src = lx_shader_text(name, text, defines, type == GL_FRAGMENT_SHADER && lx_simulating_lima(), err, errlen);
 	if (!src)
 		return 0;
 	GLuint sh = lx_gl.CreateShader(type);

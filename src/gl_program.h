@@ -2,6 +2,8 @@
 #ifndef LX_GL_PROGRAM_H
 #define LX_GL_PROGRAM_H
 #include "gl_api.h"
+#include "shader_text.h"
+#include <stdbool.h>
 #include <stddef.h>
 
 /* Attribute locations shared by every program. */

@@ -36,6 +36,7 @@ static void usage(FILE *f)
 		   "                   [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
 		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
+		   "                   [--depth-precision auto|highp|mediump]\n"
 		   "\n"
 		   "Shows the animated scene and switches the shadow method on a button press: a short\n"
 		   "press goes to the next method of the board's order, a long press (1 s) toggles the\n"
@@ -54,8 +55,10 @@ static void usage(FILE *f)
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
 		   "  --overlay         start with the overlay on (method, FPS, the planes' sampling)\n"
 		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms,\n"
-		   "  --plane-lixels, --fallback-lixels, --uniform-lixels\n"
-		   "                    override the board profile's values\n"
+		   "  --plane-lixels, --fallback-lixels, --uniform-lixels, --depth-precision\n"
+		   "                    override the board profile's values (depth-precision: auto, the\n"
+		   "                    start-up self-test choosing, highp or mediump; --mediump is\n"
+		   "                    --depth-precision mediump)\n"
 		   "\n"
 		   "On SIGINT or SIGTERM it puts back the display mode it found and exits 0.\n"
 		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
@@ -94,10 +97,14 @@ int lx_kiosk_main(int argc, char **argv)
 			overlay = true;
 			continue;
 		}
+		if (!strcmp(a, "--mediump")) {
+			board.depth_precision = LX_DEPTH_MEDIUMP;
+			continue;
+		}
 		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
 							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
 							 "--long-press-ms", "--device", "--mode", "--plane-lixels",
-							 "--fallback-lixels", "--uniform-lixels"};
+							 "--fallback-lixels", "--uniform-lixels", "--depth-precision"};
 		const char *v;
 		int st = lx_arg_value("kiosk", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
@@ -174,17 +181,21 @@ int lx_kiosk_main(int argc, char **argv)
 	int ready = 0, status = 0;
 	for (; ready < board.method_count; ready++) {
 		status = lx_method_run_init(&runs[ready], board.methods[ready], &scene, &meshes, &caps, &board.lixels,
-					    plat->width, plat->height, false, LX_DEFAULT_BIAS_CODES, true, err, sizeof err);
+					    plat->width, plat->height, board.depth_precision, LX_DEFAULT_BIAS_CODES, true, err,
+					    sizeof err);
 		if (status) {
 			fprintf(stderr, "lixel: %s\n", err);
 			goto out;
 		}
 	}
 	printf("lixel kiosk: GL_VENDOR %s, GL_RENDERER %s, GL_VERSION %s; %s %dx%d; fragment precision %s (%d bits); "
-	       "board %s\n",
+	       "depth %s, self-test %s; board %s\n",
 	       caps.vendor, caps.renderer, caps.version, plat->name, plat->width, plat->height,
 	       caps.fragment_highp ? "highp" : "mediump",
-	       caps.fragment_highp ? caps.fragment_highp_bits : caps.fragment_mediump_bits, board.name);
+	       caps.fragment_highp ? caps.fragment_highp_bits : caps.fragment_mediump_bits, runs[0].depth.path,
+	       runs[0].depth.selftest, board.name);
+	if (runs[0].depth.warning[0])
+		printf("lixel kiosk: warning: %s\n", runs[0].depth.warning);
 	struct lx_gpio_button *gpio = NULL;
 	if (board.gpio_chip[0]) {
 		gpio = lx_gpio_button_open(&board, err, sizeof err);

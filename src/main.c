@@ -73,8 +73,7 @@ static void render_usage(FILE *f)
 		"                       per frame (default 350)\n"
 		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128)\n"
 		LX_PLANE_OPTION_HELP
-		"  --mediump            use the shaders' mediump path (11-bit depth) as boards without\n"
-		"                       fragment highp do\n"
+		LX_DEPTH_OPTION_HELP
 		"  -h, --help           this text\n"
 		"\n"
 		"Exit status: 0 rendered; 1 the GL platform failed; 2 bad input (nothing written).\n",
@@ -212,10 +211,14 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_key(&j, "main_ms"), lx_json_number(&j, r->main_ms);
 	lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
 	lx_json_key(&j, "fragment_highp"), lx_json_bool(&j, r->caps.fragment_highp);
+	lx_json_key(&j, "depth_path"), lx_json_string(&j, r->depth.path);
+	lx_json_key(&j, "depth_selftest"), lx_json_string(&j, r->depth.selftest);
 	if (r->lookup_pct >= 0)
 		lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
 	lx_json_key(&j, "warnings");
 	lx_json_array(&j);
+	if (r->depth.warning[0])
+		lx_json_string(&j, r->depth.warning);
 	for (int i = 0; i < r->result.warning_count; i++)
 		lx_json_string(&j, r->result.warnings[i]);
 	lx_json_end(&j);
@@ -280,19 +283,22 @@ static int cmd_render(int argc, char **argv)
 			continue;
 		}
 		if (!strcmp(a, "--mediump")) {
-			job.force_mediump = true;
+			job.depth_precision = LX_DEPTH_MEDIUMP;
 			continue;
 		}
 		static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye",
 							 "--at", "--fov", "--light", "--light-dir", "--time",
-							 "--platform", "--out", "--decision-out", "--mismatch-out", "--atlas-out", "--frames", "--bias",
+							 "--platform", "--out", "--decision-out", "--mismatch-out", "--atlas-out", "--frames", "--bias", "--depth-precision",
 							 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES};
 		const char *v;
 		int st = lx_arg_value("render", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
 		double d;
-		if ((st = lx_arg_plane_option("render", a, v, &job.budgets)) >= 0) {
+		if ((st = lx_arg_depth_precision("render", a, v, &job.depth_precision)) >= 0) {
+			if (st)
+				return st;
+		} else if ((st = lx_arg_plane_option("render", a, v, &job.budgets)) >= 0) {
 			if (st)
 				return st;
 		} else if (!strcmp(a, "--method")) {
@@ -403,6 +409,8 @@ static int cmd_render(int argc, char **argv)
 		fprintf(stderr, "lixel: %s\n", err);
 		return status;
 	}
+	if (rep.depth.warning[0])
+		fprintf(stderr, "lixel: warning: %s\n", rep.depth.warning);
 	if (json)
 		print_json(&rep);
 	else

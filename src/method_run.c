@@ -12,7 +12,7 @@ static double now_ms(void)
 
 int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct lx_scene *scene,
 		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
-		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
+		       const struct lx_method_options *budgets, int width, int height, enum lx_depth_precision precision,
 		       double bias_codes, bool to_window, char *err, size_t errlen)
 {
 	memset(mr, 0, sizeof(*mr));
@@ -26,9 +26,11 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	int nreq = mr->method->regions(scene, &mr->options, req);
 	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
 		return 2; /* budgets this GL cannot hold: the input asks too much */
+	if (!lx_depth_choose(precision, &mr->depth, err, errlen))
+		return 1;
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
 				      .map_count = nreq, .width = width, .height = height,
-				      .force_mediump = force_mediump, .bias_codes = bias_codes, .to_window = to_window,
+				      .mediump = mr->depth.mediump, .bias_codes = bias_codes, .to_window = to_window,
 				      .lookup_everywhere = mr->options.lookup_everywhere};
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
 	return mr->renderer ? 0 : 1;

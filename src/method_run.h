@@ -5,6 +5,7 @@
 #define LX_METHOD_RUN_H
 #include "gl_caps.h"
 #include "metrics.h"
+#include "depth_selftest.h"
 #include "renderer.h"
 
 /* The default bias: a few 24-bit codes, enough for the rounding of interpolated depth. */
@@ -16,6 +17,7 @@ struct lx_method_run {
 	struct lx_method_options options;
 	struct lx_renderer *renderer;
 	struct lx_shadow_result result; /* of the last frame */
+	struct lx_depth_choice depth;   /* the depth path taken, and how */
 	int width, height;
 };
 
@@ -36,7 +38,7 @@ struct lx_plane_report {
  * failure; err says what. A current GL context is needed. */
 int lx_method_run_init(struct lx_method_run *mr, const char *method, const struct lx_scene *scene,
 		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
-		       const struct lx_method_options *budgets, int width, int height, bool force_mediump,
+		       const struct lx_method_options *budgets, int width, int height, enum lx_depth_precision precision,
 		       double bias_codes, bool to_window, char *err, size_t errlen);
 void lx_method_run_free(struct lx_method_run *mr);
 /* Light matrices, shadow passes and the shaded main pass, each step timed. */

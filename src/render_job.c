@@ -120,9 +120,10 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
 	struct lx_method_run mr;
 	int status = lx_method_run_init(&mr, job->method, &job->scene, &meshes, &rep->caps, &opt, job->width,
-					job->height, job->force_mediump, job->bias_codes, false, err, errlen);
+					job->height, job->depth_precision, job->bias_codes, false, err, errlen);
 	if (status)
 		goto out;
+	rep->depth = mr.depth;
 	status = 1;
 	int timed = job->timed_frames > 0 ? job->timed_frames : 1;
 	times = calloc((size_t)timed * 4, sizeof(double));

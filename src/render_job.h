@@ -13,7 +13,7 @@ struct lx_render_job {
 	int warmup_frames, timed_frames;
 	bool measure;        /* compare with the exact reference, compute the plane figures */
 	bool keep_pixels;    /* keep the per-pixel arrays in the report (tests) */
-	bool force_mediump;  /* take the shaders' mediump path */
+	enum lx_depth_precision depth_precision; /* auto: the self-test decides */
 	double bias_codes;   /* depth bias in 24-bit codes */
 	struct lx_method_options budgets; /* zero: LX_METHOD_OPTIONS_DEFAULT */
 	int reference_threads;
@@ -29,6 +29,7 @@ struct lx_render_report {
 	int width, height;
 	struct lx_atlas atlas;
 	struct lx_shadow_result result;
+	struct lx_depth_choice depth;
 	double frame_ms, frame_ms_min, frame_ms_max, shadow_ms, main_ms, setup_us;
 	bool measured;
 	/* with the decision (measure, keep_pixels or decision_png): the share of the image's

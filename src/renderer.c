@@ -2,6 +2,7 @@
 #include "gl_api.h"
 #include "gl_program.h"
 #include "lookup_region.h"
+#include "shader_text.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -101,11 +102,7 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 			 size_t errlen)
 {
 	char defines[320];
-	snprintf(defines, sizeof defines,
-		 "#define LX_MAPS %d\n#define LX_USE_0 %d\n"
-		 "#define LX_USE_1 %d\n#define LX_USE_2 %d\n#define LX_USE_3 %d\n%s%s",
-		 maps, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
-		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
+	lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
 	if (!p->prog)
 		return false;
@@ -186,7 +183,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	}
 	r->d = *d;
 	r->objects = d->meshes->count;
-	bool mediump = d->force_mediump || !caps->fragment_highp;
+	bool mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump ? (d->bias_codes / 8192.0 > 1 ? d->bias_codes / 8192.0 : 1.0) : d->bias_codes);
 

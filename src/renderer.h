@@ -15,7 +15,7 @@ struct lx_renderer_desc {
 	const struct lx_gl_caps *caps;
 	int map_count; /* maps the method returns per frame */
 	int width, height;
-	bool force_mediump; /* take the fragment shaders' mediump path even where highp exists */
+	bool mediump;       /* the fragment shaders' 11-bit mediump depth path (lx_depth_choose) */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
 	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not

@@ -8,6 +8,7 @@
 #include "png_out.h"
 #include "embedded.h"
 #include "platform.h"
+#include "reference.h"
 #include "render_job.h"
 #include "renderer.h"
 #include "test_util.h"
@@ -24,7 +25,7 @@ static void run_path(const char *platform, const char *method, const struct lx_s
 	struct lx_render_job job = {.method = method, .platform = platform, .scene = *scene, .width = W, .height = H,
 				    .time = 0.4, .warmup_frames = 0, .timed_frames = 1, .measure = true,
 				    .keep_pixels = true, .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2,
-				    .force_mediump = mediump};
+				    .depth_precision = mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO};
 	char err[512];
 	int st = lx_render_run(&job, rep, err, sizeof err);
 	if (st)
@@ -379,7 +380,8 @@ static void lookup_region_changes_no_decision(void **state)
 				for (int k = 0; k < 2; k++) {
 					struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 					o.lookup_everywhere = k == 1;
-					if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h, mediump,
+					if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h,
+							       mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO,
 							       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
 						fail_msg("%s: %s", m, err);
 				}
@@ -413,6 +415,105 @@ static void lookup_region_changes_no_decision(void **state)
 	}
 	print_message("%ld frames compared, all identical\n", compared);
 	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_platform_destroy(plat);
+}
+
+/* The depth path is found by trying it (depth_selftest.c): on llvmpipe the 24-bit path
+ * passes; under LIXEL_SIMULATE_LIMA=1 (highp compiled as mediump, which llvmpipe computes
+ * in fp16, while highp is still reported, as Mesa's lima does) it fails, auto falls back
+ * to the 11-bit path, and a forced highp warns. */
+static void depth_selftest_picks_the_path(void **state)
+{
+	(void)state;
+	char err[512];
+	for (size_t p = 0; p < 2; p++) {
+		struct lx_platform *plat = lx_platform_create(platforms[p], err, sizeof err);
+		if (!plat)
+			fail_msg("%s", err);
+		struct lx_depth_choice c;
+		unsetenv("LIXEL_SIMULATE_LIMA");
+		assert_true(lx_depth_choose(LX_DEPTH_AUTO, &c, err, sizeof err));
+		assert_string_equal(c.path, "highp24"), assert_string_equal(c.selftest, "passed");
+		assert_true(lx_depth_choose(LX_DEPTH_MEDIUMP, &c, err, sizeof err));
+		assert_string_equal(c.path, "mediump11"), assert_string_equal(c.selftest, "forced");
+		assert_string_equal(c.warning, "");
+		setenv("LIXEL_SIMULATE_LIMA", "1", 1);
+		struct lx_gl_caps caps;
+		lx_gl_caps_probe(&caps);
+		assert_true(caps.fragment_highp); /* the query still says highp */
+		assert_true(lx_depth_choose(LX_DEPTH_AUTO, &c, err, sizeof err));
+		assert_string_equal(c.path, "mediump11"), assert_string_equal(c.selftest, "fell-back");
+		assert_true(lx_depth_choose(LX_DEPTH_HIGHP, &c, err, sizeof err));
+		assert_string_equal(c.path, "highp24"), assert_string_equal(c.selftest, "forced");
+		assert_true(strstr(c.warning, "fails its self-test") != NULL);
+		print_message("%s, simulated lima: %s\n", platforms[p], c.warning);
+		unsetenv("LIXEL_SIMULATE_LIMA");
+		lx_platform_destroy(plat);
+	}
+}
+
+/* Under the lima simulation the default (auto) render keeps its shadows: within 0.05
+ * percentage points of the render without it, on every standard configuration of both
+ * built-in scenes. */
+static void simulated_lima_keeps_the_shadows(void **state)
+{
+	(void)state;
+	enum { w = 256, h = 192 };
+	char err[512];
+	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+	if (!plat)
+		fail_msg("%s", err);
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	uint8_t *rgba = malloc((size_t)w * h * 4), *sh = malloc((size_t)w * h), *ref_sh = malloc((size_t)w * h);
+	int16_t *obj = malloc((size_t)w * h * sizeof(int16_t)), *ref_obj = malloc((size_t)w * h * sizeof(int16_t));
+	assert_true(rgba && sh && ref_sh && obj && ref_obj);
+	double worst = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(*sn, &base));
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		struct lx_method_run run[2];
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		for (int k = 0; k < 2; k++) {
+			if (k)
+				setenv("LIXEL_SIMULATE_LIMA", "1", 1);
+			if (lx_method_run_init(&run[k], "plane", &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO,
+					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+				fail_msg("%s", err);
+			unsetenv("LIXEL_SIMULATE_LIMA");
+		}
+		assert_string_equal(run[0].depth.path, "highp24");
+		assert_string_equal(run[1].depth.path, "mediump11");
+		for (int c = 0; c < lx_config_count; c++) {
+			struct lx_scene scene = base;
+			lx_config_apply(&lx_configs[c], &scene);
+			struct lx_frame frame;
+			assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
+			assert_true(lx_reference_image(&frame, ref_obj, ref_sh, 2));
+			double pct[2];
+			for (int k = 0; k < 2; k++) {
+				struct lx_frame_times t;
+				lx_method_run_frame(&run[k], &frame, &t);
+				lx_method_run_decision(&run[k], &frame, rgba, obj, sh);
+				struct lx_mismatch mm;
+				lx_mismatch_compare(ref_obj, ref_sh, obj, sh, (long)w * h, &mm);
+				pct[k] = mm.mismatch_pct;
+			}
+			print_message("%-7s %-12s plane mismatch %.4f%%, simulated lima %.4f%%\n", *sn, lx_configs[c].name, pct[0],
+				      pct[1]);
+			worst = fmax(worst, pct[1] - pct[0]);
+			if (pct[1] - pct[0] > 0.05)
+				fail_msg("%s scene, %s: %.4f%% under the lima simulation against %.4f%%", *sn, lx_configs[c].name,
+					 pct[1], pct[0]);
+		}
+		lx_method_run_free(&run[0]);
+		lx_method_run_free(&run[1]);
+		lx_meshes_free(&meshes);
+	}
+	print_message("worst: %.4f points more under the simulation\n", worst);
+	free(rgba), free(sh), free(ref_sh), free(obj), free(ref_obj);
 	lx_platform_destroy(plat);
 }
 
@@ -572,7 +673,7 @@ static void overlay_draws_text(void **state)
 		lx_gl_caps_probe(&caps);
 		struct lx_method_run mr;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-		assert_int_equal(lx_method_run_init(&mr, "plane", &s, &m, &caps, &o, W, H, false, LX_DEFAULT_BIAS_CODES, false,
+		assert_int_equal(lx_method_run_init(&mr, "plane", &s, &m, &caps, &o, W, H, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
 						    err, sizeof err),
 				 0);
 		struct lx_frame_times t;
@@ -625,6 +726,8 @@ int main(void)
 		cmocka_unit_test(plane_keeps_every_shadow),
 		cmocka_unit_test(none_shadows_nothing),
 		cmocka_unit_test(lookup_region_changes_no_decision),
+		cmocka_unit_test(depth_selftest_picks_the_path),
+		cmocka_unit_test(simulated_lima_keeps_the_shadows),
 		cmocka_unit_test(platforms_agree),
 		cmocka_unit_test(gpu_depth_encoding_and_guards),
 		cmocka_unit_test(unknown_platform_and_method_are_bad_input),

@@ -4,7 +4,7 @@
 # As root it runs apt-get; otherwise it prints one line naming what to install.
 set -eu
 build_pkgs="gcc make pkg-config libegl-dev libgles-dev libosmesa6-dev libpng-dev libegl-mesa0 libgl1-mesa-dri libgpiod-dev libx11-dev libdrm-dev libgbm-dev"
-check_pkgs="libcmocka-dev xvfb xdotool xauth"
+check_pkgs="libcmocka-dev xvfb xdotool xauth glslang-tools"
 case "${1:-build}" in
   build) want="$build_pkgs" ;;
   check) want="$build_pkgs $check_pkgs" ;;

@@ -1,0 +1,198 @@
+#include "depth_selftest.h"
+#include "depth_rgba.h"
+#include "gl_program.h"
+#include "mesh.h"
+#include "shader_text.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { N = 64 };                       /* texels in the ramp */
+static const double RAMP_A = 0.02, RAMP_B = 0.96; /* depth at window x: a + b x, x in [0, 1] */
+
+struct target {
+	GLuint tex, fbo;
+};
+
+static bool make_target(struct target *t, int w, int h)
+{
+	lx_gl.GenTextures(1, &t->tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, t->tex);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	lx_gl.GenFramebuffers(1, &t->fbo);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->tex, 0);
+	lx_gl.Viewport(0, 0, w, h);
+	return lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+static void free_target(struct target *t)
+{
+	lx_gl.DeleteFramebuffers(1, &t->fbo);
+	lx_gl.DeleteTextures(1, &t->tex);
+}
+
+/* The unit square [0, 1]^2 at z = 0, two triangles, with normals and face normals +z. */
+static void bind_square(GLuint vbo)
+{
+	float v[6 * LX_VERTEX_FLOATS];
+	static const float xy[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+	for (int i = 0; i < 6; i++) {
+		float *o = v + i * LX_VERTEX_FLOATS;
+		const float p[LX_VERTEX_FLOATS] = {xy[i][0], xy[i][1], 0, 0, 0, 1, 0, 0, 1};
+		memcpy(o, p, sizeof p);
+	}
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
+	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STATIC_DRAW);
+	const GLsizei stride = LX_VERTEX_FLOATS * sizeof(float);
+	for (int a = 0; a < 3; a++) {
+		lx_gl.EnableVertexAttribArray((GLuint)a);
+		lx_gl.VertexAttribPointer((GLuint)a, 3, GL_FLOAT, GL_FALSE, stride, (const void *)(a * 3 * sizeof(float)));
+	}
+}
+
+/* Column-major 4x4 with the given rows. */
+static void rows_to_matrix(const float r[4][4], float m[16])
+{
+	for (int row = 0; row < 4; row++)
+		for (int col = 0; col < 4; col++)
+			m[col * 4 + row] = r[row][col];
+}
+
+static bool run(bool mediump, char *detail, size_t len)
+{
+	const char *def = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;
+	char err[1024];
+	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", def, err, sizeof err);
+	char cdef[320];
+	lx_main_defines(1, 1, true, mediump, cdef, sizeof cdef);
+	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;
+	if (!write || !compare) {
+		snprintf(detail, len, "%.200s", err);
+		if (write)
+			lx_gl.DeleteProgram(write);
+		return false;
+	}
+	GLuint vbo;
+	lx_gl.GenBuffers(1, &vbo);
+	bind_square(vbo);
+	lx_gl.Disable(GL_DEPTH_TEST);
+	lx_gl.Disable(GL_CULL_FACE);
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	struct target stored = {0, 0}, decided = {0, 0};
+	bool ok = make_target(&stored, N, 1);
+	uint8_t px[N * 2 * 4];
+	/* 1. the ramp written by the depth-write shader: window x -> depth a + b x */
+	if (ok) {
+		float m[16];
+		const float r[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {(float)(2 * RAMP_B), 0, 0, (float)(2 * RAMP_A - 1)}, {0, 0, 0, 1}};
+		rows_to_matrix(r, m);
+		lx_gl.UseProgram(write);
+		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(write, "u_light_clip"), 1, GL_FALSE, m);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+		lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+		lx_gl.ReadPixels(0, 0, N, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+		/* a 24-bit code within a few steps (single-precision interpolation); an 11-bit one
+		 * within one. A shader computing in fp16 misses by thousands of 24-bit steps. */
+		for (int i = 0; i < N && ok; i++) {
+			double d = RAMP_A + RAMP_B * (i + 0.5) / N;
+			long want = mediump ? (long)floor(d * 2047) : (long)floor(d * LX_DEPTH_MAX_CODE);
+			long got = mediump ? (long)lx_depth_decode_code_fp16(px + 4 * i) : (long)lx_depth_decode_code(px + 4 * i);
+			if (labs(got - want) > (mediump ? 1 : 16)) {
+				snprintf(detail, len, "depth %.6f written as code %ld, expected %ld (%s codes)", d, got, want,
+					 mediump ? "11-bit" : "24-bit");
+				ok = false;
+			}
+		}
+	}
+	/* 2. the ramp read by the main pass's compare, a little behind it (row 0: shadowed)
+	 * and a little in front (row 1: lit), by twice the bias */
+	if (ok && (ok = make_target(&decided, N, 2))) {
+		double bias = mediump ? 1.0 : 64.0, step = mediump ? 1.0 / 2047 : 1.0 / LX_DEPTH_MAX_CODE;
+		double off = (2 * bias + (mediump ? 2 : 16)) * step;
+		float vp[16], tex[16];
+		const float v[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {0, 0, 0, 0}, {0, 0, 0, 1}};
+		/* s = x, t = the row's centre, depth = a + b x + off (2 - 4 y): +off at y = 1/4, -off at 3/4 */
+		const float t[4][4] = {{1, 0, 0, 0}, {0, 0, 0, 0.5f}, {(float)RAMP_B, (float)(-4 * off), 0, (float)(RAMP_A + 2 * off)}, {0, 0, 0, 1}};
+		rows_to_matrix(v, vp);
+		rows_to_matrix(t, tex);
+		lx_gl.UseProgram(compare);
+		lx_gl.ActiveTexture(GL_TEXTURE0);
+		lx_gl.BindTexture(GL_TEXTURE_2D, stored.tex);
+		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_view_proj"), 1, GL_FALSE, vp);
+		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_shadow_tex"), 1, GL_FALSE, tex);
+		lx_gl.Uniform3f(lx_gl.GetUniformLocation(compare, "u_offset"), 0, 0, 0);
+		lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_light"), 0.5f, 0.5f, 10, 1); /* in front of +z */
+		lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_region"), 0, 0, 1, 1);
+		lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_bias"), (float)bias);
+		lx_gl.Uniform1i(lx_gl.GetUniformLocation(compare, "u_atlas"), 0);
+		lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_object_id"), 0);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+		lx_gl.ReadPixels(0, 0, N, 2, GL_RGBA, GL_UNSIGNED_BYTE, px);
+		for (int row = 0; row < 2 && ok; row++)
+			for (int i = 0; i < N && ok; i++)
+				if ((px[(row * N + i) * 4] > 127) != (row == 0)) {
+					snprintf(detail, len, "depth %.6f compared %s its stored code by %.0f codes reads %s",
+						 RAMP_A + RAMP_B * (i + 0.5) / N, row == 0 ? "behind" : "in front of",
+						 off / step, row == 0 ? "lit" : "shadowed");
+					ok = false;
+				}
+	}
+	if (stored.fbo)
+		free_target(&stored);
+	if (decided.fbo)
+		free_target(&decided);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+	lx_gl.DeleteBuffers(1, &vbo);
+	lx_gl.DeleteProgram(write);
+	lx_gl.DeleteProgram(compare);
+	return ok;
+}
+
+bool lx_depth_selftest(bool mediump, char *detail, size_t len)
+{
+	/* one driver per process: each path is tried once (and once more under the lima
+	 * simulation, which the tests switch on and off) */
+	static struct {
+		bool done, ok;
+		char detail[240];
+	} cache[2][2];
+	int sim = lx_simulating_lima();
+	if (!cache[sim][mediump].done) {
+		cache[sim][mediump].detail[0] = 0;
+		cache[sim][mediump].ok = run(mediump, cache[sim][mediump].detail, sizeof cache[sim][mediump].detail);
+		cache[sim][mediump].done = true;
+	}
+	snprintf(detail, len, "%s", cache[sim][mediump].detail);
+	return cache[sim][mediump].ok;
+}
+
+bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, char *err, size_t errlen)
+{
+	char why[240] = "", why11[240] = "";
+	memset(out, 0, sizeof *out);
+	if (want != LX_DEPTH_AUTO) {
+		out->mediump = want == LX_DEPTH_MEDIUMP;
+		out->selftest = "forced";
+		if (!lx_depth_selftest(out->mediump, why, sizeof why))
+			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%s)",
+				 out->mediump ? "11-bit mediump" : "24-bit highp", why);
+	} else if (lx_depth_selftest(false, why, sizeof why)) {
+		out->mediump = false;
+		out->selftest = "passed";
+	} else if (lx_depth_selftest(true, why11, sizeof why11)) {
+		out->mediump = true;
+		out->selftest = "fell-back";
+	} else {
+		snprintf(err, errlen, "this GL keeps no shadow depth: the 24-bit path fails (%s) and the 11-bit one too (%s)",
+			 why, why11);
+		return false;
+	}
+	out->path = out->mediump ? "mediump11" : "highp24";
+	return true;
+}

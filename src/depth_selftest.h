@@ -1,0 +1,46 @@
+/* Which depth path the shaders can take on this GL, found by trying it: a driver's
+ * precision query is not to be trusted (Mesa's lima defines GL_FRAGMENT_PRECISION_HIGH
+ * and reports highp, then computes in fp16, and every cast shadow vanishes). */
+#ifndef LX_DEPTH_SELFTEST_H
+#define LX_DEPTH_SELFTEST_H
+#include <stdbool.h>
+#include <stddef.h>
+#include <string.h>
+
+enum lx_depth_precision { LX_DEPTH_AUTO, LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP };
+
+struct lx_depth_choice {
+	bool mediump;     /* the path taken: 11-bit codes at mediump, else 24-bit at highp */
+	const char *path; /* "highp24" or "mediump11" */
+	/* "passed" (auto, the 24-bit path passed), "fell-back" (auto, it failed and the
+	 * 11-bit one passed), "forced" (a path given; see warning) */
+	const char *selftest;
+	char warning[200]; /* a forced path that failed its test; empty otherwise */
+};
+
+/* Renders a ramp of depths and a handful of neighbouring codes through the shadow pass's
+ * depth-write shader into a small target, reads the codes back, then reads them through
+ * the main pass's compare just in front of and just behind each: true when the path keeps
+ * them all. `detail` says what failed. A current GL context is needed; the result is
+ * kept per path for the process (one driver). */
+bool lx_depth_selftest(bool mediump, char *detail, size_t len);
+
+/* The path for a request: auto takes the 24-bit path where it passes, else the 11-bit
+ * one; false (err says why) when auto finds neither. A forced path is taken even when it
+ * fails, with a warning. */
+bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, char *err, size_t errlen);
+
+/* "auto", "highp" or "mediump"; false for anything else. (Inline: board profiles, which
+ * are GL-free, parse it too.) */
+static inline bool lx_depth_precision_parse(const char *s, enum lx_depth_precision *out)
+{
+	static const char *const names[] = {"auto", "highp", "mediump"};
+	for (int i = 0; i < 3; i++)
+		if (!strcmp(s, names[i])) {
+			*out = (enum lx_depth_precision)i;
+			return true;
+		}
+	return false;
+}
+
+#endif

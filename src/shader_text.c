@@ -1,0 +1,118 @@
+#include "shader_text.h"
+#include "embedded.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct text {
+	char *s;
+	size_t len, cap;
+	bool oom;
+};
+
+static void append(struct text *t, const char *s, size_t n)
+{
+	if (t->oom)
+		return;
+	if (t->len + n + 1 > t->cap) {
+		size_t cap = (t->len + n + 1) * 2;
+		char *p = realloc(t->s, cap);
+		if (!p) {
+			t->oom = true;
+			return;
+		}
+		t->s = p;
+		t->cap = cap;
+	}
+	memcpy(t->s + t->len, s, n);
+	t->len += n;
+	t->s[t->len] = 0;
+}
+
+static char *assemble(const char *name, const char *src, const char *defines, char *err, size_t errlen)
+{
+	struct text t = {0};
+	const char *line = src;
+	int n = 0;
+	while (*line) {
+		const char *eol = strchr(line, '\n');
+		size_t len = eol ? (size_t)(eol - line + 1) : strlen(line);
+		static const char tag[] = "//!include ";
+		if (!strncmp(line, tag, sizeof tag - 1)) {
+			char inc[64];
+			size_t m = len - (sizeof tag - 1);
+			while (m && (line[sizeof tag - 2 + m] == '\n' || line[sizeof tag - 2 + m] == '\r'))
+				m--;
+			snprintf(inc, sizeof inc, "%.*s", (int)m, line + sizeof tag - 1);
+			const char *body = lx_embedded_text(lx_shader_files, inc);
+			if (!body) {
+				snprintf(err, errlen, "%s:%d: included file '%s' is not built in", name, n + 1, inc);
+				free(t.s);
+				return NULL;
+			}
+			append(&t, body, strlen(body));
+		} else
+			append(&t, line, len);
+		if (n++ == 0 && defines)
+			append(&t, defines, strlen(defines));
+		line += len;
+	}
+	if (t.oom) {
+		free(t.s);
+		snprintf(err, errlen, "%s: out of memory", name);
+		return NULL;
+	}
+	return t.s;
+}
+
+static bool ident_char(char c)
+{
+	return c == '_' || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+}
+
+/* LIXEL_SIMULATE_LIMA=1: what Mesa's lima does to a fragment shader, on a driver that
+ * computes mediump in fp16 (llvmpipe does): every highp made mediump, while
+ * GL_FRAGMENT_PRECISION_HIGH stays defined and highp is still reported. Returns the new
+ * text (the old one freed), or NULL when out of memory. */
+static char *simulate_lima(char *src)
+{
+	struct text t = {0};
+	const char *p = src, *q;
+	while ((q = strstr(p, "highp"))) {
+		bool word = (q == src || !ident_char(q[-1])) && !ident_char(q[5]);
+		append(&t, p, (size_t)(q - p));
+		append(&t, word ? "mediump" : "highp", word ? 7 : 5);
+		p = q + 5;
+	}
+	append(&t, p, strlen(p));
+	free(src);
+	if (t.oom) {
+		free(t.s);
+		return NULL;
+	}
+	return t.s;
+}
+
+bool lx_simulating_lima(void)
+{
+	const char *v = getenv("LIXEL_SIMULATE_LIMA");
+	return v && !strcmp(v, "1");
+}
+
+char *lx_shader_text(const char *name, const char *text, const char *defines, bool simulate_lima_fragment, char *err,
+		     size_t errlen)
+{
+	char *src = assemble(name, text, defines, err, errlen);
+	if (src && simulate_lima_fragment && !(src = simulate_lima(src)))
+		snprintf(err, errlen, "%s: out of memory", name);
+	return src;
+}
+
+void lx_main_defines(int maps, unsigned mask, bool decision, bool mediump, char *out, size_t len)
+{
+	snprintf(out, len,
+		 "#define LX_MAPS %d\n#define LX_USE_0 %d\n"
+		 "#define LX_USE_1 %d\n#define LX_USE_2 %d\n#define LX_USE_3 %d\n%s%s",
+		 maps, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
+		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
+}

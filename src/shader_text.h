@@ -1,0 +1,21 @@
+/* A shader's text as the loader compiles it, GL-free (so the tests can hand every
+ * variant to glslangValidator): the embedded file with "#define" lines after its first
+ * line and its "//!include FILE" lines expanded. */
+#ifndef LX_SHADER_TEXT_H
+#define LX_SHADER_TEXT_H
+#include <stdbool.h>
+#include <stddef.h>
+
+/* The text to compile (free it), or NULL with err set. simulate_lima_fragment: every
+ * highp made mediump, as Mesa's lima computes fragment shaders (LIXEL_SIMULATE_LIMA). */
+char *lx_shader_text(const char *name, const char *text, const char *defines, bool simulate_lima_fragment, char *err,
+		     size_t errlen);
+/* The main pass's defines for a variant: maps the method has, the maps it reads (bit i:
+ * map i), the decision output, the mediump depth path. */
+void lx_main_defines(int maps, unsigned mask, bool decision, bool mediump, char *out, size_t len);
+
+/* Whether LIXEL_SIMULATE_LIMA=1 is set: fragment shaders are then compiled with every
+ * highp made mediump (Mesa's lima computes fragments in fp16 while claiming highp). */
+bool lx_simulating_lima(void);
+
+#endif
