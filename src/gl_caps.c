@@ -47,6 +47,10 @@ void lx_gl_caps_probe(struct lx_gl_caps *c)
 	c->fragment_highp_bits = precision;
 	lx_gl.GetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_MEDIUM_FLOAT, range, &precision);
 	c->fragment_mediump_bits = precision;
+	static const char *const tilers[] = {"Mali", "VideoCore", "V3D", "VC4", "Vivante", "GC2000", "GC3000", "GC7000",
+					     "Adreno", "PowerVR", "Immortalis"};
+	for (size_t i = 0; i < sizeof tilers / sizeof tilers[0]; i++)
+		c->tiler |= strstr(c->renderer, tilers[i]) != NULL;
 	while (lx_gl.GetError() != GL_NO_ERROR) {
 	}
 }

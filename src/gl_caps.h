@@ -11,6 +11,10 @@ struct lx_gl_caps {
 	bool fragment_highp;         /* highp floats exist in fragment shaders */
 	int fragment_highp_bits;     /* their mantissa precision, 0 when absent */
 	int fragment_mediump_bits;
+	/* A tile-based GPU (Mali, VideoCore, Vivante, Adreno, PowerVR, by GL_RENDERER): a
+	 * render target is cheapest cleared whole, once per pass, which also spares loading
+	 * its tiles from memory; llvmpipe and desktop GPUs clear per region. */
+	bool tiler;
 };
 
 void lx_gl_caps_probe(struct lx_gl_caps *caps);

@@ -228,8 +228,7 @@ int lx_kiosk_main(int argc, char **argv)
 			status = 2;
 			break;
 		}
-		struct lx_frame_times ft;
-		lx_method_run_frame(&runs[current], &f, &ft);
+		lx_method_run_draw(&runs[current], &f);
 		if (overlay && ov) {
 			/* the text once a second: the method, the frame rate, each plane's figures */
 			if (t - text_time >= 1000000000LL || !nlines) {

@@ -57,6 +57,13 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 				     .frame_ms = t3 - t0};
 }
 
+void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
+{
+	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
+	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
+}
+
 long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
 			    uint8_t *shadow)
 {

@@ -41,8 +41,12 @@ int lx_method_run_init(struct lx_method_run *mr, const char *method, const struc
 		       const struct lx_method_options *budgets, int width, int height, enum lx_depth_precision precision,
 		       double bias_codes, bool to_window, char *err, size_t errlen);
 void lx_method_run_free(struct lx_method_run *mr);
-/* Light matrices, shadow passes and the shaded main pass, each step timed. */
+/* Light matrices, shadow passes and the shaded main pass, each step timed (glFinish
+ * after each pass: for the bench and render, not for a display). */
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
+/* The same, untimed and unsynchronised: on a tiler a glFinish between the passes costs a
+ * flush of every tile; the kiosk's swap is the only sync it needs. */
+void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
 /* The main pass's shadow decision for the last frame's matrices: per pixel the visible
  * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4.
  * Returns how many pixels ran a shadow lookup. */

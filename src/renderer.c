@@ -183,6 +183,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	}
 	r->d = *d;
 	r->objects = d->meshes->count;
+	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
+	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
 	bool mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump ? (d->bias_codes / 8192.0 > 1 ? d->bias_codes / 8192.0 : 1.0) : d->bias_codes);
@@ -377,6 +379,12 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.ClearColor(1, 1, 1, 1);
+	/* a tiler: the whole atlas "far" in one clear, then every map in the same pass */
+	bool whole = r->d.caps->tiler || r->d.clear_whole_atlas;
+	if (whole) {
+		lx_gl.Viewport(0, 0, r->d.atlas->width, r->d.atlas->height);
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	}
 	for (int m = 0; m < res->map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		if (!map->rendered)
@@ -386,7 +394,8 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 			continue;
 		/* the region and its guard ring start "far" (a per-frame layout moves the guards
 		 * over what earlier frames drew) */
-		clear_region(r, g);
+		if (!whole)
+			clear_region(r, g);
 		/* then the casters it can see, inside the region. Back faces only (second-depth
 		 * shadow maps): lit front faces never compare against themselves, so there is no
 		 * acne; the meshes are closed or are planes. */

@@ -18,6 +18,9 @@ struct lx_renderer_desc {
 	bool mediump;       /* the fragment shaders' 11-bit mediump depth path (lx_depth_choose) */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
 	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
+	/* clear the atlas once per frame, as on a tiler (caps->tiler), here too; also set by
+	 * LIXEL_CLEAR_WHOLE_ATLAS=1 in the environment, so that the tests run that path */
+	bool clear_whole_atlas;
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
 };

@@ -157,6 +157,20 @@ fp=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-footprint.json"); al=
 awk -v a="$fp" -v b="$al" 'BEGIN { exit !(a > 0 && a < b) }' && ok || no "lookup share footprint $fp, all $al"
 "$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods uniform,uniform/all,tsm/footprint --configs default >/dev/null 2>&1 && ok ||
   no "bench with /all and /footprint methods"
+# the depth path: the self-test's choice in the JSON, a forced one, bad values
+"$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
+  grep -q '"depth_path": "highp24", "depth_selftest": "passed"' "$tmp/d.json" && ok || no "depth path: $(cat "$tmp/d.json")"
+"$lixel" render --depth-precision mediump --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
+  grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "forced mediump: $(cat "$tmp/d.json")"
+LIXEL_SIMULATE_LIMA=1 "$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
+  grep -q '"depth_path": "mediump11", "depth_selftest": "fell-back"' "$tmp/d.json" && ok || no "simulated lima: $(cat "$tmp/d.json")"
+LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>"$tmp/d.err" &&
+  grep -q 'fails its self-test' "$tmp/d.err" && grep -q '"warnings": \["the forced 24-bit highp depth path fails' "$tmp/d.json" && ok ||
+  no "forced highp under the simulation: $(cat "$tmp/d.err" "$tmp/d.json")"
+"$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods uniform --configs default --json --mediump >"$tmp/d.json" 2>/dev/null &&
+  grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "bench --mediump: $(cat "$tmp/d.json")"
+expect_bad "depth precision" render --depth-precision fp16 $out
+expect_bad "bench depth precision" bench --depth-precision low
 expect_bad "lookup region" render --lookup-region some $out
 expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot
