@@ -103,6 +103,13 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 		} else if (!strcmp(key, "gpio-line")) {
 			if (!whole(value, 0, 1023, &b->gpio_line))
 				return fail(err, errlen, file, line, "expected a line offset from 0 to 1023, got '%s'", value);
+			b->gpio_line_name[0] = 0; /* the last of gpio-line and gpio-line-name counts */
+		} else if (!strcmp(key, "gpio-line-name")) {
+			if (vl >= sizeof b->gpio_line_name || !vl)
+				return fail(err, errlen, file, line, "expected a line name of 1 to %zu characters",
+					    sizeof b->gpio_line_name - 1);
+			strcpy(b->gpio_line_name, value);
+			b->gpio_line = -1;
 		} else if (!strcmp(key, "gpio-active")) {
 			if (strcmp(value, "low") && strcmp(value, "high"))
 				return fail(err, errlen, file, line, "expected gpio-active low or high, got '%s'", value);
@@ -152,13 +159,13 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 			}
 		} else
 			return fail(err, errlen, file, line,
-				    "expected name, description, gpio-chip, gpio-line, gpio-active, gpio-bias, debounce-ms, "
+				    "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, debounce-ms, "
 				    "long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, depth-precision "
 				    "or methods, got '%s'",
 				    key);
 	}
-	if (b->gpio_chip[0] && b->gpio_line < 0)
-		return fail(err, errlen, file, line + 1, "expected a gpio-line for gpio-chip %s", b->gpio_chip);
+	if (b->gpio_chip[0] && b->gpio_line < 0 && !b->gpio_line_name[0])
+		return fail(err, errlen, file, line + 1, "expected a gpio-line or gpio-line-name for gpio-chip %s", b->gpio_chip);
 	return true;
 }
 

@@ -15,8 +15,10 @@ enum lx_bias { LX_BIAS_AS_IS, LX_BIAS_PULL_UP, LX_BIAS_PULL_DOWN, LX_BIAS_DISABL
 struct lx_board {
 	char name[32];
 	char description[96];
-	char gpio_chip[64]; /* a name (gpiochip0) or a path (/dev/gpiochip0); empty: no button */
-	int gpio_line;
+	char gpio_chip[64]; /* a name (gpiochip0), a path (/dev/gpiochip0), a label (pinctrl-rp1) or
+			     * auto (any chip: with gpio_line_name); empty: no button */
+	int gpio_line;      /* the line's offset, or -1 when named */
+	char gpio_line_name[32]; /* the line's name (GPIO17), or empty: by offset */
 	bool active_low;
 	enum lx_bias bias;
 	int debounce_ms, long_press_ms;

@@ -51,7 +51,25 @@ float lx_fp16(float x)
 	float m = frexpf(x, &e); /* x = m * 2^e, 0.5 <= |m| < 1 */
 	if (e < -13)             /* below fp16's normal range: denormals keep fixed steps of 2^-24 */
 		return ldexpf(rintf(ldexpf(x, 24)), -24);
-	return ldexpf(rintf(ldexpf(m, 11)), e - 11);
+	/* rintf rounds to nearest, ties to even (the default mode); past fp16's largest
+	 * finite value, 65504, a rounded result is infinite */
+	float r = ldexpf(rintf(ldexpf(m, 11)), e - 11);
+	return fabsf(r) > 65504.0f ? copysignf(INFINITY, r) : r;
+}
+
+float lx_fp16_div(float a, float b) { return lx_fp16(lx_fp16(a) / lx_fp16(b)); }
+
+float lx_fp16_rcp_mul(float a, float b) { return lx_fp16(lx_fp16(a) * lx_fp16(1.0f / lx_fp16(b))); }
+
+uint32_t lx_depth_code_fp16_projected(float z, float w, bool rcp)
+{
+	float d = rcp ? lx_fp16_rcp_mul(z, w) : lx_fp16_div(z, w);
+	if (!(d >= 0.0f))
+		return isnan(d) ? 2047u : 0u;
+	if (d >= 1.0f)
+		return 2047u;
+	float q = floorf(lx_fp16(d * 2047.0f));
+	return q > 2047.0f ? 2047u : (uint32_t)q;
 }
 
 uint32_t lx_depth_code_fp16(double d)

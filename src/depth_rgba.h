@@ -18,6 +18,7 @@
  * as q; lx_depth_encode_rgba8_fp16() mirrors it with every step rounded to fp16. */
 #ifndef LX_DEPTH_RGBA_H
 #define LX_DEPTH_RGBA_H
+#include <stdbool.h>
 #include <stdint.h>
 
 #define LX_DEPTH_MAX_CODE 16777215u /* 2^24 - 1: the far plane */
@@ -34,8 +35,16 @@ uint32_t lx_depth_code_fp16(double d);
 void lx_depth_encode_rgba8_fp16(double d, enum lx_unorm_conversion conv, uint8_t out[4]);
 /* The 11-bit code the mediump path decodes from a texel. */
 uint32_t lx_depth_decode_code_fp16(const uint8_t in[4]);
-/* Rounds to the nearest IEEE half-precision value (11 significant bits). */
+/* Rounds to the nearest IEEE half-precision value (11 significant bits, ties to even,
+ * infinite past 65504, denormals below 2^-14). */
 float lx_fp16(float x);
+/* a / b as an fp16 shader computes it: a true divide, or (rcp) a * (1 / b), each step
+ * rounded to fp16. */
+float lx_fp16_div(float a, float b);
+float lx_fp16_rcp_mul(float a, float b);
+/* The mediump path's code of a projected depth z / w (the texture coordinate's depth
+ * over its q, as the main pass divides it), with either divide. */
+uint32_t lx_depth_code_fp16_projected(float z, float w, bool rcp);
 double lx_depth_decode_rgba8(const uint8_t in[4]);
 
 #endif

@@ -1,4 +1,6 @@
 #include "gpio_button.h"
+#include "gpio_lookup.h"
+#include <dirent.h>
 #include <errno.h>
 #include <gpiod.h>
 #include <stdio.h>
@@ -25,7 +27,77 @@ static int64_t to_monotonic(int64_t stamp)
 	return stamp - ((int64_t)rt.tv_sec * 1000000000 + rt.tv_nsec - mono);
 }
 
+
+/* One chip's name, label and line names, read through either API (below). */
+static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32]);
+
+#define MAX_CHIPS 32
+
+/* The board's chip and line as a path and an offset: directly when it gives a chip name
+ * or path and an offset, else looked up among the machine's chips by label and line name. */
+static bool resolve(const struct lx_board *b, char *path, size_t plen, unsigned *offset, char *err, size_t errlen)
+{
+	if (!b->gpio_line_name[0] && (b->gpio_chip[0] == '/' || !strncmp(b->gpio_chip, "gpiochip", 8))) {
+		snprintf(path, plen, "%s%s", b->gpio_chip[0] == '/' ? "" : "/dev/", b->gpio_chip);
+		*offset = (unsigned)b->gpio_line;
+		return true;
+	}
+	struct lx_gpio_chip_info info[MAX_CHIPS];
+	char(*names[MAX_CHIPS])[32];
+	const char **ptrs[MAX_CHIPS];
+	int n = 0;
+	DIR *d = opendir("/dev");
+	for (struct dirent *e; d && (e = readdir(d)) && n < MAX_CHIPS;) {
+		if (strncmp(e->d_name, "gpiochip", 8))
+			continue;
+		char p[272];
+		snprintf(p, sizeof p, "/dev/%s", e->d_name);
+		names[n] = NULL, ptrs[n] = NULL;
+		if (!chip_describe(p, &info[n], &names[n]))
+			continue;
+		ptrs[n] = calloc((size_t)(info[n].lines > 0 ? info[n].lines : 1), sizeof(char *));
+		for (int k = 0; ptrs[n] && names[n] && k < info[n].lines; k++)
+			ptrs[n][k] = names[n][k];
+		info[n].line_names = ptrs[n];
+		n++;
+	}
+	if (d)
+		closedir(d);
+	int idx = lx_gpio_find(b, info, n, offset, err, errlen);
+	if (idx >= 0)
+		snprintf(path, plen, "%s", info[idx].path);
+	for (int i = 0; i < n; i++)
+		free(names[i]), free(ptrs[i]);
+	return idx >= 0;
+}
+
 #ifdef LX_GPIOD_V2
+
+static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32])
+{
+	struct gpiod_chip *chip = gpiod_chip_open(path);
+	struct gpiod_chip_info *ci = chip ? gpiod_chip_get_info(chip) : NULL;
+	if (!ci) {
+		if (chip)
+			gpiod_chip_close(chip);
+		return false;
+	}
+	snprintf(info->path, sizeof info->path, "%s", path);
+	snprintf(info->name, sizeof info->name, "%s", gpiod_chip_info_get_name(ci));
+	snprintf(info->label, sizeof info->label, "%s", gpiod_chip_info_get_label(ci));
+	info->lines = (int)gpiod_chip_info_get_num_lines(ci);
+	gpiod_chip_info_free(ci);
+	*names = calloc((size_t)(info->lines > 0 ? info->lines : 1), sizeof **names);
+	for (int k = 0; *names && k < info->lines; k++) {
+		struct gpiod_line_info *li = gpiod_chip_get_line_info(chip, (unsigned int)k);
+		const char *nm = li ? gpiod_line_info_get_name(li) : NULL;
+		snprintf((*names)[k], sizeof (*names)[k], "%s", nm ? nm : "");
+		if (li)
+			gpiod_line_info_free(li);
+	}
+	gpiod_chip_close(chip);
+	return true;
+}
 
 struct lx_gpio_button {
 	struct gpiod_chip *chip;
@@ -39,15 +111,17 @@ const char *lx_gpio_button_api(void) { return "libgpiod 2 (v2 API, kernel deboun
 
 struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
 {
-	char path[128];
+	char path[272];
+	unsigned offset;
 	/* v2 opens chips by path only */
-	snprintf(path, sizeof path, "%s%s", board->gpio_chip[0] == '/' ? "" : "/dev/", board->gpio_chip);
+	if (!resolve(board, path, sizeof path, &offset, err, errlen))
+		return NULL;
 	struct lx_gpio_button *g = calloc(1, sizeof(*g));
 	if (!g) {
 		snprintf(err, errlen, "gpio: out of memory");
 		return NULL;
 	}
-	g->offset = (unsigned int)board->gpio_line;
+	g->offset = offset;
 	g->chip = gpiod_chip_open(path);
 	if (!g->chip) {
 		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, strerror(errno));
@@ -114,6 +188,25 @@ int lx_gpio_button_read(struct lx_gpio_button *g, struct lx_gpio_edge *edges, in
 
 #else /* the v1 API */
 
+static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32])
+{
+	struct gpiod_chip *chip = gpiod_chip_open(path);
+	if (!chip)
+		return false;
+	snprintf(info->path, sizeof info->path, "%s", path);
+	snprintf(info->name, sizeof info->name, "%s", gpiod_chip_name(chip));
+	snprintf(info->label, sizeof info->label, "%s", gpiod_chip_label(chip));
+	info->lines = (int)gpiod_chip_num_lines(chip);
+	*names = calloc((size_t)(info->lines > 0 ? info->lines : 1), sizeof **names);
+	for (int k = 0; *names && k < info->lines; k++) {
+		struct gpiod_line *l = gpiod_chip_get_line(chip, (unsigned int)k);
+		const char *nm = l ? gpiod_line_name(l) : NULL;
+		snprintf((*names)[k], sizeof (*names)[k], "%s", nm ? nm : "");
+	}
+	gpiod_chip_close(chip);
+	return true;
+}
+
 struct lx_gpio_button {
 	struct gpiod_chip *chip;
 	struct gpiod_line *line;
@@ -124,27 +217,28 @@ const char *lx_gpio_button_api(void) { return "libgpiod 1 (v1 API, software debo
 
 struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
 {
+	char path[272];
+	unsigned offset;
+	if (!resolve(board, path, sizeof path, &offset, err, errlen))
+		return NULL;
 	struct lx_gpio_button *g = calloc(1, sizeof(*g));
 	if (!g) {
 		snprintf(err, errlen, "gpio: out of memory");
 		return NULL;
 	}
-	/* a name (gpiochip0), a path, a label or a number */
-	g->chip = gpiod_chip_open_lookup(board->gpio_chip);
+	g->chip = gpiod_chip_open(path);
 	if (!g->chip) {
-		snprintf(err, errlen, "gpio: cannot open chip %s: %s", board->gpio_chip,
-			 errno ? strerror(errno) : "no such chip");
+		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, errno ? strerror(errno) : "no such chip");
 		free(g);
 		return NULL;
 	}
-	g->line = gpiod_chip_get_line(g->chip, (unsigned int)board->gpio_line);
+	g->line = gpiod_chip_get_line(g->chip, offset);
 	static const int bias[] = {0, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
 				   GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE};
 	struct gpiod_line_request_config cfg = {.consumer = "lixel", .request_type = GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES,
 						.flags = bias[board->bias]};
 	if (!g->line || gpiod_line_request(g->line, &cfg, 0) != 0) {
-		snprintf(err, errlen, "gpio: cannot request line %d on %s: %s", board->gpio_line, board->gpio_chip,
-			 strerror(errno));
+		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", offset, path, strerror(errno));
 		gpiod_chip_close(g->chip);
 		free(g);
 		return NULL;

@@ -54,7 +54,9 @@ static void usage(FILE *f)
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
 		   "  --overlay         start with the overlay on (method, FPS, the planes' sampling)\n"
-		   "  --gpio-chip, --gpio-line, --gpio-active, --debounce-ms, --long-press-ms,\n"
+		   "  --gpio-chip (a name, path or label), --gpio-line (an offset), --gpio-line-name\n"
+		   "  (GPIO17: found on the named chip, or on any with --gpio-chip auto),\n"
+		   "  --gpio-active, --debounce-ms, --long-press-ms,\n"
 		   "  --plane-lixels, --fallback-lixels, --uniform-lixels, --depth-precision\n"
 		   "                    override the board profile's values (depth-precision: auto, the\n"
 		   "                    start-up self-test choosing, highp or mediump; --mediump is\n"
@@ -102,7 +104,7 @@ int lx_kiosk_main(int argc, char **argv)
 			continue;
 		}
 		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
-							 "--gpio-chip", "--gpio-line", "--gpio-active", "--debounce-ms",
+							 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
 							 "--long-press-ms", "--device", "--mode", "--plane-lixels",
 							 "--fallback-lixels", "--uniform-lixels", "--depth-precision"};
 		const char *v;

@@ -7,8 +7,8 @@
 static void built_in_profiles(void **state)
 {
 	(void)state;
-	static const char *const names[] = {"raspberry-pi-3", "raspberry-pi-4", "mali-400", "desktop"};
-	for (int i = 0; i < 4; i++) {
+	static const char *const names[] = {"raspberry-pi-3", "raspberry-pi-4", "raspberry-pi-5", "mali-400", "desktop"};
+	for (int i = 0; i < 5; i++) {
 		struct lx_board b;
 		char err[256];
 		if (!lx_board_load(names[i], &b, err, sizeof err))
@@ -21,7 +21,7 @@ static void built_in_profiles(void **state)
 	struct lx_board pi4;
 	char err[256];
 	assert_true(lx_board_load("raspberry-pi-4", &pi4, err, sizeof err));
-	assert_string_equal(pi4.display, "/dev/dri/card1"); /* card0 is render-only there */
+	assert_string_equal(pi4.display, ""); /* auto: which card is the display varies there */
 	assert_string_equal(pi4.gpio_chip, "gpiochip0");
 	assert_int_equal(pi4.gpio_line, 17);
 	assert_true(pi4.active_low);

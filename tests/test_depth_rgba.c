@@ -1,6 +1,7 @@
 #include "depth_rgba.h"
 #include "test_util.h"
 #include <stdio.h>
+#include <stdlib.h>
 
 /* Every 24-bit code survives encode -> 8-bit conversion -> decode, whether the driver
  * rounds or truncates, and the decoded depth is within one code of the input. */
@@ -121,6 +122,36 @@ static void mediump_path_keeps_11_bits_in_fp16(void **state)
 	assert_true(-log2(worst) >= 10.0);
 }
 
+/* The fp16 mirror itself: ties to even, overflow to infinity, denormals, and the divide
+ * the main pass takes (true or through the reciprocal), which keeps 11 bits of a
+ * projected depth: the code of z / w within one of the code of the depth. */
+static void fp16_mirror_rounds_as_hardware_does(void **state)
+{
+	(void)state;
+	assert_near(lx_fp16(2049.0f), 2048.0f, 0); /* a tie: to even */
+	assert_near(lx_fp16(2051.0f), 2052.0f, 0); /* a tie: to even, upwards */
+	assert_near(lx_fp16(65504.0f), 65504.0f, 0); /* the largest finite */
+	assert_true(isinf(lx_fp16(65520.0f)) && lx_fp16(65520.0f) > 0); /* rounds past it */
+	assert_true(isinf(lx_fp16(-1e6f)) && lx_fp16(-1e6f) < 0);
+	assert_near(lx_fp16(ldexpf(1.0f, -24)), ldexpf(1.0f, -24), 0); /* the smallest denormal */
+	assert_near(lx_fp16(ldexpf(1.0f, -26)), 0.0f, 0);               /* below half of it */
+	assert_near(lx_fp16_div(1.0f, 3.0f), 0.333251953125, 0);
+	assert_true(isinf(lx_fp16_div(1.0f, 1e-5f)) || lx_fp16_div(1.0f, 1e-5f) > 65000.0f);
+	int worst = 0;
+	uint64_t seed = 3;
+	for (int k = 0; k < 200000; k++) {
+		double d = test_rand(&seed), w = 0.05 + 40 * test_rand(&seed); /* q in a map's range */
+		float z = (float)(d * w);
+		int direct = (int)lx_depth_code_fp16(d);
+		for (int rcp = 0; rcp < 2; rcp++) {
+			int got = (int)lx_depth_code_fp16_projected(z, (float)w, rcp);
+			worst = abs(got - direct) > worst ? abs(got - direct) : worst;
+		}
+	}
+	print_message("fp16 projected depth: the code within %d of the direct one (11-bit codes)\n", worst);
+	assert_true(worst <= 2);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -129,6 +160,7 @@ int main(void)
 		cmocka_unit_test(far_plane_encodes_as_far_never_zero),
 		cmocka_unit_test(encoding_is_monotonic),
 		cmocka_unit_test(mediump_path_keeps_11_bits_in_fp16),
+		cmocka_unit_test(fp16_mirror_rounds_as_hardware_does),
 	};
 	return cmocka_run_group_tests_name("depth_rgba", tests, NULL, NULL);
 }

@@ -27,7 +27,18 @@ enum gpiod_line_bias {
 };
 enum gpiod_edge_event_type { GPIOD_EDGE_EVENT_RISING_EDGE = 1, GPIOD_EDGE_EVENT_FALLING_EDGE };
 
+struct gpiod_chip_info;
+struct gpiod_line_info;
+
 struct gpiod_chip *gpiod_chip_open(const char *path);
+struct gpiod_chip_info *gpiod_chip_get_info(struct gpiod_chip *chip);
+void gpiod_chip_info_free(struct gpiod_chip_info *info);
+const char *gpiod_chip_info_get_name(struct gpiod_chip_info *info);
+const char *gpiod_chip_info_get_label(struct gpiod_chip_info *info);
+size_t gpiod_chip_info_get_num_lines(struct gpiod_chip_info *info);
+struct gpiod_line_info *gpiod_chip_get_line_info(struct gpiod_chip *chip, unsigned int offset);
+void gpiod_line_info_free(struct gpiod_line_info *info);
+const char *gpiod_line_info_get_name(struct gpiod_line_info *info);
 void gpiod_chip_close(struct gpiod_chip *chip);
 struct gpiod_line_settings *gpiod_line_settings_new(void);
 void gpiod_line_settings_free(struct gpiod_line_settings *settings);
