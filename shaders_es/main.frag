@@ -71,22 +71,26 @@ void main()
 #if LX_USE_0
 	q = v_shadow0.xyz / v_shadow0.w;
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
-	p = mix(p, q, s), found += s;
+	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+	found += s;
 #endif
 #if LX_USE_1
 	q = v_shadow1.xyz / v_shadow1.w;
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
-	p = mix(p, q, s), found += s;
+	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+	found += s;
 #endif
 #if LX_USE_2
 	q = v_shadow2.xyz / v_shadow2.w;
 	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
-	p = mix(p, q, s), found += s;
+	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+	found += s;
 #endif
 #if LX_USE_3
 	q = v_shadow3.xyz / v_shadow3.w;
 	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
-	p = mix(p, q, s), found += s;
+	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+	found += s;
 #endif
 #if LX_USE_0 || LX_USE_1 || LX_USE_2 || LX_USE_3
 	float stored = lx_decode_code(texture2D(u_atlas, p.xy));

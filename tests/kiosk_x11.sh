@@ -92,7 +92,7 @@ grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did 
 
 # 4. a board whose GPIO chip is missing (no GPIO here): one warning, and it runs on
 "$lixel" kiosk --platform x11 --board raspberry-pi-4 --gpio-chip lixel-no-chip --size 320x240 --frames 10 >"$tmp/out" 2>&1; st=$?
-[ "$st" -eq 0 ] && grep -q '^lixel kiosk: warning: gpio: cannot open chip lixel-no-chip' "$tmp/out" &&
+[ "$st" -eq 0 ] && grep -q '^lixel kiosk: warning: gpio: no chip named lixel-no-chip' "$tmp/out" &&
   grep -q 'board raspberry-pi-4$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
 
 # 5. bad input: exit 2, one line
