@@ -7,7 +7,10 @@
 #include "platform.h"
 #include "plot.h"
 #include "png_out.h"
+#include "out_file.h"
 #include "reference.h"
+#include <sys/stat.h>
+#include <unistd.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -398,13 +401,9 @@ static void print_json(const struct bench *b)
 	lx_json_end(&j);
 }
 
-static bool write_csv(const struct bench *b, char *err, size_t errlen)
+static bool csv_rows(FILE *f, void *ctx)
 {
-	FILE *f = fopen(b->csv, "w");
-	if (!f) {
-		snprintf(err, errlen, "%s: cannot write: %s", b->csv, strerror(errno));
-		return false;
-	}
+	const struct bench *b = ctx;
 	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
 		   "lookup_pct,mismatch_pct,false_shadow_pct,"
 		   "missing_shadow_pct,mismatch_worst");
@@ -425,7 +424,12 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 					fprintf(f, ",%.4f,%.4f,%.0f", r->m_max[p], r->lpp[p], r->used[p]);
 			fprintf(f, "\n");
 		}
-	return fclose(f) == 0;
+	return !ferror(f);
+}
+
+static bool write_csv(const struct bench *b, char *err, size_t errlen)
+{
+	return lx_out_write(b->csv, csv_rows, (void *)b, err, errlen);
 }
 
 static bool write_plot(const struct bench *b, char *err, size_t errlen)
@@ -541,14 +545,17 @@ int lx_bench_main(int argc, char **argv)
 	if (scene_arg && !lx_arg_scene(scene_arg, &b.scene))
 		return 2;
 	if (b.strips) {
-		FILE *probe;
-		char path[4096];
-		snprintf(path, sizeof path, "%s/.lixel-probe", b.strips);
-		if (!(probe = fopen(path, "w")))
-			return bad("--strips", "a writable directory", b.strips);
-		fclose(probe);
-		remove(path);
+		struct stat st;
+		if (!*b.strips || stat(b.strips, &st) != 0 || !S_ISDIR(st.st_mode) || access(b.strips, W_OK | X_OK) != 0)
+			return bad("--strips", "a writable folder", b.strips);
 	}
+	/* every output checked before any work: a bad path is found now, not after the run */
+	const char *outputs[2] = {b.csv, b.plot};
+	for (int k = 0; k < 2; k++)
+		if (outputs[k] && !lx_out_check(outputs[k], err, sizeof err)) {
+			fprintf(stderr, "lixel bench: %s\n", err);
+			return 2;
+		}
 
 	struct lx_scene_meshes meshes = {0};
 	if (!lx_meshes_build(&b.scene, &meshes)) {

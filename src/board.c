@@ -157,6 +157,8 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 					return fail(err, errlen, file, line, "expected at most %d methods", LX_BOARD_MAX_METHODS);
 				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", t);
 			}
+			if (b->method_count == 0) /* "methods ," would leave the kiosk nothing to draw */
+				return fail(err, errlen, file, line, "expected at least one method from %s", lx_shadow_method_names());
 		} else
 			return fail(err, errlen, file, line,
 				    "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, debounce-ms, "

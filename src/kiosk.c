@@ -62,7 +62,7 @@ static void usage(FILE *f)
 		   "                    start-up self-test choosing, highp or mediump; --mediump is\n"
 		   "                    --depth-precision mediump)\n"
 		   "\n"
-		   "On SIGINT or SIGTERM it puts back the display mode it found and exits 0.\n"
+		   "On SIGINT, SIGTERM or SIGHUP it puts back the display mode it found and exits 0.\n"
 		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
 		lx_board_names());
 }
@@ -211,6 +211,7 @@ int lx_kiosk_main(int argc, char **argv)
 	fflush(stdout);
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
+	signal(SIGHUP, on_signal); /* a closed terminal or session: the same clean stop */
 	int current = 0;
 	struct lx_overlay *ov = lx_overlay_create(err, sizeof err);
 	if (!ov)

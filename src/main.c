@@ -6,6 +6,7 @@
 #include "configs.h"
 #include "platform.h"
 #include "json.h"
+#include "out_file.h"
 #include "render_job.h"
 #include <errno.h>
 #include <libgen.h>
@@ -124,20 +125,11 @@ static bool parse_size(const char *s, int *w, int *h)
  * bad path fails as bad input with nothing written. */
 static bool writable_path(const char *opt, const char *path)
 {
-	char buf[4096];
-	if (!path)
+	char err[4300];
+	if (!path || lx_out_check(path, err, sizeof err))
 		return true;
-	if (!*path || strlen(path) >= sizeof buf) {
-		fprintf(stderr, "lixel render: %s: expected a file name, got '%s'\n", opt, path);
-		return false;
-	}
-	strcpy(buf, path);
-	const char *dir = dirname(buf);
-	if (access(dir, W_OK | X_OK) != 0) {
-		fprintf(stderr, "lixel render: %s: cannot write into directory '%s': %s\n", opt, dir, strerror(errno));
-		return false;
-	}
-	return true;
+	fprintf(stderr, "lixel render: %s: %s\n", opt, err);
+	return false;
 }
 
 static void print_text(const struct lx_render_report *r, const char *out)

@@ -1,4 +1,5 @@
 #include "png_out.h"
+#include "out_file.h"
 #include <errno.h>
 #include <png.h>
 #include <stdio.h>
@@ -26,33 +27,19 @@ static bool write_file(FILE *f, const uint8_t *rgba, int width, int height)
 	return true;
 }
 
+struct image {
+	const uint8_t *rgba;
+	int width, height;
+};
+
+static bool write_image(FILE *f, void *ctx)
+{
+	const struct image *im = ctx;
+	return write_file(f, im->rgba, im->width, im->height);
+}
+
 bool lx_png_write(const char *path, const uint8_t *rgba, int width, int height, char *err, size_t errlen)
 {
-	size_t n = strlen(path) + 16;
-	char *tmp = malloc(n);
-	if (!tmp) {
-		snprintf(err, errlen, "%s: out of memory", path);
-		return false;
-	}
-	snprintf(tmp, n, "%s.tmp%05d", path, (int)(rand() % 100000));
-	FILE *f = fopen(tmp, "wb");
-	if (!f) {
-		snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
-		free(tmp);
-		return false;
-	}
-	bool ok = write_file(f, rgba, width, height);
-	ok = (fclose(f) == 0) && ok;
-	if (ok && rename(tmp, path) != 0) {
-		snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
-		remove(tmp);
-		free(tmp);
-		return false;
-	}
-	if (!ok) {
-		snprintf(err, errlen, "%s: writing the PNG failed", path);
-		remove(tmp);
-	}
-	free(tmp);
-	return ok;
+	struct image im = {rgba, width, height};
+	return lx_out_write(path, write_image, &im, err, errlen);
 }

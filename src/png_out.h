@@ -5,8 +5,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Writes rows given bottom to top (as GL reads them) as a top-down PNG. The file is
- * written under a temporary name and renamed, so a failure leaves nothing behind. */
+/* Writes rows given bottom to top (as GL reads them) as a top-down PNG, as out_file.h
+ * writes files: a fresh temporary beside it, renamed into place, nothing left behind on
+ * a failure, never over anything but a regular file. */
 bool lx_png_write(const char *path, const uint8_t *rgba, int width, int height, char *err, size_t errlen);
 
 #endif

@@ -171,6 +171,25 @@ LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x6
   grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "bench --mediump: $(cat "$tmp/d.json")"
 expect_bad "depth precision" render --depth-precision fp16 $out
 expect_bad "bench depth precision" bench --depth-precision low
+# output files: never over a device or through a symbolic link, checked before any work,
+# concurrent writers each renaming a whole file into place, nothing left behind
+if [ -c /dev/null ]; then
+  "$lixel" render --size 64x48 --frames 1 --out /dev/null >"$tmp/stdout" 2>"$tmp/stderr"; st=$?
+  [ "$st" -eq 2 ] && [ -c /dev/null ] && grep -q 'not a regular file' "$tmp/stderr" && ok || no "--out /dev/null: status $st: $(cat "$tmp/stderr")"
+fi
+echo keep >"$tmp/victim"
+ln -s "$tmp/victim" "$tmp/link.png"
+"$lixel" render --size 64x48 --frames 1 --out "$tmp/link.png" >"$tmp/stdout" 2>"$tmp/stderr"; st=$?
+[ "$st" -eq 2 ] && [ "$(cat "$tmp/victim")" = keep ] && [ -L "$tmp/link.png" ] && ok || no "--out through a symlink: status $st: $(cat "$tmp/stderr")"
+for i in 1 2 3 4 5 6; do "$lixel" render --size 96x64 --frames 1 --out "$tmp/same.png" >/dev/null 2>&1 & done
+wait
+[ "$(head -c 4 "$tmp/same.png" | od -An -c | tr -d ' ')" = '211PNG' ] && [ -z "$(ls -A "$tmp" | grep '^\.same')" ] && ok ||
+  no "six writers of one --out: $(ls -la "$tmp")"
+"$lixel" bench --size 48x32 --frames 1 --csv "$tmp/no/such/rows.csv" >"$tmp/stdout" 2>"$tmp/stderr"; st=$?
+[ "$st" -eq 2 ] && ! grep -q 'configuration' "$tmp/stderr" && [ "$(wc -l <"$tmp/stderr")" -eq 1 ] && ok ||
+  no "bench --csv into a missing folder: status $st: $(cat "$tmp/stderr")"
+expect_bad "bench --strips ''" bench --strips ''
+expect_bad "bench --plot onto a folder" bench --plot "$tmp"
 expect_bad "lookup region" render --lookup-region some $out
 expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot

@@ -86,6 +86,17 @@ wait "$pid"; st=$?
 [ "$st" -eq 0 ] && ok || no "kiosk exit status $st after q: $(cat "$tmp/out")"
 grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did not: $(cat "$tmp/out")"
 
+# 2b. SIGHUP (a closed session) stops it as SIGTERM does: status 0
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+pid=$!
+for i in $(seq 1 100); do grep -q 'frames in\|^lixel kiosk: GL_VENDOR' "$tmp/out" 2>/dev/null && break; sleep 0.1; done
+sleep 0.3
+kill -HUP "$pid" 2>/dev/null
+for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+if kill -0 "$pid" 2>/dev/null; then kill -9 "$pid"; no "kiosk did not stop on SIGHUP"; fi
+wait "$pid"; st=$?
+[ "$st" -eq 0 ] && ok || no "kiosk exit status $st after SIGHUP: $(cat "$tmp/out")"
+
 # 3. --frames 120 stops by itself with status 0, with the overlay on from the start
 "$lixel" kiosk --platform x11 --size 320x240 --frames 120 --overlay >"$tmp/out" 2>&1; st=$?
 [ "$st" -eq 0 ] && grep -q '^120 frames in ' "$tmp/out" && ok || no "--frames 120: status $st: $(cat "$tmp/out")"
@@ -96,7 +107,8 @@ grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did 
   grep -q 'board raspberry-pi-4$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
 
 # 5. bad input: exit 2, one line
-for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--size big" "--shadows"; do
+for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--methods ," \
+    "--size big" "--shadows" "--depth-precision fp16"; do
   # shellcheck disable=SC2086
   "$lixel" kiosk --platform x11 $args >"$tmp/out" 2>"$tmp/err"; st=$?
   [ "$st" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && ok || no "kiosk $args: status $st: $(cat "$tmp/err")"
