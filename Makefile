@@ -119,3 +119,4 @@ uninstall:
 
 clean:
 	rm -rf build build-asan out
+-include tools/cross.mk
