@@ -61,9 +61,9 @@ float lx_fp16_div(float a, float b) { return lx_fp16(lx_fp16(a) / lx_fp16(b)); }
 
 float lx_fp16_rcp_mul(float a, float b) { return lx_fp16(lx_fp16(a) * lx_fp16(1.0f / lx_fp16(b))); }
 
-uint32_t lx_depth_code_fp16_projected(float z, float w, bool rcp)
+/* The 11-bit code of an fp16 depth, as the mediump shader path clamps and scales it. */
+static uint32_t code11(float d)
 {
-	float d = rcp ? lx_fp16_rcp_mul(z, w) : lx_fp16_div(z, w);
 	if (!(d >= 0.0f))
 		return isnan(d) ? 2047u : 0u;
 	if (d >= 1.0f)
@@ -72,16 +72,12 @@ uint32_t lx_depth_code_fp16_projected(float z, float w, bool rcp)
 	return q > 2047.0f ? 2047u : (uint32_t)q;
 }
 
-uint32_t lx_depth_code_fp16(double d)
+uint32_t lx_depth_code_fp16_projected(float z, float w, bool rcp)
 {
-	float f = lx_fp16((float)d);
-	if (!(f >= 0.0f))
-		return isnan(f) ? 2047u : 0u;
-	if (f >= 1.0f)
-		return 2047u;
-	float q = floorf(lx_fp16(f * 2047.0f));
-	return q > 2047.0f ? 2047u : (uint32_t)q;
+	return code11(rcp ? lx_fp16_rcp_mul(z, w) : lx_fp16_div(z, w));
 }
+
+uint32_t lx_depth_code_fp16(double d) { return code11(lx_fp16((float)d)); }
 
 void lx_depth_encode_rgba8_fp16(double d, enum lx_unorm_conversion conv, uint8_t out[4])
 {

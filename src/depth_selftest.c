@@ -17,13 +17,7 @@ struct target {
 
 static bool make_target(struct target *t, int w, int h)
 {
-	lx_gl.GenTextures(1, &t->tex);
-	lx_gl.BindTexture(GL_TEXTURE_2D, t->tex);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	t->tex = lx_texture_rgba8(w, h);
 	lx_gl.GenFramebuffers(1, &t->fbo);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
 	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->tex, 0);

@@ -36,6 +36,19 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
 	return sh;
 }
 
+GLuint lx_texture_rgba8(int w, int h)
+{
+	GLuint tex;
+	lx_gl.GenTextures(1, &tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, tex);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	return tex;
+}
+
 GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen)
 {
 	const char *vs_text = lx_embedded_text(lx_shader_files, vert), *fs_text = lx_embedded_text(lx_shader_files, frag);

@@ -238,14 +238,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 		}
 	}
 
-	/* The atlas: RGBA8, NEAREST (depths must not be blended), CLAMP_TO_EDGE (NPOT in ES 2.0). */
-	lx_gl.GenTextures(1, &r->atlas_tex);
-	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->atlas->width, d->atlas->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	/* The atlas: RGBA8 (depth textures may be missing in ES 2.0) */
+	r->atlas_tex = lx_texture_rgba8(d->atlas->width, d->atlas->height);
 	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, d->atlas->width, d->atlas->height,
 			 caps->depth24, err, errlen, "atlas")) {
 		lx_renderer_destroy(r);
@@ -260,14 +254,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 
 	if (!d->to_window) {
 		/* RGBA8 renderbuffers are an extension in ES 2.0 (OES_rgb8_rgba8); an RGBA texture is core. */
-		GLuint tex;
-		lx_gl.GenTextures(1, &tex);
-		lx_gl.BindTexture(GL_TEXTURE_2D, tex);
-		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-		lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-		lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, d->width, d->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+		GLuint tex = lx_texture_rgba8(d->width, d->height);
 		r->target_color = tex;
 		if (!framebuffer(&r->target_fbo, tex, 0, &r->target_depth, d->width, d->height, caps->depth24, err, errlen,
 				 "main target")) {
