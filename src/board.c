@@ -62,7 +62,28 @@ bool lx_parse_mode(const char *s, int *w, int *h, int *hz)
 	return whole(buf, 1, 16384, w) && whole(x + 1, 1, 16384, h);
 }
 
+static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen);
+
+bool lx_board_check(const struct lx_board *b, const char *file, int line, char *err, size_t errlen)
+{
+	if (b->gpio_chip[0] && b->gpio_line < 0 && !b->gpio_line_name[0])
+		return fail(err, errlen, file, line, "expected a gpio-line or gpio-line-name for gpio-chip %s", b->gpio_chip);
+	return true;
+}
+
+bool lx_board_apply(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen)
+{
+	int last = 0;
+	return parse_lines(text, file, b, &last, err, errlen);
+}
+
 bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen)
+{
+	int last = 0;
+	return parse_lines(text, file, b, &last, err, errlen) && lx_board_check(b, file, last + 1, err, errlen);
+}
+
+static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)
 {
 	int line = 0;
 	while (*text) {
@@ -166,8 +187,7 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 				    "or methods, got '%s'",
 				    key);
 	}
-	if (b->gpio_chip[0] && b->gpio_line < 0 && !b->gpio_line_name[0])
-		return fail(err, errlen, file, line + 1, "expected a gpio-line or gpio-line-name for gpio-chip %s", b->gpio_chip);
+	*last = line;
 	return true;
 }
 

@@ -33,6 +33,10 @@ struct lx_board {
 void lx_board_defaults(struct lx_board *b);
 /* Parses a profile over the defaults; on error false with "FILE:LINE: what was expected". */
 bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen);
+/* The same line by line without the check that the lines agree (a gpio-chip needs a
+ * line): for overrides given one at a time, checked together with lx_board_check. */
+bool lx_board_apply(const char *text, const char *file, struct lx_board *b, char *err, size_t errlen);
+bool lx_board_check(const struct lx_board *b, const char *file, int line, char *err, size_t errlen);
 /* A built-in profile by name (board/NAME.profile), else a file. */
 bool lx_board_load(const char *name_or_path, struct lx_board *b, char *err, size_t errlen);
 /* The built-in profiles' names, separated by ", ". */

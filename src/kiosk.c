@@ -139,16 +139,26 @@ int lx_kiosk_main(int argc, char **argv)
 				return bad(a, "WxH or WxH@HZ", v);
 		}
 		else if (strcmp(a, "--board")) {
-			/* a button override: parsed as a one-line profile */
+			/* a button override: parsed as a one-line profile, so a line break in the
+			 * value would smuggle in another line */
+			if (strpbrk(v, "\n\r"))
+				return bad(a, "a value without line breaks", "(a value with a line break)");
 			char line[256];
 			snprintf(line, sizeof line, "%s %s\n", a + 2, v);
-			if (!lx_board_parse(line, a, &board, err, sizeof err)) {
+			if (!lx_board_apply(line, a, &board, err, sizeof err)) {
 				fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
 				return 2;
 			}
 		}
 	}
+	/* the overrides together: a --gpio-chip may come before its --gpio-line */
+	if (!lx_board_check(&board, "--gpio-chip", 0, err, sizeof err)) {
+		fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
+		return 2;
+	}
 	if (methods_arg) {
+		if (strpbrk(methods_arg, "\n\r"))
+			return bad("--methods", "a value without line breaks", "(a value with a line break)");
 		char line[256];
 		snprintf(line, sizeof line, "methods %s\n", methods_arg);
 		if (!lx_board_parse(line, "--methods", &board, err, sizeof err)) {

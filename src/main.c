@@ -329,8 +329,10 @@ static int cmd_render(int argc, char **argv)
 				return bad(a, "three numbers X,Y,Z, not all zero", v);
 			have_dir = true;
 		} else if (!strcmp(a, "--time")) {
-			if (!parse_double(v, &job.time))
-				return bad(a, "seconds (a number)", v);
+			/* beyond a million seconds the animation's phase has no precision left (and
+			 * near 1e308 it overflows to NaN casters) */
+			if (!parse_double(v, &job.time) || !(fabs(job.time) <= 1e6))
+				return bad(a, "seconds, a number from -1000000 to 1000000", v);
 		} else if (!strcmp(a, "--platform")) {
 			if (strcmp(v, "osmesa") && strcmp(v, "egl"))
 				return bad(a, lx_platform_names(), v);

@@ -190,6 +190,7 @@ wait
   no "bench --csv into a missing folder: status $st: $(cat "$tmp/stderr")"
 expect_bad "bench --strips ''" bench --strips ''
 expect_bad "bench --plot onto a folder" bench --plot "$tmp"
+expect_bad "time beyond a million seconds" render --time 1e308 $out
 expect_bad "lookup region" render --lookup-region some $out
 expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot

@@ -106,6 +106,16 @@ wait "$pid"; st=$?
 [ "$st" -eq 0 ] && grep -q '^lixel kiosk: warning: gpio: no chip named lixel-no-chip' "$tmp/out" &&
   grep -q 'board raspberry-pi-4$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
 
+# 4b. --gpio-chip before --gpio-line on a board without a button: accepted, the chip
+# missing here is one warning and it runs on
+"$lixel" kiosk --platform x11 --gpio-chip lixel-no-chip --gpio-line 3 --size 320x240 --frames 5 >"$tmp/out" 2>&1; st=$?
+[ "$st" -eq 0 ] && grep -q 'warning: gpio: no chip named lixel-no-chip' "$tmp/out" && ok || no "--gpio-chip then --gpio-line: status $st: $(cat "$tmp/out")"
+# a line break in an override would smuggle in a profile line: refused
+nl='
+'
+"$lixel" kiosk --platform x11 --gpio-line "5${nl}methods none" --frames 1 >"$tmp/out" 2>"$tmp/err"; st=$?
+[ "$st" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q 'without line breaks' "$tmp/err" && ok || no "override with a line break: status $st: $(cat "$tmp/err")"
+
 # 5. bad input: exit 2, one line
 for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--methods ," \
     "--size big" "--shadows" "--depth-precision fp16"; do
