@@ -20,7 +20,9 @@ trap cleanup EXIT
 display=
 for n in 91 92 93 94 95 96 97 98 99; do
   [ -e "/tmp/.X$n-lock" ] && continue
-  Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+  # -noreset: by default the server resets when its last client (the probe below) leaves,
+  # and a client connecting during that reset is refused
+  Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
   xvfb_pid=$!
   for i in $(seq 1 100); do
     kill -0 "$xvfb_pid" 2>/dev/null || break # it could not take the display
