@@ -8,19 +8,16 @@ typedef struct {
 	double d; /* inside: dot(n, p) + d >= 0 */
 } plane_t;
 
-/* Sutherland-Hodgman: keep the part of a convex polygon on the inside of a plane. */
-static int clip_polygon(const vec3 *in, int n, plane_t pl, vec3 *out)
+int lx_clip_polygon(const vec3 *in, int n, vec4 p, vec3 *out, int max_out)
 {
 	int m = 0;
 	for (int i = 0; i < n; i++) {
 		vec3 a = in[i], b = in[(i + 1) % n];
-		double da = v3_dot(pl.n, a) + pl.d, db = v3_dot(pl.n, b) + pl.d;
-		if (da >= 0 && m < POLY_MAX)
+		double da = p.x * a.x + p.y * a.y + p.z * a.z + p.w, db = p.x * b.x + p.y * b.y + p.z * b.z + p.w;
+		if (da >= 0 && m < max_out)
 			out[m++] = a;
-		if ((da >= 0) != (db >= 0) && m < POLY_MAX) {
-			double t = da / (da - db); /* signs differ, so da - db != 0 */
-			out[m++] = v3_add(a, v3_scale(v3_sub(b, a), t));
-		}
+		if ((da >= 0) != (db >= 0) && m < max_out) /* signs differ: da - db != 0 */
+			out[m++] = v3_add(a, v3_scale(v3_sub(b, a), da / (da - db)));
 	}
 	return m;
 }
@@ -33,7 +30,7 @@ static int clip_faces(const vec3 faces[6][4], const plane_t *planes, int np, vec
 		for (int i = 0; i < 4; i++)
 			a[i] = faces[f][i];
 		for (int p = 0; p < np && n > 0; p++) {
-			n = clip_polygon(a, n, planes[p], b);
+			n = lx_clip_polygon(a, n, (vec4){planes[p].n.x, planes[p].n.y, planes[p].n.z, planes[p].d}, b, POLY_MAX);
 			for (int i = 0; i < n; i++)
 				a[i] = b[i];
 		}

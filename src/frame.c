@@ -64,3 +64,13 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	}
 	return true;
 }
+
+void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
+{
+	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
+	for (int i = 0; i < 8; i++) {
+		vec4 p = m4_mul_v4(&v->inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
+		/* w > 0 for the corners of a valid perspective frustum */
+		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w);
+	}
+}

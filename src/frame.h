@@ -26,6 +26,10 @@ struct lx_frame {
 /* Sets up the frame; false with a reason when the camera is degenerate. The near and
  * far planes are fitted to the scene bounds (far reaches the farthest corner; near is
  * the distance to the bounds, at least far / 1000). */
+/* The view frustum's corners in world space: the near face (0-3), then the far face
+ * (4-7), in the same winding, as lx_frustum_box_points takes them. */
+void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8]);
+
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
 		    int width, int height, char *err, size_t errlen);
 

@@ -11,12 +11,7 @@
 int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts)
 {
 	vec3 fc[8];
-	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
-	for (int i = 0; i < 8; i++) {
-		vec4 p = m4_mul_v4(&f->view.inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
-		/* w > 0 for the corners of a valid perspective frustum */
-		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w);
-	}
+	lx_view_frustum_corners(&f->view, fc);
 	return lx_frustum_box_points(fc, f->scene_min, f->scene_max, pts, LX_CONVEX_MAX_POINTS);
 }
 

@@ -4,8 +4,8 @@
 #include "plane_optimal.h"
 #include <math.h>
 
-#define VOLUME_PLANES 11 /* a caster's ten, and the eye's near plane */
-#define FACE_MAX 16     /* a quad clipped by VOLUME_PLANES planes: at most 4 + 11 vertices */
+#define VOLUME_PLANES LX_LOOKUP_VOLUME_PLANES
+#define FACE_MAX 16 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 11 vertices */
 
 bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 {
@@ -114,8 +114,8 @@ static bool sphere_range(vec4 nn, vec4 dd, vec3 c, double r, double *lo, double 
  * the margin and cut to the rays the map serves, swept beyond the caster's nearest depth.
  * Returns the count, or -1 when it shadows nothing there. */
 #define OCTAGON 4
-static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_map *map,
-			 int id, double margin, vec4 *pl)
+static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *map, int id, const double margin[2],
+			 vec4 *pl)
 {
 	vec3 lo = f->bmin[id], hi = f->bmax[id];
 	if (!lx_shadow_map_draws(map, f, id))
@@ -172,9 +172,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas,
 			if (sphere_range(dir[d], r3, centre, r, &l, &h))
 				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
 	}
-	/* grown by the margin and cut to the rays the map serves; regions are >= 1 lixel */
-	const struct lx_region *g = &atlas->regions[map->region];
-	double ex = margin * 2.0 / (g->w > 1 ? g->w : 1), ey = margin * 2.0 / (g->h > 1 ? g->h : 1);
+	/* grown by the margin and cut to the rays the map serves */
+	double ex = margin[0], ey = margin[1];
 	double grow[OCTAGON] = {ex, ey, ex + ey, ex + ey};
 	b0[0] = fmax(b0[0], map->bounds[0]), b1[0] = fmin(b1[0], map->bounds[2]);
 	b0[1] = fmax(b0[1], map->bounds[1]), b1[1] = fmin(b1[1], map->bounds[3]);
@@ -192,21 +191,6 @@ static int caster_volume(const struct lx_frame *f, const struct lx_atlas *atlas,
 	if ((isfinite(z0) && !add_plane(pl, &n, lin(1, r2, -(z0 - 0.01), r3))) || !add_plane(pl, &n, r3))
 		return -1;
 	return n;
-}
-
-/* Sutherland-Hodgman: the part of a convex polygon inside a half-space. */
-static int clip(const vec3 *in, int n, vec4 p, vec3 *out)
-{
-	int m = 0;
-	for (int i = 0; i < n; i++) {
-		vec3 a = in[i], b = in[(i + 1) % n];
-		double da = p.x * a.x + p.y * a.y + p.z * a.z + p.w, db = p.x * b.x + p.y * b.y + p.z * b.z + p.w;
-		if (da >= 0 && m < FACE_MAX)
-			out[m++] = a;
-		if ((da >= 0) != (db >= 0) && m < FACE_MAX) /* signs differ: da - db != 0 */
-			out[m++] = v3_add(a, v3_scale(v3_sub(b, a), da / (da - db)));
-	}
-	return m;
 }
 
 /* Window points of a volume, for its hull. */
@@ -254,7 +238,7 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 		for (int i = 0; i < 4; i++)
 			a[i] = face[k][i];
 		for (int j = 0; j < np && n > 0; j++) {
-			n = clip(a, n, pl[j], b);
+			n = lx_clip_polygon(a, n, pl[j], b, FACE_MAX);
 			for (int i = 0; i < n; i++)
 				a[i] = b[i];
 		}
@@ -275,29 +259,48 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 	}
 }
 
-/* Per caster and map of `mask`, the window hull of where it can shadow the receiver;
- * returns their count, or -1 when one has no bound (the receiver reaches the eye's plane
- * inside it). */
-#define MAX_HULLS (LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS))
-static int shadow_hulls(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			int receiver, unsigned mask, double margin, struct lx_poly *hull)
+void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		       double margin_lixels, struct lx_lookup_volumes *v)
 {
-	int n = 0;
+	v->frame = f, v->res = res;
+	lx_view_frustum_corners(&f->view, v->frustum);
 	vec4 near = lin(1, row(&f->view.view_proj, 2), 1, row(&f->view.view_proj, 3)); /* z + w >= 0 */
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
-		if (!(mask & 1u << m) || !map->rendered)
+		const struct lx_region *g = &atlas->regions[map->region]; /* regions are >= 1 lixel */
+		v->margin[m][0] = margin_lixels * 2.0 / (g->w > 1 ? g->w : 1);
+		v->margin[m][1] = margin_lixels * 2.0 / (g->h > 1 ? g->h : 1);
+		for (int c = 0; c < f->object_count; c++) {
+			int *np = &v->count[m][c];
+			*np = map->rendered ? caster_volume(f, map, c, v->margin[m], v->plane[m][c]) : -1;
+			if (*np >= 0 && !add_plane(v->plane[m][c], np, near))
+				*np = -1;
+		}
+	}
+}
+
+/* Per caster and map of `mask`, the window hull of where it can shadow the receiver
+ * (with first, only whether there is one); returns their count, or -1 when one has no
+ * bound (the receiver reaches the eye's plane inside it). */
+#define MAX_HULLS (LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS))
+static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigned mask, bool first,
+			struct lx_poly *hull)
+{
+	const struct lx_frame *f = v->frame;
+	int n = 0;
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
+		if (!(mask & 1u << m))
 			continue;
 		for (int c = 0; c < f->object_count && n < MAX_HULLS; c++) {
-			vec4 pl[VOLUME_PLANES];
-			int np = caster_volume(f, atlas, map, c, margin, pl);
-			if (np < 0 || !add_plane(pl, &np, near))
+			if (v->count[m][c] < 0)
 				continue;
 			struct window_points w;
 			w.n = 0, w.everything = false;
-			receiver_in_volume(f, receiver, pl, np, &w);
+			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], &w);
 			if (w.everything)
 				return -1;
+			if (w.n > 0 && first)
+				return 1;
 			if (w.n > 0)
 				lx_poly_hull(w.p, w.n, &hull[n++]);
 		}
@@ -326,40 +329,23 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 	return *x0 <= *x1;
 }
 
-bool lx_lookup_any(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		   int receiver, unsigned mask, double margin_lixels)
+bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
-	vec4 near = lin(1, row(&f->view.view_proj, 2), 1, row(&f->view.view_proj, 3)); /* z + w >= 0 */
-	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
-		const struct lx_shadow_map *map = &res->maps[m];
-		if (!(mask & 1u << m) || !map->rendered)
-			continue;
-		vec4 pl[VOLUME_PLANES];
-		/* a caster lies in its own volume (whose image holds its image, beyond its
-		 * nearest depth) wherever the map draws it: the common case, found first */
-		if (receiver >= f->scene->plane_count && caster_volume(f, atlas, map, receiver, margin_lixels, pl) >= 0)
+	/* a caster lies in its own volume (whose image holds its image, beyond its nearest
+	 * depth) wherever a map draws it: the common case, found first */
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
+		if ((mask & 1u << m) && receiver >= v->frame->scene->plane_count && v->count[m][receiver] >= 0)
 			return true;
-		for (int c = 0; c < f->object_count; c++) {
-			int np = caster_volume(f, atlas, map, c, margin_lixels, pl);
-			if (np < 0 || !add_plane(pl, &np, near))
-				continue;
-			struct window_points w;
-			w.n = 0, w.everything = false;
-			receiver_in_volume(f, receiver, pl, np, &w);
-			if (w.everything || w.n > 0)
-				return true;
-		}
-	}
-	return false;
+	return shadow_hulls(v, receiver, mask, true, NULL) != 0;
 }
 
-int lx_lookup_spans(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_span *out, int max)
+int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,
+		    struct lx_span *out, int max)
 {
 	if (max < 1)
 		return -1;
 	struct lx_poly hull[MAX_HULLS];
-	int nh = shadow_hulls(f, atlas, res, receiver, mask, margin_lixels, hull), n = 0;
+	int nh = shadow_hulls(v, receiver, mask, false, hull), n = 0;
 	if (nh < 0) {
 		out[0] = (struct lx_span){within, true};
 		return 1;
@@ -434,7 +420,7 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	vec4 pl[5] = {lin(1, r0, -x0, r3), lin(x1, r3, -1, r0), lin(1, r1, -y0, r3), lin(y1, r3, -1, r1),
 		      lin(1, r2, 2, r3)}; /* z >= -2 w: between the eye and the near plane (z = -w) */
 	for (int j = 0; j < 5 && n > 0; j++) {
-		n = clip(a, n, pl[j], b);
+		n = lx_clip_polygon(a, n, pl[j], b, FACE_MAX);
 		for (int i = 0; i < n; i++)
 			a[i] = b[i];
 	}
@@ -443,27 +429,21 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	return n < LX_WINDOW_POLY_MAX ? n : LX_WINDOW_POLY_MAX;
 }
 
-unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			int receiver, unsigned mask, double margin_lixels)
+unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
 	/* the receiver's part in view: its box clipped to the view frustum */
-	vec3 fc[8], pts[LX_CONVEX_MAX_POINTS];
-	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
-	for (int i = 0; i < 8; i++) {
-		vec4 p = m4_mul_v4(&f->view.inv_view_proj, (vec4){cx[i % 4], cy[i % 4], i < 4 ? -1 : 1, 1});
-		fc[i] = v3(p.x / p.w, p.y / p.w, p.z / p.w); /* w > 0 for a valid perspective frustum */
-	}
-	int np = lx_frustum_box_points(fc, f->bmin[receiver], f->bmax[receiver], pts, LX_CONVEX_MAX_POINTS);
+	const struct lx_frame *f = v->frame;
+	vec3 pts[LX_CONVEX_MAX_POINTS];
+	int np = lx_frustum_box_points(v->frustum, f->bmin[receiver], f->bmax[receiver], pts, LX_CONVEX_MAX_POINTS);
 	if (np == 0)
 		return 0; /* not in view */
 	unsigned out = 0;
-	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
-		const struct lx_shadow_map *map = &res->maps[m];
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
+		const struct lx_shadow_map *map = &v->res->maps[m];
 		if (!(mask & 1u << m))
 			continue;
-		/* inside by a margin the shader's rounding cannot cross (regions >= 1 lixel) */
-		const struct lx_region *g = &atlas->regions[map->region];
-		double tx = margin_lixels * 2.0 / (g->w > 1 ? g->w : 1), ty = margin_lixels * 2.0 / (g->h > 1 ? g->h : 1);
+		/* inside by a margin the shader's rounding cannot cross */
+		double tx = v->margin[m][0], ty = v->margin[m][1];
 		int behind = 0, all_in = 0, out_side[4] = {0, 0, 0, 0};
 		for (int k = 0; k < np; k++) {
 			vec4 c = m4_mul_point(&map->light_clip, pts[k]);

@@ -42,23 +42,40 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
  * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
+#define LX_LOOKUP_VOLUME_PLANES 11 /* a caster's ten, and the eye's near plane */
+
+/* One frame's casters seen through each map, built once (lx_lookup_prepare) and asked
+ * for each receiver: per map and caster the half-spaces where it can shadow a point
+ * (count -1: nowhere), each map's margin in its clip units, the view's frustum. */
+struct lx_lookup_volumes {
+	const struct lx_frame *frame;
+	const struct lx_shadow_result *res;
+	int count[LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	vec4 plane[LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS][LX_LOOKUP_VOLUME_PLANES];
+	double margin[LX_MAX_MAPS][2];
+	vec3 frustum[8];
+};
+
+/* The volumes of a frame's rendered maps, each caster's image grown by margin_lixels
+ * (LX_LOOKUP_MARGIN_*). frame and res must outlive v's use. */
+void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		       double margin_lixels, struct lx_lookup_volumes *v);
+
 /* `within` cut into spans: with a lookup where one of the maps in `mask` could shadow a
- * pixel of receiver object `receiver` (each caster's image grown by margin_lixels,
- * LX_LOOKUP_MARGIN_*), without elsewhere. Per band of LX_LOOKUP_BAND rows, the x-ranges of
- * the casters' regions; bands cut alike are one. Returns the count (at most max; short of
- * room, the rest of `within` is one span with a lookup), or -1 when max < 1. */
-int lx_lookup_spans(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		    int receiver, unsigned mask, struct lx_rect within, double margin_lixels, struct lx_span *out, int max);
+ * pixel of receiver object `receiver`, without elsewhere. Per band of LX_LOOKUP_BAND rows,
+ * the x-ranges of the casters' regions; bands cut alike are one. Returns the count (at
+ * most max; short of room, the rest of `within` is one span with a lookup), or -1 when
+ * max < 1. */
+int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,
+		    struct lx_span *out, int max);
 /* Whether one of the maps in `mask` can shadow some point of receiver object `receiver`. */
-bool lx_lookup_any(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		   int receiver, unsigned mask, double margin_lixels);
+bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
  * the shader reads the first map, in order, that serves a point, so a map that serves no
  * point of the receiver's part in view is dropped, and so are the maps after one that
- * serves all of it, by margin_lixels (the shader's rounding). */
-unsigned lx_lookup_maps(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			int receiver, unsigned mask, double margin_lixels);
+ * serves all of it, by the margin (the shader's rounding). */
+unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
 /* The most vertices lx_plane_in_window returns */
 #define LX_WINDOW_POLY_MAX 12

@@ -50,6 +50,7 @@ struct lx_renderer {
 	GLuint facing_ibo; /* a frame's main-pass draws */
 	struct span spans[PLANE_SPANS];    /* a plane's spans */
 	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
+	struct lx_lookup_volumes lookup;   /* this frame's casters seen through each map */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
 	float *piece_v;
 	int piece_vertices, piece_room;
@@ -483,8 +484,8 @@ static double lookup_margin(const struct lx_renderer *r)
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
  * rectangle), then each part with maps cut where they can shadow it (lookup_region.h). */
-static int plane_spans(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-		       int id, unsigned mask, struct span *out, int room)
+static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res, int id, unsigned mask,
+		       struct span *out, int room)
 {
 	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_MAX_MAPS];
 	unsigned bit[LX_MAX_MAPS];
@@ -513,8 +514,8 @@ static int plane_spans(struct lx_renderer *r, const struct lx_frame *f, const st
 	for (int i = 0; i < nf; i++) {
 		/* the room left keeps a place for each later span */
 		struct lx_span *part = r->parts;
-		int np = first[i].mask ? lx_lookup_spans(f, r->d.atlas, res, id, first[i].mask, first[i].box,
-							 lookup_margin(r), part, room - n - (nf - i - 1))
+		int np = first[i].mask ? lx_lookup_spans(&r->lookup, id, first[i].mask, first[i].box, part,
+							 room - n - (nf - i - 1))
 				       : -1;
 		if (np < 0) {
 			out[n++] = first[i];
@@ -593,8 +594,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	unsigned mask = lx_shadow_receiver_maps(res, id);
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
-			mask = lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
-		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(f, r->d.atlas, res, id, mask, lookup_margin(r)))
+			mask = lx_lookup_maps(&r->lookup, id, mask);
+		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(&r->lookup, id, mask))
 			mask = 0; /* no shadow can fall on it */
 		int first = r->facing_count, facing = mask ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
@@ -610,7 +611,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 						 r->facing_count - first - facing};
 		return n;
 	}
-	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(f, r->d.atlas, res, id, mask, lookup_margin(r));
+	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
 	/* a plane turned away from the light is all in its own shadow: the face test */
 	const struct lx_plane *pl = &r->d.scene->planes[id];
 	vec3 nrm = v3_cross(pl->edge1, pl->edge2), to_light = f->light.directional
@@ -619,7 +620,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (v3_dot(nrm, to_light) < -1e-4 * v3_len(nrm) * v3_len(to_light))
 		need = 0;
 	struct span *span = r->spans;
-	int ns = plane_spans(r, f, res, id, need, span, PLANE_SPANS);
+	int ns = plane_spans(r, res, id, need, span, PLANE_SPANS);
 	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
 	 * only), each reading every map of the plane */
 	if (r->d.lookup_everywhere)
@@ -703,6 +704,7 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	struct draw *items = r->draws;
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
+	lx_lookup_prepare(f, r->d.atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
 	for (int k = 0; k < r->objects; k++)
 		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, items, n);
 	if (r->piece_vertices > 0) {

@@ -74,12 +74,14 @@ static void check_scene(struct setup *s, const char *what, long *checked, long *
 	uint8_t *hit = malloc((size_t)W * H);
 	assert_non_null(hit);
 	struct lx_rect screen = {0, 0, W, H};
-	struct lx_span span[4096];
+	static struct lx_span span[4096];
+	static struct lx_lookup_volumes v;
+	lx_lookup_prepare(&s->frame, &s->atlas, &s->res, LX_LOOKUP_MARGIN_HIGHP, &v);
 	for (int id = 0; id < s->scene.plane_count; id++) {
 		unsigned mask = lx_shadow_receiver_maps(&s->res, id);
 		if (!mask)
 			continue;
-		int n = lx_lookup_spans(&s->frame, &s->atlas, &s->res, id, mask, screen, LX_LOOKUP_MARGIN_HIGHP, span, 4096);
+		int n = lx_lookup_spans(&v, id, mask, screen, span, 4096);
 		assert_true(n >= 1);
 		*looked_total += check_partition(span, n, screen, hit);
 		vec4 pe = lx_plane_equation(&s->scene.planes[id]);
@@ -223,9 +225,11 @@ static void casters_keep_the_maps_they_read(void **state)
 		lx_scene_builtin("table", &s.scene);
 		lx_config_apply(&lx_configs[c], &s.scene);
 		assert_true(build(&s, "plane", W, H, 0.4));
+		static struct lx_lookup_volumes v;
+		lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP, &v);
 		for (int id = s.scene.plane_count; id < s.frame.object_count; id++) {
 			unsigned full = lx_shadow_receiver_maps(&s.res, id);
-			unsigned kept = lx_lookup_maps(&s.frame, &s.atlas, &s.res, id, full, LX_LOOKUP_MARGIN_HIGHP);
+			unsigned kept = lx_lookup_maps(&v, id, full);
 			assert_int_equal(kept & ~full, 0);
 			fewer += kept != full;
 			for (int k = 0; k < 400; k++) {
