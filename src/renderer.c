@@ -342,13 +342,8 @@ static void clear_region(struct lx_renderer *r, const struct lx_region *g)
 		lx_gl.Scissor(x, y, w, h);
 		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 		lx_gl.Disable(GL_SCISSOR_TEST);
-	} else {
+	} else { /* the far quad: its program and state are set by the caller, once */
 		lx_gl.Viewport(x, y, w, h);
-		lx_gl.UseProgram(r->clear_prog);
-		lx_gl.Disable(GL_CULL_FACE);
-		lx_gl.DepthFunc(GL_ALWAYS);
-		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
-		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
 		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
 	}
 }
@@ -367,31 +362,38 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.ClearColor(1, 1, 1, 1);
-	/* a tiler: the whole atlas "far" in one clear, then every map in the same pass */
-	bool whole = r->d.caps->tiler || r->d.clear_whole_atlas;
-	if (whole) {
+	/* Every region and its guard ring "far" first (a per-frame layout moves the guards over
+	 * what earlier frames drew): on a tiler the whole atlas in one clear, else region by
+	 * region, all with one program and one state; regions never overlap, so the casters
+	 * can then be drawn map after map with another. */
+	if (r->d.caps->tiler || r->d.clear_whole_atlas) {
 		lx_gl.Viewport(0, 0, r->d.atlas->width, r->d.atlas->height);
 		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	} else {
+		lx_gl.UseProgram(r->clear_prog);
+		lx_gl.Disable(GL_CULL_FACE);
+		lx_gl.DepthFunc(GL_ALWAYS);
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+		for (int m = 0; m < res->map_count; m++) {
+			const struct lx_region *g = &r->d.atlas->regions[res->maps[m].region];
+			if (res->maps[m].rendered && g->w >= 1 && g->h >= 1)
+				clear_region(r, g);
+		}
 	}
+	/* Then the casters each map can see, inside its region. Back faces only (second-depth
+	 * shadow maps): lit front faces never compare against themselves, so there is no acne;
+	 * the meshes are closed or are planes. */
+	lx_gl.UseProgram(r->shadow_prog);
+	lx_gl.Enable(GL_CULL_FACE);
+	lx_gl.CullFace(GL_FRONT);
+	lx_gl.DepthFunc(GL_LESS);
 	for (int m = 0; m < res->map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
-		if (!map->rendered)
-			continue;
 		const struct lx_region *g = &r->d.atlas->regions[map->region];
-		if (g->w < 1 || g->h < 1)
+		if (!map->rendered || g->w < 1 || g->h < 1)
 			continue;
-		/* the region and its guard ring start "far" (a per-frame layout moves the guards
-		 * over what earlier frames drew) */
-		if (!whole)
-			clear_region(r, g);
-		/* then the casters it can see, inside the region. Back faces only (second-depth
-		 * shadow maps): lit front faces never compare against themselves, so there is no
-		 * acne; the meshes are closed or are planes. */
 		lx_gl.Viewport(g->x, g->y, g->w, g->h);
-		lx_gl.UseProgram(r->shadow_prog);
-		lx_gl.Enable(GL_CULL_FACE);
-		lx_gl.CullFace(GL_FRONT);
-		lx_gl.DepthFunc(GL_LESS);
 		for (int id = 0; id < r->objects; id++) {
 			if (!lx_shadow_map_draws(map, f, id))
 				continue; /* no fill and no vertices for what the map cannot see */
