@@ -29,7 +29,7 @@ LIBS_GPIOD = $(shell $(PKG_CONFIG) --libs libgpiod 2>/dev/null)
 # Pure geometry: never includes a GL header, so the unit tests link it alone.
 CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
 	src/shadow_method.c src/lookup_region.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
-	src/configs.c src/json.c src/button.c src/gpio_lookup.c src/out_file.c src/embedded.c src/shader_text.c src/board.c src/kms_select.c src/font5x7.c src/cli_args.c
+	src/configs.c src/json.c src/button.c src/gpio_lookup.c src/out_file.c src/embedded.c src/shader_text.c src/board.c src/kms_select.c src/font5x7.c src/cli_args.c src/number.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/depth_selftest.c src/platform.c src/platform_osmesa.c \
 	src/platform_egl.c src/platform_x11.c src/platform_kms.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c src/overlay.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
@@ -38,7 +38,7 @@ BOARDS = $(sort $(wildcard board/*.profile))
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
 
-TESTS = test_gpio test_kms_select test_linalg test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render
+TESTS = test_gpio test_kms_select test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan

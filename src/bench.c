@@ -94,16 +94,22 @@ static int bad(const char *opt, const char *expected, const char *got)
 	return lx_arg_bad("bench", opt, expected, got);
 }
 
-/* Splits a comma list in place into out[]; false on an empty item or too many. */
+/* Splits a comma list in place into out[]; false on an empty item (",,", a comma at
+ * either end) or too many. */
 static bool split(char *list, const char **out, int max, int *n)
 {
 	*n = 0;
-	for (char *t = strtok(list, ","); t; t = strtok(NULL, ",")) {
+	for (char *t = list;;) {
+		char *comma = strchr(t, ',');
+		if (comma)
+			*comma = 0;
 		if (*n == max || !*t)
 			return false;
 		out[(*n)++] = t;
+		if (!comma)
+			return true;
+		t = comma + 1;
 	}
-	return *n > 0;
 }
 
 static bool is_animation(const char *c) { return !strcmp(c, "animation"); }
@@ -480,7 +486,6 @@ int lx_bench_main(int argc, char **argv)
 		int st = lx_arg_value("bench", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
-		char *end;
 		int hz;
 		if ((st = lx_arg_depth_precision("bench", a, v, &b.depth_precision)) >= 0) {
 			if (st)
@@ -492,11 +497,10 @@ int lx_bench_main(int argc, char **argv)
 			if (!lx_parse_mode(v, &b.width, &b.height, &hz) || hz)
 				return bad(a, "WxH with W and H from 1 to 16384", v);
 		} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
-			long k = strtol(v, &end, 10);
 			bool frames = !strcmp(a, "--frames");
-			if (end == v || *end || k < (frames ? 1 : 0) || k > 10000)
-				return bad(a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000", v);
-			*(frames ? &b.frames : &b.warmup) = (int)k;
+			enum lx_number_error e = lx_number_int(v, frames ? 1 : 0, 10000, frames ? &b.frames : &b.warmup);
+			if (e)
+				return lx_arg_bad_number("bench", a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000", v, e);
 		} else if (!strcmp(a, "--methods")) {
 			if (strlen(v) >= sizeof methods_buf)
 				return bad(a, "a shorter list", v);

@@ -1,5 +1,6 @@
 #include "board.h"
 #include "embedded.h"
+#include "number.h"
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -32,15 +33,9 @@ static bool fail(char *err, size_t errlen, const char *file, int line, const cha
 	return false;
 }
 
-static bool whole(const char *s, long lo, long hi, int *out)
+static bool whole(const char *s, int lo, int hi, int *out)
 {
-	char *end;
-	errno = 0;
-	long v = strtol(s, &end, 10);
-	if (end == s || *end || errno || v < lo || v > hi)
-		return false;
-	*out = (int)v;
-	return true;
+	return lx_number_int(s, lo, hi, out) == LX_NUMBER_OK;
 }
 
 bool lx_parse_mode(const char *s, int *w, int *h, int *hz)
@@ -85,6 +80,7 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 
 static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)
 {
+	enum lx_number_error e;
 	int line = 0;
 	while (*text) {
 		line++;
@@ -122,8 +118,9 @@ static bool parse_lines(const char *text, const char *file, struct lx_board *b, 
 					    sizeof b->gpio_chip - 1);
 			strcpy(b->gpio_chip, strcmp(value, "none") ? value : "");
 		} else if (!strcmp(key, "gpio-line")) {
-			if (!whole(value, 0, 1023, &b->gpio_line))
-				return fail(err, errlen, file, line, "expected a line offset from 0 to 1023, got '%s'", value);
+			if ((e = lx_number_int(value, 0, 1023, &b->gpio_line)))
+				return fail(err, errlen, file, line, "expected a line offset from 0 to 1023, got '%s' (%s)", value,
+					    lx_number_why(e));
 			b->gpio_line_name[0] = 0; /* the last of gpio-line and gpio-line-name counts */
 		} else if (!strcmp(key, "gpio-line-name")) {
 			if (vl >= sizeof b->gpio_line_name || !vl)
@@ -145,11 +142,13 @@ static bool parse_lines(const char *text, const char *file, struct lx_board *b, 
 					    value);
 			b->bias = (enum lx_bias)k;
 		} else if (!strcmp(key, "debounce-ms")) {
-			if (!whole(value, 0, 1000, &b->debounce_ms))
-				return fail(err, errlen, file, line, "expected debounce-ms from 0 to 1000, got '%s'", value);
+			if ((e = lx_number_int(value, 0, 1000, &b->debounce_ms)))
+				return fail(err, errlen, file, line, "expected debounce-ms from 0 to 1000, got '%s' (%s)", value,
+					    lx_number_why(e));
 		} else if (!strcmp(key, "long-press-ms")) {
-			if (!whole(value, 100, 10000, &b->long_press_ms))
-				return fail(err, errlen, file, line, "expected long-press-ms from 100 to 10000, got '%s'", value);
+			if ((e = lx_number_int(value, 100, 10000, &b->long_press_ms)))
+				return fail(err, errlen, file, line, "expected long-press-ms from 100 to 10000, got '%s' (%s)", value,
+					    lx_number_why(e));
 		} else if (!strcmp(key, "display")) {
 			if (vl >= sizeof b->display)
 				return fail(err, errlen, file, line, "expected a device path of at most %zu characters",
@@ -163,20 +162,26 @@ static bool parse_lines(const char *text, const char *file, struct lx_board *b, 
 		} else if (!strcmp(key, "plane-lixels") || !strcmp(key, "fallback-lixels") || !strcmp(key, "uniform-lixels")) {
 			int *field = key[0] == 'p' ? &b->lixels.plane_lixels : key[0] == 'f' ? &b->lixels.fallback_lixels
 											     : &b->lixels.uniform_lixels;
-			if (!whole(value, 1, 8192, field))
-				return fail(err, errlen, file, line, "expected %s from 1 to 8192, got '%s'", key, value);
+			if ((e = lx_number_int(value, 1, 8192, field)))
+				return fail(err, errlen, file, line, "expected %s from 1 to 8192, got '%s' (%s)", key, value,
+					    lx_number_why(e));
 		} else if (!strcmp(key, "depth-precision")) {
 			if (!lx_depth_precision_parse(value, &b->depth_precision))
 				return fail(err, errlen, file, line, "expected depth-precision auto, highp or mediump, got '%s'", value);
 		} else if (!strcmp(key, "methods")) {
 			b->method_count = 0;
-			for (char *t = strtok(value, ", "); t; t = strtok(NULL, ", ")) {
-				if (!lx_shadow_method_find(t))
+			const char *rest = value;
+			char t[64];
+			for (int r; (r = lx_list_next(&rest, ',', t, sizeof t)) != 0;) {
+				if (r < 0)
+					return fail(err, errlen, file, line, "expected method names separated by single commas, got '%s'", value);
+				const struct lx_shadow_method *m = lx_shadow_method_find(t);
+				if (!m)
 					return fail(err, errlen, file, line, "expected methods from %s, got '%s'", lx_shadow_method_names(),
 						    t);
 				if (b->method_count == LX_BOARD_MAX_METHODS)
 					return fail(err, errlen, file, line, "expected at most %d methods", LX_BOARD_MAX_METHODS);
-				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", t);
+				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", m->name);
 			}
 			if (b->method_count == 0) /* "methods ," would leave the kiosk nothing to draw */
 				return fail(err, errlen, file, line, "expected at least one method from %s", lx_shadow_method_names());

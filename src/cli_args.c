@@ -4,10 +4,43 @@
 #include <stdio.h>
 #include <string.h>
 
+/* got as one line: control characters (a line break smuggled into a value) shown escaped */
+static void print_value(const char *got)
+{
+	for (const unsigned char *p = (const unsigned char *)got; *p; p++)
+		if (*p < 0x20 || *p == 0x7f)
+			fprintf(stderr, "\\x%02x", *p);
+		else
+			fputc(*p, stderr);
+}
+
+int lx_arg_bad_number(const char *cmd, const char *opt, const char *expected, const char *got, enum lx_number_error e)
+{
+	fprintf(stderr, "lixel %s: %s: expected %s, got '", cmd, opt, expected);
+	print_value(got ? got : "");
+	if (e != LX_NUMBER_OK && e != LX_NUMBER_OUT_OF_RANGE)
+		fprintf(stderr, "' (%s)\n", lx_number_why(e));
+	else
+		fprintf(stderr, "'\n");
+	return 2;
+}
+
 int lx_arg_bad(const char *cmd, const char *opt, const char *expected, const char *got)
 {
-	fprintf(stderr, "lixel %s: %s: expected %s, got '%s'\n", cmd, opt, expected, got ? got : "nothing");
-	return 2;
+	if (!got) {
+		fprintf(stderr, "lixel %s: %s: expected %s, got nothing\n", cmd, opt, expected);
+		return 2;
+	}
+	return lx_arg_bad_number(cmd, opt, expected, got, LX_NUMBER_OK);
+}
+
+enum lx_number_error lx_arg_triple(const char *s, vec3 *out)
+{
+	double v[3];
+	enum lx_number_error e = lx_number_reals(s, 3, -LX_SCENE_NUMBER_MAX, LX_SCENE_NUMBER_MAX, v, NULL);
+	if (e == LX_NUMBER_OK)
+		*out = (vec3){v[0], v[1], v[2]};
+	return e;
 }
 
 int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *const *names, size_t n,
@@ -64,12 +97,10 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 			return lx_arg_bad(cmd, opt, "footprint or all", value);
 		o->lookup_everywhere = value[0] == 'a';
 	} else if (!strcmp(opt, "--plane-max-lpp")) {
-		char *end;
-		double x = strtod(value, &end);
-		if (!strcmp(value, "none"))
-			x = -1; /* no cap at all */
-		else if (end == value || *end || !(x > 0 && x <= 1e4))
-			return lx_arg_bad(cmd, opt, "lixels per pixel, a number in (0, 10000], or none", value);
+		double x = -1; /* none: no cap at all */
+		enum lx_number_error e;
+		if (strcmp(value, "none") && ((e = lx_number_real(value, 0, 1e4, &x)) || x == 0))
+			return lx_arg_bad_number(cmd, opt, "lixels per pixel, a number in (0, 10000], or none", value, e);
 		o->plane_max_lpp = x;
 	} else
 		return -1;

@@ -2,12 +2,18 @@
  * line for bad input (exit status 2), options that take a value, the scene argument. */
 #ifndef LX_CLI_ARGS_H
 #define LX_CLI_ARGS_H
+#include "number.h"
 #include "scene.h"
 #include <stdbool.h>
 #include <stddef.h>
 
 /* "lixel CMD: OPT: expected EXPECTED, got 'GOT'" on stderr; returns 2. */
 int lx_arg_bad(const char *cmd, const char *opt, const char *expected, const char *got);
+/* The same line for a number that did not parse, with the reason ("too large to hold")
+ * unless it is only out of the range that expected states. */
+int lx_arg_bad_number(const char *cmd, const char *opt, const char *expected, const char *got, enum lx_number_error e);
+/* X,Y,Z: three numbers within +-LX_SCENE_NUMBER_MAX separated by single commas. */
+enum lx_number_error lx_arg_triple(const char *s, vec3 *out);
 /* argv[*i] must be one of the n option names that take a value: on success *value is the
  * next argument, *i steps over it, and 0 is returned; else one line and 2. */
 int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *const *names, size_t n,

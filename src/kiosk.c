@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <limits.h>
 #include <time.h>
 
 static volatile sig_atomic_t stop_requested;
@@ -111,15 +112,14 @@ int lx_kiosk_main(int argc, char **argv)
 		int st = lx_arg_value("kiosk", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
-		char *end;
 		if (!strcmp(a, "--platform")) {
 			if (strcmp(v, "x11") && strcmp(v, "kms"))
 				return bad(a, "x11 or kms", v);
 			platform = v;
 		} else if (!strcmp(a, "--frames")) {
-			frames = strtol(v, &end, 10);
-			if (end == v || *end || frames < 1)
-				return bad(a, "a whole number of frames >= 1", v);
+			enum lx_number_error e = lx_number_whole(v, 1, LONG_MAX, &frames);
+			if (e)
+				return lx_arg_bad_number("kiosk", a, "a whole number of frames >= 1", v, e);
 		} else if (!strcmp(a, "--size")) {
 			int hz;
 			if (!lx_parse_mode(v, &width, &height, &hz) || hz)

@@ -86,32 +86,9 @@ static int bad(const char *opt, const char *expected, const char *got)
 	return lx_arg_bad("render", opt, expected, got);
 }
 
-static bool parse_double(const char *s, double *out)
+static int bad_number(const char *opt, const char *expected, const char *got, enum lx_number_error e)
 {
-	char *end;
-	errno = 0;
-	double v = strtod(s, &end);
-	if (end == s || *end || errno == ERANGE || !isfinite(v))
-		return false;
-	*out = v;
-	return true;
-}
-
-static bool parse_triple(const char *s, vec3 *out)
-{
-	char buf[256];
-	if (strlen(s) >= sizeof buf)
-		return false;
-	strcpy(buf, s);
-	char *a = buf, *b = strchr(a, ','), *c;
-	if (!b)
-		return false;
-	*b++ = 0;
-	c = strchr(b, ',');
-	if (!c)
-		return false;
-	*c++ = 0;
-	return parse_double(a, &out->x) && parse_double(b, &out->y) && parse_double(c, &out->z);
+	return lx_arg_bad_number("render", opt, expected, got, e);
 }
 
 /* WxH, each from 1 to 16384 */
@@ -286,7 +263,7 @@ static int cmd_render(int argc, char **argv)
 		int st = lx_arg_value("render", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
 		if (st)
 			return st;
-		double d;
+		enum lx_number_error e;
 		if ((st = lx_arg_depth_precision("render", a, v, &job.depth_precision)) >= 0) {
 			if (st)
 				return st;
@@ -309,30 +286,31 @@ static int cmd_render(int argc, char **argv)
 			if (!parse_size(v, &job.width, &job.height))
 				return bad(a, "WxH with W and H from 1 to 16384", v);
 		} else if (!strcmp(a, "--eye")) {
-			if (!parse_triple(v, &eye))
-				return bad(a, "three numbers X,Y,Z", v);
+			if ((e = lx_arg_triple(v, &eye)))
+				return bad_number(a, "three numbers X,Y,Z from -1e15 to 1e15", v, e);
 			have_eye = true;
 		} else if (!strcmp(a, "--at")) {
-			if (!parse_triple(v, &at))
-				return bad(a, "three numbers X,Y,Z", v);
+			if ((e = lx_arg_triple(v, &at)))
+				return bad_number(a, "three numbers X,Y,Z from -1e15 to 1e15", v, e);
 			have_at = true;
 		} else if (!strcmp(a, "--fov")) {
-			if (!parse_double(v, &fov) || !(fov > 0 && fov < 180))
-				return bad(a, "degrees in (0, 180)", v);
+			if ((e = lx_number_real(v, 0, 180, &fov)) || fov == 0 || fov == 180)
+				return bad_number(a, "degrees in (0, 180)", v, e);
 			have_fov = true;
 		} else if (!strcmp(a, "--light")) {
-			if (!parse_triple(v, &light))
-				return bad(a, "three numbers X,Y,Z", v);
+			if ((e = lx_arg_triple(v, &light)))
+				return bad_number(a, "three numbers X,Y,Z from -1e15 to 1e15", v, e);
 			have_light = true;
 		} else if (!strcmp(a, "--light-dir")) {
-			if (!parse_triple(v, &dir) || !v3_normalize(dir, &dir))
-				return bad(a, "three numbers X,Y,Z, not all zero", v);
+			if ((e = lx_arg_triple(v, &dir)) ||
+			    !v3_normalize(dir, &dir))
+				return bad_number(a, "three numbers X,Y,Z from -1e15 to 1e15, not all zero", v, e);
 			have_dir = true;
 		} else if (!strcmp(a, "--time")) {
 			/* beyond a million seconds the animation's phase has no precision left (and
 			 * near 1e308 it overflows to NaN casters) */
-			if (!parse_double(v, &job.time) || !(fabs(job.time) <= 1e6))
-				return bad(a, "seconds, a number from -1000000 to 1000000", v);
+			if ((e = lx_number_real(v, -1e6, 1e6, &job.time)))
+				return bad_number(a, "seconds, a number from -1000000 to 1000000", v, e);
 		} else if (!strcmp(a, "--platform")) {
 			if (strcmp(v, "osmesa") && strcmp(v, "egl"))
 				return bad(a, lx_platform_names(), v);
@@ -348,18 +326,16 @@ static int cmd_render(int argc, char **argv)
 		else if (!strcmp(a, "--atlas-out"))
 			job.atlas_png = v;
 		else if (!strcmp(a, "--frames")) {
-			if (!parse_double(v, &d) || d < 1 || d > 100000 || d != floor(d))
-				return bad(a, "a whole number of frames from 1 to 100000", v);
-			job.timed_frames = (int)d;
+			if ((e = lx_number_int(v, 1, 100000, &job.timed_frames)))
+				return bad_number(a, "a whole number of frames from 1 to 100000", v, e);
 		} else if (!strcmp(a, "--uniform-lixels") || !strcmp(a, "--plane-lixels") || !strcmp(a, "--fallback-lixels")) {
-			if (!parse_double(v, &d) || d < 1 || d > 8192 || d != floor(d))
-				return bad(a, "a whole number of lixels from 1 to 8192", v);
 			int *field = a[2] == 'u' ? &job.budgets.uniform_lixels : a[2] == 'p' ? &job.budgets.plane_lixels
 											     : &job.budgets.fallback_lixels;
-			*field = (int)d;
+			if ((e = lx_number_int(v, 1, 8192, field)))
+				return bad_number(a, "a whole number of lixels from 1 to 8192", v, e);
 		} else if (!strcmp(a, "--bias")) {
-			if (!parse_double(v, &job.bias_codes) || job.bias_codes < 0 || job.bias_codes > 16777215)
-				return bad(a, "depth codes from 0 to 16777215", v);
+			if ((e = lx_number_real(v, 0, 16777215, &job.bias_codes)))
+				return bad_number(a, "depth codes from 0 to 16777215", v, e);
 		}
 	}
 	struct lx_method_options defaults = LX_METHOD_OPTIONS_DEFAULT;

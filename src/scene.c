@@ -1,4 +1,5 @@
 #include "scene.h"
+#include "number.h"
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -117,18 +118,20 @@ static bool fail(struct parser *p, const char *fmt, ...)
 
 static const char *peek(struct parser *p) { return p->pos < p->ntok ? p->tok[p->pos] : NULL; }
 
+/* Every number of a scene is within +-LX_SCENE_NUMBER_MAX: beyond it squares and products
+ * of coordinates would leave double's exact range long before they overflow. */
 static bool number(struct parser *p, const char *what, double *out)
 {
 	const char *t = peek(p);
 	if (!t)
 		return fail(p, "expected a number for %s, got end of line", what);
-	char *end;
-	errno = 0;
-	double v = strtod(t, &end);
-	if (end == t || *end || errno == ERANGE || !isfinite(v))
-		return fail(p, "expected a number for %s, got '%s'", what, t);
+	enum lx_number_error e = lx_number_real(t, -LX_SCENE_NUMBER_MAX, LX_SCENE_NUMBER_MAX, out);
+	if (e == LX_NUMBER_OUT_OF_RANGE)
+		return fail(p, "expected a number for %s from -%g to %g, got '%s'", what, LX_SCENE_NUMBER_MAX,
+			    LX_SCENE_NUMBER_MAX, t);
+	if (e)
+		return fail(p, "expected a number for %s, got '%s' (%s)", what, t, lx_number_why(e));
 	p->pos++;
-	*out = v;
 	return true;
 }
 
@@ -216,8 +219,13 @@ static bool parse_plane(struct parser *p, struct lx_scene *s)
 		return fail(p, "expected at most %d planes", LX_MAX_PLANES);
 	struct lx_plane pl = {.color = v3(0.8, 0.8, 0.8)};
 	const char *name = peek(p);
-	if (!name || !isalpha((unsigned char)name[0]) || strlen(name) >= LX_NAME_MAX)
-		return fail(p, "expected a plane name (a word of 1 to %d characters) after 'plane'", LX_NAME_MAX - 1);
+	/* names go into JSON keys, CSV columns and the atlas's region names: ASCII words only */
+	size_t word = name ? strspn(name, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-") : 0;
+	if (!name || !isalpha((unsigned char)name[0]) || name[word] || word >= LX_NAME_MAX)
+		return fail(p, "expected a plane name after 'plane' (1 to %d of A-Z a-z 0-9 _ -, a letter first)",
+			    LX_NAME_MAX - 1);
+	if (!strcmp(name, "fallback")) /* the fallback map's own name */
+		return fail(p, "expected a plane name other than 'fallback' (the fallback map's name)");
 	p->pos++;
 	for (int i = 0; i < s->plane_count; i++)
 		if (!strcmp(s->planes[i].name, name))

@@ -10,6 +10,9 @@
 #define LX_MAX_PLANES 8
 #define LX_MAX_CASTERS 32
 #define LX_NAME_MAX 16
+/* No coordinate, size or time of a scene beyond this (options included): products of two
+ * stay far inside double's range. */
+#define LX_SCENE_NUMBER_MAX 1e15
 
 /* A plane of interest: the parallelogram corner + s*edge1 + t*edge2, s, t in [0, 1].
  * Its lit side faces along normalize(edge1 x edge2). */

@@ -1,4 +1,5 @@
 #include "shadow_method.h"
+#include "number.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -42,7 +43,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		rest = strchr(rest, '/');
 		if (rest)
 			*rest++ = 0;
-		char *end;
+		double lpp;
 		if (!strcmp(opt, "all") || !strcmp(opt, "footprint"))
 			o->lookup_everywhere = opt[0] == 'a';
 		else if (strcmp(m->name, "plane")) {
@@ -58,9 +59,9 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 			o->plane_max_lpp = -1;
 		else if (!strcmp(opt, "onepiece"))
 			o->plane_one_piece = true;
-		else if (!strncmp(opt, "lpp", 3) && opt[3] && (o->plane_max_lpp = strtod(opt + 3, &end), !*end) &&
-			 o->plane_max_lpp > 0 && o->plane_max_lpp <= 1e4) {
-		} else {
+		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
+			o->plane_max_lpp = lpp;
+		else {
 			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, lppX (0 < X <= 10000), all or footprint",
 				 spec, opt);
 			return NULL;

@@ -108,6 +108,38 @@ expect_bad "method option" render --method plane/round $out
 expect_bad "bench method option" bench --methods uniform,plane/lpp-1 --frames 1
 expect_bad "zero budget" render --plane-lixels 0 $out
 expect_bad "huge budget" render --uniform-lixels 100000 $out
+
+# One strict number parser (src/number.c) behind every option, scene file and profile:
+# decimal only, the whole token, the reason in the one line.
+expect_says() {
+  said=$1; shift
+  expect_bad "$@"
+  grep -q -- "$said" "$tmp/stderr" || no "$1: stderr does not say '$said':" "$(cat "$tmp/stderr")"
+}
+expect_says "not a decimal number" "leading space" render --fov " 60" $out
+expect_says "not a decimal number" "hex float" render --fov 0x3Cp0 $out
+expect_says "not a decimal number" "inf" render --time inf $out
+expect_says "not a decimal number" "empty list item" render --eye 1,,2 $out
+expect_says "not a decimal number" "trailing comma" render --light 1,2,3, $out
+expect_says "too large to hold" "overflowing number" render --eye 1e400,2,3 $out
+expect_says "too small to hold" "subnormal number" render --fov 1e-320 $out
+expect_says "too large to hold" "frames overflow" render --frames 99999999999999999999999 $out
+expect_says "not a decimal number" "whole frames" render --frames 2.0 $out
+expect_says "from -1e15 to 1e15" "coordinate beyond the scenes' range" render --eye 1e16,0,0 $out
+expect_says "\\x0a" "line break shown escaped" render --fov "$(printf '5\nx')" $out
+expect_bad "bench empty method" bench --methods uniform,,plane --frames 1
+expect_bad "bench trailing comma" bench --methods uniform, --frames 1
+expect_bad "bench empty config" bench --configs default, --frames 1
+expect_says "too large to hold" "bench frames overflow" bench --frames 99999999999999999999 --methods none
+expect_bad "kiosk frames overflow" kiosk --frames 99999999999999999999999
+expect_bad "kiosk frames hex" kiosk --frames 0x10
+expect_bad "kiosk empty method" kiosk --methods plane,,uniform --frames 1
+printf 'gpio-line 0x5\n' >"$tmp/hex.profile"
+expect_says "hex.profile:1:" "hex in a profile" kiosk --board "$tmp/hex.profile" --frames 1
+printf 'light point 0 0x5 0\n' >"$tmp/hex.scene"
+expect_says "hex.scene:1:" "hex in a scene" render --scene "$tmp/hex.scene" $out
+printf 'light point 0 1e999 0\n' >"$tmp/huge.scene"
+expect_says "too large to hold" "overflow in a scene" render --scene "$tmp/huge.scene" $out
 expect_bad "atlas too big for the GL" render --plane-lixels 8192 $out
 grep -q "exceeds the maximum texture size\|do not fit" "$tmp/stderr" && ok || no "atlas error: $(cat "$tmp/stderr")"
 

@@ -116,6 +116,13 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light point 0 5 0\nsphere radius nan at 0 0\n", 2, "got 'nan'"},
 		{"light point 0 5 0\nsphere radius 1 at 0 0 color 2 0 0\n", 2, "color components in [0, 1]"},
 		{"light point 0 5 0 extra\n", 1, "unexpected 'extra'"},
+		{"light point 0 5 0\nsphere radius 1e999 at 0 0\n", 2, "too large to hold"},
+		{"light point 0 5 0\nsphere radius 1e-320 at 0 0\n", 2, "too small to hold"},
+		{"light point 0 5 0\nsphere radius 0x1p0 at 0 0\n", 2, "not a decimal number"},
+		{"light point 0 2e15 0\n", 1, "from -1e+15 to 1e+15"},
+		{"light point 0 5 0\nplane fallback corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "other than 'fallback'"},
+		{"light point 0 5 0\nplane fl\xffr corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
+		{"light point 0 5 0\nplane fl\"r corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct lx_scene s;
