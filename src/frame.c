@@ -1,7 +1,78 @@
 #include "frame.h"
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+
+static void note(struct lx_frame *f, const char *fmt, ...)
+{
+	if (f->note_count == LX_FRAME_NOTES)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(f->notes[f->note_count++], sizeof f->notes[0], fmt, ap);
+	va_end(ap);
+}
+
+/* The distance from p to the box [lo, hi] (0 inside). */
+static double box_distance(vec3 p, vec3 lo, vec3 hi)
+{
+	double d2 = 0;
+	for (int k = 0; k < 3; k++) {
+		double e = (&p.x)[k], a = (&lo.x)[k], b = (&hi.x)[k];
+		double d = e < a ? a - e : e > b ? e - b : 0;
+		d2 += d * d;
+	}
+	return sqrt(d2); /* d2 >= 0 */
+}
+
+/* Whether the box may be inside the view's infinite frustum: false only when all its
+ * corners lie outside one side plane (or behind the eye). */
+static bool box_in_view(const struct lx_view *v, double aspect, vec3 lo, vec3 hi)
+{
+	double ty = tan(v->fovy / 2), tx = ty * aspect; /* fovy in (0, pi) */
+	int out[5] = {0};
+	for (int k = 0; k < 8; k++) {
+		vec4 q = m4_mul_point(&v->view, v3_box_corner(lo, hi, k));
+		double d = -q.z; /* depth in front of the eye */
+		out[0] += q.x > tx * d, out[1] += q.x < -tx * d;
+		out[2] += q.y > ty * d, out[3] += q.y < -ty * d, out[4] += d <= 0;
+	}
+	for (int p = 0; p < 5; p++)
+		if (out[p] == 8)
+			return false;
+	return true;
+}
+
+/* A point light LX_FAR_LIGHT_RATIO scene diagonals away or more is directional for every
+ * purpose here, and its perspective maps would lose all their depth and position
+ * precision to the distance: it becomes the directional light from there to the scene's
+ * centre. */
+static void far_light(struct lx_frame *f)
+{
+	vec3 c = v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), d;
+	double size = v3_len(v3_sub(f->scene_max, f->scene_min)), dist = box_distance(f->light.position, f->scene_min, f->scene_max);
+	if (f->light.directional || !(dist > LX_FAR_LIGHT_RATIO * size) || !v3_normalize(v3_sub(c, f->light.position), &d))
+		return;
+	f->light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = d};
+	note(f, "light: the point light is %.3g scene sizes away; taken as directional (its rays spread by less than "
+		"1e-6 rad over the scene)", dist / size);
+}
+
+/* A point light inside a caster's bounds: that caster may hide it from everything. */
+static void light_inside_casters(struct lx_frame *f)
+{
+	if (f->light.directional)
+		return;
+	vec3 l = f->light.position;
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		if (box_distance(l, f->bmin[id], f->bmax[id]) == 0) {
+			note(f, "light: the point light is inside the bounds of caster %d (a %s); what it hides is in "
+				"shadow", id - f->scene->plane_count + 1,
+			     lx_shape_name(f->scene->casters[id - f->scene->plane_count].shape));
+			return;
+		}
+}
 
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
 		    int width, int height, char *err, size_t errlen)
@@ -24,6 +95,8 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		f->scene_max = v3(fmax(f->scene_max.x, f->bmax[id].x), fmax(f->scene_max.y, f->bmax[id].y),
 				  fmax(f->scene_max.z, f->bmax[id].z));
 	}
+	far_light(f);
+	light_inside_casters(f);
 	struct lx_view *v = &f->view;
 	v->width = width;
 	v->height = height;
@@ -35,21 +108,30 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		snprintf(err, errlen, "camera: eye equals at, or up is along the view direction");
 		return false;
 	}
-	/* far: the farthest scene corner; near: the distance to the scene box. */
-	double far = 0, near2 = 0;
-	for (int i = 0; i < 8; i++) {
-		vec3 c = v3(i & 1 ? f->scene_max.x : f->scene_min.x, i & 2 ? f->scene_max.y : f->scene_min.y,
-			    i & 4 ? f->scene_max.z : f->scene_min.z);
-		far = fmax(far, v3_len(v3_sub(c, v->eye)));
+	/* far: the farthest scene corner; near: the distance to the scene box, at least
+	 * far / 1000, but never beyond the nearest object (one caster far from the rest
+	 * must not push the near plane past the others), and at least far * 1e-6. */
+	double far = 0, nearest = INFINITY;
+	for (int id = 0; id < f->object_count; id++) {
+		if (!box_in_view(v, (double)width / height, f->bmin[id], f->bmax[id]))
+			continue; /* out of view: no reason to stretch the depth range */
+		nearest = fmin(nearest, box_distance(v->eye, f->bmin[id], f->bmax[id]));
+		for (int i = 0; i < 8; i++)
+			far = fmax(far, v3_len(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], i), v->eye)));
 	}
-	for (int k = 0; k < 3; k++) {
-		double e = (&v->eye.x)[k], lo = (&f->scene_min.x)[k], hi = (&f->scene_max.x)[k];
-		double d = e < lo ? lo - e : e > hi ? e - hi : 0;
-		near2 += d * d;
-	}
-	far = far * 1.01 + 1e-6; /* a scene of a single point still gets a valid range */
+	if (!(far > 0)) /* nothing in view: the whole scene's range */
+		for (int i = 0; i < 8; i++)
+			far = fmax(far, v3_len(v3_sub(v3_box_corner(f->scene_min, f->scene_max, i), v->eye)));
+	double scale = v3_len(v3_sub(f->scene_max, f->scene_min));
+	far = far * 1.01 + 1e-9 * scale + 1e-300; /* a scene of a single point still gets a valid range */
 	v->far = far;
-	v->near = fmax(sqrt(near2) * 0.9, far / 1000);
+	v->near = fmin(fmax(box_distance(v->eye, f->scene_min, f->scene_max) * 0.9, far / 1000), nearest * 0.9);
+	if (!(v->near >= far * LX_NEAR_MIN_RATIO)) {
+		if (nearest < far * LX_NEAR_MIN_RATIO)
+			note(f, "view: an object %.3g m from the eye is nearer than the near plane (%.3g m, a millionth of "
+				"the far plane at %.3g m): it is clipped", nearest, far * LX_NEAR_MIN_RATIO, far);
+		v->near = far * LX_NEAR_MIN_RATIO;
+	}
 	if (!(v->near < v->far * 0.5)) /* the whole scene is a speck far away */
 		v->near = v->far * 0.5;
 	if (!m4_perspective(v->fovy, (double)width / height, v->near, v->far, &v->proj)) {

@@ -11,6 +11,13 @@ struct lx_view {
 	mat4 view, proj, view_proj, inv_view_proj;
 };
 
+#define LX_FRAME_NOTES 4
+/* A point light this many scene diagonals away is taken as directional: its rays then
+ * spread by less than a microradian over the scene. */
+#define LX_FAR_LIGHT_RATIO 1e6
+/* The nearest the near plane comes, as a share of the far plane's distance. */
+#define LX_NEAR_MIN_RATIO 1e-6
+
 struct lx_frame {
 	const struct lx_scene *scene;
 	const struct lx_scene_meshes *meshes;
@@ -21,6 +28,11 @@ struct lx_frame {
 	vec3 offset[LX_MAX_PLANES + LX_MAX_CASTERS]; /* object translation at time t */
 	vec3 bmin[LX_MAX_PLANES + LX_MAX_CASTERS], bmax[LX_MAX_PLANES + LX_MAX_CASTERS]; /* world bounds */
 	vec3 scene_min, scene_max;
+	/* what the set-up changed or found that a user should hear of (a point light so far
+	 * away it is taken as directional, the light inside a caster, ...); every method's
+	 * result repeats them among its warnings */
+	int note_count;
+	char notes[LX_FRAME_NOTES][160];
 };
 
 /* Sets up the frame; false with a reason when the camera is degenerate. The near and

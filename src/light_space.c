@@ -43,6 +43,24 @@ static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *de
 	return true;
 }
 
+/* Whether an object in the box [lo, hi] may lie between the light and a receiver: its
+ * bounding sphere reaches the receivers' cone (point light) or their bounds across the
+ * beam (directional), short of the farthest receiver. Conservative: one caster far from
+ * the rest, off to the side or behind the light, must not widen the map. */
+static bool reaches_receivers(const struct lx_light_space *ls, vec3 lo, vec3 hi, double cone, const double rb[4])
+{
+	vec4 q = m4_mul_point(&ls->view, v3_scale(v3_add(lo, hi), 0.5));
+	double r = 0.5 * v3_len(v3_sub(hi, lo)), depth = -q.z;
+	if (depth - r > ls->zfar)
+		return false; /* beyond every receiver */
+	if (ls->directional)
+		return q.x + r >= rb[0] && q.y + r >= rb[1] && q.x - r <= rb[2] && q.y - r <= rb[3];
+	double dist = sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+	if (!(dist > r))
+		return true; /* the sphere holds the light */
+	return atan2(sqrt(q.x * q.x + q.y * q.y), depth) - asin(r / dist) <= cone; /* r / dist < 1 */
+}
+
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 {
 	*ls = (struct lx_light_space){.directional = f->light.directional, .empty = true};
@@ -81,11 +99,20 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 			ls->receivers_behind = true;
 	}
 	lx_poly_hull(pts, n, &ls->receivers);
+	/* the receivers' cone from a point light (the widest angle off the axis), or their
+	 * bounds across a directional light's beam: what a caster must reach to matter */
+	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY;
+	for (int i = 0; i < nrec; i++) {
+		vec4 q = m4_mul_point(&ls->view, rec[i]);
+		cone = fmax(cone, atan2(sqrt(q.x * q.x + q.y * q.y), -q.z));
+		rx0 = fmin(rx0, q.x), rx1 = fmax(rx1, q.x), ry0 = fmin(ry0, q.y), ry1 = fmax(ry1, q.y);
+	}
 	int ncasters = 0;
 	n = 0;
 	ls->znear = INFINITY;
 	for (int id = 0; id < f->object_count; id++) {
-		if (!lx_object_can_cast(f, id))
+		if (!lx_object_can_cast(f, id) ||
+		    !reaches_receivers(ls, f->bmin[id], f->bmax[id], cone, (double[4]){rx0, ry0, rx1, ry1}))
 			continue;
 		ncasters++;
 		for (int k = 0; k < 8; k++) {

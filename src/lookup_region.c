@@ -74,13 +74,16 @@ static bool plane_culled(const struct lx_shadow_map *map, const struct lx_frame 
 	if (front) {
 		double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
 		double scale = fabs(x[1] - x[0]) + fabs(x[2] - x[0]) + fabs(y[1] - y[0]) + fabs(y[2] - y[0]);
-		return area > 1e-6 * scale * scale; /* counter-clockwise by a clear margin: a front face */
+		/* counter-clockwise by a clear margin: a front face; near zero: edge-on to the
+		 * light, a sliver in the map that can hide only points of its own plane, which
+		 * the light grazes (drawing it would scatter false shadows along its line) */
+		return area > -1e-6 * scale * scale;
 	}
 	vec3 n = v3_cross(p->edge1, p->edge2); /* the quad's front side (mesh.c's winding) */
 	const struct lx_light *l = &f->light;
 	vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, v3_add(q[0], f->offset[id]));
 	double len = v3_len(n) * v3_len(to_light);
-	return v3_dot(n, to_light) > 1e-6 * len; /* the light clearly on the front side */
+	return v3_dot(n, to_light) > -1e-6 * len; /* the light on the front side, or edge-on */
 }
 
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id)

@@ -129,8 +129,11 @@ static void print_text(const struct lx_render_report *r, const char *out)
 		printf("lookups: %.2f%% of the pixels ran a shadow lookup\n", r->lookup_pct);
 	if (r->measured) {
 		const struct lx_mismatch *m = &r->mismatch;
-		printf("mismatch: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels\n",
+		printf("mismatch: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels",
 		       m->mismatch_pct, m->compared, m->false_shadow_pct, m->missing_shadow_pct, m->silhouette);
+		if (m->edge_on)
+			printf("; %ld pixels the light grazes, not compared", m->edge_on);
+		printf("\n");
 		for (int p = 0; p < r->plane_count; p++) {
 			const struct lx_plane_report *pr = &r->planes[p];
 			if (!pr->present)
@@ -198,6 +201,7 @@ static void print_json(const struct lx_render_report *r)
 		lx_json_key(&j, "missing_shadow_pct"), lx_json_number(&j, m->missing_shadow_pct);
 		lx_json_key(&j, "compared_pixels"), lx_json_int(&j, m->compared);
 		lx_json_key(&j, "silhouette_pixels"), lx_json_int(&j, m->silhouette);
+		lx_json_key(&j, "edge_on_pixels"), lx_json_int(&j, m->edge_on);
 		lx_json_key(&j, "planes");
 		lx_json_object(&j);
 		for (int p = 0; p < r->plane_count; p++) {

@@ -152,7 +152,9 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* the lit side faces away from the light: every point of the plane is shadowed by
 	 * the facing rule, so its map would decide nothing */
 	double facing = light->directional ? -v3_dot(n, light->direction) : dot4p(pi, light->position);
-	double near_limit = light->directional ? 1e-3 : 1e-3 * ls->size;
+	/* relative to the plane's own size: one caster far from the rest must not make a
+	 * light a few metres above the floor count as lying in it */
+	double near_limit = light->directional ? 1e-3 : 1e-3 * (v3_len(P->edge1) + v3_len(P->edge2));
 	if (fabs(facing) < near_limit) {
 		lx_shadow_warn(out, light->directional ? "plane %s: the light grazes the plane; its map is skipped and the fallback map serves it"
 						     : "plane %s: the light is within %.3g m of the plane; its map is skipped and the fallback map serves it",

@@ -1,4 +1,5 @@
 #include "metrics.h"
+#include "reference.h"
 #include "plane_optimal.h"
 #include <math.h>
 #include <stdlib.h>
@@ -13,6 +14,10 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 			continue; /* background in both */
 		if (ref_object[i] != object[i]) {
 			out->silhouette++;
+			continue;
+		}
+		if (ref_shadow[i] == LX_REF_EDGE_ON) {
+			out->edge_on++; /* the light grazes it: either decision shades it alike */
 			continue;
 		}
 		out->compared++;

@@ -10,6 +10,7 @@
 struct lx_mismatch {
 	long compared;       /* receiver pixels where both agree on the visible object */
 	long silhouette;     /* pixels where they disagree on the visible object */
+	long edge_on;        /* pixels the light grazes (LX_REF_EDGE_ON): not compared */
 	long false_shadow;   /* renderer shadowed, reference lit */
 	long missing_shadow; /* renderer lit, reference shadowed */
 	double mismatch_pct, false_shadow_pct, missing_shadow_pct; /* of compared; 0 when none compared */

@@ -24,8 +24,14 @@ int lx_raycaster_object(const struct lx_raycaster *rc, int tri);
 /* Whether world point p on triangle tri is in shadow. */
 bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri);
 
+/* The light grazing a surface: |cos| of the incidence at most this, 1/1000, a tenth of one
+ * 8-bit step of the diffuse light. */
+#define LX_EDGE_ON_COS 1e-3
+#define LX_REF_EDGE_ON 2
 /* Per pixel, rows bottom to top as GL reads them: the visible object id (or
- * LX_NO_OBJECT) and 1 where shadowed. Arrays of width*height. Uses `threads` threads. */
+ * LX_NO_OBJECT) and 1 where shadowed, LX_REF_EDGE_ON where the light grazes the surface
+ * (either decision is right there: the metrics do not compare it). Arrays of
+ * width*height. Uses `threads` threads. */
 bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads);
 
 #endif

@@ -162,6 +162,8 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 			    const struct lx_method_options *o, struct lx_shadow_result *out)
 {
 	m->build(f, atlas, o, out);
+	for (int i = 0; i < f->note_count; i++)
+		lx_shadow_warn(out, "%s", f->notes[i]);
 	int w[LX_ATLAS_MAX_REGIONS] = {0}, h[LX_ATLAS_MAX_REGIONS] = {0};
 	for (int i = 0; i < out->map_count; i++) {
 		const struct lx_shadow_map *map = &out->maps[i];
