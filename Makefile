@@ -80,9 +80,9 @@ run: deps
 # Unit tests link only the pure geometry; render tests link the GL side too.
 $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(WARN) $(CFLAGS) $< \
-		$(if $(filter test_render,$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) $(CORE_OBJ) \
+		$(if $(filter test_render test_extremes,$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) $(CORE_OBJ) \
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
-		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
+		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render test_extremes,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
 
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 # The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)

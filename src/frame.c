@@ -44,19 +44,37 @@ static bool box_in_view(const struct lx_view *v, double aspect, vec3 lo, vec3 hi
 	return true;
 }
 
-/* A point light LX_FAR_LIGHT_RATIO scene diagonals away or more is directional for every
- * purpose here, and its perspective maps would lose all their depth and position
- * precision to the distance: it becomes the directional light from there to the scene's
- * centre. */
+/* f->view_min, view_max: the box of the objects in view, the only receivers there are;
+ * the whole scene's when none is. */
+static void view_box(struct lx_frame *f, double aspect)
+{
+	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	for (int id = 0; id < f->object_count; id++)
+		if (box_in_view(&f->view, aspect, f->bmin[id], f->bmax[id])) {
+			lo = v3(fmin(lo.x, f->bmin[id].x), fmin(lo.y, f->bmin[id].y), fmin(lo.z, f->bmin[id].z));
+			hi = v3(fmax(hi.x, f->bmax[id].x), fmax(hi.y, f->bmax[id].y), fmax(hi.z, f->bmax[id].z));
+		}
+	if (!(lo.x <= hi.x))
+		lo = f->scene_min, hi = f->scene_max;
+	f->view_min = lo, f->view_max = hi;
+}
+
+/* A point light LX_FAR_LIGHT_RATIO times farther than the size of what is in view (the
+ * objects whose boxes reach the view) is directional for every purpose here, and its
+ * perspective maps would lose their depth precision to the distance in the shaders' floats:
+ * it becomes the directional light from there to the centre of what is in view. */
 static void far_light(struct lx_frame *f)
 {
-	vec3 c = v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), d;
-	double size = v3_len(v3_sub(f->scene_max, f->scene_min)), dist = box_distance(f->light.position, f->scene_min, f->scene_max);
-	if (f->light.directional || !(dist > LX_FAR_LIGHT_RATIO * size) || !v3_normalize(v3_sub(c, f->light.position), &d))
+	if (f->light.directional)
+		return;
+	vec3 lo = f->view_min, hi = f->view_max, d;
+	vec3 c = v3_scale(v3_add(lo, hi), 0.5);
+	double size = v3_len(v3_sub(hi, lo)), dist = box_distance(f->light.position, lo, hi);
+	if (!(dist > LX_FAR_LIGHT_RATIO * size) || !v3_normalize(v3_sub(c, f->light.position), &d))
 		return;
 	f->light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = d};
-	note(f, "light: the point light is %.3g scene sizes away; taken as directional (its rays spread by less than "
-		"1e-6 rad over the scene)", dist / size);
+	note(f, "light: the point light is %.3g times farther than the view's objects are wide; taken as directional "
+		"(its rays spread by less than 1e-6 rad over them)", dist / size);
 }
 
 /* A point light inside a caster's bounds: that caster may hide it from everything. */
@@ -95,7 +113,6 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		f->scene_max = v3(fmax(f->scene_max.x, f->bmax[id].x), fmax(f->scene_max.y, f->bmax[id].y),
 				  fmax(f->scene_max.z, f->bmax[id].z));
 	}
-	far_light(f);
 	light_inside_casters(f);
 	struct lx_view *v = &f->view;
 	v->width = width;
@@ -108,6 +125,8 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		snprintf(err, errlen, "camera: eye equals at, or up is along the view direction");
 		return false;
 	}
+	view_box(f, (double)width / height);
+	far_light(f);
 	/* far: the farthest scene corner; near: the distance to the scene box, at least
 	 * far / 1000, but never beyond the nearest object (one caster far from the rest
 	 * must not push the near plane past the others), and at least far * 1e-6. */
@@ -125,7 +144,7 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	double scale = v3_len(v3_sub(f->scene_max, f->scene_min));
 	far = far * 1.01 + 1e-9 * scale + 1e-300; /* a scene of a single point still gets a valid range */
 	v->far = far;
-	v->near = fmin(fmax(box_distance(v->eye, f->scene_min, f->scene_max) * 0.9, far / 1000), nearest * 0.9);
+	v->near = fmin(fmax(box_distance(v->eye, f->view_min, f->view_max) * 0.9, far / 1000), nearest * 0.9);
 	if (!(v->near >= far * LX_NEAR_MIN_RATIO)) {
 		if (nearest < far * LX_NEAR_MIN_RATIO)
 			note(f, "view: an object %.3g m from the eye is nearer than the near plane (%.3g m, a millionth of "

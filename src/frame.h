@@ -28,6 +28,7 @@ struct lx_frame {
 	vec3 offset[LX_MAX_PLANES + LX_MAX_CASTERS]; /* object translation at time t */
 	vec3 bmin[LX_MAX_PLANES + LX_MAX_CASTERS], bmax[LX_MAX_PLANES + LX_MAX_CASTERS]; /* world bounds */
 	vec3 scene_min, scene_max;
+	vec3 view_min, view_max; /* the box of the objects whose boxes reach the view (receivers) */
 	/* what the set-up changed or found that a user should hear of (a point light so far
 	 * away it is taken as directional, the light inside a caster, ...); every method's
 	 * result repeats them among its warnings */

@@ -12,7 +12,7 @@ int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts)
 {
 	vec3 fc[8];
 	lx_view_frustum_corners(&f->view, fc);
-	return lx_frustum_box_points(fc, f->scene_min, f->scene_max, pts, LX_CONVEX_MAX_POINTS);
+	return lx_frustum_box_points(fc, f->view_min, f->view_max, pts, LX_CONVEX_MAX_POINTS);
 }
 
 /* Which objects can cast: casters always; planes only when their back face is lit. */
@@ -114,6 +114,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 		if (!lx_object_can_cast(f, id) ||
 		    !reaches_receivers(ls, f->bmin[id], f->bmax[id], cone, (double[4]){rx0, ry0, rx1, ry1}))
 			continue;
+		ls->casting |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
 		ncasters++;
 		for (int k = 0; k < 8; k++) {
 			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);

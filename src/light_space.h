@@ -20,6 +20,7 @@ struct lx_light_space {
 	struct lx_poly receivers, casters; /* hulls on G; meaningful unless the flag above says unbounded */
 	double znear, zfar;     /* casters' minimum depth, receivers' maximum depth */
 	double size;            /* scene diagonal */
+	unsigned long long casting; /* bit id: object id can cast onto the receivers (a conservative test) */
 	int receiver_count;     /* the receiver volume's vertices, world space */
 	vec3 receiver_pts[LX_CONVEX_MAX_POINTS];
 };

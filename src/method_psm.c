@@ -56,7 +56,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	/* the virtual camera: slid back until every caster is in front of its near plane */
 	double cmin = INFINITY;
 	for (int id = 0; id < f->object_count; id++)
-		if (lx_object_can_cast(f, id))
+		if (ls.casting >> id & 1) /* casters that can reach the receivers: not one far off */
 			for (int k = 0; k < 8; k++) {
 				vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
 				cmin = fmin(cmin, v3_dot(v3_sub(c, cam->eye), dir));
@@ -154,7 +154,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	}
 	double cx0 = INFINITY, cx1 = -INFINITY, cy0 = INFINITY, cy1 = -INFINITY, znear = INFINITY;
 	for (int id = 0; id < f->object_count; id++)
-		if (lx_object_can_cast(f, id))
+		if (ls.casting >> id & 1) /* casters that can reach the receivers: not one far off */
 			for (int k = 0; k < 8; k++) {
 				vec3 p = v3_box_corner(f->bmin[id], f->bmax[id], k);
 				vec4 h = m4_mul_point(&m0, p);

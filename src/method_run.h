@@ -57,4 +57,13 @@ void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const st
 		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
 		struct lx_mismatch *mismatch, struct lx_plane_report *planes);
 
+/* A plane whose median lixel spans more than this many pixels has shadows too coarse to
+ * pass unremarked (a good map gives it 1 to 3). */
+#define LX_COARSE_PIXELS_PER_LIXEL 16.0
+/* Budget use below this share of the maps' lixels (the visible planes' lixels used over
+ * all the maps hold) is a map spent almost wholly off the screen. */
+#define LX_LOW_BUDGET_USE 0.01
+/* The measured figures' warnings, added to the result's: planes sampled that coarsely,
+ * and budget use that low. */
+void lx_sampling_warnings(const struct lx_plane_report *planes, int n, long map_lixels, struct lx_shadow_result *res);
 #endif

@@ -186,6 +186,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		rep->plane_count = job->scene.plane_count;
 		lx_measure(&frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
 			   &rep->mismatch, rep->planes);
+		lx_sampling_warnings(rep->planes, rep->plane_count, lx_atlas_lixels(&rep->atlas), &rep->result);
 		rep->measured = true;
 		if (job->mismatch_png) {
 			mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);

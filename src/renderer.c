@@ -65,7 +65,7 @@ struct lx_renderer {
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
-	GLint shadow_light_clip;
+	GLint shadow_light_clip, shadow_pancake;
 	/* main-pass variants, built when first used: [decision][mask of the maps a draw reads] */
 	struct main_program variant[2][1 << LX_MAX_MAPS];
 	bool mediump;
@@ -201,6 +201,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 		return NULL;
 	}
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
+	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
 	r->clear_prog = lx_program_build("atlas_clear.vert", "atlas_clear.frag", NULL, err, errlen);
 	if (!r->clear_prog) {
 		lx_renderer_destroy(r);
@@ -394,6 +395,11 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 		if (!map->rendered || g->w < 1 || g->h < 1)
 			continue;
 		lx_gl.Viewport(g->x, g->y, g->w, g->h);
+		/* a plane map's depth range holds every caster inside its cone (fit_depth), so
+		 * nothing need be flattened; flattening a vertex of a long triangle crossing the
+		 * near plane would drag the depth of the triangle's visible part past the far
+		 * plane (a caster beside a table under a grazing light lost its shadow) */
+		lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
 		for (int id = 0; id < r->objects; id++) {
 			if (!lx_shadow_map_draws(map, f, id))
 				continue; /* no fill and no vertices for what the map cannot see */

@@ -429,3 +429,19 @@ bool lx_scene_load(const char *path, struct lx_scene *s, char *err, size_t errle
 	free(text);
 	return ok;
 }
+
+void lx_scene_scale(struct lx_scene *s, double k)
+{
+	for (int i = 0; i < s->plane_count; i++) {
+		struct lx_plane *p = &s->planes[i];
+		p->corner = v3_scale(p->corner, k), p->edge1 = v3_scale(p->edge1, k), p->edge2 = v3_scale(p->edge2, k);
+	}
+	for (int i = 0; i < s->caster_count; i++) {
+		struct lx_caster *c = &s->casters[i];
+		c->size = v3_scale(c->size, k);
+		c->x *= k, c->z *= k, c->low *= k, c->high *= k;
+	}
+	if (!s->light.directional)
+		s->light.position = v3_scale(s->light.position, k);
+	s->camera.eye = v3_scale(s->camera.eye, k), s->camera.at = v3_scale(s->camera.at, k);
+}

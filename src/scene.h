@@ -67,6 +67,9 @@ double lx_caster_bottom(const struct lx_caster *c, double t);
 vec3 lx_caster_position(const struct lx_caster *c, double t);
 vec3 lx_plane_normal(const struct lx_plane *p); /* unit; planes are validated non-degenerate */
 const char *lx_shape_name(enum lx_shape s);
+/* The same scene k times larger (k > 0): every position and size, the light and the
+ * camera; times and angles unchanged. */
+void lx_scene_scale(struct lx_scene *s, double k);
 /* Object ids: planes 0..plane_count-1, then casters. */
 static inline int lx_scene_object_count(const struct lx_scene *s) { return s->plane_count + s->caster_count; }
 

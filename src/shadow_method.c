@@ -113,7 +113,7 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p)
 	return -1;
 }
 
-static bool fix_winding_at(mat4 *clip, const struct lx_light *light, vec3 p)
+static bool fix_winding_at(mat4 *clip, const struct lx_light *light, vec3 p, double size)
 {
 	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p), n, a, b;
 	if (!v3_normalize(to_light, &n))
@@ -122,7 +122,7 @@ static bool fix_winding_at(mat4 *clip, const struct lx_light *light, vec3 p)
 	if (!v3_normalize(v3_cross(fabs(n.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0), n), &a))
 		return false;
 	b = v3_cross(n, a);
-	double s = 1e-3;
+	double s = 1e-4 * size; /* a small step at the scene's own scale (an absolute one failed below a metre) */
 	vec4 q[3] = {m4_mul_point(clip, p), m4_mul_point(clip, v3_add(p, v3_scale(a, s))),
 		     m4_mul_point(clip, v3_add(p, v3_scale(b, s)))};
 	for (int i = 0; i < 3; i++)
@@ -138,9 +138,12 @@ static bool fix_winding_at(mat4 *clip, const struct lx_light *light, vec3 p)
 
 void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f)
 {
-	vec3 probe[3] = {v3_scale(v3_add(f->scene_min, f->scene_max), 0.5), f->scene->camera.at,
+	/* probes where the receivers are: the view's objects' centre (not the whole scene's:
+	 * one caster far away would put it where a projective map's winding is the other) */
+	vec3 probe[3] = {v3_scale(v3_add(f->view_min, f->view_max), 0.5), f->scene->camera.at,
 			 v3_add(f->view.eye, v3_scale(f->view.dir, 2 * f->view.near))};
-	for (int i = 0; i < 3 && !fix_winding_at(clip, &f->light, probe[i]); i++) {
+	double size = v3_len(v3_sub(f->view_max, f->view_min)) + 1e-300;
+	for (int i = 0; i < 3 && !fix_winding_at(clip, &f->light, probe[i], size); i++) {
 	}
 }
 

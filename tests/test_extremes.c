@@ -1,0 +1,262 @@
+/* The extremes: random extreme configurations with every method (a light on or near a
+ * plane, grazing and upward directional light, far lights, a light inside a caster, the
+ * eye on a plane, one caster far from the rest, scenes from 1e-4 to 1e4 m), and one
+ * scene at three scales. Each frame either warns or matches the exact reference within
+ * 1%, and nothing the reports or the JSON carry is NaN. */
+#include "method_run.h"
+#include "platform.h"
+#include "reference.h"
+#include "test_util.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { W = 320, H = 240 };
+static const char *const methods[] = {"none", "uniform", "psm", "lispsm", "tsm", "plane"};
+enum { NM = sizeof methods / sizeof methods[0] };
+
+struct pixels {
+	uint8_t *rgba, *sh, *ref_sh;
+	int16_t *obj, *ref_obj;
+};
+
+static struct pixels pixels_new(void)
+{
+	struct pixels p = {malloc((size_t)W * H * 4), malloc((size_t)W * H), malloc((size_t)W * H),
+			   malloc((size_t)W * H * sizeof(int16_t)), malloc((size_t)W * H * sizeof(int16_t))};
+	assert_true(p.rgba && p.sh && p.ref_sh && p.obj && p.ref_obj);
+	return p;
+}
+
+static void pixels_free(struct pixels *p)
+{
+	free(p->rgba), free(p->sh), free(p->ref_sh), free(p->obj), free(p->ref_obj);
+}
+
+static double uniform01(uint64_t *s) { return test_rand(s); }
+
+/* A point on plane i, s and t in [0, 1]. */
+static vec3 on_plane(const struct lx_plane *p, double s, double t)
+{
+	return v3_add(p->corner, v3_add(v3_scale(p->edge1, s), v3_scale(p->edge2, t)));
+}
+
+/* One random extreme light and eye for the scaled scene sc (k: its scale); a short name of the kind. */
+static const char *extreme(struct lx_scene *sc, double k, uint64_t *rs)
+{
+	const struct lx_plane *pl = &sc->planes[(int)(uniform01(rs) * sc->plane_count) % sc->plane_count];
+	vec3 n = lx_plane_normal(pl);
+	int kind = (int)(uniform01(rs) * 9) % 9;
+	double u = uniform01(rs), v = uniform01(rs);
+	switch (kind) {
+	case 0:
+		sc->light = (struct lx_light){.position = on_plane(pl, u, v), .direction = v3(0, -1, 0)};
+		return "light on a plane";
+	case 1:
+		sc->light = (struct lx_light){.position = v3_add(on_plane(pl, u, v), v3_scale(n, k * pow(10, -3 - 9 * uniform01(rs)))),
+					      .direction = v3(0, -1, 0)};
+		return "light near a plane";
+	case 2: {
+		vec3 d = v3(cos(6.283 * u), -pow(10, -1 - 7 * v), sin(6.283 * u));
+		v3_normalize(d, &d);
+		sc->light = (struct lx_light){.directional = true, .direction = d};
+		return "grazing directional light";
+	}
+	case 3: {
+		vec3 d = v3(u - 0.5, 0.2 + v, uniform01(rs) - 0.5);
+		v3_normalize(d, &d);
+		sc->light = (struct lx_light){.directional = true, .direction = d};
+		return "directional light from below";
+	}
+	case 4: {
+		vec3 d = v3(u - 0.5, v, uniform01(rs) - 0.5);
+		v3_normalize(d, &d);
+		sc->light = (struct lx_light){.position = v3_scale(d, k * pow(10, 3 + 11 * uniform01(rs))), .direction = v3(0, -1, 0)};
+		return "far point light";
+	}
+	case 5: {
+		const struct lx_caster *c = &sc->casters[(int)(u * sc->caster_count) % sc->caster_count];
+		sc->light = (struct lx_light){.position = v3(c->x, c->low + 0.5 * c->size.y, c->z), .direction = v3(0, -1, 0)};
+		return "light inside a caster";
+	}
+	case 6:
+		sc->camera.eye = on_plane(pl, 0.1 + 0.8 * u, 0.1 + 0.8 * v);
+		sc->camera.at = v3_add(sc->camera.eye, v3_add(v3_scale(pl->edge1, 0.3), v3_scale(n, 0.05 * k)));
+		return "eye on a plane";
+	case 7:
+		sc->camera.eye = v3_add(on_plane(pl, 0.05 + 0.9 * u, 0.5), v3_scale(n, k * 1e-3));
+		sc->camera.at = v3_add(sc->camera.eye, pl->edge2);
+		return "eye a hair off a plane, looking along it";
+	default:
+		sc->light = (struct lx_light){.position = v3(k * (8 * u - 4), k * (6 * v - 1), k * (8 * uniform01(rs) - 4)),
+					      .direction = v3(0, -1, 0)};
+		return "random point light";
+	}
+}
+
+static bool finite_report(const struct lx_shadow_result *res, const struct lx_mismatch *mm,
+			  const struct lx_plane_report *planes, int nplanes)
+{
+	for (int i = 0; i < res->map_count; i++)
+		if (res->maps[i].rendered && !m4_finite(&res->maps[i].light_clip))
+			return false;
+	if (!isfinite(mm->mismatch_pct + mm->false_shadow_pct + mm->missing_shadow_pct))
+		return false;
+	for (int p = 0; p < nplanes; p++) {
+		const struct lx_plane_sampling *s = &planes[p].s;
+		if (planes[p].present && !isfinite(s->lpp_median + s->m_median + s->m_max + s->aniso_max + s->lixels_used))
+			return false;
+	}
+	return true;
+}
+
+static void random_extremes_warn_or_match(void **state)
+{
+	(void)state;
+	char err[512];
+	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+	if (!plat)
+		fail_msg("%s", err);
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	struct pixels px = pixels_new();
+	uint64_t rs = 20261130;
+	long frames = 0, warned = 0, refused = 0, configs = 0;
+	double worst_quiet = 0;
+	static const double scales[] = {1e-4, 1e-2, 1, 1e2, 1e4};
+	for (int g = 0; g < 20; g++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(g % 2 ? "table" : "default", &base));
+		double k = scales[(g / 2) % 5];
+		if (g >= 10 && base.caster_count < LX_MAX_CASTERS) /* one caster far from the rest */
+			base.casters[base.caster_count++] = (struct lx_caster){.shape = LX_BOX, .size = v3(1, 1, 1), .x = 1e5,
+									       .period = 2, .color = v3(0.5, 0.5, 0.5)};
+		lx_scene_scale(&base, k);
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		struct lx_method_run run[NM];
+		for (int m = 0; m < NM; m++) {
+			struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+			if (lx_method_run_init(&run[m], methods[m], &base, &meshes, &caps, &o, W, H, LX_DEPTH_AUTO,
+					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+				fail_msg("%s: %s", methods[m], err);
+		}
+		for (int c = 0; c < 15; c++, configs++) {
+			struct lx_scene sc = base;
+			const char *kind = extreme(&sc, k, &rs);
+			double t = 10 * uniform01(&rs);
+			struct lx_frame frame;
+			mat4 look;
+			if (!m4_look_at(sc.camera.eye, sc.camera.at, sc.camera.up, &look) ||
+			    !lx_frame_setup(&frame, &sc, &meshes, t, W, H, err, sizeof err)) {
+				refused++; /* the command line refuses it with exit status 2 */
+				continue;
+			}
+			assert_true(lx_reference_image(&frame, px.ref_obj, px.ref_sh, 2));
+			for (int m = 0; m < NM; m++) {
+				struct lx_frame_times times;
+				lx_method_run_frame(&run[m], &frame, &times);
+				lx_method_run_decision(&run[m], &frame, px.rgba, px.obj, px.sh);
+				struct lx_mismatch mm;
+				struct lx_plane_report planes[LX_MAX_PLANES];
+				lx_measure(&frame, &run[m].atlas, &run[m].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &mm, planes);
+				lx_sampling_warnings(planes, sc.plane_count, lx_atlas_lixels(&run[m].atlas), &run[m].result);
+				frames++;
+				if (!finite_report(&run[m].result, &mm, planes, sc.plane_count) || !isfinite(times.setup_us))
+					fail_msg("scale %g, %s, %s: a NaN or infinity in the matrices or the report", k, kind, methods[m]);
+				bool quiet = run[m].result.warning_count == 0 && strcmp(methods[m], "none");
+				if (!quiet) {
+					warned++;
+					continue;
+				}
+				worst_quiet = fmax(worst_quiet, mm.mismatch_pct);
+				if (!(mm.mismatch_pct < 1.0))
+					for (int q = 0; q < sc.plane_count; q++)
+						print_message("t %.3f: plane %s present %d m median %.3g max %.3g\n", t, planes[q].name,
+							      planes[q].present, planes[q].s.m_median, planes[q].s.m_max);
+				if (!(mm.mismatch_pct < 1.0))
+					fail_msg("scale %g, %s (light %g %g %g%s, eye %g %g %g), %s: mismatch %.3f%% with no warning", k,
+						 kind, sc.light.directional ? sc.light.direction.x : sc.light.position.x,
+						 sc.light.directional ? sc.light.direction.y : sc.light.position.y,
+						 sc.light.directional ? sc.light.direction.z : sc.light.position.z,
+						 sc.light.directional ? " directional" : "", sc.camera.eye.x, sc.camera.eye.y,
+						 sc.camera.eye.z, methods[m], mm.mismatch_pct);
+			}
+		}
+		for (int m = 0; m < NM; m++)
+			lx_method_run_free(&run[m]);
+		lx_meshes_free(&meshes);
+	}
+	print_message("%ld configurations (%ld refused as bad input), %ld frames: %ld with a warning, the worst mismatch "
+		      "without one %.3f%%\n", configs, refused, frames, warned, worst_quiet);
+	assert_true(frames > 1000);
+	pixels_free(&px);
+	lx_platform_destroy(plat);
+}
+
+/* One scene at 1e-4, 1 and 1e4 metres: the same decisions, pixel for pixel but for a
+ * few where rounding falls the other way (at most 0.1% of the image). */
+static void scale_changes_nothing(void **state)
+{
+	(void)state;
+	enum { w = 320, h = 240 };
+	char err[512];
+	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+	if (!plat)
+		fail_msg("%s", err);
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
+	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
+	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	static const double scales[] = {1, 1e-4, 1e4};
+	for (int m = 0; m < NM; m++) {
+		long shadowed = 0;
+		for (int i = 0; i < 3; i++) {
+			struct lx_scene sc;
+			assert_true(lx_scene_builtin("default", &sc));
+			lx_scene_scale(&sc, scales[i]);
+			struct lx_scene_meshes meshes = {0};
+			assert_true(lx_meshes_build(&sc, &meshes));
+			struct lx_method_run run;
+			struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+			if (lx_method_run_init(&run, methods[m], &sc, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO,
+					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+				fail_msg("%s: %s", methods[m], err);
+			struct lx_frame frame;
+			assert_true(lx_frame_setup(&frame, &sc, &meshes, 0.4, w, h, err, sizeof err));
+			struct lx_frame_times t;
+			lx_method_run_frame(&run, &frame, &t);
+			lx_method_run_decision(&run, &frame, rgba, obj[i > 0], sh[i > 0]);
+			for (int k = 0; k < run.result.warning_count; k++)
+				print_message("%s at scale %g: warning: %s\n", methods[m], scales[i], run.result.warnings[k]);
+			lx_method_run_free(&run);
+			lx_meshes_free(&meshes);
+			if (i == 0) {
+				for (long p = 0; p < (long)w * h; p++)
+					shadowed += sh[0][p];
+				continue;
+			}
+			long differ = 0;
+			for (long p = 0; p < (long)w * h; p++)
+				differ += obj[0][p] != obj[1][p] || sh[0][p] != sh[1][p];
+			print_message("%-7s scale %-6g: %ld of %d pixels differ from scale 1 (%ld shadowed there)\n", methods[m],
+				      scales[i], differ, w * h, shadowed);
+			if (differ > w * h / 1000)
+				fail_msg("%s: %ld pixels differ between scale 1 and %g", methods[m], differ, scales[i]);
+		}
+		assert_true(!strcmp(methods[m], "none") || shadowed > 0); /* there were shadows to compare */
+	}
+	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_platform_destroy(plat);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(scale_changes_nothing),
+		cmocka_unit_test(random_extremes_warn_or_match),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
