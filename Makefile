@@ -38,7 +38,7 @@ BOARDS = $(sort $(wildcard board/*.profile))
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
 
-TESTS = test_gpio test_kms_select test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render
+TESTS = test_gpio test_kms_select test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check deps deps-check install uninstall clean asan
@@ -99,7 +99,7 @@ check: deps-check
 asan: deps-check
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
 		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%)
-	@ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
+	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
 
 # The binary (shaders and board profiles are built in), the man page, the profiles as
 # files to copy and edit (--board FILE), and the kiosk's systemd unit.

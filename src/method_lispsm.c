@@ -31,14 +31,15 @@ static int lispsm_regions(const struct lx_scene *s, const struct lx_method_optio
 	return 1;
 }
 
-/* Points of B: the receiver volume's vertices and the casting objects' box corners. */
+/* Points of B: the receiver volume's vertices and the box corners of the objects that
+ * can cast onto it (not one far off: it would stretch the body and the warp). */
 static int body_points(const struct lx_frame *f, const struct lx_light_space *ls, vec3 *pts, bool *caster, int max)
 {
 	int n = 0;
 	for (int i = 0; i < ls->receiver_count && n < max; i++, n++)
 		pts[n] = ls->receiver_pts[i], caster[n] = false;
 	for (int id = 0; id < f->object_count; id++) {
-		if (!lx_object_can_cast(f, id))
+		if (!(ls->casting >> id & 1))
 			continue;
 		for (int k = 0; k < 8 && n < max; k++) {
 			pts[n] = v3_box_corner(f->bmin[id], f->bmax[id], k);

@@ -125,6 +125,9 @@ static void random_extremes_warn_or_match(void **state)
 	long frames = 0, warned = 0, refused = 0, configs = 0;
 	double worst_quiet = 0;
 	static const double scales[] = {1e-4, 1e-2, 1, 1e2, 1e4};
+	/* 300 configurations; 60 under the sanitizers (make asan sets LIXEL_TEST_QUICK),
+	 * which look for memory errors, not for more configurations */
+	int per_group = getenv("LIXEL_TEST_QUICK") ? 3 : 15;
 	for (int g = 0; g < 20; g++) {
 		struct lx_scene base;
 		assert_true(lx_scene_builtin(g % 2 ? "table" : "default", &base));
@@ -142,7 +145,7 @@ static void random_extremes_warn_or_match(void **state)
 					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
 				fail_msg("%s: %s", methods[m], err);
 		}
-		for (int c = 0; c < 15; c++, configs++) {
+		for (int c = 0; c < per_group; c++, configs++) {
 			struct lx_scene sc = base;
 			const char *kind = extreme(&sc, k, &rs);
 			double t = 10 * uniform01(&rs);
@@ -172,16 +175,12 @@ static void random_extremes_warn_or_match(void **state)
 				}
 				worst_quiet = fmax(worst_quiet, mm.mismatch_pct);
 				if (!(mm.mismatch_pct < 1.0))
-					for (int q = 0; q < sc.plane_count; q++)
-						print_message("t %.3f: plane %s present %d m median %.3g max %.3g\n", t, planes[q].name,
-							      planes[q].present, planes[q].s.m_median, planes[q].s.m_max);
-				if (!(mm.mismatch_pct < 1.0))
-					fail_msg("scale %g, %s (light %g %g %g%s, eye %g %g %g), %s: mismatch %.3f%% with no warning", k,
+					fail_msg("scale %g, %s (light %g %g %g%s, eye %g %g %g, time %.3f), %s: mismatch %.3f%% with no warning", k,
 						 kind, sc.light.directional ? sc.light.direction.x : sc.light.position.x,
 						 sc.light.directional ? sc.light.direction.y : sc.light.position.y,
 						 sc.light.directional ? sc.light.direction.z : sc.light.position.z,
 						 sc.light.directional ? " directional" : "", sc.camera.eye.x, sc.camera.eye.y,
-						 sc.camera.eye.z, methods[m], mm.mismatch_pct);
+						 sc.camera.eye.z, t, methods[m], mm.mismatch_pct);
 			}
 		}
 		for (int m = 0; m < NM; m++)
@@ -190,7 +189,7 @@ static void random_extremes_warn_or_match(void **state)
 	}
 	print_message("%ld configurations (%ld refused as bad input), %ld frames: %ld with a warning, the worst mismatch "
 		      "without one %.3f%%\n", configs, refused, frames, warned, worst_quiet);
-	assert_true(frames > 1000);
+	assert_true(frames > 50 * per_group); /* most configurations rendered */
 	pixels_free(&px);
 	lx_platform_destroy(plat);
 }
