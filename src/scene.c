@@ -255,7 +255,8 @@ static bool parse_plane(struct parser *p, struct lx_scene *s)
 	if (have != 7)
 		return fail(p, "expected 'plane NAME corner X Y Z edge1 X Y Z edge2 X Y Z [color R G B]'");
 	vec3 n = v3_cross(pl.edge1, pl.edge2);
-	if (!(v3_len(n) > 1e-9 * (1 + v3_len(pl.edge1) * v3_len(pl.edge2))))
+	/* relative: the sine of the edges' angle, so a scene in micrometres passes as one in metres */
+	if (!(v3_len(n) > 1e-9 * v3_len(pl.edge1) * v3_len(pl.edge2)))
 		return fail(p, "expected plane edges that are non-zero and not parallel");
 	s->planes[s->plane_count++] = pl;
 	return true;

@@ -146,6 +146,26 @@ static void missing_and_binary_files(void **state)
 	assert_false(lx_scene_load(LX_TEST_DATA, &s, err, sizeof err)); /* a directory */
 }
 
+/* Validation is relative to the scene's own size: the default scene in micrometres or
+ * in thousands of kilometres is as valid as in metres (an absolute 1e-9 once refused
+ * the first). */
+static void any_scale_parses(void **state)
+{
+	(void)state;
+	static const char *const texts[] = {
+		"camera eye 0 2e-6 6e-6 at 0 8e-7 0\nlight point 2.5e-6 6e-6 3e-6\n"
+		"plane floor corner -5e-6 0 5e-6 edge1 1e-5 0 0 edge2 0 0 -1e-5\nsphere radius 6e-7 at 0 0 bounce 3e-7 2e-6\n",
+		"camera eye 0 2e9 6e9 at 0 8e8 0\nlight point 2.5e9 6e9 3e9\n"
+		"plane floor corner -5e9 0 5e9 edge1 1e10 0 0 edge2 0 0 -1e10\nsphere radius 6e8 at 0 0 bounce 3e8 2e9\n"};
+	for (int i = 0; i < 2; i++) {
+		struct lx_scene s;
+		char err[256];
+		if (!lx_scene_parse(texts[i], "scaled.scene", &s, err, sizeof err))
+			fail_msg("scale %d: %s", i, err);
+		assert_int_equal(s.plane_count, 1);
+	}
+}
+
 static void directional_light_and_defaults(void **state)
 {
 	(void)state;
@@ -198,6 +218,7 @@ int main(void)
 		cmocka_unit_test(scene_files_match_the_built_in_scenes),
 		cmocka_unit_test(malformed_files_name_the_line_and_what_was_expected),
 		cmocka_unit_test(missing_and_binary_files),
+		cmocka_unit_test(any_scale_parses),
 		cmocka_unit_test(directional_light_and_defaults),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 	};
