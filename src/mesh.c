@@ -33,8 +33,9 @@ static void emit(struct builder *b, vec3 p, vec3 n, vec3 fn)
 /* A triangle with given smooth normals; degenerate ones (sphere poles) are dropped. */
 static void tri(struct builder *b, vec3 a, vec3 na, vec3 c1, vec3 n1, vec3 c2, vec3 n2)
 {
-	vec3 fn;
-	if (!v3_normalize(v3_cross(v3_sub(c1, a), v3_sub(c2, a)), &fn))
+	vec3 fn, e1, e2;
+	/* the edges normalised first: a tiny caster's cross product would underflow */
+	if (!v3_normalize(v3_sub(c1, a), &e1) || !v3_normalize(v3_sub(c2, a), &e2) || !v3_normalize(v3_cross(e1, e2), &fn))
 		return;
 	emit(b, a, na, fn);
 	emit(b, c1, n1, fn);

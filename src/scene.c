@@ -140,12 +140,17 @@ static bool triple(struct parser *p, const char *what, vec3 *out)
 	return number(p, what, &out->x) && number(p, what, &out->y) && number(p, what, &out->z);
 }
 
+/* A size: positive, and at least LX_SCENE_SIZE_MIN, so that the GL meshes (single
+ * precision) still hold its triangles. */
 static bool positive(struct parser *p, const char *what, double *out)
 {
 	if (!number(p, what, out))
 		return false;
 	if (!(*out > 0))
 		return fail(p, "expected %s > 0, got %g", what, *out);
+	if (!(*out >= LX_SCENE_SIZE_MIN))
+		return fail(p, "expected %s of at least %g (the meshes are single precision), got %g", what,
+			    LX_SCENE_SIZE_MIN, *out);
 	return true;
 }
 

@@ -13,6 +13,8 @@
 /* No coordinate, size or time of a scene beyond this (options included): products of two
  * stay far inside double's range. */
 #define LX_SCENE_NUMBER_MAX 1e15
+/* No size (radius, height, box side) below this: the GL meshes are single precision. */
+#define LX_SCENE_SIZE_MIN 1e-30
 
 /* A plane of interest: the parallelogram corner + s*edge1 + t*edge2, s, t in [0, 1].
  * Its lit side faces along normalize(edge1 x edge2). */

@@ -118,6 +118,8 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light point 0 5 0 extra\n", 1, "unexpected 'extra'"},
 		{"light point 0 5 0\nsphere radius 1e999 at 0 0\n", 2, "too large to hold"},
 		{"light point 0 5 0\nsphere radius 1e-320 at 0 0\n", 2, "too small to hold"},
+		{"light point 0 5 0\nsphere radius 1e-300 at 0 0\n", 2, "radius of at least 1e-30"},
+		{"light point 0 5 0\nbox size 1 1e-31 1 at 0 0\n", 2, "box size y of at least 1e-30"},
 		{"light point 0 5 0\nsphere radius 0x1p0 at 0 0\n", 2, "not a decimal number"},
 		{"light point 0 2e15 0\n", 1, "from -1e+15 to 1e+15"},
 		{"light point 0 5 0\nplane fallback corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "other than 'fallback'"},
