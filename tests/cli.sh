@@ -230,5 +230,26 @@ expect_bad "bench zero frames" bench --frames 0
 expect_bad "bench unknown config" bench --configs sideways
 expect_bad "bench strips into a missing directory" bench --strips "$tmp/no/such"
 
+# The extremes: a correct frame or a word about what was done (exit 0), from the JSON.
+# json_num KEY FILE: the first number after "KEY":
+json_num() { sed -n "s/.*\"$1\": \([-0-9.e+]*\).*/\1/p" "$2" | head -n 1; }
+below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a + 0 < b + 0) }'; }
+ext() { "$lixel" render --size 160x120 --frames 1 --measure --json --out "$tmp/ext.png" "$@" >"$tmp/ext.json" 2>"$tmp/stderr"; }
+ext --light 0,1e12,0 && grep -q 'taken as directional' "$tmp/ext.json" && below "$(json_num mismatch_pct "$tmp/ext.json")" 1 &&
+  ok || no "a light 1e12 m away: $(cat "$tmp/ext.json" "$tmp/stderr")"
+for m in uniform psm tsm lispsm plane; do
+  ext --method $m --light 0,0,0 && below "$(json_num mismatch_pct "$tmp/ext.json")" 1 &&
+    [ "$(json_num edge_on_pixels "$tmp/ext.json")" -gt 1000 ] && ok || no "$m, the light on the floor: $(cat "$tmp/ext.json" "$tmp/stderr")"
+done
+ext --scene table --light 0,0.73,0 && grep -q 'inside the bounds of caster' "$tmp/ext.json" && ok ||
+  no "the light inside the table's slab: $(cat "$tmp/ext.json" "$tmp/stderr")"
+{ cat tests/data/default.scene; echo "box size 1 1 1 at 100000 0"; } >"$tmp/far.scene"
+for m in uniform psm lispsm tsm plane; do
+  ext --method $m --scene "$tmp/far.scene" && below "$(json_num mismatch_pct "$tmp/ext.json")" 0.5 && ok ||
+    no "$m, one caster 100 km away: $(cat "$tmp/ext.json" "$tmp/stderr")"
+done
+printf 'light point 0 5 0\nsphere radius 1e-300 at 0 0\n' >"$tmp/tiny.scene"
+expect_says "at least 1e-30" "a radius below single precision" render --scene "$tmp/tiny.scene" $out
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
