@@ -123,20 +123,9 @@ static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 		T.m[c * 4 + 3] = tc;
 	}
 	mat4 m = m4_mul(&T, &u);
-	/* depth: (z - zmid w) / t with t >= eta inside the trapezoid, so within
-	 * [-2 / eta, 2 / eta]; fitted to what the receivers and casters take of that */
-	double zlo = INFINITY, zhi = -INFINITY;
-	for (int i = 0; i < ls.receiver_count; i++)
-		depth_range(&m, ls.receiver_pts[i], &zlo, &zhi);
-	for (int id = 0; id < f->object_count; id++)
-		if (ls.casting >> id & 1)
-			for (int k = 0; k < 8; k++)
-				depth_range(&m, v3_box_corner(f->bmin[id], f->bmax[id], k), &zlo, &zhi);
-	zlo = fmax(zlo, -2 / eta), zhi = fmin(zhi, 2 / eta);
-	if (!(zlo < zhi))
-		zlo = -2 / eta, zhi = 2 / eta;
-	double zpad = (zhi - zlo) * 1e-4;
-	mat4 crop = m4_crop(-1, 1, -1, 1, zlo - zpad, zhi + zpad);
+	/* depth: (z - zmid w) / t with z / w in [-1, 1] and t / w >= eta inside the
+	 * trapezoid, so within [(-1 - zmid) / eta, (1 - zmid) / eta] */
+	mat4 crop = m4_crop(-1, 1, -1, 1, (-1 - zmid) / eta, (1 - zmid) / eta);
 	m = m4_mul(&crop, &m);
 	lx_shadow_fix_winding(&m, f);
 	if (m4_finite(&m))

@@ -13,17 +13,53 @@ static int cmp_vec2(const void *pa, const void *pb)
 	return (a->y > b->y) - (a->y < b->y);
 }
 
-void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
+/* Points that need more than LX_POLY_MAX vertices: a polygon of LX_POLY_DOP sides, each a
+ * supporting line of the points at an evenly spaced angle, which holds them all (a
+ * superset, never a subset: dropping vertices would cut the wanted region). */
+#define LX_POLY_DOP 32
+static void dop(const vec2 *pts, int n, struct lx_poly *out)
+{
+	double d[LX_POLY_DOP], c[LX_POLY_DOP], s[LX_POLY_DOP];
+	for (int i = 0; i < LX_POLY_DOP; i++) {
+		c[i] = cos(2 * M_PI * i / LX_POLY_DOP), s[i] = sin(2 * M_PI * i / LX_POLY_DOP), d[i] = -INFINITY;
+		for (int k = 0; k < n; k++)
+			if (isfinite(pts[k].x) && isfinite(pts[k].y))
+				d[i] = fmax(d[i], c[i] * pts[k].x + s[i] * pts[k].y);
+	}
+	out->n = 0;
+	if (!isfinite(d[0]))
+		return; /* no finite point */
+	out->n = LX_POLY_DOP;
+	for (int i = 0; i < LX_POLY_DOP; i++) { /* lines i and i + 1 meet: their angles differ by 2 pi / 32 */
+		int j = (i + 1) % LX_POLY_DOP;
+		double det = c[i] * s[j] - s[i] * c[j]; /* sin(2 pi / 32) */
+		out->v[i] = (vec2){(d[i] * s[j] - s[i] * d[j]) / det, (c[i] * d[j] - d[i] * c[j]) / det};
+	}
+}
+
+static void fit(const vec2 *pts, int n, struct lx_poly *out)
+{
+	if (n > LX_POLY_MAX) {
+		dop(pts, n, out);
+		return;
+	}
+	out->n = n;
+	memcpy(out->v, pts, (size_t)n * sizeof(vec2));
+}
+
+bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 {
 	out->n = 0;
 	if (n <= 0)
-		return;
+		return true;
 	/* the usual few hundred points on the stack: this runs every frame */
-	enum { ON_STACK = 256 };
+	enum { ON_STACK = 512 }; /* more than any caller passes: 8 corners of 40 objects */
 	vec2 stack[3 * ON_STACK];
 	vec2 *p = n <= ON_STACK ? stack : malloc((size_t)n * 3 * sizeof(vec2)), *h = p + n;
-	if (!p)
-		return;
+	if (!p) { /* out of memory: the 32-sided polygon around the points, no hull */
+		dop(pts, n, out);
+		return false;
+	}
 	int m = 0;
 	for (int i = 0; i < n; i++)
 		if (isfinite(pts[i].x) && isfinite(pts[i].y))
@@ -31,7 +67,7 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	if (m == 0) {
 		if (p != stack)
 			free(p);
-		return;
+		return true;
 	}
 	/* Shell sort (Ciura's gaps): the few hundred points here sort in place without qsort's
 	 * call per comparison; this runs several times per frame */
@@ -56,33 +92,32 @@ void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 		h[k++] = p[i];
 	}
 	k = k > 1 ? k - 1 : k; /* the last point repeats the first */
-	if (k > LX_POLY_MAX)
-		k = LX_POLY_MAX; /* hulls here have a few dozen vertices at most */
-	out->n = k;
-	memcpy(out->v, h, (size_t)k * sizeof(vec2));
+	fit(h, k, out);
 	if (p != stack)
 		free(p);
+	return k <= LX_POLY_MAX;
 }
 
 void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out)
 {
-	struct lx_poly r = {0};
+	vec2 r[LX_POLY_MAX + 1]; /* a convex n-gon cut by a line has at most n + 1 vertices */
+	int rn = 0;
 	for (int i = 0; i < a->n; i++) {
 		vec2 p = a->v[i], q = a->v[(i + 1) % a->n];
 		double dp = nx * p.x + ny * p.y + c, dq = nx * q.x + ny * q.y + c;
-		if (dp >= 0 && r.n < LX_POLY_MAX)
-			r.v[r.n++] = p;
-		if ((dp >= 0) != (dq >= 0) && r.n < LX_POLY_MAX) {
+		if (dp >= 0)
+			r[rn++] = p;
+		if ((dp >= 0) != (dq >= 0)) {
 			double t = dp / (dp - dq); /* signs differ: dp - dq != 0 */
 			vec2 x = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
-			if (!(r.n && r.v[r.n - 1].x == x.x && r.v[r.n - 1].y == x.y))
-				r.v[r.n++] = x;
+			if (!(rn && r[rn - 1].x == x.x && r[rn - 1].y == x.y))
+				r[rn++] = x;
 		}
 	}
 	/* no repeated vertices: they make zero-length edges */
-	while (r.n > 1 && r.v[r.n - 1].x == r.v[0].x && r.v[r.n - 1].y == r.v[0].y)
-		r.n--;
-	*out = r;
+	while (rn > 1 && r[rn - 1].x == r[0].x && r[rn - 1].y == r[0].y)
+		rn--;
+	fit(r, rn, out);
 }
 
 void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *out)

@@ -14,8 +14,10 @@ struct lx_poly {
 	vec2 v[LX_POLY_MAX];
 };
 
-/* Convex hull of n points (Andrew's monotone chain); collinear points dropped. */
-void lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);
+/* Convex hull of n points (Andrew's monotone chain); collinear points dropped. A hull
+ * of more than LX_POLY_MAX vertices becomes a 32-sided polygon around it (a superset):
+ * false then. Clipping (below) does the same where a cut would add the 65th vertex. */
+bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);
 /* Intersection of two convex polygons (clipping a by each edge of b). */
 void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *out);
 /* Keeps the part of a on the side a.x * x + a.y * y + c >= 0 of a line. */

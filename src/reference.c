@@ -1,5 +1,6 @@
 #include "reference.h"
 #include <math.h>
+#include <stdio.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,7 @@ struct lx_raycaster {
 	struct node *nodes;
 	int nnodes;
 	double scale; /* scene size, for relative epsilons */
+	int depth;    /* the deepest node's depth */
 };
 
 static vec3 vmin(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
@@ -27,10 +29,15 @@ static vec3 vmax(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fma
 
 static vec3 centroid(const struct tri *t) { return v3_add(t->a, v3_scale(v3_add(t->e1, t->e2), 1.0 / 3)); }
 
-static int build(struct lx_raycaster *rc, int first, int count)
+/* Inner nodes at most this deep: a leaf takes whatever is left below it (correct, only
+ * slower), so the traversal's stack of LX_BVH_MAX_DEPTH + 2 entries never overflows
+ * whatever the scene (midpoint splits of casters spaced 1, 2, 4, ... go one level per
+ * caster). */
+static int build(struct lx_raycaster *rc, int first, int count, int depth)
 {
 	int idx = rc->nnodes++;
 	struct node *n = &rc->nodes[idx];
+	rc->depth = depth > rc->depth ? depth : rc->depth;
 	n->lo = v3(INFINITY, INFINITY, INFINITY);
 	n->hi = v3(-INFINITY, -INFINITY, -INFINITY);
 	vec3 clo = n->lo, chi = n->hi;
@@ -43,7 +50,7 @@ static int build(struct lx_raycaster *rc, int first, int count)
 		clo = vmin(clo, m);
 		chi = vmax(chi, m);
 	}
-	if (count <= 4) {
+	if (count <= 4 || depth >= LX_BVH_MAX_DEPTH) {
 		n->first = first;
 		n->count = count;
 		return idx;
@@ -62,8 +69,8 @@ static int build(struct lx_raycaster *rc, int first, int count)
 	}
 	if (mid == first || mid == first + count) /* all centroids coincide: split in half */
 		mid = first + count / 2;
-	build(rc, first, mid - first);
-	int right = build(rc, mid, first + count - mid);
+	build(rc, first, mid - first, depth + 1);
+	int right = build(rc, mid, first + count - mid, depth + 1);
 	n = &rc->nodes[idx]; /* nodes is preallocated, the pointer stays valid; re-take for clarity */
 	n->first = right;
 	n->count = 0;
@@ -104,7 +111,7 @@ struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f)
 	}
 	rc->scale = v3_len(v3_sub(f->scene_max, f->scene_min)) + 1e-300;
 	if (rc->ntris)
-		build(rc, 0, rc->ntris);
+		build(rc, 0, rc->ntris, 0);
 	return rc;
 }
 
@@ -116,6 +123,8 @@ void lx_raycaster_destroy(struct lx_raycaster *rc)
 	free(rc->nodes);
 	free(rc);
 }
+
+int lx_raycaster_depth(const struct lx_raycaster *rc) { return rc->depth; }
 
 int lx_raycaster_object(const struct lx_raycaster *rc, int tri) { return tri >= 0 ? rc->tris[tri].object : LX_NO_OBJECT; }
 
@@ -167,7 +176,7 @@ static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 	if (!rc->ntris)
 		return -1;
 	vec3 inv = v3(1.0 / d.x, 1.0 / d.y, 1.0 / d.z); /* +-inf for axis-parallel rays is what the slab test wants */
-	int stack[128], sp = 0, best = -1;
+	int stack[LX_BVH_MAX_DEPTH + 2], sp = 0, best = -1; /* one more entry per level at most */
 	stack[sp++] = 0;
 	while (sp) {
 		const struct node *n = &rc->nodes[stack[--sp]];
@@ -183,7 +192,11 @@ static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 						return best;
 				}
 			}
-		} else if (sp + 2 <= 128) {
+		} else {
+			if (sp + 2 > LX_BVH_MAX_DEPTH + 2) { /* cannot happen: build() caps the depth */
+				fprintf(stderr, "lixel: reference BVH deeper than its cap of %d\n", LX_BVH_MAX_DEPTH);
+				abort();
+			}
 			stack[sp++] = n->first;
 			stack[sp++] = (int)(n - rc->nodes) + 1;
 		}

@@ -14,6 +14,8 @@
 #define LX_NO_OBJECT (-1)
 
 struct lx_raycaster;
+/* The reference's BVH: no inner node deeper than this (leaves below take the rest). */
+#define LX_BVH_MAX_DEPTH 40
 
 struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f);
 void lx_raycaster_destroy(struct lx_raycaster *rc);
@@ -21,6 +23,8 @@ void lx_raycaster_destroy(struct lx_raycaster *rc);
 int lx_raycast_first(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, double *t);
 bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip);
 int lx_raycaster_object(const struct lx_raycaster *rc, int tri);
+/* The BVH's deepest node (at most LX_BVH_MAX_DEPTH): for tests. */
+int lx_raycaster_depth(const struct lx_raycaster *rc);
 /* Whether world point p on triangle tri is in shadow. */
 bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri);
 

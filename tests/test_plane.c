@@ -361,9 +361,58 @@ static void polygon_difference(void **state)
 	assert_near(fabs(lx_poly_area(&out)), 1, 1e-12);
 }
 
+/* Whether every point lies in the convex counter-clockwise polygon p (on its edges counts). */
+static bool holds_all(const struct lx_poly *p, const vec2 *pts, int n)
+{
+	for (int k = 0; k < n; k++)
+		for (int i = 0; i < p->n; i++) {
+			vec2 a = p->v[i], b = p->v[(i + 1) % p->n];
+			if ((b.x - a.x) * (pts[k].y - a.y) - (b.y - a.y) * (pts[k].x - a.x) < -1e-9)
+				return false;
+		}
+	return true;
+}
+
+/* No silent cap: a hull of more than LX_POLY_MAX vertices, or a cut that would add the
+ * 65th, becomes a polygon around all of it (before, the extra vertices were dropped and
+ * the region shrank). */
+static void polygon_caps_keep_a_superset(void **state)
+{
+	(void)state;
+	enum { N = 100 };
+	vec2 ring[N];
+	for (int k = 0; k < N; k++)
+		ring[k] = (vec2){cos(2 * M_PI * k / N), sin(2 * M_PI * k / N)};
+	struct lx_poly h;
+	assert_false(lx_poly_hull(ring, N, &h)); /* 100 hull vertices: the cap said */
+	assert_true(h.n >= 3 && h.n <= LX_POLY_MAX);
+	assert_true(holds_all(&h, ring, N));
+	assert_true(fabs(lx_poly_area(&h)) < 1.01 * M_PI); /* and still tight */
+	assert_true(lx_poly_hull(ring, 40, &h)); /* 40 vertices: exact */
+	assert_int_equal(h.n, 40);
+	/* a 64-gon cut by a line through two of its edges: 65 vertices would be needed */
+	vec2 g[LX_POLY_MAX];
+	for (int k = 0; k < LX_POLY_MAX; k++)
+		g[k] = (vec2){cos(2 * M_PI * k / LX_POLY_MAX), sin(2 * M_PI * k / LX_POLY_MAX)}; /* one vertex at the bottom */
+	assert_true(lx_poly_hull(g, LX_POLY_MAX, &h));
+	assert_int_equal(h.n, LX_POLY_MAX);
+	struct lx_poly cut;
+	lx_poly_clip_halfplane(&h, 0, 1, 0.999, &cut); /* y >= -0.999: cuts off that vertex, adds two */
+	assert_true(cut.n >= 3 && cut.n <= LX_POLY_MAX);
+	int kept = 0;
+	vec2 inside[LX_POLY_MAX];
+	for (int k = 0; k < LX_POLY_MAX; k++)
+		if (g[k].y >= -0.999)
+			inside[kept++] = g[k];
+	assert_int_equal(kept, LX_POLY_MAX - 1);
+	assert_int_equal(cut.n, 32); /* 65 vertices: the 32-sided polygon around them */
+	assert_true(holds_all(&cut, inside, kept));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(polygon_caps_keep_a_superset),
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),

@@ -1,6 +1,7 @@
 #include "metrics.h"
 #include "reference.h"
 #include "test_util.h"
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -58,6 +59,38 @@ static void shadows_fall_where_geometry_says(void **state)
 	assert_true(lx_reference_shadowed(rc, &dir, v3(1.5, 0, 0), tri)); /* x in [0.5, 2.5] is shadowed */
 	assert_false(lx_reference_shadowed(rc, &dir, v3(0.45, 0, 0), tri));
 	assert_false(lx_reference_shadowed(rc, &dir, v3(2.6, 0, 0), tri));
+	lx_raycaster_destroy(rc);
+	lx_meshes_free(&m);
+}
+
+/* Boxes at x = 1, 2, 4, ... 2^31: the BVH's midpoint splits peel one box per level, past
+ * LX_BVH_MAX_DEPTH; below the cap the leaves take the rest, and every box is still found
+ * by a ray (the traversal once dropped nodes silently when its stack overflowed). */
+static void bvh_depth_cap_loses_nothing(void **state)
+{
+	(void)state;
+	struct lx_scene s = {0};
+	s.light = (struct lx_light){.position = {0, 1e10, 0}};
+	s.camera = (struct lx_camera){.eye = v3(0, 1e10, 1e9), .at = v3(0, 0, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
+	for (int k = 0; k < LX_MAX_CASTERS; k++)
+		s.casters[s.caster_count++] = (struct lx_caster){.shape = k % 2 ? LX_SPHERE : LX_BOX, .size = v3(0.3, 0.3, 0.3),
+								 .x = ldexp(1, k), .period = 1, .color = v3(1, 1, 1)};
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 16, 16, err, sizeof err));
+	struct lx_raycaster *rc = lx_raycaster_create(&f);
+	assert_non_null(rc);
+	assert_int_equal(lx_raycaster_depth(rc), LX_BVH_MAX_DEPTH); /* the cap was reached */
+	for (int k = 0; k < LX_MAX_CASTERS; k++) {
+		double t;
+		vec3 top = v3(ldexp(1, k), 10, 0);
+		int tri = lx_raycast_first(rc, top, v3(0, -1, 0), 0, 100, &t);
+		assert_true(tri >= 0);
+		assert_int_equal(lx_raycaster_object(rc, tri), k);
+		assert_true(lx_raycast_any(rc, top, v3(0, -1, 0), 0, 100, -1));
+	}
 	lx_raycaster_destroy(rc);
 	lx_meshes_free(&m);
 }
@@ -167,6 +200,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(shadows_fall_where_geometry_says),
+		cmocka_unit_test(bvh_depth_cap_loses_nothing),
 		cmocka_unit_test(reference_image_is_deterministic_across_threads),
 		cmocka_unit_test(mismatch_counts_each_kind),
 		cmocka_unit_test(jacobian_of_known_homographies),
