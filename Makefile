@@ -2,6 +2,8 @@
 #   make          build build/lixel
 #   make run      render the default scene to out/default.png (installs Debian packages first)
 #   make check    build and run every test (installs Debian packages first)
+#   make soak     the kiosk for 10 minutes under Xvfb, keys every 50 ms, its memory watched
+#                 (SOAK_SECONDS=N to shorten; not part of make check)
 #   make install  PREFIX=/usr/local DESTDIR=
 
 PREFIX ?= /usr/local
@@ -41,7 +43,7 @@ GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run check deps deps-check install uninstall clean asan
+.PHONY: all run check soak deps deps-check install uninstall clean asan
 
 all: $(BUILD)/lixel
 
@@ -97,7 +99,14 @@ $(BUILD)/gpio_button_v2_check.o: src/gpio_button.c src/gpio_button.h tests/gpiod
 check: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
 	@sh tests/run-tests.sh $(BUILD)
+	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
+	@SOAK_SECONDS=20 sh tests/kiosk_soak.sh $(BUILD)/lixel
 	@$(MAKE) --no-print-directory asan
+
+# The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
+soak: deps-check
+	@$(MAKE) --no-print-directory $(BUILD)/lixel
+	@sh tests/kiosk_soak.sh $(BUILD)/lixel
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check
