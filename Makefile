@@ -2,6 +2,8 @@
 #   make          build build/lixel
 #   make run      render the default scene to out/default.png (installs Debian packages first)
 #   make check    build and run every test (installs Debian packages first)
+#   make soak     the kiosk for 10 minutes under Xvfb, keys every 50 ms, its memory watched
+#                 (SOAK_SECONDS=N to shorten; not part of make check)
 #   make install  PREFIX=/usr/local DESTDIR=
 
 PREFIX ?= /usr/local
@@ -29,7 +31,7 @@ LIBS_GPIOD = $(shell $(PKG_CONFIG) --libs libgpiod 2>/dev/null)
 # Pure geometry: never includes a GL header, so the unit tests link it alone.
 CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
 	src/shadow_method.c src/lookup_region.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
-	src/configs.c src/json.c src/button.c src/gpio_lookup.c src/out_file.c src/embedded.c src/shader_text.c src/board.c src/kms_select.c src/font5x7.c src/cli_args.c src/number.c
+	src/configs.c src/json.c src/display_loss.c src/button.c src/gpio_lookup.c src/out_file.c src/embedded.c src/shader_text.c src/board.c src/kms_select.c src/font5x7.c src/cli_args.c src/number.c
 GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/depth_selftest.c src/platform.c src/platform_osmesa.c \
 	src/platform_egl.c src/platform_x11.c src/platform_kms.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c src/overlay.c
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
@@ -38,10 +40,10 @@ BOARDS = $(sort $(wildcard board/*.profile))
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
 GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
 
-TESTS = test_gpio test_kms_select test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
+TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run check deps deps-check install uninstall clean asan
+.PHONY: all run check soak deps deps-check install uninstall clean asan
 
 all: $(BUILD)/lixel
 
@@ -84,6 +86,10 @@ $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUI
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
 		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render test_extremes,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
 
+# A helper of tests/kiosk_x11.sh: closes the kiosk's window from another X client.
+$(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $(LDFLAGS) $< $(shell $(PKG_CONFIG) --libs x11) -o $@
+
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 # The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)
 # wherever the machine only has v1; it is linked only where libgpiod 2 is installed.
@@ -91,14 +97,21 @@ $(BUILD)/gpio_button_v2_check.o: src/gpio_button.c src/gpio_button.h tests/gpiod
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
 check: deps-check
-	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/gpio_button_v2_check.o
+	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
 	@sh tests/run-tests.sh $(BUILD)
+	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
+	@SOAK_SECONDS=20 sh tests/kiosk_soak.sh $(BUILD)/lixel
 	@$(MAKE) --no-print-directory asan
+
+# The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
+soak: deps-check
+	@$(MAKE) --no-print-directory $(BUILD)/lixel
+	@sh tests/kiosk_soak.sh $(BUILD)/lixel
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
-		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%)
+		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window
 	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
 
 # The binary (shaders and board profiles are built in), the man page, the profiles as

@@ -64,7 +64,11 @@ static void usage(FILE *f)
 		   "                    --depth-precision mediump)\n"
 		   "\n"
 		   "On SIGINT, SIGTERM or SIGHUP it puts back the display mode it found and exits 0.\n"
-		   "Exit status: 0 stopped (q, a signal, or N frames); 1 no display; 2 bad input.\n",
+		   "When its window is closed or destroyed, or another process takes the display (DRM\n"
+		   "master), it says so in one line and exits 0; when the X server or the DRM device\n"
+		   "goes away, one line and exit status 1.\n"
+		   "Exit status: 0 stopped (q, a signal, N frames, the window closed, the display taken);\n"
+		   "1 no display, or the display went away; 2 bad input.\n",
 		lx_board_names());
 }
 
@@ -267,7 +271,7 @@ int lx_kiosk_main(int argc, char **argv)
 		 * counts, even several within one frame (a slow frame must not swallow one) */
 		int shorts = 0, longs = 0;
 		for (int key; (key = plat->poll_key(plat)) != 0;) {
-			if (key == 'q' || key == 27 || key < 0)
+			if (key == 'q' || key == 27)
 				stop_requested = 1;
 			else if (key == ' ')
 				shorts++;
@@ -300,6 +304,13 @@ int lx_kiosk_main(int argc, char **argv)
 			nlines = 0; /* fresh text at once */
 			printf("overlay: %s\n", overlay ? "on" : "off");
 			fflush(stdout);
+		}
+		if (plat->state != LX_DISPLAY_OK) {
+			/* the window closed or the display taken: a clean stop; the display gone: 1 */
+			printf("lixel kiosk: %s; stopping\n", plat->why);
+			fflush(stdout);
+			status = plat->state == LX_DISPLAY_LOST;
+			break;
 		}
 		int64_t now = now_ns();
 		if (now - window_start >= 5000000000LL) {

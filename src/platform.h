@@ -3,6 +3,7 @@
  * platforms render into the renderer's own framebuffer objects. */
 #ifndef LX_PLATFORM_H
 #define LX_PLATFORM_H
+#include "display_loss.h"
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -13,10 +14,16 @@ struct lx_platform {
 	void *priv;
 	/* Windowed platforms (x11): the window's size, presenting a frame drawn into the
 	 * default framebuffer, and the next key pressed (0 when none; ' ', 'l', 'q', 27 for
-	 * Escape, -1 when the window was closed). NULL on headless platforms. */
+	 * Escape). NULL on headless platforms. */
 	int width, height;
 	void (*swap)(struct lx_platform *p);
 	int (*poll_key)(struct lx_platform *p);
+	/* Set by swap and poll_key when the window or the display went away (see
+	 * display_loss.h), with one line in why saying what happened; then the caller stops
+	 * drawing and destroys the platform, which frees all it holds without touching what is
+	 * gone. */
+	enum lx_display_state state;
+	char why[256];
 };
 
 /* Creates and makes current a context on the named platform ("osmesa" or "egl");

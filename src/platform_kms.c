@@ -2,7 +2,13 @@
  * OpenGL ES 2.0 context on the GBM surface. The device is the first that can mode-set
  * (or the one asked for), the mode the connector's preferred one (or the one asked for);
  * frames are shown by page flips in step with vblank; the CRTC that was there before is
- * put back when the platform is destroyed (the kiosk does so on SIGINT and SIGTERM). */
+ * put back when the platform is destroyed (the kiosk does so on SIGINT and SIGTERM).
+ *
+ * Another process may take the display (the kiosk's DRM master dropped, e.g. by a session
+ * manager handing the display to a display server): the next drmModePageFlip or
+ * drmModeSetCrtc fails with EACCES, or the flip event stops coming. What each failure means is decided by lx_kms_watch_frame
+ * (display_loss.c, unit-tested); a verdict other than OK sets the platform's state and
+ * the kiosk stops, trying to put the CRTC back on the way out. */
 #include "kms_select.h"
 #include "platform.h"
 #include <EGL/egl.h>
@@ -32,6 +38,7 @@ struct kms {
 	struct gbm_bo *bo; /* on screen */
 	uint32_t fb;
 	bool flip_pending;
+	struct lx_kms_watch watch;
 };
 
 static void *kms_get_proc(const char *name) { return (void *)eglGetProcAddress(name); }
@@ -63,35 +70,87 @@ static void flip_done(int fd, unsigned int frame, unsigned int sec, unsigned int
 	((struct kms *)data)->flip_pending = false;
 }
 
-static void wait_flip(struct kms *k)
+/* Waits for the pending flip's event; false when it did not come within a second (the
+ * kiosk must not hang on a display that stopped answering). */
+static bool wait_flip(struct kms *k)
 {
 	drmEventContext ev = {.version = 2, .page_flip_handler = flip_done};
+	bool done = true;
 	while (k->flip_pending) {
 		struct pollfd p = {.fd = k->fd, .events = POLLIN};
-		if (poll(&p, 1, 1000) <= 0)
-			break; /* no vblank within a second: do not hang the kiosk */
-		drmHandleEvent(k->fd, &ev);
+		int n = poll(&p, 1, 1000);
+		if (n < 0 && errno == EINTR)
+			continue; /* a signal: the kiosk's stop flag is read after the frame */
+		if (n <= 0) {
+			done = false;
+			break;
+		}
+		if (drmHandleEvent(k->fd, &ev) != 0) {
+			done = false;
+			break;
+		}
 	}
 	k->flip_pending = false;
+	return done;
+}
+
+/* One frame's outcome to the watch; a verdict other than OK stops the kiosk. */
+static void watch(struct kms *k, const char *call, int err)
+{
+	int master = err ? drmIsMaster(k->fd) : -1;
+	char why[sizeof k->base.why];
+	enum lx_display_state s = lx_kms_watch_frame(&k->watch, call, err, master, why, sizeof why);
+	if (s != LX_DISPLAY_OK && k->base.state == LX_DISPLAY_OK) {
+		k->base.state = s;
+		snprintf(k->base.why, sizeof k->base.why, "%s", why);
+	}
 }
 
 static void kms_swap(struct lx_platform *p)
 {
 	struct kms *k = (struct kms *)p;
-	eglSwapBuffers(k->edpy, k->esurf);
-	struct gbm_bo *next = gbm_surface_lock_front_buffer(k->surface);
-	uint32_t fb = next ? fb_of(k, next) : 0;
-	if (!fb)
+	if (p->state != LX_DISPLAY_OK)
 		return;
-	if (!k->bo) /* the first frame sets the mode */
-		drmModeSetCrtc(k->fd, k->crtc_id, fb, 0, 0, &k->connector_id, 1, &k->mode);
-	else if (drmModePageFlip(k->fd, k->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, k) == 0) {
-		k->flip_pending = true;
-		wait_flip(k);
+	if (!eglSwapBuffers(k->edpy, k->esurf)) {
+		EGLint e = eglGetError();
+		enum lx_display_state s = lx_egl_swap_state(e);
+		if (s != LX_DISPLAY_OK) {
+			p->state = s;
+			snprintf(p->why, sizeof p->why, "lost the display (eglSwapBuffers: EGL error 0x%04x)", (unsigned)e);
+		}
+		return;
 	}
-	if (k->bo)
+	errno = 0;
+	struct gbm_bo *next = gbm_surface_lock_front_buffer(k->surface);
+	if (!next) {
+		watch(k, "gbm_surface_lock_front_buffer", errno ? errno : EBUSY);
+		return;
+	}
+	errno = 0;
+	uint32_t fb = fb_of(k, next);
+	if (!fb) {
+		gbm_surface_release_buffer(k->surface, next); /* never shown: back to the surface */
+		watch(k, "drmModeAddFB", errno ? errno : EINVAL);
+		return;
+	}
+	/* libdrm returns -errno */
+	const char *call = k->bo ? "drmModePageFlip" : "drmModeSetCrtc";
+	int ret = k->bo ? drmModePageFlip(k->fd, k->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, k)
+			: drmModeSetCrtc(k->fd, k->crtc_id, fb, 0, 0, &k->connector_id, 1, &k->mode); /* the first frame sets the mode */
+	if (ret) {
+		gbm_surface_release_buffer(k->surface, next);
+		watch(k, call, -ret);
+		return;
+	}
+	int err = 0;
+	if (k->bo) {
+		k->flip_pending = true;
+		if (!wait_flip(k))
+			err = LX_KMS_NO_FLIP_EVENT;
 		gbm_surface_release_buffer(k->surface, k->bo);
+	}
 	k->bo = next;
+	watch(k, call, err);
 }
 
 static int kms_poll_key(struct lx_platform *p)
@@ -105,8 +164,13 @@ static void kms_destroy(struct lx_platform *p)
 	struct kms *k = (struct kms *)p;
 	wait_flip(k);
 	if (k->saved) {
-		drmModeSetCrtc(k->fd, k->saved->crtc_id, k->saved->buffer_id, k->saved->x, k->saved->y, &k->connector_id, 1,
-			       &k->saved->mode);
+		/* tried even when another process took the display: it fails then (EACCES),
+		 * and the display stays as the new master set it */
+		int ret = drmModeSetCrtc(k->fd, k->saved->crtc_id, k->saved->buffer_id, k->saved->x, k->saved->y,
+					 &k->connector_id, 1, &k->saved->mode);
+		if (ret && k->bo)
+			fprintf(stderr, "lixel kiosk: could not put back the display mode it found (drmModeSetCrtc: %s)\n",
+				strerror(-ret));
 		drmModeFreeCrtc(k->saved);
 	}
 	if (k->edpy != EGL_NO_DISPLAY) {

@@ -1,14 +1,27 @@
 /* EGL with an OpenGL ES 2.0 context on an X11 window: the kiosk's desktop emulation
- * (`lixel kiosk --platform x11`), and the way the tests drive it under Xvfb. */
+ * (`lixel kiosk --platform x11`), and the way the tests drive it under Xvfb.
+ *
+ * The window may go away under the kiosk: the window manager asks to close it
+ * (WM_DELETE_WINDOW), another client destroys it (DestroyNotify, or a BadWindow or
+ * BadDrawable error naming it), or the X server goes (Xlib's I/O error). Each sets the
+ * platform's state instead of letting Xlib end the process, and the kiosk stops. */
 #include "platform.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+_Static_assert(LX_EGL_BAD_SURFACE == EGL_BAD_SURFACE && LX_EGL_BAD_NATIVE_WINDOW == EGL_BAD_NATIVE_WINDOW &&
+		       LX_EGL_BAD_CURRENT_SURFACE == EGL_BAD_CURRENT_SURFACE && LX_EGL_BAD_DISPLAY == EGL_BAD_DISPLAY &&
+		       LX_EGL_NOT_INITIALIZED == EGL_NOT_INITIALIZED && LX_EGL_CONTEXT_LOST == EGL_CONTEXT_LOST &&
+		       LX_EGL_BAD_ALLOC == EGL_BAD_ALLOC && LX_EGL_SUCCESS == EGL_SUCCESS,
+	       "display_loss.h mirrors EGL's error codes");
 
 struct x11 {
 	struct lx_platform base;
@@ -18,13 +31,70 @@ struct x11 {
 	EGLDisplay edpy;
 	EGLSurface surface;
 	EGLContext ctx;
+	bool win_gone;       /* destroyed by another client: not ours to destroy again */
+	bool conn_gone;      /* the X server went away: no request may be sent */
+	bool error_reported; /* one warning for X errors that are not about the window */
 };
 
 static void *x11_get_proc(const char *name) { return (void *)eglGetProcAddress(name); }
 
+/* Xlib's handlers are the process's, not one display's: they report to the one window
+ * there is while it exists, and the ones found before are put back after. */
+static struct x11 *handled;
+static XErrorHandler old_error_handler;
+static XIOErrorHandler old_io_handler;
+
+static void set_state(struct x11 *x, enum lx_display_state s, const char *why)
+{
+	if (x->base.state != LX_DISPLAY_OK)
+		return; /* the first cause is the one to tell */
+	x->base.state = s;
+	snprintf(x->base.why, sizeof x->base.why, "%s", why);
+}
+
+static int on_x_error(Display *dpy, XErrorEvent *e)
+{
+	struct x11 *x = handled;
+	if (!x || dpy != x->dpy)
+		return 0;
+	if ((e->error_code == BadWindow || e->error_code == BadDrawable) && e->resourceid == x->win) {
+		x->win_gone = true;
+		set_state(x, LX_DISPLAY_CLOSED, "the window was closed (destroyed by another client)");
+	} else if (!x->error_reported) {
+		/* Xlib's default handler ends the process here; one line, and the kiosk goes on */
+		char text[128];
+		XGetErrorText(dpy, e->error_code, text, sizeof text);
+		fprintf(stderr, "lixel kiosk: warning: X error %s (request %d.%d) ignored\n", text, e->request_code,
+			e->minor_code);
+		x->error_reported = true;
+	}
+	return 0;
+}
+
+/* Called first when the connection breaks; Xlib's own prints a line, this is quiet. */
+static int on_x_io_error(Display *dpy)
+{
+	(void)dpy;
+	return 0;
+}
+
+/* Called instead of exit(1) once the connection broke: Xlib then refuses requests on
+ * this display, and the kiosk stops at the end of the frame. */
+static void on_x_io_exit(Display *dpy, void *data)
+{
+	struct x11 *x = data;
+	(void)dpy;
+	x->conn_gone = true;
+	char why[200];
+	snprintf(why, sizeof why, "lost the connection to the X server (%s)", DisplayString(dpy));
+	set_state(x, LX_DISPLAY_LOST, why);
+}
+
 static void x11_destroy(struct lx_platform *p)
 {
 	struct x11 *x = (struct x11 *)p;
+	if (x->dpy && !x->conn_gone)
+		XSync(x->dpy, False); /* errors still on their way reach the handler, not exit() */
 	if (x->edpy != EGL_NO_DISPLAY) {
 		eglMakeCurrent(x->edpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 		if (x->ctx != EGL_NO_CONTEXT)
@@ -33,27 +103,71 @@ static void x11_destroy(struct lx_platform *p)
 			eglDestroySurface(x->edpy, x->surface);
 		eglTerminate(x->edpy);
 	}
-	if (x->win)
+	if (x->win && !x->win_gone && !x->conn_gone)
 		XDestroyWindow(x->dpy, x->win);
-	if (x->dpy)
+	if (x->dpy && !x->conn_gone)
+		XSync(x->dpy, False);
+	if (x->dpy && x->conn_gone) {
+		/* libX11 1.8's XCloseDisplay still queues its requests (free the default GC,
+		 * sync) on a broken connection and prints a line for each it cannot; the kiosk
+		 * has said what happened: those lines go to /dev/null while it frees */
+		fflush(stderr);
+		int saved = dup(STDERR_FILENO), null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+		if (saved >= 0 && null >= 0)
+			dup2(null, STDERR_FILENO);
 		XCloseDisplay(x->dpy);
+		if (saved >= 0 && null >= 0)
+			dup2(saved, STDERR_FILENO);
+		if (saved >= 0)
+			close(saved);
+		if (null >= 0)
+			close(null);
+	} else if (x->dpy)
+		XCloseDisplay(x->dpy);
+	if (handled == x) {
+		XSetErrorHandler(old_error_handler);
+		XSetIOErrorHandler(old_io_handler);
+		handled = NULL;
+	}
 	free(x);
 }
 
 static void x11_swap(struct lx_platform *p)
 {
 	struct x11 *x = (struct x11 *)p;
-	eglSwapBuffers(x->edpy, x->surface);
+	/* Mesa's software path (22.3) loops for ever in eglSwapBuffers when its connection
+	 * already broke (the largest request it may send is 0 bytes then): XPending reads the
+	 * connection first, and a broken one ends the frame here (on_x_io_exit) */
+	if (p->state == LX_DISPLAY_OK && !x->conn_gone)
+		XPending(x->dpy);
+	if (p->state != LX_DISPLAY_OK || x->conn_gone)
+		return;
+	if (!eglSwapBuffers(x->edpy, x->surface)) {
+		EGLint e = eglGetError();
+		enum lx_display_state s = lx_egl_swap_state(e);
+		char why[200];
+		if (s == LX_DISPLAY_CLOSED)
+			snprintf(why, sizeof why, "the window was closed (eglSwapBuffers: EGL error 0x%04x)", (unsigned)e);
+		else
+			snprintf(why, sizeof why, "lost the display (eglSwapBuffers: EGL error 0x%04x)", (unsigned)e);
+		if (s != LX_DISPLAY_OK)
+			set_state(x, s, why);
+	}
 }
 
 static int x11_poll_key(struct lx_platform *p)
 {
 	struct x11 *x = (struct x11 *)p;
-	while (XPending(x->dpy)) {
+	/* XPending reads the connection: a broken one calls on_x_io_exit and returns 0 */
+	while (!x->conn_gone && XPending(x->dpy)) {
 		XEvent ev;
 		XNextEvent(x->dpy, &ev);
 		if (ev.type == ClientMessage && (Atom)ev.xclient.data.l[0] == x->wm_delete)
-			return -1;
+			set_state(x, LX_DISPLAY_CLOSED, "the window was closed (by the window manager)");
+		if (ev.type == DestroyNotify && ev.xdestroywindow.window == x->win) {
+			x->win_gone = true;
+			set_state(x, LX_DISPLAY_CLOSED, "the window was closed (destroyed by another client)");
+		}
 		if (ev.type != KeyPress)
 			continue;
 		KeySym sym = XLookupKeysym(&ev.xkey, 0);
@@ -128,5 +242,11 @@ struct lx_platform *lx_platform_x11_create(int width, int height, char *err, siz
 	}
 	x->base = (struct lx_platform){.name = "x11", .get_proc = x11_get_proc, .destroy = x11_destroy,
 				       .width = width, .height = height, .swap = x11_swap, .poll_key = x11_poll_key};
+	if (!handled) {
+		handled = x;
+		old_error_handler = XSetErrorHandler(on_x_error);
+		old_io_handler = XSetIOErrorHandler(on_x_io_error);
+	}
+	XSetIOErrorExitHandler(x->dpy, on_x_io_exit, x);
 	return &x->base;
 }

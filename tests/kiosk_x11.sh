@@ -1,8 +1,11 @@
 #!/bin/sh
 # The kiosk's desktop emulation under Xvfb, driven by synthetic key presses (xdotool):
-# a space changes the method, l toggles the overlay, q quits with status 0; a board whose
-# GPIO chip is missing warns and runs on; bad input exits 2; KMS without a DRM device is one
-# clear error, and a DISPLAY then gets the x11 window. No GPU, no DRM, no GPIO.
+# a space changes the method (every press, also many within one frame), l toggles the
+# overlay, q quits with status 0; the window destroyed by another client or closed by the
+# window manager stops it with one line and status 0, the X server killed with one line
+# and status 1; a board whose GPIO chip is missing warns and runs on; bad input exits 2;
+# KMS without a DRM device is one clear error, and a DISPLAY then gets the x11 window.
+# No GPU, no DRM, no GPIO.
 # Usage: tests/kiosk_x11.sh path/to/lixel
 set -u
 lixel=${1:?usage: kiosk_x11.sh path/to/lixel}
@@ -12,31 +15,19 @@ fail=0
 ok() { pass=$((pass + 1)); }
 no() { fail=$((fail + 1)); echo "FAIL: $*"; }
 xvfb_pid=
+xvfb2_pid=
 # wait for Xvfb to be gone, so that the next run does not find it dying on its display
-cleanup() { [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null; rm -rf "$tmp"; }
+cleanup() {
+  for p in $xvfb_pid $xvfb2_pid; do kill "$p" 2>/dev/null && wait "$p" 2>/dev/null; done
+  rm -rf "$tmp"
+}
 trap cleanup EXIT
 
-# an Xvfb on the first display number that starts and answers
-display=
-for n in 91 92 93 94 95 96 97 98 99; do
-  [ -e "/tmp/.X$n-lock" ] && continue
-  # -noreset: by default the server resets when its last client (the probe below) leaves,
-  # and a client connecting during that reset is refused
-  Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp -noreset >/dev/null 2>&1 &
-  xvfb_pid=$!
-  for i in $(seq 1 100); do
-    kill -0 "$xvfb_pid" 2>/dev/null || break # it could not take the display
-    if DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1; then
-      sleep 0.2
-      kill -0 "$xvfb_pid" 2>/dev/null && display=":$n" # still ours, not another's dying server
-      break
-    fi
-    sleep 0.1
-  done
-  [ -n "$display" ] && break
-  kill "$xvfb_pid" 2>/dev/null
-  xvfb_pid=
-done
+. "$(dirname "$0")/xvfb.sh"
+
+start_xvfb 91
+display=$started_display
+xvfb_pid=$started_pid
 if [ -z "$display" ]; then
   echo "FAIL: no Xvfb display could be started"
   echo "kiosk: 0 passed, 1 failed"
@@ -143,6 +134,96 @@ if [ ! -e /dev/dri ]; then
     no "automatic x11: status $st: $(cat "$tmp/out" "$tmp/err")"
 else
   echo "kiosk: /dev/dri exists: the no-DRM checks are skipped"
+fi
+
+# waits (up to $2 tenths of a second) for process $1 to end; kills it if it does not and
+# returns 1
+wait_gone() {
+  for i in $(seq 1 "$2"); do kill -0 "$1" 2>/dev/null || return 0; sleep 0.1; done
+  kill -9 "$1" 2>/dev/null
+  return 1
+}
+# waits for the kiosk's start line in $tmp/out (the loop is running)
+wait_started() {
+  for i in $(seq 1 200); do grep -q '^lixel kiosk: GL_VENDOR' "$tmp/out" 2>/dev/null && return; sleep 0.1; done
+}
+helper=$(dirname "$lixel")/tests/destroy_window
+
+# 8. N key presses sent at once (one xdotool call, no delay between them) make N method
+#    changes: the loop reads every pending key each frame, not one per frame
+presses=30
+"$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>&1 &
+pid=$!
+wid=$(find_window)
+wait_started
+if [ -n "$wid" ]; then
+  # shellcheck disable=SC2046
+  xdotool key --window "$wid" --delay 0 $(yes space | head -n "$presses") >/dev/null 2>&1
+  sleep 0.5
+  key q
+fi
+wait_gone "$pid" 100 || no "kiosk did not quit on q after $presses presses"
+wait "$pid"; st=$?
+changes=$(grep -c '^method: ' "$tmp/out")
+[ "$st" -eq 0 ] && [ "$changes" -eq "$presses" ] && ok || no "$presses presses at once: status $st, $changes method changes: $(cat "$tmp/out")"
+# each change starts where the one before ended, from plane, round the desktop's six methods
+awk '/^method: /{ if (prev != "" && $2 != prev) bad = 1; prev = $4; if (first == "") first = $2 } END { exit !(first == "plane" && !bad) }' "$tmp/out" &&
+  ok || no "the method changes do not follow each other: $(grep '^method: ' "$tmp/out" | head -n 8)"
+
+# 9. the window destroyed by another client (XDestroyWindow): one line, status 0, and the
+#    kiosk does not touch the window again (Xlib's default handler would end it with 1)
+if [ -x "$helper" ]; then
+  "$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  pid=$!
+  wid=$(find_window)
+  wait_started
+  sleep 0.3
+  if [ -n "$wid" ] && "$helper" "$wid" 2>"$tmp/helper"; then
+    wait_gone "$pid" 200 || no "kiosk still running 20 s after its window was destroyed"
+    wait "$pid"; st=$?
+    [ "$st" -eq 0 ] && [ "$(grep -c '^lixel kiosk: the window was closed (destroyed by another client); stopping$' "$tmp/out")" -eq 1 ] &&
+      ok || no "window destroyed: status $st: $(cat "$tmp/out" "$tmp/err")"
+    grep -q 'X Error\|BadWindow' "$tmp/out" "$tmp/err" && no "window destroyed: an X error was printed: $(cat "$tmp/err")" || ok
+  else
+    kill "$pid" 2>/dev/null; wait "$pid"
+    no "could not destroy the kiosk's window '$wid': $(cat "$tmp/helper")"
+  fi
+  # the window manager's close (WM_DELETE_WINDOW): the same, in its own words
+  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+  pid=$!
+  wid=$(find_window)
+  wait_started
+  if [ -n "$wid" ] && "$helper" --wm-delete "$wid" 2>"$tmp/helper"; then
+    wait_gone "$pid" 200 || no "kiosk still running 20 s after WM_DELETE_WINDOW"
+    wait "$pid"; st=$?
+    [ "$st" -eq 0 ] && grep -q '^lixel kiosk: the window was closed (by the window manager); stopping$' "$tmp/out" &&
+      ok || no "WM_DELETE_WINDOW: status $st: $(cat "$tmp/out")"
+  else
+    kill "$pid" 2>/dev/null; wait "$pid"
+    no "could not send WM_DELETE_WINDOW to '$wid': $(cat "$tmp/helper")"
+  fi
+else
+  no "the helper $helper is missing (make builds it)"
+fi
+
+# 10. the X server killed under the kiosk (its own Xvfb): no hang, one line, status 1 (the
+#     display went away: a failure, which a supervisor may restart)
+start_xvfb 81
+xvfb2_pid=$started_pid
+if [ -n "$started_display" ]; then
+  DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  pid=$!
+  wait_started
+  sleep 0.5
+  kill "$xvfb2_pid"; wait "$xvfb2_pid" 2>/dev/null
+  xvfb2_pid=
+  wait_gone "$pid" 200 || no "kiosk still running 20 s after its X server was killed"
+  wait "$pid"; st=$?
+  [ "$st" -eq 1 ] && grep -q "^lixel kiosk: lost the connection to the X server ($started_display); stopping\$" "$tmp/out" &&
+    ok || no "X server killed: status $st: $(cat "$tmp/out" "$tmp/err")"
+  [ ! -s "$tmp/err" ] && ok || no "X server killed: stderr is not empty: $(cat "$tmp/err")"
+else
+  no "no second Xvfb display could be started"
 fi
 
 echo "kiosk: $pass passed, $fail failed"
