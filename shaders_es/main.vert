@@ -12,7 +12,7 @@
 #define LX_USE_3 0
 #endif
 // Main pass. LX_MAPS (0 to 4) shadow maps exist; a variant reads those with LX_USE_i = 1
-// and declares nothing for the others: every varying costs an interpolation per pixel.
+// and declares varyings for those only: every varying costs an interpolation per pixel.
 uniform mat4 u_view_proj;
 uniform vec3 u_offset; // object translation in world space
 uniform vec4 u_light;  // xyz: position (w = 1) or direction of travel (w = 0)

@@ -1,5 +1,5 @@
-/* The named view and light configurations every comparison covers (the shared notes'
- * measuring rules), applied on top of a scene. GL-free. */
+/* The named view and light configurations every comparison covers (docs/lixel.md,
+ * "The exact reference and the metrics"), applied on top of a scene. GL-free. */
 #ifndef LX_CONFIGS_H
 #define LX_CONFIGS_H
 #include "scene.h"

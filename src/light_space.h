@@ -2,7 +2,7 @@
  * a light view whose image plane G (z = -1 in light view space) charts the light rays
  * (tangents x/depth, y/depth for a point light; x, y for a directional light), the
  * hulls on G of what receivers and casters project to, and their depth range
- * (papers/003's unit cube clipping; papers/000's C_tot). GL-free. */
+ * ([Kapoulkine]'s unit cube clipping; [Chong-Gortler]'s C_tot). GL-free. */
 #ifndef LX_LIGHT_SPACE_H
 #define LX_LIGHT_SPACE_H
 #include "convex.h"

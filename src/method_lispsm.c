@@ -1,10 +1,10 @@
-/* Light space perspective shadow maps (papers/001). In light space (world seen from a
+/* Light space perspective shadow maps ([LiSPSM]). In light space (world seen from a
  * directional light; the light's post-perspective space for a point light, where its
  * rays are parallel) a perspective frustum along up = (l x v) x l, perpendicular to the
  * light, encloses the body B (the receivers and the casters): near objects get more of
  * the 512x512 map. n from the general formula with the angle gamma between view and
  * light; the warp fades out (uniform) as the view becomes parallel to the light. Unit
- * cube clipping in the warped space (papers/003). */
+ * cube clipping in the warped space ([Kapoulkine]). */
 #include "method_lispsm.h"
 #include "light_space.h"
 #include <math.h>

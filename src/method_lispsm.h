@@ -1,4 +1,4 @@
-/* Light space perspective shadow maps (Wimmer, Scherzer and Purgathofer; papers/001):
+/* Light space perspective shadow maps ([LiSPSM]):
  * the parts the tests reach directly. */
 #ifndef LX_METHOD_LISPSM_H
 #define LX_METHOD_LISPSM_H

@@ -1,4 +1,4 @@
-/* Plane-optimal shadow maps (papers/000, Chong and Gortler): one map per plane of
+/* Plane-optimal shadow maps ([Chong-Gortler]): one map per plane of
  * interest (the scene's first two planes: floor and wall, or table and floor) whose
  * light image samples that plane exactly where the view's pixels do, and a small
  * conventional fallback map, focused on the receivers no plane map takes (the casters
@@ -588,7 +588,7 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 	return false;
 }
 
-/* The fallback's rays on G (papers/003's unit cube clipping, on its own receivers): the
+/* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
  * casters' boxes in view (their surfaces are receivers no plane map serves) and the
  * visible part of each plane that needs it, within what the casters cover. False when a
  * point cannot be charted on G (a receiver behind the point light). */

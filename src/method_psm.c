@@ -1,5 +1,5 @@
-/* Perspective shadow maps (Stamminger and Drettakis; papers/002 and 003 with Kozlov's
- * care): the shadow map is taken in the post-perspective space (PPS) of a virtual
+/* Perspective shadow maps ([PSM], as [Martin-PSM] and [Kapoulkine] build it, with
+ * [Kozlov]'s care): the shadow map is taken in the post-perspective space (PPS) of a virtual
  * camera, the real one slid back until every caster lies in front of it.
  *
  * In PPS the light L' = PPS L is a homogeneous point of any kind: in front (w > 0), an

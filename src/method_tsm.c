@@ -1,4 +1,4 @@
-/* Trapezoidal shadow maps (Martin and Tan; papers/002 and the shared notes). In the
+/* Trapezoidal shadow maps ([Martin-Tan]). In the
  * uniform map's post-perspective space (where light rays are parallel to z), the rays
  * the view needs are enclosed in a trapezoid whose centre line runs from the view's
  * near plane to its far plane, and the trapezoid is mapped onto the 512x512 square by a

@@ -1,5 +1,5 @@
 /* Uniform shadow map: one 512x512 map from the light, orthographic for a directional
- * light and perspective for a point light, focused by unit cube clipping (papers/003):
+ * light and perspective for a point light, focused by unit cube clipping ([Kapoulkine]):
  * x, y cover the intersection of what receivers and casters project to, near is the
  * casters' minimum depth (no caster is clipped), far is the receivers' maximum depth.
  * The geometry lives in light_space.c, shared with the plane-optimal fallback map. */

@@ -1,4 +1,4 @@
-/* The accuracy metrics of docs/measuring (shared notes): shadow mismatch against the
+/* The accuracy metrics of docs/lixel.md ("The exact reference and the metrics"): shadow mismatch against the
  * exact reference, and the sampling figures of a map on a plane computed exactly from
  * the matrices. GL-free. */
 #ifndef LX_METRICS_H

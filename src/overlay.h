@@ -9,7 +9,8 @@ struct lx_overlay;
 
 struct lx_overlay *lx_overlay_create(char *err, size_t errlen);
 void lx_overlay_destroy(struct lx_overlay *o);
-/* Lays out and uploads the text (each font pixel `scale` pixels): only when it changes. */
+/* Lays out and uploads the text (each font pixel `scale` pixels). Every call uploads:
+ * the kiosk calls it once a second, not per frame. */
 void lx_overlay_set_text(struct lx_overlay *o, const char *const *lines, int n, int scale);
 /* Draws the text last set into the bound framebuffer of width x height. */
 void lx_overlay_draw(struct lx_overlay *o, int width, int height);

@@ -1,5 +1,5 @@
 /* The plane-optimal light camera of Chong and Gortler, "A Lixel for every Pixel"
- * (papers/000), GL-free. For a plane of interest P, a light L and the view, the light
+ * ([Chong-Gortler]), GL-free. For a plane of interest P, a light L and the view, the light
  * image samples P exactly where the view's pixels do: for every point of P its light
  * image (x, y) equals its window coordinates. */
 #ifndef LX_PLANE_OPTIMAL_H

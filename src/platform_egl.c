@@ -1,6 +1,6 @@
-/* EGL with a real OpenGL ES 2.0 context. Without a display (this build machine, CI)
- * it uses Mesa's surfaceless platform and renders into framebuffer objects; the same
- * context set-up will drive GBM/KMS on boards. */
+/* EGL with a real OpenGL ES 2.0 context and no display: Mesa's surfaceless platform,
+ * rendering into framebuffer objects (desktop tests, CI). The displays' EGL set-ups are
+ * in platform_kms.c (GBM) and platform_x11.c. */
 #include "platform.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>

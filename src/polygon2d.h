@@ -1,5 +1,5 @@
 /* Convex polygons in 2D, GL-free: hulls, intersections and the hull of a difference,
- * for the sets of wanted light rays drawn on a plane (papers/000, section 3).
+ * for the sets of wanted light rays drawn on a plane ([Chong-Gortler], section 3).
  * Polygons are counter-clockwise vertex lists. */
 #ifndef LX_POLYGON2D_H
 #define LX_POLYGON2D_H

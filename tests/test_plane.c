@@ -256,7 +256,7 @@ struct degenerate {
 	const char *warning; /* a fragment expected among the warnings, or NULL */
 };
 
-/* Item 7 of the plane-optimal issue: every singular or degenerate configuration gives
+/* Every singular or degenerate configuration gives
  * finite matrices, a similarity where a plane map runs, and the documented warning. */
 static void degenerate_configurations(void **state)
 {

@@ -134,7 +134,7 @@ static double check_config(const char *platform, const char *method, const char 
 	struct lx_scene scene;
 	lx_scene_default(&scene);
 	lx_config_apply(lx_config_find(config), &scene);
-	/* PSM is known to deteriorate (papers/002): with the camera level, the wall's lixels
+	/* PSM is known to deteriorate ([Martin-PSM]): with the camera level, the wall's lixels
 	 * span up to 15 pixels; its edge bound stays as strict, its total bound is 2% */
 	return check_against_reference(platform, method, &scene, config, mediump, dist, strcmp(method, "psm") ? 0.5 : 2.0);
 }

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The 1-D model of the shared notes: a directional light perpendicular to the view,
+/* The 1-D model of sampling error ([LiSPSM], section on the optimal n): a directional light perpendicular to the view,
  * view depths z in [z_n, z_f]. A pixel at depth z covers a length proportional to z; a
  * lixel covers 1 / (N du/dz). The worst m, max over z of 1 / (z du/dz), is (z_f - z_n) / z_n
  * for a uniform map and (z_f - z_n) / sqrt(z_n z_f) with LiSPSM's n_opt: 99 against 9.9
