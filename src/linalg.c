@@ -228,3 +228,5 @@ bool m3_invert(const mat3 *a, mat3 *out)
 	*out = r;
 	return true;
 }
+
+double v4_len(vec4 a) { return sqrt(v4_dot(a, a)); /* a sum of squares: >= 0 */ }

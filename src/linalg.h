@@ -33,6 +33,17 @@ mat4 m4_identity(void);
 mat4 m4_mul(const mat4 *a, const mat4 *b);
 vec4 m4_mul_v4(const mat4 *a, vec4 v);
 vec4 m4_mul_point(const mat4 *a, vec3 p); /* w = 1 */
+/* Row r of a matrix: as a plane, r . (x, y, z, 1) >= 0 on world points. */
+static inline vec4 m4_row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
+/* a p + b q */
+static inline vec4 v4_lin(double a, vec4 p, double b, vec4 q)
+{
+	return (vec4){a * p.x + b * q.x, a * p.y + b * q.y, a * p.z + b * q.z, a * p.w + b * q.w};
+}
+static inline double v4_dot(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
+/* a . (p, 1): the plane a at point p */
+static inline double v4_dot_point(vec4 a, vec3 p) { return a.x * p.x + a.y * p.y + a.z * p.z + a.w; }
+double v4_len(vec4 a);
 /* Inverse by Gaussian elimination with partial pivoting; false when singular
  * (pivot below 1e-300 relative to the matrix's largest element). */
 bool m4_invert(const mat4 *a, mat4 *out);

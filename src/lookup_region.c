@@ -32,14 +32,6 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 	return true;
 }
 
-/* Row r of a matrix: the plane r . (x, y, z, 1) on world points. */
-static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
-
-/* a p + b q */
-static vec4 lin(double a, vec4 p, double b, vec4 q)
-{
-	return (vec4){a * p.x + b * q.x, a * p.y + b * q.y, a * p.z + b * q.z, a * p.w + b * q.w};
-}
 
 /* Adds the half-space p . (x, y, z, 1) >= 0 scaled to a unit normal. One without a
  * normal holds everywhere or nowhere (an orthographic map's w = 1): false when nowhere.
@@ -124,8 +116,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	if (!lx_shadow_map_draws(map, f, id))
 		return -1;
 	const mat4 *m = &map->light_clip;
-	vec4 r0 = row(m, 0), r1 = row(m, 1), r2 = row(m, 2), r3 = row(m, 3);
-	vec4 dir[OCTAGON] = {r0, r1, lin(1, r0, 1, r1), lin(1, r0, -1, r1)}; /* x, y, x + y, x - y */
+	vec4 r0 = m4_row(m, 0), r1 = m4_row(m, 1), r2 = m4_row(m, 2), r3 = m4_row(m, 3);
+	vec4 dir[OCTAGON] = {r0, r1, v4_lin(1, r0, 1, r1), v4_lin(1, r0, -1, r1)}; /* x, y, x + y, x - y */
 	int n = 0;
 	double b0[OCTAGON], b1[OCTAGON], z0 = INFINITY;
 	for (int d = 0; d < OCTAGON; d++)
@@ -185,13 +177,13 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		if (!(b0[d] <= b1[d]))
 			return -1; /* nothing of it in front of the light, or outside the rays served */
 		/* N >= b0 w and N <= b1 w, where bounded */
-		if ((isfinite(b0[d]) && !add_plane(pl, &n, lin(1, dir[d], -b0[d], r3))) ||
-		    (isfinite(b1[d]) && !add_plane(pl, &n, lin(b1[d], r3, -1, dir[d]))))
+		if ((isfinite(b0[d]) && !add_plane(pl, &n, v4_lin(1, dir[d], -b0[d], r3))) ||
+		    (isfinite(b1[d]) && !add_plane(pl, &n, v4_lin(b1[d], r3, -1, dir[d]))))
 			return -1;
 	}
 	/* depth: beyond the caster's nearest point, a few 11-bit codes nearer for the mediump
 	 * path's rounding; and in front of the light */
-	if ((isfinite(z0) && !add_plane(pl, &n, lin(1, r2, -(z0 - 0.01), r3))) || !add_plane(pl, &n, r3))
+	if ((isfinite(z0) && !add_plane(pl, &n, v4_lin(1, r2, -(z0 - 0.01), r3))) || !add_plane(pl, &n, r3))
 		return -1;
 	return n;
 }
@@ -267,7 +259,7 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 {
 	v->frame = f, v->res = res;
 	lx_view_frustum_corners(&f->view, v->frustum);
-	vec4 near = lin(1, row(&f->view.view_proj, 2), 1, row(&f->view.view_proj, 3)); /* z + w >= 0 */
+	vec4 near = v4_lin(1, m4_row(&f->view.view_proj, 2), 1, m4_row(&f->view.view_proj, 3)); /* z + w >= 0 */
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		const struct lx_region *g = &atlas->regions[map->region]; /* regions are >= 1 lixel */
@@ -416,12 +408,12 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	a[0] = v3_add(p->corner, f->offset[id]);
 	a[1] = v3_add(a[0], p->edge1), a[2] = v3_add(a[1], p->edge2), a[3] = v3_add(a[0], p->edge2);
 	/* window x >= x0: ndc x >= 2 x0 / width - 1, i.e. x - (that) w >= 0; and so on */
-	vec4 r0 = row(&v->view_proj, 0), r1 = row(&v->view_proj, 1), r2 = row(&v->view_proj, 2),
-	     r3 = row(&v->view_proj, 3);
+	vec4 r0 = m4_row(&v->view_proj, 0), r1 = m4_row(&v->view_proj, 1), r2 = m4_row(&v->view_proj, 2),
+	     r3 = m4_row(&v->view_proj, 3);
 	double x0 = 2.0 * box.x0 / v->width - 1, x1 = 2.0 * box.x1 / v->width - 1;
 	double y0 = 2.0 * box.y0 / v->height - 1, y1 = 2.0 * box.y1 / v->height - 1;
-	vec4 pl[5] = {lin(1, r0, -x0, r3), lin(x1, r3, -1, r0), lin(1, r1, -y0, r3), lin(y1, r3, -1, r1),
-		      lin(1, r2, 2, r3)}; /* z >= -2 w: between the eye and the near plane (z = -w) */
+	vec4 pl[5] = {v4_lin(1, r0, -x0, r3), v4_lin(x1, r3, -1, r0), v4_lin(1, r1, -y0, r3), v4_lin(y1, r3, -1, r1),
+		      v4_lin(1, r2, 2, r3)}; /* z >= -2 w: between the eye and the near plane (z = -w) */
 	for (int j = 0; j < 5 && n > 0; j++) {
 		n = lx_clip_polygon(a, n, pl[j], b, FACE_MAX);
 		for (int i = 0; i < n; i++)

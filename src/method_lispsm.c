@@ -24,13 +24,6 @@ double lx_lispsm_warp(double y, double n, double d)
 	return ((f + n) * y - 2 * f * n) / ((f - n) * y); /* y >= n > 0 on the body */
 }
 
-static int lispsm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
-{
-	(void)s;
-	out[0] = (struct lx_region_request){"lispsm", o->uniform_lixels, o->uniform_lixels, 0, false};
-	return 1;
-}
-
 /* Points of B: the receiver volume's vertices and the box corners of the objects that
  * can cast onto it (not one far off: it would stretch the body and the warp). */
 static int body_points(const struct lx_frame *f, const struct lx_light_space *ls, vec3 *pts, bool *caster, int max)
@@ -143,15 +136,10 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 	}
 	double zpad = (cz1 - rz0) * 1e-4;
 	double zn = cz1 + zpad, zf = rz0 - zpad; /* z decreases away from the light */
-	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, zn, zf), m = m4_mul(&crop, &M0);
-	lx_shadow_fix_winding(&m, f);
-	if (m4_finite(&m))
-		map->light_clip = m;
-	else
-		lx_shadow_warn(out, "lispsm: non-finite warp; uniform this frame");
+	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, zn, zf);
+	lx_shadow_map_warp(map, f, &crop, &M0, "lispsm", out);
 }
 
 const struct lx_shadow_method lx_method_lispsm = {.name = "lispsm",
 	.summary = "light space perspective shadow map (512x512)",
-	.regions = lispsm_regions,
 	.build = lispsm_build};

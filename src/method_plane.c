@@ -47,13 +47,6 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 	return n;
 }
 
-static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
-static vec4 comb(vec4 a, double s, vec4 b, double t)
-{
-	return (vec4){a.x * s + b.x * t, a.y * s + b.y * t, a.z * s + b.z * t, a.w * s + b.w * t};
-}
-static double dot4p(vec4 a, vec3 p) { return a.x * p.x + a.y * p.y + a.z * p.z + a.w; }
-
 /* The twist: a rotation of the light image that turns the line where plane `self`
  * meets plane `other` horizontal, with this plane's visible polygon below it. */
 static bool twist_angle(const struct lx_view *v, const struct lx_plane *self, const struct lx_plane *other,
@@ -98,10 +91,10 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 	vec4 all[12];
 	int n = 0;
 	for (int r = 0; r < 3; r++) { /* the view frustum: -w <= x, y, z <= w */
-		all[n++] = comb(row(vp, 3), 1, row(vp, r), 1);
-		all[n++] = comb(row(vp, 3), 1, row(vp, r), -1);
+		all[n++] = v4_lin(1, m4_row(vp, 3), 1, m4_row(vp, r));
+		all[n++] = v4_lin(1, m4_row(vp, 3), -1, m4_row(vp, r));
 	}
-	vec3 lo = f->scene_min, hi = f->scene_max;
+	vec3 lo = f->view_min, hi = f->view_max; /* the objects in view: the only receivers */
 	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
 	for (int k = 0; k < 6; k++)
 		all[n++] = box[k];
@@ -113,7 +106,7 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 		double len = sqrt(all[k].x * all[k].x + all[k].y * all[k].y + all[k].z * all[k].z);
 		int on = 0;
 		for (int i = 0; i < np && on < 3; i++)
-			on += fabs(dot4p(all[k], pts[i])) <= 1e-9 * size * len;
+			on += fabs(v4_dot_point(all[k], pts[i])) <= 1e-9 * size * len;
 		if (on >= 3 || np == 0)
 			out[m++] = all[k];
 	}
@@ -151,7 +144,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	ch->needs_fallback = false;
 	/* the lit side faces away from the light: every point of the plane is shadowed by
 	 * the facing rule, so its map would decide nothing */
-	double facing = light->directional ? -v3_dot(n, light->direction) : dot4p(pi, light->position);
+	double facing = light->directional ? -v3_dot(n, light->direction) : v4_dot_point(pi, light->position);
 	/* relative to the plane's own size: one caster far from the rest must not make a
 	 * light a few metres above the floor count as lying in it */
 	double near_limit = light->directional ? 1e-3 : 1e-3 * (v3_len(P->edge1) + v3_len(P->edge2));
@@ -165,7 +158,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	if (facing < 0)
 		return false;
 	if (!lx_plane_visible(v, P, &ch->win, ch->world, &ch->nw)) {
-		if (fabs(dot4p(pi, v->eye)) < 1e-6 * ls->size && ch->nw > 0) {
+		if (fabs(v4_dot_point(pi, v->eye)) < 1e-6 * ls->size && ch->nw > 0) {
 			lx_shadow_warn(out, "plane %s is seen edge-on: no map for it this frame; the fallback map serves it", P->name);
 			ch->needs_fallback = true;
 		}
@@ -226,7 +219,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* The map's image of the plane is the view's: seen from the side away from the light
 	 * it is mirrored, and faces turned to the light would wind clockwise in it (the
 	 * shadow pass culls front faces and would store them): mirror x back. */
-	ch->mx = dot4p(pi, v->eye) < 0 ? -1 : 1;
+	ch->mx = v4_dot_point(pi, v->eye) < 0 ? -1 : 1;
 	struct lx_poly rot = wanted;
 	for (int k = 0; k < rot.n; k++)
 		rot.v[k] = (vec2){ch->mx * (ch->cs * wanted.v[k].x - ch->sn * wanted.v[k].y), ch->sn * wanted.v[k].x + ch->cs * wanted.v[k].y};
@@ -384,10 +377,10 @@ static bool plane_zfar(const struct lx_frame *f, const struct lx_plane *P, const
 		double t;
 		if (!lx_window_on_plane(&f->view, e, wanted->v[k].x, wanted->v[k].y, &q, &t))
 			return false;
-		double w = dot4p(row(m, 3), q);
+		double w = v4_dot_point(m4_row(m, 3), q);
 		if (!(w > 0))
 			return false;
-		*zfar = fmax(*zfar, dot4p(row(m, 2), q) / w);
+		*zfar = fmax(*zfar, v4_dot_point(m4_row(m, 2), q) / w);
 	}
 	return isfinite(*zfar);
 }
@@ -401,18 +394,18 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		      const double *b, mat4 *m, struct lx_shadow_result *out, const struct lx_plane *P)
 {
 	const char *name = P->name;
-	vec4 wrow = row(m, 3), zrow = row(m, 2);
+	vec4 wrow = m4_row(m, 3), zrow = m4_row(m, 2);
 	double wplane = INFINITY;
 	for (int k = 0; k < ch->nw; k++)
-		wplane = fmin(wplane, dot4p(wrow, ch->world[k]));
+		wplane = fmin(wplane, v4_dot_point(wrow, ch->world[k]));
 	vec4 hs[20];
 	int nh = 0;
-	hs[nh++] = comb(row(m, 0), 1, wrow, -b[0]);
-	hs[nh++] = comb(row(m, 0), -1, wrow, b[2]);
-	hs[nh++] = comb(row(m, 1), 1, wrow, -b[1]);
-	hs[nh++] = comb(row(m, 1), -1, wrow, b[3]);
+	hs[nh++] = v4_lin(1, m4_row(m, 0), -b[0], wrow);
+	hs[nh++] = v4_lin(-1, m4_row(m, 0), b[2], wrow);
+	hs[nh++] = v4_lin(1, m4_row(m, 1), -b[1], wrow);
+	hs[nh++] = v4_lin(-1, m4_row(m, 1), b[3], wrow);
 	double wmin = 1e-4 * wplane; /* a hair in front of the light: depth is finite there */
-	hs[nh++] = comb(wrow, 1, (vec4){0, 0, 0, 1}, -wmin);
+	hs[nh++] = v4_lin(1, wrow, -wmin, (vec4){0, 0, 0, 1});
 	int ncone = nh;
 	double zfar = -INFINITY, znear = INFINITY;
 	if (!plane_zfar(f, P, &ch->wanted, m, &zfar)) { /* rare: the receiver volume in the cone */
@@ -420,7 +413,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		vec3 vert[2048];
 		int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
 		for (int k = 0; k < nv; k++)
-			zfar = fmax(zfar, dot4p(zrow, vert[k]) / dot4p(wrow, vert[k])); /* w >= wmin > 0 there */
+			zfar = fmax(zfar, v4_dot_point(zrow, vert[k]) / v4_dot_point(wrow, vert[k])); /* w >= wmin > 0 there */
 	}
 	bool clipped = false;
 	for (int id = 0; id < f->object_count; id++) {
@@ -438,7 +431,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		for (int q = 0; q < ncone; q++) {
 			int outside = 0;
 			for (int k = 0; k < 8; k++)
-				outside += dot4p(hs[q], corner[k]) < 0;
+				outside += v4_dot_point(hs[q], corner[k]) < 0;
 			all_in &= q < ncone - 1 || outside == 0; /* the last cone plane is the near plane */
 			out_one |= outside == 8;
 		}
@@ -456,8 +449,8 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 			nc = lx_halfspace_vertices(cb, ncone + 6, cv, 512);
 		}
 		for (int k = 0; k < nc; k++) {
-			double w = dot4p(wrow, cv[k]);
-			znear = fmin(znear, dot4p(zrow, cv[k]) / w);
+			double w = v4_dot_point(wrow, cv[k]);
+			znear = fmin(znear, v4_dot_point(zrow, cv[k]) / w);
 			clipped |= w <= wmin * (1 + 1e-9);
 		}
 	}
@@ -467,7 +460,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		return false; /* no caster in front of any receiver in this map */
 	double pad = (zfar - znear) * 1e-4;
 	znear -= pad, zfar += pad;
-	vec4 z2 = comb(zrow, 2 / (zfar - znear), wrow, -(zfar + znear) / (zfar - znear));
+	vec4 z2 = v4_lin(2 / (zfar - znear), zrow, -(zfar + znear) / (zfar - znear), wrow);
 	m->m[2] = z2.x, m->m[6] = z2.y, m->m[10] = z2.z, m->m[14] = z2.w;
 	return m4_finite(m);
 }

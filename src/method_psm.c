@@ -18,22 +18,13 @@
 #include <math.h>
 #include <string.h>
 
-static int psm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
-{
-	(void)s;
-	out[0] = (struct lx_region_request){"psm", o->uniform_lixels, o->uniform_lixels, 0, false};
-	return 1;
-}
-
-static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
-static vec4 axpy(vec4 a, double s, vec4 b) { return (vec4){a.x + s * b.x, a.y + s * b.y, a.z + s * b.z, a.w + s * b.w}; }
 
 /* Removes from v its components along the unit vectors u[0..n-1]; normalises. */
 static bool orthonormal(vec4 *v, const vec4 *u, int n)
 {
 	for (int i = 0; i < n; i++)
-		*v = axpy(*v, -dot4(*v, u[i]), u[i]);
-	double l = sqrt(dot4(*v, *v));
+		*v = v4_lin(1, *v, -v4_dot(*v, u[i]), u[i]);
+	double l = sqrt(v4_dot(*v, *v));
 	if (!(l > 1e-9))
 		return false;
 	*v = (vec4){v->x / l, v->y / l, v->z / l, v->w / l};
@@ -73,7 +64,7 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	vec4 Lw = f->light.directional ? (vec4){-f->light.direction.x, -f->light.direction.y, -f->light.direction.z, 0}
 				       : (vec4){f->light.position.x, f->light.position.y, f->light.position.z, 1};
 	vec4 C = m4_mul_v4(&pps, Lw);
-	double clen = sqrt(dot4(C, C));
+	double clen = sqrt(v4_dot(C, C));
 	vec4 c = {C.x / clen, C.y / clen, C.z / clen, C.w / clen};
 	out->variant = fabs(c.w) < 1e-9 ? LX_PSM_DIRECTIONAL : c.w < 0 ? LX_PSM_INVERTED : LX_PSM_POINT;
 	/* receivers: the view frustum in the scene box, in PPS */
@@ -83,8 +74,8 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	vec4 recp[LX_CONVEX_MAX_POINTS];
 	for (int i = 0; i < nrec; i++) {
 		recp[i] = m4_mul_point(&pps, rec[i]);
-		double l = sqrt(dot4(recp[i], recp[i]));
-		centroid = axpy(centroid, 1 / l, recp[i]);
+		double l = sqrt(v4_dot(recp[i], recp[i]));
+		centroid = v4_lin(1, centroid, 1 / l, recp[i]);
 	}
 	/* the light camera: w along the receivers (an affine camera for a light at infinity),
 	 * x and y completing the complement of C */
@@ -103,17 +94,17 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 			int worst = -1;
 			double worst_val = 1e-9;
 			for (int i = 0; i < nrec; i++) {
-				double l = sqrt(dot4(recp[i], recp[i]));
-				double val = dot4(w, recp[i]) / l;
+				double l = sqrt(v4_dot(recp[i], recp[i]));
+				double val = v4_dot(w, recp[i]) / l;
 				if (val < worst_val)
 					worst = i, worst_val = val;
 			}
 			if (worst < 0)
 				break;
 			vec4 u = recp[worst];
-			double l = sqrt(dot4(u, u));
+			double l = sqrt(v4_dot(u, u));
 			u = (vec4){u.x / l, u.y / l, u.z / l, u.w / l};
-			w = axpy(w, 1, u);
+			w = v4_lin(1, w, 1, u);
 			if (!orthonormal(&w, basis, 1))
 				break;
 		}
@@ -179,16 +170,10 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	}
 	double zpad = (zfar - znear) * 1e-4;
 	znear -= zpad, zfar += zpad;
-	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, znear, zfar), m = m4_mul(&crop, &m0);
-	lx_shadow_fix_winding(&m, f);
-	if (!m4_finite(&m)) {
-		lx_shadow_warn(out, "psm: non-finite light matrix; uniform this frame");
-		return;
-	}
-	map->light_clip = m;
+	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, znear, zfar);
+	lx_shadow_map_warp(map, f, &crop, &m0, "psm", out);
 }
 
 const struct lx_shadow_method lx_method_psm = {.name = "psm",
 	.summary = "perspective shadow map (512x512) in a slid-back camera's post-perspective space",
-	.regions = psm_regions,
 	.build = psm_build};

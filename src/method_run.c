@@ -23,7 +23,7 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	mr->width = width;
 	mr->height = height;
 	struct lx_region_request req[LX_MAX_MAPS];
-	int nreq = mr->method->regions(scene, &mr->options, req);
+	int nreq = lx_shadow_method_regions(mr->method, scene, &mr->options, req);
 	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
 		return 2; /* budgets this GL cannot hold: the input asks too much */
 	if (!lx_depth_choose(precision, &mr->depth, err, errlen))

@@ -12,13 +12,6 @@
 #define TSM_XI (-0.6)         /* the focus point's place in [-1, 1]: the 80% line */
 #define TSM_FOCUS_FRACTION 0.5 /* the focus region: this part of the view's depth */
 
-static int tsm_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
-{
-	(void)s;
-	out[0] = (struct lx_region_request){"tsm", o->uniform_lixels, o->uniform_lixels, 0, false};
-	return 1;
-}
-
 static bool to_image(const mat4 *u, vec3 p, vec2 *q)
 {
 	vec4 h = m4_mul_point(u, p);
@@ -126,15 +119,9 @@ static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	/* depth: (z - zmid w) / t with z / w in [-1, 1] and t / w >= eta inside the
 	 * trapezoid, so within [(-1 - zmid) / eta, (1 - zmid) / eta] */
 	mat4 crop = m4_crop(-1, 1, -1, 1, (-1 - zmid) / eta, (1 - zmid) / eta);
-	m = m4_mul(&crop, &m);
-	lx_shadow_fix_winding(&m, f);
-	if (m4_finite(&m))
-		map->light_clip = m;
-	else
-		lx_shadow_warn(out, "tsm: non-finite trapezoid; uniform this frame");
+	lx_shadow_map_warp(map, f, &crop, &m, "tsm", out);
 }
 
 const struct lx_shadow_method lx_method_tsm = {.name = "tsm",
 	.summary = "trapezoidal shadow map (512x512), 80% rule",
-	.regions = tsm_regions,
 	.build = tsm_build};

@@ -5,13 +5,6 @@
  * The geometry lives in light_space.c, shared with the plane-optimal fallback map. */
 #include "light_space.h"
 
-static int uniform_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
-{
-	(void)s;
-	out[0] = (struct lx_region_request){"uniform", o->uniform_lixels, o->uniform_lixels, 0, false};
-	return 1;
-}
-
 static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
 			 struct lx_shadow_result *out)
 {
@@ -23,5 +16,4 @@ static void uniform_build(const struct lx_frame *f, const struct lx_atlas *atlas
 
 const struct lx_shadow_method lx_method_uniform = {.name = "uniform",
 	.summary = "one map (512x512) focused by unit cube clipping",
-	.regions = uniform_regions,
 	.build = uniform_build};

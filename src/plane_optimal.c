@@ -42,13 +42,11 @@ bool lx_plane_contains(const struct lx_plane *p, vec3 q)
 	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
 }
 
-static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
-static double len4(vec4 a) { return sqrt(dot4(a, a)); }
 static vec4 scale4(vec4 a, double s) { return (vec4){a.x * s, a.y * s, a.z * s, a.w * s}; }
 static vec4 add4(vec4 a, vec4 b) { return (vec4){a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
 static vec4 unit4(vec4 a)
 {
-	double l = len4(a);
+	double l = v4_len(a);
 	return l > 0 ? scale4(a, 1 / l) : a;
 }
 
@@ -82,7 +80,7 @@ static bool basis(const vec4 x[5], mat4 *t)
 static double residual(const mat4 *m, vec4 x, vec4 y)
 {
 	vec4 v = unit4(m4_mul_v4(m, x)), u = unit4(y);
-	double d = fabs(dot4(v, u));
+	double d = fabs(v4_dot(v, u));
 	return acos(fmin(1.0, d));
 }
 
@@ -92,7 +90,7 @@ enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 
 	light = unit4(light);
 	/* |pi . L| is the light's distance to P (point light, unit normal); relative to the
 	 * view's extent a tiny value makes the construction singular. */
-	if (fabs(dot4(plane, light)) < 1e-9)
+	if (fabs(v4_dot(plane, light)) < 1e-9)
 		return LX_PLANE_CAMERA_LIGHT_ON_PLANE;
 	const double W = v->width, H = v->height;
 	const double cx[4] = {0, 0, W, W}, cy[4] = {0, H, H, 0};
@@ -102,8 +100,8 @@ enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 
 		vec4 n = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
 		vec4 f = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
 		/* the ray's point on P, homogeneous: at infinity or behind the eye is fine */
-		p[i] = add4(scale4(n, dot4(plane, f)), scale4(f, -dot4(plane, n)));
-		if (!(len4(p[i]) > 1e-12 * len4(n) * len4(f)))
+		p[i] = add4(scale4(n, v4_dot(plane, f)), scale4(f, -v4_dot(plane, n)));
+		if (!(v4_len(p[i]) > 1e-12 * v4_len(n) * v4_len(f)))
 			return LX_PLANE_CAMERA_EDGE_ON;
 		p[i] = unit4(p[i]);
 		if (p[i].w < 0)
@@ -131,7 +129,7 @@ enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 
 		r = fmax(r, residual(&m, X[i], Y[i]));
 	/* the fourth corner itself must keep its window x, y too (equation 6) */
 	vec4 q4 = m4_mul_v4(&m, p[3]);
-	if (fabs(q4.w) > 1e-12 * len4(q4))
+	if (fabs(q4.w) > 1e-12 * v4_len(q4))
 		r = fmax(r, hypot(q4.x / q4.w - cx[3], q4.y / q4.w - cy[3]) / (W + H));
 	if (!(r < 1e-7))
 		return LX_PLANE_CAMERA_SINGULAR;

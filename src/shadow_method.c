@@ -70,6 +70,15 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 	return m;
 }
 
+int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_scene *s,
+			     const struct lx_method_options *o, struct lx_region_request *out)
+{
+	if (m->regions)
+		return m->regions(s, o, out);
+	out[0] = (struct lx_region_request){m->name, o->uniform_lixels, o->uniform_lixels, 0, false};
+	return 1;
+}
+
 const char *lx_shadow_method_names(void) { return "none|uniform|psm|lispsm|tsm|plane"; }
 
 void lx_shadow_map_full(struct lx_shadow_map *m)
@@ -145,6 +154,17 @@ void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f)
 	double size = v3_len(v3_sub(f->view_max, f->view_min)) + 1e-300;
 	for (int i = 0; i < 3 && !fix_winding_at(clip, &f->light, probe[i], size); i++) {
 	}
+}
+
+void lx_shadow_map_warp(struct lx_shadow_map *map, const struct lx_frame *f, const mat4 *crop, const mat4 *m,
+			const char *name, struct lx_shadow_result *out)
+{
+	mat4 c = m4_mul(crop, m);
+	lx_shadow_fix_winding(&c, f);
+	if (m4_finite(&c))
+		map->light_clip = c;
+	else
+		lx_shadow_warn(out, "%s: non-finite warp; uniform this frame", name);
 }
 
 void lx_shadow_map_turn(struct lx_shadow_map *m)

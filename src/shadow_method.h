@@ -67,7 +67,8 @@ struct lx_method_options {
 struct lx_shadow_method {
 	const char *name;
 	const char *summary;
-	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. */
+	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. NULL: one
+	 * square map of uniform_lixels, named after the method (the one-map methods). */
 	int (*regions)(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out);
 	/* Fills one map per region, in the order regions() gave them; resets *out first. A
 	 * map of a variable region says the lixels it wants this frame (w, h). */
@@ -84,6 +85,9 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 						     size_t errlen);
 /* The list of method names, separated by '|', for help and error messages. */
 const char *lx_shadow_method_names(void);
+/* The method's region requests: its regions(), or its one square map. */
+int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_scene *s,
+			     const struct lx_method_options *o, struct lx_region_request *out);
 
 /* A map that serves every ray of its region: bounds [-1, 1]^2, no plane. */
 void lx_shadow_map_full(struct lx_shadow_map *m);
@@ -103,6 +107,11 @@ int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p);
  * image's x when a small triangle facing the light winds clockwise, tried at the scene's
  * centre, the camera's target and the view's near centre until one is in front. */
 void lx_shadow_fix_winding(mat4 *clip, const struct lx_frame *f);
+/* The last step of a warped map (PSM, LiSPSM, TSM): crop * m as the map's light matrix,
+ * its winding fixed; where that is not finite the map keeps the uniform matrix it had and
+ * the warning "NAME: non-finite warp; uniform this frame" says so. */
+void lx_shadow_map_warp(struct lx_shadow_map *map, const struct lx_frame *f, const mat4 *crop, const mat4 *m,
+			const char *name, struct lx_shadow_result *out);
 
 /* One frame of a method: build, then place this frame's maps in the atlas (packed
  * again when their shapes vary; a map placed a quarter turn round gets its matrix and

@@ -26,7 +26,7 @@ static bool build(struct setup *s, const char *method, int w, int h, double t)
 		return false;
 	}
 	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	assert_true(lx_atlas_layout(&s->atlas, req, m->regions(&s->scene, &o, req), 1, 2048, err, sizeof err));
+	assert_true(lx_atlas_layout(&s->atlas, req, lx_shadow_method_regions(m, &s->scene, &o, req), 1, 2048, err, sizeof err));
 	lx_shadow_method_frame(m, &s->frame, &s->atlas, &o, &s->res);
 	return true;
 }

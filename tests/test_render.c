@@ -592,7 +592,7 @@ static void gpu_depth_encoding_and_guards(void **state)
 		const struct lx_shadow_method *me = lx_shadow_method_find("uniform");
 		struct lx_region_request req[LX_MAX_MAPS];
 		struct lx_atlas atlas;
-		assert_true(lx_atlas_layout(&atlas, req, me->regions(&s, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, req), 2, caps.max_texture_size, err, sizeof err));
+		assert_true(lx_atlas_layout(&atlas, req, lx_shadow_method_regions(me, &s, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, req), 2, caps.max_texture_size, err, sizeof err));
 		struct lx_shadow_result res = {0};
 		lx_shadow_method_frame(me, &f, &atlas, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, &res);
 		assert_true(res.maps[0].rendered);
