@@ -246,9 +246,12 @@ static bool parse_plane(struct parser *p, struct lx_scene *s)
 	}
 	if (have != 7)
 		return fail(p, "expected 'plane NAME corner X Y Z edge1 X Y Z edge2 X Y Z [color R G B]'");
-	vec3 n = v3_cross(pl.edge1, pl.edge2);
+	vec3 n = v3_cross(pl.edge1, pl.edge2), unit;
 	if (!(v3_len(n) > 1e-9 * (1 + v3_len(pl.edge1) * v3_len(pl.edge2))))
 		return fail(p, "expected plane edges that are non-zero and not parallel");
+	/* |edge1 x edge2| past about 1e154 overflows its squared length: no unit normal */
+	if (!v3_normalize(n, &unit))
+		return fail(p, "expected plane edges whose cross product is under 1e154 long, for its normal");
 	s->planes[s->plane_count++] = pl;
 	return true;
 }

@@ -99,6 +99,9 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light spot 1 2 3\n", 1, "expected 'point' or 'directional'"},
 		{"light directional 0 0 0\n", 1, "non-zero light direction"},
 		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 2 0 0\n", 2, "not parallel"},
+		/* found by fuzz_scene: the cross product's squared length overflowed, the
+		 * plane was taken and lx_plane_normal fell back to (0, 1, 0) */
+		{"light point 0 5 0\nplane floor corner -5 0 5 edge1 10 0 1e154 edge2 0 9 0.3\n", 2, "cross product is under 1e154"},
 		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0\n", 2, "expected 'plane NAME"},
 		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 1\nplane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 1\n",
 		 3, "already defined"},
