@@ -287,6 +287,9 @@ static bool parse_caster(struct parser *p, struct lx_scene *s, enum lx_shape sha
 				return false;
 			if (!(c.low <= c.high))
 				return fail(p, "expected bounce LOW HIGH with LOW <= HIGH");
+			/* lx_caster_bottom scales HIGH - LOW: an infinite one gives inf * 0 = NaN */
+			if (!isfinite(c.high - c.low))
+				return fail(p, "expected bounce LOW HIGH with HIGH - LOW finite");
 		} else if (!strcmp(k, "period")) {
 			if (!positive(p, "period (seconds)", &c.period))
 				return false;
