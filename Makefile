@@ -127,7 +127,7 @@ $(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h | $(BUILD)/
 $(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c fuzz/fuzz_util.h $(FUZZ_OBJ) $(wildcard src/*.h)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) -lpthread -lm -o $@
 
-$(BUILD)/fuzz/obj:
+$(BUILD)/fuzz/obj: | $(BUILD)
 	mkdir -p $@
 
 fuzz-build: deps-fuzz
