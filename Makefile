@@ -4,6 +4,7 @@
 #   make check    build and run every test (installs Debian packages first)
 #   make soak     the kiosk for 10 minutes under Xvfb, keys every 50 ms, its memory watched
 #                 (SOAK_SECONDS=N to shorten; not part of make check)
+#   make fuzz     build the libFuzzer harnesses (fuzz/) and run each FUZZ_SECONDS seconds
 #   make install  PREFIX=/usr/local DESTDIR=
 
 PREFIX ?= /usr/local
@@ -43,7 +44,7 @@ GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run check soak deps deps-check install uninstall clean asan
+.PHONY: all run check soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
 
 all: $(BUILD)/lixel
 
@@ -52,6 +53,9 @@ deps:
 
 deps-check:
 	@sh tools/install-deps.sh check
+
+deps-fuzz:
+	@sh tools/install-deps.sh fuzz
 
 $(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
@@ -102,6 +106,7 @@ check: deps-check
 	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
 	@SOAK_SECONDS=20 sh tests/kiosk_soak.sh $(BUILD)/lixel
 	@$(MAKE) --no-print-directory asan
+	@$(MAKE) --no-print-directory fuzz-check
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
 soak: deps-check
@@ -113,6 +118,39 @@ asan: deps-check
 	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
 		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window
 	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
+
+# libFuzzer harnesses (fuzz/*.c) over the GL-free core, built with clang under ASan and
+# UBSan into $(BUILD)/fuzz/. make fuzz runs each FUZZ_SECONDS seconds from the seeds in
+# fuzz/corpus/NAME/ (tools/fuzz.sh works in a temporary folder and says where any
+# finding is); make fuzz-check, a few seconds each, is part of make check.
+FUZZ_CC ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods
+FUZZ_BINS = $(FUZZ_NAMES:%=$(BUILD)/fuzz/%)
+FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
+	-fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/fuzz/obj/%.o) $(BUILD)/fuzz/obj/boards_embedded.o $(BUILD)/fuzz/obj/shaders_embedded.o
+
+$(BUILD)/fuzz/obj/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)/fuzz/obj
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+
+$(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h | $(BUILD)/fuzz/obj
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+
+$(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c fuzz/fuzz_util.h $(FUZZ_OBJ) $(wildcard src/*.h)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) -lpthread -lm -o $@
+
+$(BUILD)/fuzz/obj: | $(BUILD)
+	mkdir -p $@
+
+fuzz-build: deps-fuzz
+	@$(MAKE) --no-print-directory $(FUZZ_BINS)
+
+fuzz: fuzz-build
+	@sh tools/fuzz.sh $(BUILD)/fuzz $(FUZZ_SECONDS) $(FUZZ_NAMES)
+
+fuzz-check: fuzz-build
+	@sh tools/fuzz.sh $(BUILD)/fuzz 3 $(FUZZ_NAMES)
 
 # The binary (shaders and board profiles are built in), the man page, the profiles as
 # files to copy and edit (--board FILE), and the kiosk's systemd unit.

@@ -1,14 +1,18 @@
 #!/bin/sh
 # Installs the Debian packages lixel needs for a make target, only those missing.
-# Usage: tools/install-deps.sh build|check
+# Usage: tools/install-deps.sh build|check|fuzz
 # As root it runs apt-get; otherwise it prints one line naming what to install.
 set -eu
 build_pkgs="gcc make pkg-config libegl-dev libgles-dev libosmesa6-dev libpng-dev libegl-mesa0 libgl1-mesa-dri libgpiod-dev libx11-dev libdrm-dev libgbm-dev"
 check_pkgs="libcmocka-dev xvfb xdotool xauth glslang-tools"
+# the libFuzzer harnesses: clang and its fuzzer and sanitizer runtimes (not pulled in
+# without recommends)
+fuzz_pkgs="make clang libclang-rt-dev"
 case "${1:-build}" in
   build) want="$build_pkgs" ;;
-  check) want="$build_pkgs $check_pkgs" ;;
-  *) echo "install-deps.sh: unknown set '$1' (expected build or check)" >&2; exit 2 ;;
+  check) want="$build_pkgs $check_pkgs $fuzz_pkgs" ;;
+  fuzz) want="$fuzz_pkgs" ;;
+  *) echo "install-deps.sh: unknown set '$1' (expected build, check or fuzz)" >&2; exit 2 ;;
 esac
 missing=""
 for p in $want; do

@@ -1,0 +1,1 @@
+gpio-chip gpiochip0
