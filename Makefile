@@ -125,7 +125,7 @@ asan: deps-check
 # finding is); make fuzz-check, a few seconds each, is part of make check.
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
-FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods
+FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods fuzz_cli
 FUZZ_BINS = $(FUZZ_NAMES:%=$(BUILD)/fuzz/%)
 FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
 	-fsanitize=address,undefined -fno-sanitize-recover=all

@@ -23,7 +23,12 @@ static void check_spec(const char *text)
 	size_t nl = strcspn(text, "/");
 	FUZZ_CHECK(strlen(m->name) == nl && !strncmp(m->name, text, nl));
 	FUZZ_CHECK(lx_shadow_method_find(m->name) == m);
-	FUZZ_CHECK(m->regions && m->build);
+	FUZZ_CHECK(m->build);
+	struct lx_scene scene;
+	lx_scene_default(&scene);
+	struct lx_region_request req[LX_ATLAS_MAX_REGIONS];
+	int n = lx_shadow_method_regions(m, &scene, &o, req);
+	FUZZ_CHECK(n >= 0 && n <= LX_ATLAS_MAX_REGIONS);
 	FUZZ_CHECK(o.uniform_lixels == before.uniform_lixels && o.plane_lixels == before.plane_lixels &&
 		   o.fallback_lixels == before.fallback_lixels);
 	FUZZ_CHECK(o.plane_max_lpp == before.plane_max_lpp || o.plane_max_lpp == -1 ||

@@ -130,10 +130,9 @@ int lx_list_next(const char **s, char sep, char *item, size_t n)
 		return 0;
 	const char *end = strchr(p, sep);
 	size_t len = end ? (size_t)(end - p) : strlen(p);
-	*s = end ? end + 1 : p + len;
-	if (end && !end[1])
-		*s = end; /* a separator at the end: the next call sees an empty item */
-	if (len == 0 || len >= n)
+	*s = end ? end + 1 : p + len; /* always forward: a list of k characters ends in k calls */
+	/* an empty item: here, or after a separator that ends the list */
+	if (len == 0 || len >= n || (end && !end[1]))
 		return -1;
 	memcpy(item, p, len);
 	item[len] = 0;

@@ -26,7 +26,8 @@ const char *lx_number_why(enum lx_number_error e);
 
 /* The next item of a list separated by sep: copies it (at most n-1 characters) to item and
  * steps *s past it and its separator. Returns 0 at the end of the list, 1 for an item, -1
- * for an empty item (",," or a separator at either end) or one too long for item. */
+ * for an empty item (",," or a separator at either end: the item before a final
+ * separator counts as the empty one) or one too long for item. */
 int lx_list_next(const char **s, char sep, char *item, size_t n);
 
 #endif

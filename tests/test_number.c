@@ -92,8 +92,17 @@ static void lists_have_no_empty_items(void **state)
 	assert_string_equal(item, "uniform");
 	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 0);
 	s = "a,";
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), -1); /* a list that ends in a comma */
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 0);
+	s = ","; /* found by fuzz_cli: it once stood still here, returning -1 for ever */
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), -1);
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 0);
+	s = "a,,b";
 	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 1);
 	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), -1);
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 1);
+	assert_string_equal(item, "b");
+	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), 0);
 	s = "much-too-long-for-the-item";
 	assert_int_equal(lx_list_next(&s, ',', item, sizeof item), -1);
 }
