@@ -22,6 +22,8 @@ BUILD ?= build
 GL_PKGS = osmesa egl glesv2 libpng x11 libdrm gbm
 CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
+# -MMD -MP: each object's header dependencies, written beside it (BUILD/*.d)
+DEPFLAGS = -MMD -MP
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
 LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng x11 libdrm gbm 2>/dev/null) -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
@@ -57,11 +59,17 @@ deps-check:
 deps-fuzz:
 	@sh tools/install-deps.sh fuzz
 
-$(BUILD)/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)
-	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
+# Before anything compiles: every library pkg-config must find, or one line naming the
+# Debian packages to install (pkg-config's own errors are otherwise lost in the flags).
+$(BUILD)/deps.ok: tools/install-deps.sh | $(BUILD)
+	@sh tools/install-deps.sh build --verify
+	@touch $@
 
-$(BUILD)/gpio_button.o: src/gpio_button.c $(wildcard src/*.h) | $(BUILD)
-	$(CC) $(CPPFLAGS_ALL) $(GPIOD_CFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
+$(BUILD)/%.o: src/%.c | $(BUILD) $(BUILD)/deps.ok
+	$(CC) $(CPPFLAGS_ALL) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/gpio_button.o: src/gpio_button.c | $(BUILD) $(BUILD)/deps.ok
+	$(CC) $(CPPFLAGS_ALL) $(GPIOD_CFLAGS) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
 	sh tools/embed-files.sh lx_shader_files $(SHADERS) > $@.tmp && mv $@.tmp $@
@@ -70,7 +78,7 @@ $(BUILD)/boards_embedded.c: $(BOARDS) tools/embed-files.sh | $(BUILD)
 	sh tools/embed-files.sh lx_board_files $(BOARDS) > $@.tmp && mv $@.tmp $@
 
 $(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h
-	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) -c $< -o $@
+	$(CC) $(CPPFLAGS_ALL) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LIBS_GL) $(LIBS_GPIOD) -o $@
@@ -85,7 +93,7 @@ run: deps
 
 # Unit tests link only the pure geometry; render tests link the GL side too.
 $(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
-	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(WARN) $(CFLAGS) $< \
+	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
 		$(if $(filter test_render test_extremes,$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) $(CORE_OBJ) \
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
 		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render test_extremes,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
@@ -131,14 +139,14 @@ FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(WARN) -O1 -g -fno-om
 	-fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/fuzz/obj/%.o) $(BUILD)/fuzz/obj/boards_embedded.o $(BUILD)/fuzz/obj/shaders_embedded.o
 
-$(BUILD)/fuzz/obj/%.o: src/%.c $(wildcard src/*.h) | $(BUILD)/fuzz/obj
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+$(BUILD)/fuzz/obj/%.o: src/%.c | $(BUILD)/fuzz/obj
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
 $(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h | $(BUILD)/fuzz/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
-$(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c fuzz/fuzz_util.h $(FUZZ_OBJ) $(wildcard src/*.h)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) -lpthread -lm -o $@
+$(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c $(FUZZ_OBJ)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) -lpthread -lm -o $@
 
 $(BUILD)/fuzz/obj: | $(BUILD)
 	mkdir -p $@
@@ -171,3 +179,6 @@ uninstall:
 clean:
 	rm -rf build build-asan out
 -include tools/cross.mk
+
+# the header dependencies -MMD wrote (none before the first build)
+-include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/fuzz/*.d $(BUILD)/fuzz/obj/*.d)
