@@ -18,7 +18,7 @@ CC ?= cc
 PKG_CONFIG ?= pkg-config
 BUILD ?= build
 
-# GL entry points are loaded at run time (src/gl_api.h); glesv2 gives only headers.
+# GL entry points are loaded at run time (src/gl/gl_api.h); glesv2 gives only headers.
 GL_PKGS = osmesa egl glesv2 libpng x11 libdrm gbm
 CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
@@ -31,22 +31,36 @@ GPIOD_CFLAGS = $(shell $(PKG_CONFIG) --cflags libgpiod 2>/dev/null) \
 	$(shell $(PKG_CONFIG) --atleast-version=2 libgpiod 2>/dev/null && echo -DLX_GPIOD_V2)
 LIBS_GPIOD = $(shell $(PKG_CONFIG) --libs libgpiod 2>/dev/null)
 
-# Pure geometry: never includes a GL header, so the unit tests link it alone.
-CORE_SRC = src/linalg.c src/depth_rgba.c src/atlas.c src/scene.c src/mesh.c src/frame.c src/convex.c \
-	src/shadow_method.c src/lookup_region.c src/method_none.c src/method_uniform.c src/light_space.c src/polygon2d.c src/plane_optimal.c src/method_plane.c src/method_lispsm.c src/method_tsm.c src/method_psm.c src/reference.c src/metrics.c \
-	src/configs.c src/json.c src/display_loss.c src/button.c src/gpio_lookup.c src/out_file.c src/embedded.c src/shader_text.c src/board.c src/kms_select.c src/font5x7.c src/cli_args.c src/number.c
-GL_SRC = src/gl_api.c src/gl_caps.c src/gl_program.c src/depth_selftest.c src/platform.c src/platform_osmesa.c \
-	src/platform_egl.c src/platform_x11.c src/platform_kms.c src/renderer.c src/method_run.c src/render_job.c src/png_out.c src/bench.c src/plot.c src/kiosk.c src/overlay.c
+# The layers, lowest first; a file includes headers of its own layer and of the layers
+# LAYERS_<name> lists (tools/check-layers.sh checks it; docs/lixel.md has the table).
+LAYERS = base geom scene shadow measure gl platform kiosk app
+SRC_DIRS = $(LAYERS:%=src/%)
+vpath %.c $(SRC_DIRS)
+vpath %.h $(SRC_DIRS)
+CPPFLAGS_ALL += $(SRC_DIRS:%=-I%)
+
+# GL-free: no file here includes a GL, EGL, X11 or DRM header, directly or through
+# another header (tools/check-layers.sh); built into BUILD/liblixel-core.a, which the
+# unit tests link alone.
+CORE_SRC = $(wildcard src/base/*.c src/geom/*.c src/scene/*.c src/shadow/*.c src/measure/*.c) \
+	src/gl/shader_text.c src/platform/display_loss.c src/platform/kms_select.c \
+	src/kiosk/board.c src/kiosk/button.c src/kiosk/gpio_lookup.c src/app/cli_args.c
+CORE_SRC := $(filter-out src/base/png_out.c,$(sort $(CORE_SRC)))
+# The GL side, the platforms, libpng's writer and the commands.
+GL_SRC = src/base/png_out.c $(filter-out src/gl/shader_text.c,$(wildcard src/gl/*.c)) \
+	$(filter-out src/platform/display_loss.c src/platform/kms_select.c,$(wildcard src/platform/*.c)) \
+	$(filter-out src/app/cli_args.c src/app/main.c,$(wildcard src/app/*.c))
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
 BOARDS = $(sort $(wildcard board/*.profile))
 
-CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
-GL_OBJ = $(GL_SRC:src/%.c=$(BUILD)/%.o)
+CORE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(CORE_SRC))) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
+CORE_LIB = $(BUILD)/liblixel-core.a
+GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run check soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
+.PHONY: all run check check-layers soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
 
 all: $(BUILD)/lixel
 
@@ -65,10 +79,10 @@ $(BUILD)/deps.ok: tools/install-deps.sh | $(BUILD)
 	@sh tools/install-deps.sh build --verify
 	@touch $@
 
-$(BUILD)/%.o: src/%.c | $(BUILD) $(BUILD)/deps.ok
+$(BUILD)/%.o: %.c | $(BUILD) $(BUILD)/deps.ok
 	$(CC) $(CPPFLAGS_ALL) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/gpio_button.o: src/gpio_button.c | $(BUILD) $(BUILD)/deps.ok
+$(BUILD)/gpio_button.o: gpio_button.c | $(BUILD) $(BUILD)/deps.ok
 	$(CC) $(CPPFLAGS_ALL) $(GPIOD_CFLAGS) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
@@ -77,10 +91,14 @@ $(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
 $(BUILD)/boards_embedded.c: $(BOARDS) tools/embed-files.sh | $(BUILD)
 	sh tools/embed-files.sh lx_board_files $(BOARDS) > $@.tmp && mv $@.tmp $@
 
-$(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h
+$(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h
 	$(CC) $(CPPFLAGS_ALL) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/lixel: $(BUILD)/main.o $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o
+$(CORE_LIB): $(CORE_OBJ)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(BUILD)/lixel: $(BUILD)/main.o $(GL_OBJ) $(BUILD)/gpio_button.o $(CORE_LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ $(LIBS_GL) $(LIBS_GPIOD) -o $@
 
 $(BUILD):
@@ -91,12 +109,15 @@ run: deps
 	@mkdir -p out
 	$(BUILD)/lixel render --out out/default.png --measure
 
-# Unit tests link only the pure geometry; render tests link the GL side too.
-$(BUILD)/tests/%: tests/%.c $(CORE_OBJ) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
+# Unit tests link the GL-free library alone; the render tests link the GL side too,
+# test_gpio the libgpiod button.
+GL_TESTS = test_render test_extremes
+$(BUILD)/tests/%: tests/%.c $(CORE_LIB) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
-		$(if $(filter test_render test_extremes,$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) $(CORE_OBJ) \
-		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o $(LIBS_GPIOD),) \
-		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter test_render test_extremes,$*),$(LIBS_GL) $(LIBS_GPIOD),-lpthread -lm) -o $@
+		$(if $(filter $(GL_TESTS),$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) \
+		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o,) $(CORE_LIB) \
+		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
+		$(if $(filter test_gpio,$*),$(LIBS_GPIOD),) -lpthread -lm -o $@
 
 # A helper of tests/kiosk_x11.sh: closes the kiosk's window from another X client.
 $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
@@ -105,10 +126,10 @@ $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 # The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)
 # wherever the machine only has v1; it is linked only where libgpiod 2 is installed.
-$(BUILD)/gpio_button_v2_check.o: src/gpio_button.c src/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
+$(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
-check: deps-check
+check: deps-check check-layers
 	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
 	@sh tests/run-tests.sh $(BUILD)
 	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
@@ -120,6 +141,10 @@ check: deps-check
 soak: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel
 	@sh tests/kiosk_soak.sh $(BUILD)/lixel
+
+# The include rules between the layers, and the GL-free files' freedom from GL headers.
+check-layers:
+	@sh tools/check-layers.sh $(CORE_SRC) && echo "layers: every include follows the rules (tools/check-layers.sh)"
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check
@@ -135,14 +160,15 @@ FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods fuzz_cli
 FUZZ_BINS = $(FUZZ_NAMES:%=$(BUILD)/fuzz/%)
-FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
+FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE $(SRC_DIRS:%=-I%) -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
 	-fsanitize=address,undefined -fno-sanitize-recover=all
-FUZZ_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/fuzz/obj/%.o) $(BUILD)/fuzz/obj/boards_embedded.o $(BUILD)/fuzz/obj/shaders_embedded.o
+FUZZ_OBJ = $(patsubst %.c,$(BUILD)/fuzz/obj/%.o,$(notdir $(CORE_SRC))) $(BUILD)/fuzz/obj/boards_embedded.o \
+	$(BUILD)/fuzz/obj/shaders_embedded.o
 
-$(BUILD)/fuzz/obj/%.o: src/%.c | $(BUILD)/fuzz/obj
+$(BUILD)/fuzz/obj/%.o: %.c | $(BUILD)/fuzz/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
-$(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/embedded.h | $(BUILD)/fuzz/obj
+$(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h | $(BUILD)/fuzz/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
 $(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c $(FUZZ_OBJ)

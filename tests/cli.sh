@@ -109,7 +109,7 @@ expect_bad "bench method option" bench --methods uniform,plane/lpp-1 --frames 1
 expect_bad "zero budget" render --plane-lixels 0 $out
 expect_bad "huge budget" render --uniform-lixels 100000 $out
 
-# One strict number parser (src/number.c) behind every option, scene file and profile:
+# One strict number parser (src/base/number.c) behind every option, scene file and profile:
 # decimal only, the whole token, the reason in the one line.
 expect_says() {
   said=$1; shift

@@ -1,4 +1,4 @@
-/* The JSON writer (src/json.c): whatever bytes a name holds, the output is JSON. */
+/* The JSON writer (src/base/json.c): whatever bytes a name holds, the output is JSON. */
 #include "json.h"
 #include "test_util.h"
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* The one number parser (src/number.c): decimal only, the whole token, ranges, and the
+/* The one number parser (src/base/number.c): decimal only, the whole token, ranges, and the
  * reason a value was refused. */
 #include "number.h"
 #include "test_util.h"

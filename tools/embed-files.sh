@@ -1,6 +1,6 @@
 #!/bin/sh
 # Writes a C file holding the given files as strings, so the binary runs from any
-# directory. Usage: embed-files.sh SYMBOL FILE... > out.c  (see src/embedded.h)
+# directory. Usage: embed-files.sh SYMBOL FILE... > out.c  (see src/base/embedded.h)
 set -eu
 symbol=$1
 shift

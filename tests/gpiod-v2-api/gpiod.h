@@ -1,5 +1,5 @@
 /* The libgpiod v2 API's declarations, as its documentation gives them, so that `make
- * check` compiles lixel's v2 path (src/gpio_button.c with LX_GPIOD_V2) on a machine that
+ * check` compiles lixel's v2 path (src/kiosk/gpio_button.c with LX_GPIOD_V2) on a machine that
  * only has libgpiod 1.6. Only what lixel calls. Compile-checked, never linked. */
 #ifndef LX_TEST_GPIOD_V2_H
 #define LX_TEST_GPIOD_V2_H
