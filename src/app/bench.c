@@ -1,4 +1,4 @@
-#include "bench.h"
+#include "commands.h"
 #include "board.h"
 #include "cli_args.h"
 #include "configs.h"

@@ -1,4 +1,4 @@
-#include "kiosk.h"
+#include "commands.h"
 #include "board.h"
 #include "button.h"
 #include "cli_args.h"
