@@ -77,264 +77,356 @@ static int bad(const char *opt, const char *expected, const char *got)
 	return lx_arg_bad("kiosk", opt, expected, got);
 }
 
-int lx_kiosk_main(int argc, char **argv)
-{
-	const char *platform = NULL, *board_arg = "desktop", *scene_arg = NULL;
-	const char *methods_arg = NULL;
-	long frames = -1;
-	bool overlay = false;
-	int width = 1024, height = 768;
+/* What the command line asks for; the board profile with its overrides applied. */
+struct kiosk_args {
+	const char *platform, *scene_arg, *methods_arg;
+	long frames; /* -1: until stopped */
+	bool overlay;
+	int width, height;
 	struct lx_board board;
+};
+
+/* Prints err, a "FILE:LINE: ..." of a one-line profile, without its "FILE:LINE:" part. */
+static int bad_override(const char *err)
+{
+	fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
+	return 2;
+}
+
+/* One option and its value: 0 or 2 after the one line. */
+static int kiosk_option(struct kiosk_args *k, const char *a, const char *v)
+{
+	struct lx_board *b = &k->board;
+	if (!strcmp(a, "--platform")) {
+		if (strcmp(v, "x11") && strcmp(v, "kms"))
+			return bad(a, "x11 or kms", v);
+		k->platform = v;
+	} else if (!strcmp(a, "--frames")) {
+		enum lx_number_error e = lx_number_whole(v, 1, LONG_MAX, &k->frames);
+		if (e)
+			return lx_arg_bad_number("kiosk", a, "a whole number of frames >= 1", v, e);
+	} else if (!strcmp(a, "--size")) {
+		int hz;
+		if (!lx_parse_mode(v, &k->width, &k->height, &hz) || hz)
+			return bad(a, "WxH", v);
+	} else if (!strcmp(a, "--scene"))
+		k->scene_arg = v;
+	else if (!strcmp(a, "--methods"))
+		k->methods_arg = v;
+	else if (!strcmp(a, "--device")) {
+		if (strlen(v) >= sizeof b->display)
+			return bad(a, "a device path", v);
+		strcpy(b->display, v);
+	} else if (!strcmp(a, "--mode")) {
+		if (!strcmp(v, "preferred"))
+			b->mode_w = b->mode_h = b->mode_hz = 0;
+		else if (!lx_parse_mode(v, &b->mode_w, &b->mode_h, &b->mode_hz))
+			return bad(a, "WxH or WxH@HZ", v);
+	} else if (strcmp(a, "--board")) {
+		/* a button override: parsed as a one-line profile, so a line break in the
+		 * value would smuggle in another line */
+		if (strpbrk(v, "\n\r"))
+			return bad(a, "a value without line breaks", "(a value with a line break)");
+		char line[256], err[512];
+		snprintf(line, sizeof line, "%s %s\n", a + 2, v);
+		if (!lx_board_apply(line, a, b, err, sizeof err))
+			return bad_override(err);
+	}
+	return 0;
+}
+
+/* The board (named by --board, loaded first: the other options override it), then the
+ * options in order, then the overrides checked together. 0, 2 after the one line, or -1
+ * when --help was printed. */
+static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
+{
+	*k = (struct kiosk_args){.frames = -1, .width = 1024, .height = 768};
+	const char *board_arg = "desktop";
 	char err[512];
-	/* the board first: the other options override it */
 	for (int i = 0; i + 1 < argc; i++)
 		if (!strcmp(argv[i], "--board"))
 			board_arg = argv[i + 1];
-	if (!lx_board_load(board_arg, &board, err, sizeof err)) {
+	if (!lx_board_load(board_arg, &k->board, err, sizeof err)) {
 		fprintf(stderr, "lixel: %s\n", err);
 		return 2;
 	}
+	static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
+						 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
+						 "--long-press-ms", "--device", "--mode", "--plane-lixels",
+						 "--fallback-lixels", "--uniform-lixels", "--depth-precision"};
 	for (int i = 0; i < argc; i++) {
-		const char *a = argv[i];
+		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
 			usage(stdout);
-			return 0;
+			return -1;
 		}
 		if (!strcmp(a, "--overlay")) {
-			overlay = true;
+			k->overlay = true;
 			continue;
 		}
 		if (!strcmp(a, "--mediump")) {
-			board.depth_precision = LX_DEPTH_MEDIUMP;
+			k->board.depth_precision = LX_DEPTH_MEDIUMP;
 			continue;
 		}
-		static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
-							 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
-							 "--long-press-ms", "--device", "--mode", "--plane-lixels",
-							 "--fallback-lixels", "--uniform-lixels", "--depth-precision"};
-		const char *v;
 		int st = lx_arg_value("kiosk", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
-		if (st)
+		if (st || (st = kiosk_option(k, a, v)))
 			return st;
-		if (!strcmp(a, "--platform")) {
-			if (strcmp(v, "x11") && strcmp(v, "kms"))
-				return bad(a, "x11 or kms", v);
-			platform = v;
-		} else if (!strcmp(a, "--frames")) {
-			enum lx_number_error e = lx_number_whole(v, 1, LONG_MAX, &frames);
-			if (e)
-				return lx_arg_bad_number("kiosk", a, "a whole number of frames >= 1", v, e);
-		} else if (!strcmp(a, "--size")) {
-			int hz;
-			if (!lx_parse_mode(v, &width, &height, &hz) || hz)
-				return bad(a, "WxH", v);
-		} else if (!strcmp(a, "--scene"))
-			scene_arg = v;
-		else if (!strcmp(a, "--methods"))
-			methods_arg = v;
-		else if (!strcmp(a, "--device")) {
-			if (strlen(v) >= sizeof board.display)
-				return bad(a, "a device path", v);
-			strcpy(board.display, v);
-		} else if (!strcmp(a, "--mode")) {
-			if (!strcmp(v, "preferred"))
-				board.mode_w = board.mode_h = board.mode_hz = 0;
-			else if (!lx_parse_mode(v, &board.mode_w, &board.mode_h, &board.mode_hz))
-				return bad(a, "WxH or WxH@HZ", v);
-		}
-		else if (strcmp(a, "--board")) {
-			/* a button override: parsed as a one-line profile, so a line break in the
-			 * value would smuggle in another line */
-			if (strpbrk(v, "\n\r"))
-				return bad(a, "a value without line breaks", "(a value with a line break)");
-			char line[256];
-			snprintf(line, sizeof line, "%s %s\n", a + 2, v);
-			if (!lx_board_apply(line, a, &board, err, sizeof err)) {
-				fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
-				return 2;
-			}
-		}
 	}
 	/* the overrides together: a --gpio-chip may come before its --gpio-line */
-	if (!lx_board_check(&board, "--gpio-chip", 0, err, sizeof err)) {
-		fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
-		return 2;
-	}
-	if (methods_arg) {
-		if (strpbrk(methods_arg, "\n\r"))
+	if (!lx_board_check(&k->board, "--gpio-chip", 0, err, sizeof err))
+		return bad_override(err);
+	if (k->methods_arg) {
+		if (strpbrk(k->methods_arg, "\n\r"))
 			return bad("--methods", "a value without line breaks", "(a value with a line break)");
 		char line[256];
-		snprintf(line, sizeof line, "methods %s\n", methods_arg);
-		if (!lx_board_parse(line, "--methods", &board, err, sizeof err)) {
-			fprintf(stderr, "lixel kiosk: %s\n", strchr(err, ' ') ? strchr(err, ' ') + 1 : err);
-			return 2;
-		}
+		snprintf(line, sizeof line, "methods %s\n", k->methods_arg);
+		if (!lx_board_parse(line, "--methods", &k->board, err, sizeof err))
+			return bad_override(err);
 	}
-	struct lx_scene scene;
-	if (!lx_arg_scene(scene_arg, &scene))
-		return 2;
-	/* KMS unless told otherwise; a desktop (DISPLAY set, no KMS device to use) gets x11 */
-	const char *device = board.display[0] ? board.display : NULL;
-	struct lx_platform *plat = lx_platform_create_display(platform ? platform : "kms", width, height, device,
-							      board.mode_w, board.mode_h, board.mode_hz, err, sizeof err);
-	if (!plat && !platform && getenv("DISPLAY")) {
-		printf("lixel kiosk: %s; using x11 (DISPLAY is set)\n", err);
-		plat = lx_platform_create_display("x11", width, height, NULL, 0, 0, 0, err, sizeof err);
-	}
-	if (!plat) {
-		fprintf(stderr, "lixel kiosk: %s\n", err);
-		return 1;
-	}
+	return 0;
+}
+
+/* The running kiosk: its display, scene, one set-up run per method, the button, the
+ * overlay and the figures of the last status window. */
+struct kiosk {
+	struct kiosk_args *args;
+	struct lx_platform *plat;
 	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	struct lx_scene scene;
 	struct lx_scene_meshes meshes;
-	if (!lx_meshes_build(&scene, &meshes)) {
+	struct lx_method_run runs[LX_BOARD_MAX_METHODS];
+	int ready, current;
+	struct lx_gpio_button *gpio;
+	struct lx_button button;
+	struct lx_overlay *ov;
+	char text[2 + LX_MAX_PLANES][96];
+	const char *lines[2 + LX_MAX_PLANES];
+	int nlines;
+	int64_t start, text_time, window_start;
+	double fps;
+	long frame, window_frames;
+};
+
+/* The display: KMS unless told otherwise; a desktop (DISPLAY set, no KMS device to use)
+ * gets x11. NULL after the one line. */
+static struct lx_platform *kiosk_display(const struct kiosk_args *a)
+{
+	char err[512];
+	const struct lx_board *b = &a->board;
+	const char *device = b->display[0] ? b->display : NULL;
+	struct lx_platform *plat = lx_platform_create_display(a->platform ? a->platform : "kms", a->width, a->height,
+							      device, b->mode_w, b->mode_h, b->mode_hz, err, sizeof err);
+	if (!plat && !a->platform && getenv("DISPLAY")) {
+		printf("lixel kiosk: %s; using x11 (DISPLAY is set)\n", err);
+		plat = lx_platform_create_display("x11", a->width, a->height, NULL, 0, 0, 0, err, sizeof err);
+	}
+	if (!plat)
+		fprintf(stderr, "lixel kiosk: %s\n", err);
+	return plat;
+}
+
+/* Every method set up to draw, then the banner line. 0, or the status after the line. */
+static int kiosk_methods(struct kiosk *k)
+{
+	char err[512];
+	const struct lx_board *b = &k->args->board;
+	lx_gl_caps_probe(&k->caps);
+	if (!lx_meshes_build(&k->scene, &k->meshes)) {
 		fprintf(stderr, "lixel: out of memory\n");
-		lx_platform_destroy(plat);
 		return 1;
 	}
-	struct lx_method_run runs[LX_BOARD_MAX_METHODS];
-	int ready = 0, status = 0;
-	for (; ready < board.method_count; ready++) {
-		status = lx_method_run_init(&runs[ready], board.methods[ready], &scene, &meshes, &caps, &board.lixels,
-					    plat->width, plat->height, board.depth_precision, LX_DEFAULT_BIAS_CODES, true, err,
-					    sizeof err);
+	for (; k->ready < b->method_count; k->ready++) {
+		int status = lx_method_run_init(&k->runs[k->ready], b->methods[k->ready], &k->scene, &k->meshes, &k->caps,
+						&b->lixels, k->plat->width, k->plat->height, b->depth_precision,
+						LX_DEFAULT_BIAS_CODES, true, err, sizeof err);
 		if (status) {
 			fprintf(stderr, "lixel: %s\n", err);
-			goto out;
+			return status;
 		}
 	}
+	const struct lx_gl_caps *c = &k->caps;
 	printf("lixel kiosk: GL_VENDOR %s, GL_RENDERER %s, GL_VERSION %s; %s %dx%d; fragment precision %s (%d bits); "
 	       "depth %s, self-test %s; board %s\n",
-	       caps.vendor, caps.renderer, caps.version, plat->name, plat->width, plat->height,
-	       caps.fragment_highp ? "highp" : "mediump",
-	       caps.fragment_highp ? caps.fragment_highp_bits : caps.fragment_mediump_bits, runs[0].depth.path,
-	       runs[0].depth.selftest, board.name);
-	if (runs[0].depth.warning[0])
-		printf("lixel kiosk: warning: %s\n", runs[0].depth.warning);
-	struct lx_gpio_button *gpio = NULL;
-	if (board.gpio_chip[0]) {
-		gpio = lx_gpio_button_open(&board, err, sizeof err);
-		if (!gpio)
+	       c->vendor, c->renderer, c->version, k->plat->name, k->plat->width, k->plat->height,
+	       c->fragment_highp ? "highp" : "mediump", c->fragment_highp ? c->fragment_highp_bits : c->fragment_mediump_bits,
+	       k->runs[0].depth.path, k->runs[0].depth.selftest, b->name);
+	if (k->runs[0].depth.warning[0])
+		printf("lixel kiosk: warning: %s\n", k->runs[0].depth.warning);
+	return 0;
+}
+
+/* The button (a GPIO line, or only the keyboard when there is none), the overlay, the
+ * signals that stop the loop. */
+static void kiosk_inputs(struct kiosk *k)
+{
+	char err[512];
+	const struct lx_board *b = &k->args->board;
+	if (b->gpio_chip[0]) {
+		k->gpio = lx_gpio_button_open(b, err, sizeof err);
+		if (!k->gpio)
 			printf("lixel kiosk: warning: %s; the keyboard still works\n", err);
 	}
-	int64_t start = now_ns();
-	struct lx_button button;
-	lx_button_init(&button, gpio && !lx_gpio_button_kernel_debounce() ? board.debounce_ms : 0, board.long_press_ms,
-		       board.active_low, gpio ? lx_gpio_button_level(gpio) : !board.active_low, start);
+	k->start = k->window_start = now_ns();
+	lx_button_init(&k->button, k->gpio && !lx_gpio_button_kernel_debounce() ? b->debounce_ms : 0, b->long_press_ms,
+		       b->active_low, k->gpio ? lx_gpio_button_level(k->gpio) : !b->active_low, k->start);
 	fflush(stdout);
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	signal(SIGHUP, on_signal); /* a closed terminal or session: the same clean stop */
-	int current = 0;
-	struct lx_overlay *ov = lx_overlay_create(err, sizeof err);
-	if (!ov)
+	k->ov = lx_overlay_create(err, sizeof err);
+	if (!k->ov)
 		printf("lixel kiosk: warning: no overlay: %s\n", err);
-	char text[2 + LX_MAX_PLANES][96];
-	const char *lines[2 + LX_MAX_PLANES];
-	int nlines = 0;
-	int64_t text_time = 0;
-	double fps = 0;
-	long frame = 0, window_frames = 0;
-	int64_t window_start = start;
-	while (!stop_requested && (frames < 0 || frame < frames)) {
+}
+
+/* The overlay's text once a second (the method, the frame rate, each plane's figures),
+ * drawn every frame. */
+static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
+{
+	if (t - k->text_time >= 1000000000LL || !k->nlines) {
+		const struct lx_method_run *run = &k->runs[k->current];
+		k->text_time = t;
+		k->nlines = 0;
+		snprintf(k->text[k->nlines++], sizeof k->text[0], "lixel  %s", k->args->board.methods[k->current]);
+		snprintf(k->text[k->nlines++], sizeof k->text[0], "%.1f fps", k->fps);
+		for (int p = 0; p < k->scene.plane_count && k->nlines < 2 + LX_MAX_PLANES; p++) {
+			struct lx_plane_sampling ps;
+			if (lx_plane_sampling_sparse(f, &run->atlas, &run->result, p, 16, &ps))
+				snprintf(k->text[k->nlines++], sizeof k->text[0], "%s  lpp %.2f  m %.2f  aniso %.2f",
+					 k->scene.planes[p].name, ps.lpp_median, ps.m_max, ps.aniso_max);
+		}
+		for (int i = 0; i < k->nlines; i++)
+			k->lines[i] = k->text[i];
+		lx_overlay_set_text(k->ov, k->lines, k->nlines, k->plat->height >= 720 ? 3 : 2);
+	}
+	lx_overlay_draw(k->ov, k->plat->width, k->plat->height);
+}
+
+/* Keys, then the button's edges and the time that passed: every press counts, even
+ * several within one frame (a slow frame must not swallow one). */
+static void kiosk_presses(struct kiosk *k, int *shorts, int *longs)
+{
+	for (int key; (key = k->plat->poll_key(k->plat)) != 0;) {
+		if (key == 'q' || key == 27)
+			stop_requested = 1;
+		*shorts += key == ' ', *longs += key == 'l';
+	}
+	if (!k->gpio)
+		return;
+	struct pollfd pfd = {.fd = lx_gpio_button_fd(k->gpio), .events = POLLIN};
+	while (poll(&pfd, 1, 0) > 0) {
+		struct lx_gpio_edge edges[64];
+		int n = lx_gpio_button_read(k->gpio, edges, 64);
+		if (n <= 0)
+			break;
+		for (int i = 0; i < n; i++) {
+			enum lx_button_event e = lx_button_edge(&k->button, edges[i].high, edges[i].t_ns);
+			*shorts += e == LX_BUTTON_SHORT, *longs += e == LX_BUTTON_LONG;
+		}
+	}
+	enum lx_button_event e = lx_button_tick(&k->button, now_ns());
+	*shorts += e == LX_BUTTON_SHORT, *longs += e == LX_BUTTON_LONG;
+}
+
+/* A short press: the next method; a long one: the overlay on or off. */
+static void kiosk_act(struct kiosk *k, int shorts, int longs)
+{
+	const struct lx_board *b = &k->args->board;
+	for (int i = 0; i < shorts && b->method_count > 1; i++) {
+		int next = (k->current + 1) % b->method_count;
+		printf("method: %s -> %s\n", b->methods[k->current], b->methods[next]);
+		fflush(stdout);
+		k->current = next;
+	}
+	for (int i = 0; i < longs; i++) {
+		k->args->overlay = !k->args->overlay;
+		k->nlines = 0; /* fresh text at once */
+		printf("overlay: %s\n", k->args->overlay ? "on" : "off");
+		fflush(stdout);
+	}
+}
+
+/* The status line every 5 seconds (and the overlay's plane lines when it is on); at the
+ * end (final) whatever the last window holds. */
+static void kiosk_status(struct kiosk *k, bool final)
+{
+	int64_t now = now_ns();
+	double secs = (now - k->window_start) / 1e9;
+	const char *method = k->args->board.methods[k->current];
+	if (final) {
+		if (k->window_frames && secs > 0)
+			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", k->window_frames, secs, k->window_frames / secs, method);
+		return;
+	}
+	if (now - k->window_start < 5000000000LL)
+		return;
+	k->fps = k->window_frames / secs; /* secs >= 5 */
+	printf("%ld frames in %.1f s = %.1f FPS (%s)\n", k->window_frames, secs, k->fps, method);
+	if (k->args->overlay)
+		for (int i = 2; i < k->nlines; i++)
+			printf("overlay: %s\n", k->lines[i]);
+	fflush(stdout);
+	k->window_start = now;
+	k->window_frames = 0;
+}
+
+/* Frames until stopped: by a key or a signal, after N frames, or when the display goes
+ * away. Returns the exit status. */
+static int kiosk_loop(struct kiosk *k)
+{
+	char err[512];
+	int status = 0;
+	while (!stop_requested && (k->args->frames < 0 || k->frame < k->args->frames)) {
 		int64_t t = now_ns();
 		struct lx_frame f;
-		if (!lx_frame_setup(&f, &scene, &meshes, (t - start) / 1e9, plat->width, plat->height, err, sizeof err)) {
+		if (!lx_frame_setup(&f, &k->scene, &k->meshes, (t - k->start) / 1e9, k->plat->width, k->plat->height, err,
+				    sizeof err)) {
 			fprintf(stderr, "lixel kiosk: %s\n", err);
 			status = 2;
 			break;
 		}
-		lx_method_run_draw(&runs[current], &f);
-		if (overlay && ov) {
-			/* the text once a second: the method, the frame rate, each plane's figures */
-			if (t - text_time >= 1000000000LL || !nlines) {
-				text_time = t;
-				nlines = 0;
-				snprintf(text[nlines++], sizeof text[0], "lixel  %s", board.methods[current]);
-				snprintf(text[nlines++], sizeof text[0], "%.1f fps", fps);
-				for (int p = 0; p < scene.plane_count && nlines < 2 + LX_MAX_PLANES; p++) {
-					struct lx_plane_sampling ps;
-					if (lx_plane_sampling_sparse(&f, &runs[current].atlas, &runs[current].result, p, 16, &ps))
-						snprintf(text[nlines++], sizeof text[0], "%s  lpp %.2f  m %.2f  aniso %.2f",
-							 scene.planes[p].name, ps.lpp_median, ps.m_max, ps.aniso_max);
-				}
-				for (int i = 0; i < nlines; i++)
-					lines[i] = text[i];
-				lx_overlay_set_text(ov, lines, nlines, plat->height >= 720 ? 3 : 2);
-			}
-			lx_overlay_draw(ov, plat->width, plat->height);
-		}
-		plat->swap(plat);
-		frame++, window_frames++;
-		/* input: keys, then the button's edges and the time that passed; every press
-		 * counts, even several within one frame (a slow frame must not swallow one) */
+		lx_method_run_draw(&k->runs[k->current], &f);
+		if (k->args->overlay && k->ov)
+			kiosk_overlay(k, &f, t);
+		k->plat->swap(k->plat);
+		k->frame++, k->window_frames++;
 		int shorts = 0, longs = 0;
-		for (int key; (key = plat->poll_key(plat)) != 0;) {
-			if (key == 'q' || key == 27)
-				stop_requested = 1;
-			else if (key == ' ')
-				shorts++;
-			else if (key == 'l')
-				longs++;
-		}
-		if (gpio) {
-			struct pollfd pfd = {.fd = lx_gpio_button_fd(gpio), .events = POLLIN};
-			while (poll(&pfd, 1, 0) > 0) {
-				struct lx_gpio_edge edges[64];
-				int n = lx_gpio_button_read(gpio, edges, 64);
-				if (n <= 0)
-					break;
-				for (int i = 0; i < n; i++) {
-					enum lx_button_event e = lx_button_edge(&button, edges[i].high, edges[i].t_ns);
-					shorts += e == LX_BUTTON_SHORT, longs += e == LX_BUTTON_LONG;
-				}
-			}
-			enum lx_button_event e = lx_button_tick(&button, now_ns());
-			shorts += e == LX_BUTTON_SHORT, longs += e == LX_BUTTON_LONG;
-		}
-		for (int k = 0; k < shorts && board.method_count > 1; k++) {
-			int next = (current + 1) % board.method_count;
-			printf("method: %s -> %s\n", board.methods[current], board.methods[next]);
-			fflush(stdout);
-			current = next;
-		}
-		for (int k = 0; k < longs; k++) {
-			overlay = !overlay;
-			nlines = 0; /* fresh text at once */
-			printf("overlay: %s\n", overlay ? "on" : "off");
-			fflush(stdout);
-		}
-		if (plat->state != LX_DISPLAY_OK) {
+		kiosk_presses(k, &shorts, &longs);
+		kiosk_act(k, shorts, longs);
+		if (k->plat->state != LX_DISPLAY_OK) {
 			/* the window closed or the display taken: a clean stop; the display gone: 1 */
-			printf("lixel kiosk: %s; stopping\n", plat->why);
+			printf("lixel kiosk: %s; stopping\n", k->plat->why);
 			fflush(stdout);
-			status = plat->state == LX_DISPLAY_LOST;
+			status = k->plat->state == LX_DISPLAY_LOST;
 			break;
 		}
-		int64_t now = now_ns();
-		if (now - window_start >= 5000000000LL) {
-			double secs = (now - window_start) / 1e9;
-			fps = window_frames / secs;
-			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, fps, board.methods[current]);
-			if (overlay)
-				for (int i = 2; i < nlines; i++)
-					printf("overlay: %s\n", lines[i]);
-			fflush(stdout);
-			window_start = now;
-			window_frames = 0;
-		}
+		kiosk_status(k, false);
 	}
-	double secs = (now_ns() - window_start) / 1e9;
-	if (window_frames && secs > 0)
-		printf("%ld frames in %.1f s = %.1f FPS (%s)\n", window_frames, secs, window_frames / secs,
-		       board.methods[current]);
-	lx_gpio_button_close(gpio);
-	lx_overlay_destroy(ov);
-out:
-	for (int m = 0; m < ready; m++)
-		lx_method_run_free(&runs[m]);
-	lx_meshes_free(&meshes);
-	lx_platform_destroy(plat);
+	kiosk_status(k, true);
+	return status;
+}
+
+int lx_kiosk_main(int argc, char **argv)
+{
+	struct kiosk_args args;
+	int status = kiosk_parse(argc, argv, &args);
+	if (status)
+		return status < 0 ? 0 : status;
+	static struct kiosk k; /* large (the runs and their atlases): not on the stack */
+	memset(&k, 0, sizeof k);
+	k.args = &args;
+	if (!lx_arg_scene(args.scene_arg, &k.scene))
+		return 2;
+	if (!(k.plat = kiosk_display(&args)))
+		return 1;
+	if (!(status = kiosk_methods(&k))) {
+		kiosk_inputs(&k);
+		status = kiosk_loop(&k);
+		lx_gpio_button_close(k.gpio);
+		lx_overlay_destroy(k.ov);
+	}
+	for (int m = 0; m < k.ready; m++)
+		lx_method_run_free(&k.runs[m]);
+	lx_meshes_free(&k.meshes);
+	lx_platform_destroy(k.plat);
 	return status;
 }
