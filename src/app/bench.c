@@ -139,81 +139,85 @@ static void config_scene(const struct bench *b, const char *config, struct lx_sc
 		lx_config_apply(lx_config_find(config), s);
 }
 
-/* One configuration: timed frames for every method (interleaved), then accuracy. */
-static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const struct lx_scene_meshes *meshes,
-		      uint8_t *rgba, int16_t *obj, uint8_t *sh, int16_t *ref_obj, uint8_t *ref_sh, char *err,
-		      size_t errlen)
+/* The scratch images of a configuration's accuracy and strips. */
+struct pixels {
+	uint8_t *rgba, *sh, *ref_sh;
+	int16_t *obj, *ref_obj;
+};
+
+/* A fresh order of the methods for each frame (a fixed sequence, so runs repeat): no
+ * method always runs first or always follows the same one, whatever --methods says. */
+static void shuffled(int nm, unsigned long long *seq, int *order)
 {
-	const char *config = b->configs[ci];
-	bool anim = is_animation(config);
-	struct lx_scene scene;
-	config_scene(b, config, &scene);
-	/* times[(kind * nm + method) * frames + frame] */
-	double *times = malloc(sizeof(double) * (size_t)b->frames * T_KINDS * b->nm);
-	if (!times) {
-		snprintf(err, errlen, "out of memory");
-		return 1;
+	for (int k = 0; k < nm; k++)
+		order[k] = k;
+	for (int k = nm - 1; k > 0; k--) {
+		*seq = *seq * 6364136223846793005ull + 1442695040888963407ull; /* a 64-bit LCG */
+		int j = (int)((*seq >> 33) % (unsigned long long)(k + 1)), t = order[k];
+		order[k] = order[j], order[j] = t;
 	}
-	struct lx_frame frame;
-	unsigned long long shuffle = 0x6c697865ull; /* the order's sequence (a 64-bit LCG) */
+}
+
+/* Warm-up and timed frames of every method, interleaved; times[(kind * nm + method) *
+ * frames + frame]. The last frame stays in *frame. 0, or 2 when the view is degenerate. */
+static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim, struct lx_method_run *runs,
+		       const struct lx_scene_meshes *meshes, double *times, struct lx_frame *frame, char *err, size_t errlen)
+{
+	unsigned long long seq = 0x6c697865ull;
 	for (int i = 0; i < b->warmup + b->frames; i++) {
-		double t = anim ? i / 30.0 : 0.0;
-		if (!lx_frame_setup(&frame, &scene, meshes, t, b->width, b->height, err, errlen)) {
-			free(times);
+		if (!lx_frame_setup(frame, scene, meshes, anim ? i / 30.0 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		}
-		/* a fresh order each frame (a fixed sequence, so runs repeat): no method always
-		 * runs first or always follows the same one, whatever the order of --methods */
 		int order[MAX_METHODS];
-		for (int k = 0; k < b->nm; k++)
-			order[k] = k;
-		for (int k = b->nm - 1; k > 0; k--) {
-			shuffle = shuffle * 6364136223846793005ull + 1442695040888963407ull;
-			int j = (int)((shuffle >> 33) % (unsigned long long)(k + 1)), t = order[k];
-			order[k] = order[j], order[j] = t;
-		}
+		shuffled(b->nm, &seq, order);
 		for (int k = 0; k < b->nm; k++) {
 			int m = order[k];
 			struct lx_frame_times ft;
-			lx_method_run_frame(&runs[m], &frame, &ft);
-			if (i >= b->warmup) {
-				double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms};
-				for (int q = 0; q < T_KINDS; q++)
-					times[((size_t)q * b->nm + m) * b->frames + i - b->warmup] = v[q];
-			}
+			lx_method_run_frame(&runs[m], frame, &ft);
+			if (i < b->warmup)
+				continue;
+			double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms};
+			for (int q = 0; q < T_KINDS; q++)
+				times[((size_t)q * b->nm + m) * b->frames + i - b->warmup] = v[q];
 		}
 	}
-	/* strips: each method's last shaded frame, side by side */
-	if (b->strips) {
-		/* panels at most 512 pixels wide (box-filtered down by a whole factor) */
-		int k = (b->width + 511) / 512, pw = b->width / k, ph = b->height / k, gap = 8;
-		int sw = b->nm * pw + (b->nm - 1) * gap;
-		uint8_t *strip = malloc((size_t)sw * ph * 4);
-		if (strip) {
-			memset(strip, 255, (size_t)sw * ph * 4);
-			for (int m = 0; m < b->nm; m++) {
-				lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
-				lx_renderer_read(runs[m].renderer, rgba);
-				for (int y = 0; y < ph; y++)
-					for (int x = 0; x < pw; x++)
-						for (int c = 0; c < 4; c++) {
-							unsigned sum = 0;
-							for (int dy = 0; dy < k; dy++)
-								for (int dx = 0; dx < k; dx++)
-									sum += rgba[(((size_t)(y * k + dy)) * b->width + x * k + dx) * 4 + c];
-							strip[((size_t)y * sw + m * (pw + gap) + x) * 4 + c] = (uint8_t)(sum / (unsigned)(k * k));
-						}
-			}
-			char path[4096];
-			snprintf(path, sizeof path, "%s/%s.png", b->strips, config);
-			bool ok = lx_png_write(path, strip, sw, ph, err, errlen);
-			free(strip);
-			if (!ok) {
-				free(times);
-				return 1;
-			}
-		}
+	return 0;
+}
+
+/* --strips: each method's last shaded frame side by side in DIR/CONFIG.png, panels at
+ * most 512 pixels wide (box-filtered down by a whole factor). False after err. */
+static bool write_strip(const struct bench *b, const char *config, struct lx_method_run *runs,
+			const struct lx_frame *frame, uint8_t *rgba, char *err, size_t errlen)
+{
+	int k = (b->width + 511) / 512, pw = b->width / k, ph = b->height / k, gap = 8;
+	int sw = b->nm * pw + (b->nm - 1) * gap;
+	uint8_t *strip = malloc((size_t)sw * ph * 4);
+	if (!strip)
+		return true; /* no strip, no harm to the figures */
+	memset(strip, 255, (size_t)sw * ph * 4);
+	for (int m = 0; m < b->nm; m++) {
+		lx_method_run_frame(&runs[m], frame, &(struct lx_frame_times){0});
+		lx_renderer_read(runs[m].renderer, rgba);
+		for (int y = 0; y < ph; y++)
+			for (int x = 0; x < pw; x++)
+				for (int c = 0; c < 4; c++) {
+					unsigned sum = 0;
+					for (int dy = 0; dy < k; dy++)
+						for (int dx = 0; dx < k; dx++)
+							sum += rgba[(((size_t)(y * k + dy)) * b->width + x * k + dx) * 4 + c];
+					strip[((size_t)y * sw + m * (pw + gap) + x) * 4 + c] = (uint8_t)(sum / (unsigned)(k * k));
+				}
 	}
+	char path[4096];
+	snprintf(path, sizeof path, "%s/%s.png", b->strips, config);
+	bool ok = lx_png_write(path, strip, sw, ph, err, errlen);
+	free(strip);
+	return ok;
+}
+
+/* A configuration's timed figures per method: medians and extremes, and every frame
+ * kept for the method's overall median. */
+static void time_rows(struct bench *b, int ci, const double *times)
+{
 	for (int m = 0; m < b->nm; m++) {
 		struct row *r = &b->rows[m][ci];
 		const double *own[T_KINDS];
@@ -234,46 +238,84 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 		for (int p = 0; p < LX_MAX_PLANES; p++)
 			r->m_max[p] = r->lpp[p] = r->used[p] = NAN;
 	}
-	free(times);
-	/* accuracy: one reference per sampled time, shared by the methods */
+}
+
+/* One method's accuracy at one sampled time, against the reference in px. */
+static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_method_run *run,
+			   const struct lx_frame *frame, const struct pixels *px, double mis[3])
+{
+	long looked = lx_method_run_decision(run, frame, px->rgba, px->obj, px->sh);
+	struct row *rw = &b->rows[m][ci];
+	if (sidx == 0)
+		rw->lookup_pct = 100.0 * looked / ((double)b->width * b->height);
+	struct lx_mismatch mm;
+	struct lx_plane_report planes[LX_MAX_PLANES];
+	lx_measure(frame, &run->atlas, &run->result, px->ref_obj, px->ref_sh, px->obj, px->sh, &mm, planes);
+	mis[0] = mm.mismatch_pct, mis[1] = mm.false_shadow_pct, mis[2] = mm.missing_shadow_pct;
+	for (int p = 0; p < frame->scene->plane_count && p < LX_MAX_PLANES; p++)
+		if (planes[p].present) {
+			rw->m_max[p] = isnan(rw->m_max[p]) ? planes[p].s.m_max : fmax(rw->m_max[p], planes[p].s.m_max);
+			if (isnan(rw->lpp[p])) /* the first sampled time (the animation's first) */
+				rw->lpp[p] = planes[p].s.lpp_median, rw->used[p] = planes[p].s.lixels_used;
+		}
+}
+
+/* Accuracy: one reference per sampled time, shared by the methods; each row gets the
+ * median over the samples and the worst. 0, 1 or 2 after err. */
+static int measure_config(struct bench *b, int ci, const struct lx_scene *scene, bool anim, struct lx_method_run *runs,
+			  const struct lx_scene_meshes *meshes, const struct pixels *px, char *err, size_t errlen)
+{
 	int samples = anim ? ANIMATION_SAMPLES : 1;
-	double mis[MAX_METHODS][ANIMATION_SAMPLES], fal[MAX_METHODS][ANIMATION_SAMPLES], mss[MAX_METHODS][ANIMATION_SAMPLES];
+	double mis[MAX_METHODS][3][ANIMATION_SAMPLES];
+	struct lx_frame frame;
 	for (int sidx = 0; sidx < samples; sidx++) {
-		double t = anim ? sidx * 0.6 : 0.0;
-		if (!lx_frame_setup(&frame, &scene, meshes, t, b->width, b->height, err, errlen))
+		if (!lx_frame_setup(&frame, scene, meshes, anim ? sidx * 0.6 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		if (!lx_reference_image(&frame, ref_obj, ref_sh, 2)) {
+		if (!lx_reference_image(&frame, px->ref_obj, px->ref_sh, 2)) {
 			snprintf(err, errlen, "out of memory for the reference image");
 			return 1;
 		}
 		for (int m = 0; m < b->nm; m++) {
+			double v[3];
 			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
-			long looked = lx_method_run_decision(&runs[m], &frame, rgba, obj, sh);
-			if (sidx == 0)
-				b->rows[m][ci].lookup_pct = 100.0 * looked / ((double)b->width * b->height);
-			struct lx_mismatch mm;
-			struct lx_plane_report planes[LX_MAX_PLANES];
-			lx_measure(&frame, &runs[m].atlas, &runs[m].result, ref_obj, ref_sh, obj, sh, &mm, planes);
-			mis[m][sidx] = mm.mismatch_pct, fal[m][sidx] = mm.false_shadow_pct, mss[m][sidx] = mm.missing_shadow_pct;
-			for (int p = 0; p < scene.plane_count && p < LX_MAX_PLANES; p++)
-				if (planes[p].present) {
-					struct row *rw = &b->rows[m][ci];
-					rw->m_max[p] = isnan(rw->m_max[p]) ? planes[p].s.m_max : fmax(rw->m_max[p], planes[p].s.m_max);
-					if (isnan(rw->lpp[p])) /* the first sampled time (the animation's first) */
-						rw->lpp[p] = planes[p].s.lpp_median, rw->used[p] = planes[p].s.lixels_used;
-				}
+			measure_method(b, ci, m, sidx, &runs[m], &frame, px, v);
+			for (int q = 0; q < 3; q++)
+				mis[m][q][sidx] = v[q];
 		}
 	}
 	for (int m = 0; m < b->nm; m++) {
 		struct row *r = &b->rows[m][ci];
-		r->mismatch_pct = median_of(mis[m], samples);
-		r->false_pct = median_of(fal[m], samples);
-		r->missing_pct = median_of(mss[m], samples);
+		r->mismatch_pct = median_of(mis[m][0], samples);
+		r->false_pct = median_of(mis[m][1], samples);
+		r->missing_pct = median_of(mis[m][2], samples);
 		r->mismatch_worst = 0;
 		for (int k = 0; k < samples; k++)
-			r->mismatch_worst = fmax(r->mismatch_worst, mis[m][k]);
+			r->mismatch_worst = fmax(r->mismatch_worst, mis[m][0][k]);
 	}
 	return 0;
+}
+
+/* One configuration: timed frames for every method (interleaved), then accuracy. */
+static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const struct lx_scene_meshes *meshes,
+		      const struct pixels *px, char *err, size_t errlen)
+{
+	const char *config = b->configs[ci];
+	bool anim = is_animation(config);
+	struct lx_scene scene;
+	config_scene(b, config, &scene);
+	double *times = malloc(sizeof(double) * (size_t)b->frames * T_KINDS * b->nm);
+	if (!times) {
+		snprintf(err, errlen, "out of memory");
+		return 1;
+	}
+	struct lx_frame frame;
+	int st = time_frames(b, &scene, anim, runs, meshes, times, &frame, err, errlen);
+	if (!st && b->strips && !write_strip(b, config, runs, &frame, px->rgba, err, errlen))
+		st = 1;
+	if (!st)
+		time_rows(b, ci, times);
+	free(times);
+	return st ? st : measure_config(b, ci, &scene, anim, runs, meshes, px, err, errlen);
 }
 
 static int method_index(const struct bench *b, const char *name)
@@ -454,113 +496,174 @@ static bool write_plot(const struct bench *b, char *err, size_t errlen)
 	return lx_plot_scatter(b->plot, title, "frame time ms (median)", "mismatch % (median, log)", pts, b->nm, err, errlen);
 }
 
-int lx_bench_main(int argc, char **argv)
+/* What --methods, --configs and --scene said, kept until the lists are checked. */
+struct bench_args {
+	char methods[256], configs[512];
+	const char *scene;
+};
+
+/* One option and its value: 0, 2 after the one line. */
+static int bench_option(struct bench *b, struct bench_args *ba, const char *a, const char *v)
 {
-	static struct bench b;
-	memset(&b, 0, sizeof b);
-	b.width = b.height = 1024;
-	b.frames = 30;
-	b.warmup = 5;
-	b.platform = "osmesa";
-	b.options = LX_METHOD_OPTIONS_DEFAULT;
-	static char methods_buf[256] = "none,uniform,psm,lispsm,tsm,plane", configs_buf[512];
-	lx_scene_default(&b.scene);
-	const char *scene_arg = NULL;
+	int st, hz;
+	if ((st = lx_arg_depth_precision("bench", a, v, &b->depth_precision)) >= 0 ||
+	    (st = lx_arg_plane_option("bench", a, v, &b->options)) >= 0)
+		return st;
+	if (!strcmp(a, "--size")) {
+		if (!lx_parse_mode(v, &b->width, &b->height, &hz) || hz)
+			return bad(a, "WxH with W and H from 1 to 16384", v);
+	} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
+		bool frames = !strcmp(a, "--frames");
+		enum lx_number_error e = lx_number_int(v, frames ? 1 : 0, 10000, frames ? &b->frames : &b->warmup);
+		if (e)
+			return lx_arg_bad_number("bench", a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000",
+						 v, e);
+	} else if (!strcmp(a, "--methods") || !strcmp(a, "--configs")) {
+		char *to = a[2] == 'm' ? ba->methods : ba->configs;
+		size_t room = a[2] == 'm' ? sizeof ba->methods : sizeof ba->configs;
+		if (strlen(v) >= room)
+			return bad(a, "a shorter list", v);
+		strcpy(to, v);
+	} else if (!strcmp(a, "--platform")) {
+		if (strcmp(v, "osmesa") && strcmp(v, "egl"))
+			return bad(a, lx_platform_names(), v);
+		b->platform = v;
+	} else if (!strcmp(a, "--scene"))
+		ba->scene = v;
+	else if (!strcmp(a, "--csv"))
+		b->csv = v;
+	else if (!strcmp(a, "--plot"))
+		b->plot = v;
+	else if (!strcmp(a, "--strips"))
+		b->strips = v;
+	return 0;
+}
+
+/* The lists of methods and configurations split and each name checked. 0 or 2. */
+static int bench_lists(struct bench *b, struct bench_args *ba)
+{
+	char copy[512];
+	strcpy(copy, ba->methods);
+	if (!split(ba->methods, b->methods, MAX_METHODS, &b->nm))
+		return bad("--methods", "a comma-separated list of methods", copy);
+	for (int m = 0; m < b->nm; m++) {
+		struct lx_method_options probe = b->options;
+		char why[200];
+		if (!lx_shadow_method_spec(b->methods[m], &probe, why, sizeof why))
+			return bad("--methods", "methods from none|uniform|psm|lispsm|tsm|plane, plane with /square, /shared or /lppX",
+				   b->methods[m]);
+	}
+	if (!ba->configs[0]) {
+		for (int c = 0; c < lx_config_count; c++)
+			b->configs[b->nc++] = lx_configs[c].name;
+		b->configs[b->nc++] = "animation";
+		return 0;
+	}
+	strcpy(copy, ba->configs);
+	if (!split(ba->configs, b->configs, MAX_CONFIGS, &b->nc))
+		return bad("--configs", "a comma-separated list of configurations", copy);
+	for (int c = 0; c < b->nc; c++)
+		if (!is_animation(b->configs[c]) && !lx_config_find(b->configs[c]))
+			return bad("--configs", "configurations named in lixel render --help, or animation", b->configs[c]);
+	return 0;
+}
+
+/* The command line into *b (ba keeps the lists' text, which b points into), the scene
+ * loaded and every output checked before any work. 0, 2, or -1 after --help. */
+static int bench_parse(int argc, char **argv, struct bench *b, struct bench_args *ba)
+{
+	*b = (struct bench){.width = 1024, .height = 1024, .frames = 30, .warmup = 5, .platform = "osmesa",
+			    .options = LX_METHOD_OPTIONS_DEFAULT};
+	*ba = (struct bench_args){.methods = "none,uniform,psm,lispsm,tsm,plane"};
+	lx_scene_default(&b->scene);
+	static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
+						 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES};
 	for (int i = 0; i < argc; i++) {
-		const char *a = argv[i];
+		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
 			usage(stdout);
-			return 0;
+			return -1;
 		}
-		if (!strcmp(a, "--json")) {
-			b.json = true;
+		if (!strcmp(a, "--json") || !strcmp(a, "--mediump")) {
+			if (a[2] == 'j')
+				b->json = true;
+			else
+				b->depth_precision = LX_DEPTH_MEDIUMP;
 			continue;
 		}
-		if (!strcmp(a, "--mediump")) {
-			b.depth_precision = LX_DEPTH_MEDIUMP;
-			continue;
-		}
-		static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
-							 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES};
-		const char *v;
 		int st = lx_arg_value("bench", argc, argv, &i, with_value, sizeof with_value / sizeof with_value[0], &v);
-		if (st)
+		if (st || (st = bench_option(b, ba, a, v)))
 			return st;
-		int hz;
-		if ((st = lx_arg_depth_precision("bench", a, v, &b.depth_precision)) >= 0) {
-			if (st)
-				return st;
-		} else if ((st = lx_arg_plane_option("bench", a, v, &b.options)) >= 0) {
-			if (st)
-				return st;
-		} else if (!strcmp(a, "--size")) {
-			if (!lx_parse_mode(v, &b.width, &b.height, &hz) || hz)
-				return bad(a, "WxH with W and H from 1 to 16384", v);
-		} else if (!strcmp(a, "--frames") || !strcmp(a, "--warmup")) {
-			bool frames = !strcmp(a, "--frames");
-			enum lx_number_error e = lx_number_int(v, frames ? 1 : 0, 10000, frames ? &b.frames : &b.warmup);
-			if (e)
-				return lx_arg_bad_number("bench", a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000", v, e);
-		} else if (!strcmp(a, "--methods")) {
-			if (strlen(v) >= sizeof methods_buf)
-				return bad(a, "a shorter list", v);
-			strcpy(methods_buf, v);
-		} else if (!strcmp(a, "--configs")) {
-			if (strlen(v) >= sizeof configs_buf)
-				return bad(a, "a shorter list", v);
-			strcpy(configs_buf, v);
-		} else if (!strcmp(a, "--platform")) {
-			if (strcmp(v, "osmesa") && strcmp(v, "egl"))
-				return bad(a, lx_platform_names(), v);
-			b.platform = v;
-		} else if (!strcmp(a, "--scene"))
-			scene_arg = v;
-		else if (!strcmp(a, "--csv"))
-			b.csv = v;
-		else if (!strcmp(a, "--plot"))
-			b.plot = v;
-		else if (!strcmp(a, "--strips"))
-			b.strips = v;
 	}
-	char list_copy[256];
-	strcpy(list_copy, methods_buf);
-	if (!split(methods_buf, b.methods, MAX_METHODS, &b.nm))
-		return bad("--methods", "a comma-separated list of methods", list_copy);
-	for (int m = 0; m < b.nm; m++) {
-		struct lx_method_options probe = b.options;
-		char why[200];
-		if (!lx_shadow_method_spec(b.methods[m], &probe, why, sizeof why))
-			return bad("--methods", "methods from " "none|uniform|psm|lispsm|tsm|plane, plane with /square, /shared or /lppX", b.methods[m]);
-	}
-	if (!configs_buf[0]) {
-		for (int c = 0; c < lx_config_count; c++)
-			b.configs[b.nc++] = lx_configs[c].name;
-		b.configs[b.nc++] = "animation";
-	} else {
-		char copy[512];
-		strcpy(copy, configs_buf);
-		if (!split(configs_buf, b.configs, MAX_CONFIGS, &b.nc))
-			return bad("--configs", "a comma-separated list of configurations", copy);
-		for (int c = 0; c < b.nc; c++)
-			if (!is_animation(b.configs[c]) && !lx_config_find(b.configs[c]))
-				return bad("--configs", "configurations named in lixel render --help, or animation", b.configs[c]);
-	}
-	char err[512];
-	if (scene_arg && !lx_arg_scene(scene_arg, &b.scene))
+	int st = bench_lists(b, ba);
+	if (st)
+		return st;
+	if (ba->scene && !lx_arg_scene(ba->scene, &b->scene))
 		return 2;
-	if (b.strips) {
-		struct stat st;
-		if (!*b.strips || stat(b.strips, &st) != 0 || !S_ISDIR(st.st_mode) || access(b.strips, W_OK | X_OK) != 0)
-			return bad("--strips", "a writable folder", b.strips);
-	}
+	struct stat info;
+	if (b->strips && (!*b->strips || stat(b->strips, &info) != 0 || !S_ISDIR(info.st_mode) ||
+			  access(b->strips, W_OK | X_OK) != 0))
+		return bad("--strips", "a writable folder", b->strips);
 	/* every output checked before any work: a bad path is found now, not after the run */
-	const char *outputs[2] = {b.csv, b.plot};
+	const char *outputs[2] = {b->csv, b->plot};
+	char err[512];
 	for (int k = 0; k < 2; k++)
 		if (outputs[k] && !lx_out_check(outputs[k], err, sizeof err)) {
 			fprintf(stderr, "lixel bench: %s\n", err);
 			return 2;
 		}
+	return 0;
+}
 
+/* The images and the per-method frame lists; false when memory runs out. */
+static bool bench_alloc(struct bench *b, struct pixels *px)
+{
+	long n = (long)b->width * b->height;
+	px->rgba = malloc((size_t)n * 4), px->sh = malloc((size_t)n), px->ref_sh = malloc((size_t)n);
+	px->obj = malloc((size_t)n * sizeof(int16_t)), px->ref_obj = malloc((size_t)n * sizeof(int16_t));
+	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj;
+	for (int m = 0; m < b->nm; m++)
+		for (int q = 0; q < T_KINDS; q++)
+			ok &= (b->all[m][q] = malloc(sizeof(double) * (size_t)b->frames * b->nc)) != NULL;
+	return ok;
+}
+
+/* Every method set up, every configuration run, the report and its files. */
+static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, struct lx_method_run *runs, int *ready,
+		     const struct pixels *px, char *err, size_t errlen)
+{
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	for (; *ready < b->nm; ++*ready) {
+		int status = lx_method_run_init(&runs[*ready], b->methods[*ready], &b->scene, meshes, &caps, &b->options,
+						b->width, b->height, b->depth_precision, LX_DEFAULT_BIAS_CODES, false, err, errlen);
+		if (status)
+			return status;
+		b->depth = runs[*ready].depth;
+		if (*ready == 0 && b->depth.warning[0])
+			fprintf(stderr, "lixel bench: warning: %s\n", b->depth.warning);
+	}
+	for (int c = 0; c < b->nc; c++) {
+		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b->nc, b->configs[c]);
+		int status = run_config(b, c, runs, meshes, px, err, errlen);
+		if (status)
+			return status;
+	}
+	if (b->json)
+		print_json(b);
+	else
+		print_text(b, &caps);
+	return (b->csv && !write_csv(b, err, errlen)) || (b->plot && !write_plot(b, err, errlen));
+}
+
+int lx_bench_main(int argc, char **argv)
+{
+	static struct bench b; /* the rows of every method and configuration: large */
+	struct bench_args ba;
+	int status = bench_parse(argc, argv, &b, &ba);
+	if (status)
+		return status < 0 ? 0 : status;
+	char err[512];
 	struct lx_scene_meshes meshes = {0};
 	if (!lx_meshes_build(&b.scene, &meshes)) {
 		fprintf(stderr, "lixel: out of memory building the meshes\n");
@@ -572,51 +675,14 @@ int lx_bench_main(int argc, char **argv)
 		lx_meshes_free(&meshes);
 		return 1;
 	}
-	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
-	struct lx_method_options opt = b.options;
 	struct lx_method_run runs[MAX_METHODS];
-	int status = 0, ready = 0;
-	long n = (long)b.width * b.height;
-	uint8_t *rgba = malloc((size_t)n * 4), *sh = malloc((size_t)n), *ref_sh = malloc((size_t)n);
-	int16_t *obj = malloc((size_t)n * sizeof(int16_t)), *ref_obj = malloc((size_t)n * sizeof(int16_t));
-	if (!rgba || !sh || !ref_sh || !obj || !ref_obj) {
+	struct pixels px = {0};
+	int ready = 0;
+	if (!bench_alloc(&b, &px)) {
 		snprintf(err, sizeof err, "out of memory for %dx%d images", b.width, b.height);
 		status = 1;
-		goto out;
-	}
-	for (int m = 0; m < b.nm; m++) {
-		bool ok = true;
-		for (int q = 0; q < T_KINDS; q++)
-			ok &= (b.all[m][q] = malloc(sizeof(double) * (size_t)b.frames * b.nc)) != NULL;
-		if (!ok) {
-			snprintf(err, sizeof err, "out of memory");
-			status = 1;
-			goto out;
-		}
-	}
-	for (; ready < b.nm; ready++) {
-		status = lx_method_run_init(&runs[ready], b.methods[ready], &b.scene, &meshes, &caps, &opt, b.width, b.height,
-					    b.depth_precision, LX_DEFAULT_BIAS_CODES, false, err, sizeof err);
-		if (status)
-			goto out;
-		b.depth = runs[ready].depth;
-		if (ready == 0 && b.depth.warning[0])
-			fprintf(stderr, "lixel bench: warning: %s\n", b.depth.warning);
-	}
-	for (int c = 0; c < b.nc; c++) {
-		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b.nc, b.configs[c]);
-		status = run_config(&b, c, runs, &meshes, rgba, obj, sh, ref_obj, ref_sh, err, sizeof err);
-		if (status)
-			goto out;
-	}
-	if (b.json)
-		print_json(&b);
-	else
-		print_text(&b, &caps);
-	if ((b.csv && !write_csv(&b, err, sizeof err)) || (b.plot && !write_plot(&b, err, sizeof err)))
-		status = 1;
-out:
+	} else
+		status = bench_run(&b, &meshes, runs, &ready, &px, err, sizeof err);
 	if (status)
 		fprintf(stderr, "lixel: %s\n", err);
 	for (int m = 0; m < ready; m++)
@@ -624,7 +690,7 @@ out:
 	for (int m = 0; m < b.nm; m++)
 		for (int q = 0; q < T_KINDS; q++)
 			free(b.all[m][q]);
-	free(rgba), free(sh), free(ref_sh), free(obj), free(ref_obj);
+	free(px.rgba), free(px.sh), free(px.ref_sh), free(px.obj), free(px.ref_obj);
 	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);
 	return status;
