@@ -85,6 +85,113 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 	return ok;
 }
 
+/* Warm-up and timed frames: their medians and extremes into rep, and the image read
+ * back into rgba. False after err. */
+static bool time_frames(const struct lx_render_job *job, struct lx_method_run *mr, const struct lx_frame *frame,
+			struct lx_render_report *rep, uint8_t *rgba, char *err, size_t errlen)
+{
+	int timed = job->timed_frames > 0 ? job->timed_frames : 1;
+	double *times = calloc((size_t)timed * 4, sizeof(double));
+	if (!times) {
+		snprintf(err, errlen, "out of memory for %d frames' times", timed);
+		return false;
+	}
+	double *frame_ms = times, *shadow_ms = times + timed, *main_ms = shadow_ms + timed, *setup_us = main_ms + timed;
+	lx_renderer_finish();
+	for (int i = 0; i < job->warmup_frames + timed; i++) {
+		struct lx_frame_times t;
+		lx_method_run_frame(mr, frame, &t);
+		int k = i - job->warmup_frames;
+		if (k >= 0)
+			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;
+	}
+	rep->result = mr->result;
+	rep->atlas = mr->atlas; /* as the last frame laid it out */
+	rep->frame_ms_min = INFINITY;
+	for (int k = 0; k < timed; k++) {
+		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);
+		rep->frame_ms_max = fmax(rep->frame_ms_max, frame_ms[k]);
+	}
+	rep->frame_ms = lx_median(frame_ms, timed);
+	rep->shadow_ms = lx_median(shadow_ms, timed);
+	rep->main_ms = lx_median(main_ms, timed);
+	rep->setup_us = lx_median(setup_us, timed);
+	free(times);
+	lx_renderer_read(mr->renderer, rgba);
+	return true;
+}
+
+/* The main pass's decision per pixel (with --measure, --decision-out or for tests), and
+ * its image. False after err. */
+static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, const struct lx_frame *frame,
+		   struct lx_render_report *rep, uint8_t *rgba, char *err, size_t errlen)
+{
+	long n = (long)job->width * job->height;
+	rep->object = malloc((size_t)n * sizeof(int16_t));
+	rep->shadow = malloc((size_t)n);
+	if (!rep->object || !rep->shadow) {
+		snprintf(err, errlen, "out of memory");
+		return false;
+	}
+	rep->lookup_pct = 100.0 * lx_method_run_decision(mr, frame, rgba, rep->object, rep->shadow) / n;
+	if (!job->decision_png)
+		return true;
+	decision_colors(rep->object, rep->shadow, n, rgba);
+	return lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen);
+}
+
+/* The exact reference, the mismatch and the planes' figures (and their warnings), and
+ * the mismatch image. False after err. */
+static bool measure(const struct lx_render_job *job, const struct lx_frame *frame, struct lx_render_report *rep,
+		    uint8_t *rgba, char *err, size_t errlen)
+{
+	long n = (long)job->width * job->height;
+	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
+	rep->ref_shadow = malloc((size_t)n);
+	if (!rep->ref_object || !rep->ref_shadow ||
+	    !lx_reference_image(frame, rep->ref_object, rep->ref_shadow, job->reference_threads)) {
+		snprintf(err, errlen, "out of memory for the reference image");
+		return false;
+	}
+	rep->plane_count = job->scene.plane_count;
+	lx_measure(frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
+		   &rep->mismatch, rep->planes);
+	lx_sampling_warnings(rep->planes, rep->plane_count, lx_atlas_lixels(&rep->atlas), &rep->result);
+	rep->measured = true;
+	if (!job->mismatch_png)
+		return true;
+	mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);
+	return lx_png_write(job->mismatch_png, rgba, job->width, job->height, err, errlen);
+}
+
+/* The method set up, the frames timed, the outputs written, the measurements. */
+static int render_frames(const struct lx_render_job *job, const struct lx_scene_meshes *meshes,
+			 const struct lx_frame *frame, struct lx_render_report *rep, char *err, size_t errlen)
+{
+	lx_gl_caps_probe(&rep->caps);
+	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
+	struct lx_method_run mr;
+	int status = lx_method_run_init(&mr, job->method, &job->scene, meshes, &rep->caps, &opt, job->width,
+					job->height, job->depth_precision, job->bias_codes, false, err, errlen);
+	if (status)
+		return status;
+	rep->depth = mr.depth;
+	uint8_t *rgba = malloc((size_t)job->width * job->height * 4);
+	bool ok = rgba != NULL;
+	if (!ok)
+		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
+	ok = ok && time_frames(job, &mr, frame, rep, rgba, err, errlen);
+	ok = ok && (!job->out_png || lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen));
+	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, &rep->atlas, job->atlas_png, err, errlen));
+	if (ok && (job->measure || job->keep_pixels || job->decision_png))
+		ok = decide(job, &mr, frame, rep, rgba, err, errlen);
+	if (ok && job->measure)
+		ok = measure(job, frame, rep, rgba, err, errlen);
+	free(rgba);
+	lx_method_run_free(&mr);
+	return ok ? 0 : 1;
+}
+
 int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep, char *err, size_t errlen)
 {
 	memset(rep, 0, sizeof(*rep));
@@ -100,108 +207,23 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	snprintf(rep->platform, sizeof rep->platform, "%s", job->platform);
 	rep->width = job->width;
 	rep->height = job->height;
-
 	struct lx_scene_meshes meshes = {0};
 	if (!lx_meshes_build(&job->scene, &meshes)) {
 		snprintf(err, errlen, "out of memory building the meshes");
 		return 1;
 	}
 	struct lx_frame frame;
-	if (!lx_frame_setup(&frame, &job->scene, &meshes, job->time, job->width, job->height, err, errlen)) {
-		lx_meshes_free(&meshes);
-		return 2;
+	int status = 2;
+	if (lx_frame_setup(&frame, &job->scene, &meshes, job->time, job->width, job->height, err, errlen)) {
+		struct lx_platform *plat = lx_platform_create(job->platform, err, errlen);
+		if (plat)
+			status = render_frames(job, &meshes, &frame, rep, err, errlen);
+		else
+			status = strcmp(job->platform, "osmesa") && strcmp(job->platform, "egl") ? 2 : 1;
+		lx_platform_destroy(plat);
 	}
-	struct lx_platform *plat = lx_platform_create(job->platform, err, errlen);
-	if (!plat) {
-		lx_meshes_free(&meshes);
-		return strcmp(job->platform, "osmesa") && strcmp(job->platform, "egl") ? 2 : 1;
-	}
-	uint8_t *rgba = NULL;
-	double *times = NULL;
-	lx_gl_caps_probe(&rep->caps);
-	struct lx_method_options opt = job->budgets.uniform_lixels ? job->budgets : LX_METHOD_OPTIONS_DEFAULT;
-	struct lx_method_run mr;
-	int status = lx_method_run_init(&mr, job->method, &job->scene, &meshes, &rep->caps, &opt, job->width,
-					job->height, job->depth_precision, job->bias_codes, false, err, errlen);
-	if (status)
-		goto out;
-	rep->depth = mr.depth;
-	status = 1;
-	int timed = job->timed_frames > 0 ? job->timed_frames : 1;
-	times = calloc((size_t)timed * 4, sizeof(double));
-	long n = (long)job->width * job->height;
-	rgba = malloc((size_t)n * 4);
-	if (!times || !rgba) {
-		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
-		goto out;
-	}
-	double *frame_ms = times, *shadow_ms = times + timed, *main_ms = shadow_ms + timed, *setup_us = main_ms + timed;
-	lx_renderer_finish();
-	for (int i = 0; i < job->warmup_frames + timed; i++) {
-		struct lx_frame_times t;
-		lx_method_run_frame(&mr, &frame, &t);
-		int k = i - job->warmup_frames;
-		if (k >= 0)
-			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;
-	}
-	rep->result = mr.result;
-	rep->atlas = mr.atlas; /* as the last frame laid it out */
-	rep->frame_ms_min = INFINITY;
-	for (int k = 0; k < timed; k++) {
-		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);
-		rep->frame_ms_max = fmax(rep->frame_ms_max, frame_ms[k]);
-	}
-	rep->frame_ms = lx_median(frame_ms, timed);
-	rep->shadow_ms = lx_median(shadow_ms, timed);
-	rep->main_ms = lx_median(main_ms, timed);
-	rep->setup_us = lx_median(setup_us, timed);
-
-	lx_renderer_read(mr.renderer, rgba);
-	if (job->out_png && !lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen))
-		goto out;
-	if (job->atlas_png && !write_atlas(mr.renderer, &rep->atlas, job->atlas_png, err, errlen))
-		goto out;
-	if (job->measure || job->keep_pixels || job->decision_png) {
-		rep->object = malloc((size_t)n * sizeof(int16_t));
-		rep->shadow = malloc((size_t)n);
-		if (!rep->object || !rep->shadow) {
-			snprintf(err, errlen, "out of memory");
-			goto out;
-		}
-		rep->lookup_pct = 100.0 * lx_method_run_decision(&mr, &frame, rgba, rep->object, rep->shadow) / n;
-		if (job->decision_png) {
-			decision_colors(rep->object, rep->shadow, n, rgba);
-			if (!lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen))
-				goto out;
-		}
-	}
-	if (job->measure) {
-		rep->ref_object = malloc((size_t)n * sizeof(int16_t));
-		rep->ref_shadow = malloc((size_t)n);
-		if (!rep->ref_object || !rep->ref_shadow ||
-		    !lx_reference_image(&frame, rep->ref_object, rep->ref_shadow, job->reference_threads)) {
-			snprintf(err, errlen, "out of memory for the reference image");
-			goto out;
-		}
-		rep->plane_count = job->scene.plane_count;
-		lx_measure(&frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
-			   &rep->mismatch, rep->planes);
-		lx_sampling_warnings(rep->planes, rep->plane_count, lx_atlas_lixels(&rep->atlas), &rep->result);
-		rep->measured = true;
-		if (job->mismatch_png) {
-			mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);
-			if (!lx_png_write(job->mismatch_png, rgba, job->width, job->height, err, errlen))
-				goto out;
-		}
-	}
-	status = 0;
-out:
-	free(rgba);
-	free(times);
 	if (status != 0 || !job->keep_pixels)
 		lx_render_report_free(rep);
-	lx_method_run_free(&mr);
-	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);
 	return status;
 }
