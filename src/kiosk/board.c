@@ -78,17 +78,133 @@ bool lx_board_parse(const char *text, const char *file, struct lx_board *b, char
 	return parse_lines(text, file, b, &last, err, errlen) && lx_board_check(b, file, last + 1, err, errlen);
 }
 
-static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)
+/* Where a profile line is: the file, the line, the message buffer. */
+struct at {
+	const char *file;
+	int line;
+	char *err;
+	size_t errlen;
+};
+#define FAIL(at, ...) fail((at)->err, (at)->errlen, (at)->file, (at)->line, __VA_ARGS__)
+
+/* The button's keys: 1 taken, 0 after the error, -1 not one of them. */
+static int button_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
 {
 	enum lx_number_error e;
-	int line = 0;
+	if (!strcmp(key, "gpio-chip")) {
+		if (vl >= sizeof b->gpio_chip)
+			return FAIL(at, "expected a chip name or path of at most %zu characters", sizeof b->gpio_chip - 1);
+		strcpy(b->gpio_chip, strcmp(value, "none") ? value : "");
+	} else if (!strcmp(key, "gpio-line")) {
+		if ((e = lx_number_int(value, 0, 1023, &b->gpio_line)))
+			return FAIL(at, "expected a line offset from 0 to 1023, got '%s' (%s)", value, lx_number_why(e));
+		b->gpio_line_name[0] = 0; /* the last of gpio-line and gpio-line-name counts */
+	} else if (!strcmp(key, "gpio-line-name")) {
+		if (vl >= sizeof b->gpio_line_name || !vl)
+			return FAIL(at, "expected a line name of 1 to %zu characters", sizeof b->gpio_line_name - 1);
+		strcpy(b->gpio_line_name, value);
+		b->gpio_line = -1;
+	} else if (!strcmp(key, "gpio-active")) {
+		if (strcmp(value, "low") && strcmp(value, "high"))
+			return FAIL(at, "expected gpio-active low or high, got '%s'", value);
+		b->active_low = !strcmp(value, "low");
+	} else if (!strcmp(key, "gpio-bias")) {
+		static const char *const names[] = {"as-is", "pull-up", "pull-down", "disabled"};
+		int k = 0;
+		while (k < 4 && strcmp(value, names[k]))
+			k++;
+		if (k == 4)
+			return FAIL(at, "expected gpio-bias as-is, pull-up, pull-down or disabled, got '%s'", value);
+		b->bias = (enum lx_bias)k;
+	} else if (!strcmp(key, "debounce-ms")) {
+		if ((e = lx_number_int(value, 0, 1000, &b->debounce_ms)))
+			return FAIL(at, "expected debounce-ms from 0 to 1000, got '%s' (%s)", value, lx_number_why(e));
+	} else if (!strcmp(key, "long-press-ms")) {
+		if ((e = lx_number_int(value, 100, 10000, &b->long_press_ms)))
+			return FAIL(at, "expected long-press-ms from 100 to 10000, got '%s' (%s)", value, lx_number_why(e));
+	} else
+		return -1;
+	return 1;
+}
+
+/* The display and the maps' keys: 1 taken, 0 after the error, -1 not one of them. */
+static int display_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
+{
+	enum lx_number_error e;
+	if (!strcmp(key, "display")) {
+		if (vl >= sizeof b->display)
+			return FAIL(at, "expected a device path of at most %zu characters", sizeof b->display - 1);
+		strcpy(b->display, strcmp(value, "auto") ? value : "");
+	} else if (!strcmp(key, "mode")) {
+		if (!strcmp(value, "preferred"))
+			b->mode_w = b->mode_h = b->mode_hz = 0;
+		else if (!lx_parse_mode(value, &b->mode_w, &b->mode_h, &b->mode_hz))
+			return FAIL(at, "expected mode preferred, WxH or WxH@HZ, got '%s'", value);
+	} else if (!strcmp(key, "plane-lixels") || !strcmp(key, "fallback-lixels") || !strcmp(key, "uniform-lixels")) {
+		int *field = key[0] == 'p' ? &b->lixels.plane_lixels : key[0] == 'f' ? &b->lixels.fallback_lixels
+										     : &b->lixels.uniform_lixels;
+		if ((e = lx_number_int(value, 1, 8192, field)))
+			return FAIL(at, "expected %s from 1 to 8192, got '%s' (%s)", key, value, lx_number_why(e));
+	} else if (!strcmp(key, "depth-precision")) {
+		if (!lx_depth_precision_parse(value, &b->depth_precision))
+			return FAIL(at, "expected depth-precision auto, highp or mediump, got '%s'", value);
+	} else
+		return -1;
+	return 1;
+}
+
+/* methods A,B,...: known names, single commas, at least one. */
+static bool methods_key(struct lx_board *b, const char *value, const struct at *at)
+{
+	b->method_count = 0;
+	const char *rest = value;
+	char t[64];
+	for (int r; (r = lx_list_next(&rest, ',', t, sizeof t)) != 0;) {
+		if (r < 0)
+			return FAIL(at, "expected method names separated by single commas, got '%s'", value);
+		const struct lx_shadow_method *m = lx_shadow_method_find(t);
+		if (!m)
+			return FAIL(at, "expected methods from %s, got '%s'", lx_shadow_method_names(), t);
+		if (b->method_count == LX_BOARD_MAX_METHODS)
+			return FAIL(at, "expected at most %d methods", LX_BOARD_MAX_METHODS);
+		snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", m->name);
+	}
+	if (b->method_count == 0) /* "methods ," would leave the kiosk nothing to draw */
+		return FAIL(at, "expected at least one method from %s", lx_shadow_method_names());
+	return true;
+}
+
+/* One "KEY VALUE" line, the value trimmed. */
+static bool apply_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
+{
+	int r;
+	if (!strcmp(key, "name")) {
+		if (vl >= sizeof b->name)
+			return FAIL(at, "expected a name of at most %zu characters", sizeof b->name - 1);
+		strcpy(b->name, value);
+	} else if (!strcmp(key, "description"))
+		snprintf(b->description, sizeof b->description, "%s", value);
+	else if ((r = button_key(b, key, value, vl, at)) >= 0 || (r = display_key(b, key, value, vl, at)) >= 0)
+		return r;
+	else if (!strcmp(key, "methods"))
+		return methods_key(b, value, at);
+	else
+		return FAIL(at, "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, "
+			    "debounce-ms, long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, "
+			    "depth-precision or methods, got '%s'", key);
+	return true;
+}
+
+static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)
+{
+	struct at at = {file, 0, err, errlen};
 	while (*text) {
-		line++;
+		at.line++;
 		const char *eol = strchr(text, '\n');
 		size_t len = eol ? (size_t)(eol - text) : strlen(text);
 		char buf[512];
 		if (len >= sizeof buf)
-			return fail(err, errlen, file, line, "expected a line shorter than %zu characters", sizeof buf);
+			return FAIL(&at, "expected a line shorter than %zu characters", sizeof buf);
 		memcpy(buf, text, len);
 		buf[len] = 0;
 		text = eol ? eol + 1 : text + len;
@@ -102,97 +218,14 @@ static bool parse_lines(const char *text, const char *file, struct lx_board *b, 
 		while (value && (*value == ' ' || *value == '\t'))
 			value++;
 		if (!value || !*value)
-			return fail(err, errlen, file, line, "expected a value after '%s'", key);
+			return FAIL(&at, "expected a value after '%s'", key);
 		size_t vl = strlen(value);
 		while (vl && (value[vl - 1] == ' ' || value[vl - 1] == '\t'))
 			value[--vl] = 0;
-		if (!strcmp(key, "name")) {
-			if (vl >= sizeof b->name)
-				return fail(err, errlen, file, line, "expected a name of at most %zu characters", sizeof b->name - 1);
-			strcpy(b->name, value);
-		} else if (!strcmp(key, "description")) {
-			snprintf(b->description, sizeof b->description, "%s", value);
-		} else if (!strcmp(key, "gpio-chip")) {
-			if (vl >= sizeof b->gpio_chip)
-				return fail(err, errlen, file, line, "expected a chip name or path of at most %zu characters",
-					    sizeof b->gpio_chip - 1);
-			strcpy(b->gpio_chip, strcmp(value, "none") ? value : "");
-		} else if (!strcmp(key, "gpio-line")) {
-			if ((e = lx_number_int(value, 0, 1023, &b->gpio_line)))
-				return fail(err, errlen, file, line, "expected a line offset from 0 to 1023, got '%s' (%s)", value,
-					    lx_number_why(e));
-			b->gpio_line_name[0] = 0; /* the last of gpio-line and gpio-line-name counts */
-		} else if (!strcmp(key, "gpio-line-name")) {
-			if (vl >= sizeof b->gpio_line_name || !vl)
-				return fail(err, errlen, file, line, "expected a line name of 1 to %zu characters",
-					    sizeof b->gpio_line_name - 1);
-			strcpy(b->gpio_line_name, value);
-			b->gpio_line = -1;
-		} else if (!strcmp(key, "gpio-active")) {
-			if (strcmp(value, "low") && strcmp(value, "high"))
-				return fail(err, errlen, file, line, "expected gpio-active low or high, got '%s'", value);
-			b->active_low = !strcmp(value, "low");
-		} else if (!strcmp(key, "gpio-bias")) {
-			static const char *const names[] = {"as-is", "pull-up", "pull-down", "disabled"};
-			int k = 0;
-			while (k < 4 && strcmp(value, names[k]))
-				k++;
-			if (k == 4)
-				return fail(err, errlen, file, line, "expected gpio-bias as-is, pull-up, pull-down or disabled, got '%s'",
-					    value);
-			b->bias = (enum lx_bias)k;
-		} else if (!strcmp(key, "debounce-ms")) {
-			if ((e = lx_number_int(value, 0, 1000, &b->debounce_ms)))
-				return fail(err, errlen, file, line, "expected debounce-ms from 0 to 1000, got '%s' (%s)", value,
-					    lx_number_why(e));
-		} else if (!strcmp(key, "long-press-ms")) {
-			if ((e = lx_number_int(value, 100, 10000, &b->long_press_ms)))
-				return fail(err, errlen, file, line, "expected long-press-ms from 100 to 10000, got '%s' (%s)", value,
-					    lx_number_why(e));
-		} else if (!strcmp(key, "display")) {
-			if (vl >= sizeof b->display)
-				return fail(err, errlen, file, line, "expected a device path of at most %zu characters",
-					    sizeof b->display - 1);
-			strcpy(b->display, strcmp(value, "auto") ? value : "");
-		} else if (!strcmp(key, "mode")) {
-			if (!strcmp(value, "preferred"))
-				b->mode_w = b->mode_h = b->mode_hz = 0;
-			else if (!lx_parse_mode(value, &b->mode_w, &b->mode_h, &b->mode_hz))
-				return fail(err, errlen, file, line, "expected mode preferred, WxH or WxH@HZ, got '%s'", value);
-		} else if (!strcmp(key, "plane-lixels") || !strcmp(key, "fallback-lixels") || !strcmp(key, "uniform-lixels")) {
-			int *field = key[0] == 'p' ? &b->lixels.plane_lixels : key[0] == 'f' ? &b->lixels.fallback_lixels
-											     : &b->lixels.uniform_lixels;
-			if ((e = lx_number_int(value, 1, 8192, field)))
-				return fail(err, errlen, file, line, "expected %s from 1 to 8192, got '%s' (%s)", key, value,
-					    lx_number_why(e));
-		} else if (!strcmp(key, "depth-precision")) {
-			if (!lx_depth_precision_parse(value, &b->depth_precision))
-				return fail(err, errlen, file, line, "expected depth-precision auto, highp or mediump, got '%s'", value);
-		} else if (!strcmp(key, "methods")) {
-			b->method_count = 0;
-			const char *rest = value;
-			char t[64];
-			for (int r; (r = lx_list_next(&rest, ',', t, sizeof t)) != 0;) {
-				if (r < 0)
-					return fail(err, errlen, file, line, "expected method names separated by single commas, got '%s'", value);
-				const struct lx_shadow_method *m = lx_shadow_method_find(t);
-				if (!m)
-					return fail(err, errlen, file, line, "expected methods from %s, got '%s'", lx_shadow_method_names(),
-						    t);
-				if (b->method_count == LX_BOARD_MAX_METHODS)
-					return fail(err, errlen, file, line, "expected at most %d methods", LX_BOARD_MAX_METHODS);
-				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", m->name);
-			}
-			if (b->method_count == 0) /* "methods ," would leave the kiosk nothing to draw */
-				return fail(err, errlen, file, line, "expected at least one method from %s", lx_shadow_method_names());
-		} else
-			return fail(err, errlen, file, line,
-				    "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, debounce-ms, "
-				    "long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, depth-precision "
-				    "or methods, got '%s'",
-				    key);
+		if (!apply_key(b, key, value, vl, &at))
+			return false;
 	}
-	*last = line;
+	*last = at.line;
 	return true;
 }
 
