@@ -49,6 +49,85 @@ static vec3 project(const mat4 *m, vec3 p, bool *ok)
 	return *ok ? v3(q.x / q.w, q.y / q.w, q.z / q.w) : v3(0, 0, 0);
 }
 
+/* Light space S (rigid for a directional light, which travels along -z there; the
+ * uniform map's clip space for a point light, whose rays travel along +z there) turned
+ * by R so that y is "up" = (l x v) x l, perpendicular to the light: RS. With it the view's
+ * near point a (in S), its near distance z_n there and sin(gamma) between view and light. */
+struct light_frame {
+	mat4 R, RS;
+	vec3 a;
+	double z_n, sin_gamma;
+};
+
+/* 1, 0 when the view looks along the light (no warp gains anything), -1 after a warning. */
+static int light_frame(const struct lx_frame *f, const struct lx_light_space *ls, const mat4 *uniform,
+		       struct light_frame *lf, struct lx_shadow_result *out)
+{
+	mat4 S = ls->directional ? ls->view : *uniform;
+	vec3 l = ls->directional ? v3(0, 0, -1) : v3(0, 0, 1), v;
+	const struct lx_view *view = &f->view;
+	bool oka, okb;
+	lf->a = project(&S, v3_add(view->eye, v3_scale(view->dir, view->near)), &oka);
+	vec3 b = project(&S, v3_add(view->eye, v3_scale(view->dir, 2 * view->near)), &okb);
+	if (!oka || !okb || !v3_normalize(v3_sub(b, lf->a), &v)) {
+		lx_shadow_warn(out, "lispsm: the view starts behind the point light; no warp this frame (uniform)");
+		return -1;
+	}
+	lf->z_n = v3_len(v3_sub(b, lf->a)); /* the view's near distance in light space */
+	vec3 lxv = v3_cross(l, v), up;
+	lf->sin_gamma = v3_len(lxv);
+	if (lf->sin_gamma < LX_LISPSM_MIN_SIN_GAMMA)
+		return 0; /* view along the light: the warp would gain nothing, uniform it is */
+	v3_normalize(v3_cross(lxv, l), &up); /* |l x v| >= 0.02 and l is unit: well defined */
+	vec3 side = v3_cross(l, up);
+	mat4 R = m4_identity(); /* rows side, up, -l */
+	R.m[0] = side.x, R.m[4] = side.y, R.m[8] = side.z;
+	R.m[1] = up.x, R.m[5] = up.y, R.m[9] = up.z;
+	R.m[2] = -l.x, R.m[6] = -l.y, R.m[10] = -l.z;
+	lf->R = R;
+	lf->RS = m4_mul(&R, &S);
+	return 1;
+}
+
+/* The warp: a perspective along up whose centre lies n before the body's near side,
+ * level with the view's near point; n from the body's depth d (lx_lispsm_n). */
+static mat4 warp(const struct light_frame *lf, double ylo, double yhi)
+{
+	double d = safe_extent(0, yhi - ylo), nn = lx_lispsm_n(lf->z_n, d, lf->sin_gamma), ff = nn + d;
+	bool ok;
+	vec3 ar = project(&lf->R, lf->a, &ok); /* R is affine: always ok */
+	vec3 c = v3(ar.x, ylo - nn, ar.z);
+	mat4 W = {{0}};
+	W.m[0] = 1;
+	W.m[5] = (ff + nn) / (ff - nn), W.m[13] = -2 * ff * nn / (ff - nn); /* ff - nn = d > 0 */
+	W.m[10] = 1;
+	W.m[7] = 1; /* w = y */
+	mat4 T = m4_translate(v3_scale(c, -1));
+	return m4_mul(&W, &T);
+}
+
+/* Unit cube clipping in the warped space: x, y of receivers and casters intersected;
+ * depth from the casters' nearest to the receivers' farthest (the light travels -z).
+ * pts are in RS. False when they do not overlap. */
+static bool warped_crop(const mat4 *WT, const vec3 *pts, const bool *caster, int n, mat4 *crop)
+{
+	double r[5] = {INFINITY, INFINITY, -INFINITY, -INFINITY, INFINITY}; /* x0 y0 x1 y1 zmin */
+	double c[5] = {INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY}; /* x0 y0 x1 y1 zmax */
+	for (int i = 0; i < n; i++) {
+		vec4 h = m4_mul_v4(WT, (vec4){pts[i].x, pts[i].y, pts[i].z, 1});
+		double x = h.x / h.w, y = h.y / h.w, z = h.z / h.w; /* h.w = y - c.y >= n > 0 */
+		double *b = caster[i] ? c : r;
+		b[0] = fmin(b[0], x), b[2] = fmax(b[2], x), b[1] = fmin(b[1], y), b[3] = fmax(b[3], y);
+		b[4] = caster[i] ? fmax(b[4], z) : fmin(b[4], z);
+	}
+	double ex0 = fmax(r[0], c[0]), ex1 = fmin(r[2], c[2]), ey0 = fmax(r[1], c[1]), ey1 = fmin(r[3], c[3]);
+	if (!(ex0 < ex1 && ey0 < ey1 && r[4] < c[4]))
+		return false;
+	double zpad = (c[4] - r[4]) * 1e-4;
+	*crop = m4_crop(ex0, ex1, ey0, ey1, c[4] + zpad, r[4] - zpad); /* z decreases away from the light */
+	return true;
+}
+
 static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
 			 struct lx_shadow_result *out)
 {
@@ -58,86 +137,27 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 	if (!lx_uniform_map(f, &ls, out, "lispsm", NULL))
 		return;
 	struct lx_shadow_map *map = &out->maps[0];
-	mat4 uniform = map->light_clip;
-	/* Light space S: rigid for a directional light (the light travels along -z); the
-	 * uniform map's clip space for a point light (its rays travel along +z there). */
-	mat4 S = ls.directional ? ls.view : uniform;
-	vec3 l = ls.directional ? v3(0, 0, -1) : v3(0, 0, 1);
-	const struct lx_view *view = &f->view;
-	vec3 vdir = view->dir;
-	bool oka, okb;
-	vec3 a = project(&S, v3_add(view->eye, v3_scale(vdir, view->near)), &oka);
-	vec3 b = project(&S, v3_add(view->eye, v3_scale(vdir, 2 * view->near)), &okb);
-	vec3 v;
-	if (!oka || !okb || !v3_normalize(v3_sub(b, a), &v)) {
-		lx_shadow_warn(out, "lispsm: the view starts behind the point light; no warp this frame (uniform)");
-		return;
-	}
-	double z_n = v3_len(v3_sub(b, a)); /* the view's near distance in light space */
-	vec3 lxv = v3_cross(l, v);
-	double sin_gamma = v3_len(lxv);
-	if (sin_gamma < LX_LISPSM_MIN_SIN_GAMMA)
-		return; /* view along the light: the warp would gain nothing, uniform it is */
-	vec3 up, side;
-	v3_normalize(v3_cross(lxv, l), &up); /* |l x v| >= 0.02 and l is unit: well defined */
-	side = v3_cross(l, up);
-	/* R: rows side, up, -l; then the body's bounds there */
-	mat4 R = m4_identity();
-	R.m[0] = side.x, R.m[4] = side.y, R.m[8] = side.z;
-	R.m[1] = up.x, R.m[5] = up.y, R.m[9] = up.z;
-	R.m[2] = -l.x, R.m[6] = -l.y, R.m[10] = -l.z;
-	mat4 RS = m4_mul(&R, &S);
+	struct light_frame lf;
+	if (light_frame(f, &ls, &map->light_clip, &lf, out) <= 0)
+		return; /* the uniform map stands */
 	vec3 pts[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool caster[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	int n = body_points(f, &ls, pts, caster, (int)(sizeof pts / sizeof pts[0]));
 	double ylo = INFINITY, yhi = -INFINITY;
-	int valid = 0;
 	for (int i = 0; i < n; i++) {
 		bool ok;
-		vec3 q = project(&RS, pts[i], &ok);
+		pts[i] = project(&lf.RS, pts[i], &ok);
 		if (!ok) {
-			continue; /* behind a point light: counted below */
+			lx_shadow_warn(out, "lispsm: part of the body lies behind the point light; no warp this frame (uniform)");
+			return;
 		}
-		pts[i] = q;
-		valid++;
-		ylo = fmin(ylo, q.y), yhi = fmax(yhi, q.y);
+		ylo = fmin(ylo, pts[i].y), yhi = fmax(yhi, pts[i].y);
 	}
-	if (valid < n) {
-		lx_shadow_warn(out, "lispsm: part of the body lies behind the point light; no warp this frame (uniform)");
-		return;
-	}
-	double d = safe_extent(0, yhi - ylo), nn = lx_lispsm_n(z_n, d, sin_gamma), ff = nn + d;
-	vec3 ar = project(&R, a, &oka); /* R is affine: always ok */
-	/* the projection centre: n before the body's near side along up, level with the view's near point */
-	vec3 c = v3(ar.x, ylo - nn, ar.z);
-	mat4 W = {{0}};
-	W.m[0] = 1;
-	W.m[5] = (ff + nn) / (ff - nn), W.m[13] = -2 * ff * nn / (ff - nn);
-	W.m[10] = 1;
-	W.m[7] = 1; /* w = y */
-	mat4 T = m4_translate(v3_scale(c, -1)), WT = m4_mul(&W, &T), M0 = m4_mul(&WT, &RS);
-	/* unit cube clipping in the warped space: x, y of receivers and casters intersected;
-	 * depth from the casters' nearest to the receivers' farthest (the light travels -z) */
-	double rx0 = INFINITY, rx1 = -INFINITY, ry0 = INFINITY, ry1 = -INFINITY, rz0 = INFINITY;
-	double cx0 = INFINITY, cx1 = -INFINITY, cy0 = INFINITY, cy1 = -INFINITY, cz1 = -INFINITY;
-	for (int i = 0; i < n; i++) {
-		vec4 h = m4_mul_v4(&WT, (vec4){pts[i].x, pts[i].y, pts[i].z, 1});
-		double x = h.x / h.w, y = h.y / h.w, z = h.z / h.w; /* h.w = y - c.y >= n > 0 */
-		if (caster[i]) {
-			cx0 = fmin(cx0, x), cx1 = fmax(cx1, x), cy0 = fmin(cy0, y), cy1 = fmax(cy1, y), cz1 = fmax(cz1, z);
-		} else {
-			rx0 = fmin(rx0, x), rx1 = fmax(rx1, x), ry0 = fmin(ry0, y), ry1 = fmax(ry1, y), rz0 = fmin(rz0, z);
-		}
-	}
-	double ex0 = fmax(rx0, cx0), ex1 = fmin(rx1, cx1), ey0 = fmax(ry0, cy0), ey1 = fmin(ry1, cy1);
-	if (!(ex0 < ex1 && ey0 < ey1 && rz0 < cz1)) {
+	mat4 WT = warp(&lf, ylo, yhi), M0 = m4_mul(&WT, &lf.RS), crop;
+	if (!warped_crop(&WT, pts, caster, n, &crop))
 		map->rendered = false; /* casters and receivers do not overlap from the light */
-		return;
-	}
-	double zpad = (cz1 - rz0) * 1e-4;
-	double zn = cz1 + zpad, zf = rz0 - zpad; /* z decreases away from the light */
-	mat4 crop = m4_crop(ex0, ex1, ey0, ey1, zn, zf);
-	lx_shadow_map_warp(map, f, &crop, &M0, "lispsm", out);
+	else
+		lx_shadow_map_warp(map, f, &crop, &M0, "lispsm", out);
 }
 
 const struct lx_shadow_method lx_method_lispsm = {.name = "lispsm",
