@@ -652,36 +652,18 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	return n;
 }
 
-void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-			   bool decision)
+/* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q) and
+ * the atlas-space bounds of the rays it serves (an empty box for a map not rendered:
+ * every lookup misses and reads lit). */
+static void map_uniforms(const struct lx_renderer *r, const struct lx_shadow_result *res, float tex[][16],
+			 float region[][4])
 {
-	/* the variant for the maps this frame renders: no work for a map that is not there */
-	unsigned all = 0;
-	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++)
-		all |= res->maps[m].rendered ? 1u << m : 0;
 	const struct lx_atlas *atlas = r->d.atlas;
-	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
-	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
-	lx_gl.Disable(GL_SCISSOR_TEST);
-	lx_gl.Disable(GL_CULL_FACE); /* planes are seen from both sides, as the reference sees them */
-	lx_gl.Enable(GL_DEPTH_TEST);
-	if (decision)
-		lx_gl.ClearColor(0, 0, 0, 1);
-	else
-		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
-	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-	float vp[16];
-	to_float(&f->view.view_proj, vp);
-	const struct lx_light *L = &f->light;
-	float light[4] = {(float)(L->directional ? L->direction.x : L->position.x),
-			  (float)(L->directional ? L->direction.y : L->position.y),
-			  (float)(L->directional ? L->direction.z : L->position.z), L->directional ? 0.0f : 1.0f};
-	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4];
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 		to_float(&t, tex[m]);
-		if (!map->rendered) { /* an empty box: every lookup misses and reads lit */
+		if (!map->rendered) {
 			region[m][0] = region[m][1] = 2;
 			region[m][2] = region[m][3] = -1;
 			continue;
@@ -695,26 +677,18 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		region[m][2] = (float)(ox + sx * map->bounds[2]);
 		region[m][3] = (float)(oy + sy * map->bounds[3]);
 	}
-	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
-	if (r->d.map_count > 0) {
-		lx_gl.ActiveTexture(GL_TEXTURE0);
-		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
-	}
-	/* The draws: each object with the maps it reads, and a plane whose maps say where
-	 * its shadows can fall split into scissor boxes, looked up inside them and drawn
-	 * without a lookup outside (llvmpipe runs both sides of a branch; small GPUs pay for
-	 * every fetch); then one program per set of maps. */
-	/* The draws, casters first (the planes' pixels behind them then fail the depth test
-	 * before their shading), each object cut by where a shadow can fall on it; a program
-	 * set up whenever the maps read change. */
-	struct draw *items = r->draws;
+}
+
+/* The frame's draws, casters first (the planes' pixels behind them then fail the depth
+ * test before their shading), each object cut by where a shadow can fall on it; the
+ * planes' pieces and the casters' facing-sorted indices uploaded. Returns the count. */
+static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
+{
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
 	lx_lookup_prepare(f, r->d.atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
 	for (int k = 0; k < r->objects; k++)
-		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, items, n);
+		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, r->draws, n);
 	if (r->piece_vertices > 0) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
@@ -725,42 +699,86 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->facing_count * sizeof(unsigned short),
 				 r->facing_index, GL_STREAM_DRAW);
 	}
+	return n;
+}
+
+/* The uniforms of a frame every main-pass program takes. */
+struct main_uniforms {
+	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4];
+};
+
+/* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
+ * the whole mesh). */
+static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const struct main_program *p,
+		       const struct draw *d)
+{
 	const struct lx_scene *s = r->d.scene;
+	int id = d->object;
+	vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
+	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
+	lx_gl.Uniform1f(p->object_id, (float)id);
+	if (d->kind == PIECES) {
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
+		set_attributes(true);
+		lx_gl.DrawArrays(GL_TRIANGLES, d->first, d->count);
+	} else if (d->kind == INDEXED) {
+		bind_mesh(r, id, true);
+		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->facing_ibo);
+		lx_gl.DrawElements(GL_TRIANGLES, d->count, GL_UNSIGNED_SHORT,
+				   (const void *)((size_t)d->first * sizeof(unsigned short)));
+	} else {
+		bind_mesh(r, id, true);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
+	}
+}
+
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			   bool decision)
+{
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
+	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.Disable(GL_CULL_FACE); /* planes are seen from both sides, as the reference sees them */
+	lx_gl.Enable(GL_DEPTH_TEST);
+	if (decision)
+		lx_gl.ClearColor(0, 0, 0, 1);
+	else
+		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
+	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	struct main_uniforms u;
+	to_float(&f->view.view_proj, u.view_proj);
+	const struct lx_light *L = &f->light;
+	vec3 lv = L->directional ? L->direction : L->position;
+	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
+	map_uniforms(r, res, u.tex, u.region);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	if (r->d.map_count > 0) {
+		lx_gl.ActiveTexture(GL_TEXTURE0);
+		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	}
+	int n = frame_draws(r, f, res);
+	/* a program set up whenever the maps read change */
 	struct main_program *p = NULL;
 	unsigned current = 0;
 	for (int k = 0; k < n; k++) {
-		const struct draw *d = &items[k];
+		const struct draw *d = &r->draws[k];
 		if (!p || d->mask != current) {
 			current = d->mask;
 			p = variant_for(r, decision, current);
 			lx_gl.UseProgram(p->prog);
-			lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, vp);
-			lx_gl.Uniform4f(p->light, light[0], light[1], light[2], light[3]);
+			lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u.view_proj);
+			lx_gl.Uniform4f(p->light, u.light[0], u.light[1], u.light[2], u.light[3]);
 			if (r->d.map_count > 0 && current) {
-				lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, tex[0]);
-				lx_gl.Uniform4fv(p->region, r->d.map_count, region[0]);
+				lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, u.tex[0]);
+				lx_gl.Uniform4fv(p->region, r->d.map_count, u.region[0]);
 				lx_gl.Uniform1f(p->bias, r->bias_uniform);
 				lx_gl.Uniform1i(p->atlas, 0);
 			}
 		}
-		int id = d->object;
-		vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
-		lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
-		lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
-		lx_gl.Uniform1f(p->object_id, (float)id);
-		if (d->kind == PIECES) {
-			lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
-			set_attributes(true);
-			lx_gl.DrawArrays(GL_TRIANGLES, d->first, d->count);
-		} else if (d->kind == INDEXED) {
-			bind_mesh(r, id, true);
-			lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->facing_ibo);
-			lx_gl.DrawElements(GL_TRIANGLES, d->count, GL_UNSIGNED_SHORT,
-					   (const void *)((size_t)d->first * sizeof(unsigned short)));
-		} else {
-			bind_mesh(r, id, true);
-			lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
-		}
+		issue_draw(r, f, p, d);
 	}
 }
 
