@@ -164,6 +164,89 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 	return ok;
 }
 
+/* The programs: the shadow pass's, the main pass's variants with every map (built now
+ * so that a shader error shows at start), the atlas clear's. */
+static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
+{
+	const struct lx_renderer_desc *d = &r->d;
+	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
+					  r->mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
+	unsigned all = (1u << d->map_count) - 1;
+	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, r->mediump, err, errlen) ||
+	    !main_program(&r->variant[1][all], d->map_count, true, all, r->mediump, err, errlen))
+		return false;
+	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
+	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
+	r->clear_prog = lx_program_build("atlas_clear.vert", "atlas_clear.frag", NULL, err, errlen);
+	return r->clear_prog != 0;
+}
+
+/* The buffers: the clear's quad, each mesh for the main pass and indexed for the shadow
+ * pass, the planes' pieces and the facing-sorted indices (room for every triangle). */
+static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
+{
+	const struct lx_scene_meshes *meshes = r->d.meshes;
+	static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+	lx_gl.GenBuffers(1, &r->clear_vbo);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+	lx_gl.GenBuffers(r->objects, r->vbo);
+	lx_gl.GenBuffers(r->objects, r->shadow_vbo);
+	lx_gl.GenBuffers(r->objects, r->shadow_ibo);
+	lx_gl.GenBuffers(1, &r->piece_vbo);
+	lx_gl.GenBuffers(1, &r->facing_ibo);
+	int triangles = 0;
+	for (int i = 0; i < r->objects; i++)
+		triangles += meshes->mesh[i].vertex_count;
+	r->facing_room = triangles;
+	r->facing_index = malloc((size_t)triangles * sizeof(unsigned short) + 1);
+	if (!r->facing_index) {
+		snprintf(err, errlen, "out of memory");
+		return false;
+	}
+	for (int i = 0; i < r->objects; i++) {
+		const struct lx_mesh *m = &meshes->mesh[i];
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[i]);
+		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
+				 GL_STATIC_DRAW);
+		r->vertices[i] = m->vertex_count;
+		if (!shadow_mesh(r, i, m)) {
+			snprintf(err, errlen, "out of memory indexing the meshes");
+			return false;
+		}
+	}
+	return true;
+}
+
+/* The atlas (RGBA8: depth textures may be missing in ES 2.0), all "far" to start with,
+ * guard bands included (passes only ever clear and draw inside their own region, so the
+ * guards keep it); and off screen, the main target (an RGBA texture: RGBA8
+ * renderbuffers are an extension in ES 2.0, OES_rgb8_rgba8). */
+static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
+{
+	const struct lx_renderer_desc *d = &r->d;
+	r->atlas_tex = lx_texture_rgba8(d->atlas->width, d->atlas->height);
+	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, d->atlas->width, d->atlas->height,
+			 d->caps->depth24, err, errlen, "atlas"))
+		return false;
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.Viewport(0, 0, d->atlas->width, d->atlas->height);
+	lx_gl.ClearColor(1, 1, 1, 1);
+	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (!d->to_window) {
+		r->target_color = lx_texture_rgba8(d->width, d->height);
+		if (!framebuffer(&r->target_fbo, r->target_color, 0, &r->target_depth, d->width, d->height, d->caps->depth24,
+				 err, errlen, "main target"))
+			return false;
+	}
+	GLenum e = lx_gl.GetError();
+	if (e != GL_NO_ERROR) {
+		snprintf(err, errlen, "GL error 0x%x while setting up the renderer", e);
+		return false;
+	}
+	return true;
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -186,87 +269,10 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->objects = d->meshes->count;
 	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
-	bool mediump = d->mediump;
+	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
-	r->bias_uniform = (float)(mediump ? (d->bias_codes / 8192.0 > 1 ? d->bias_codes / 8192.0 : 1.0) : d->bias_codes);
-
-	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
-					  mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
-	r->mediump = mediump;
-	/* the variants with every map, built now so that a shader error shows at start */
-	unsigned all = (1u << d->map_count) - 1;
-	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, mediump, err, errlen) ||
-	    !main_program(&r->variant[1][all], d->map_count, true, all, mediump, err, errlen)) {
-		lx_renderer_destroy(r);
-		return NULL;
-	}
-	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
-	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
-	r->clear_prog = lx_program_build("atlas_clear.vert", "atlas_clear.frag", NULL, err, errlen);
-	if (!r->clear_prog) {
-		lx_renderer_destroy(r);
-		return NULL;
-	}
-	static const float quad[12] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
-	lx_gl.GenBuffers(1, &r->clear_vbo);
-	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
-	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
-
-	lx_gl.GenBuffers(r->objects, r->vbo);
-	lx_gl.GenBuffers(r->objects, r->shadow_vbo);
-	lx_gl.GenBuffers(r->objects, r->shadow_ibo);
-	lx_gl.GenBuffers(1, &r->piece_vbo);
-	lx_gl.GenBuffers(1, &r->facing_ibo);
-	int triangles = 0;
-	for (int i = 0; i < r->objects; i++)
-		triangles += d->meshes->mesh[i].vertex_count;
-	r->facing_room = triangles;
-	r->facing_index = malloc((size_t)triangles * sizeof(unsigned short) + 1);
-	if (!r->facing_index) {
-		snprintf(err, errlen, "out of memory");
-		lx_renderer_destroy(r);
-		return NULL;
-	}
-	for (int i = 0; i < r->objects; i++) {
-		const struct lx_mesh *m = &d->meshes->mesh[i];
-		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[i]);
-		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
-				 GL_STATIC_DRAW);
-		r->vertices[i] = m->vertex_count;
-		if (!shadow_mesh(r, i, m)) {
-			snprintf(err, errlen, "out of memory indexing the meshes");
-			lx_renderer_destroy(r);
-			return NULL;
-		}
-	}
-
-	/* The atlas: RGBA8 (depth textures may be missing in ES 2.0) */
-	r->atlas_tex = lx_texture_rgba8(d->atlas->width, d->atlas->height);
-	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, d->atlas->width, d->atlas->height,
-			 caps->depth24, err, errlen, "atlas")) {
-		lx_renderer_destroy(r);
-		return NULL;
-	}
-	/* Everything, guard bands included, starts as "far"; passes only ever clear and
-	 * draw inside their own region, so the guards keep this value. */
-	lx_gl.Disable(GL_SCISSOR_TEST);
-	lx_gl.Viewport(0, 0, d->atlas->width, d->atlas->height);
-	lx_gl.ClearColor(1, 1, 1, 1);
-	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-	if (!d->to_window) {
-		/* RGBA8 renderbuffers are an extension in ES 2.0 (OES_rgb8_rgba8); an RGBA texture is core. */
-		GLuint tex = lx_texture_rgba8(d->width, d->height);
-		r->target_color = tex;
-		if (!framebuffer(&r->target_fbo, tex, 0, &r->target_depth, d->width, d->height, caps->depth24, err, errlen,
-				 "main target")) {
-			lx_renderer_destroy(r);
-			return NULL;
-		}
-	}
-	GLenum e = lx_gl.GetError();
-	if (e != GL_NO_ERROR) {
-		snprintf(err, errlen, "GL error 0x%x while setting up the renderer", e);
+	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
+	if (!renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
