@@ -132,19 +132,19 @@ struct plane_chart {
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
-static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next, bool twist,
-			struct lx_shadow_result *out, struct plane_chart *ch)
+/* Whether plane i can have a map this frame: lit on its front side (a light grazing
+ * it, or lying in it, leaves it to the fallback), in view (seen edge-on: the fallback),
+ * and with a light camera (lx_plane_camera_solve). Fills ch->win, world and cam. */
+static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *ls, int i, struct lx_shadow_result *out,
+			 struct plane_chart *ch)
 {
-	const struct lx_scene *s = f->scene;
-	const struct lx_plane *P = &s->planes[i];
+	const struct lx_plane *P = &f->scene->planes[i];
 	const struct lx_view *v = &f->view;
-	vec4 pi = lx_plane_equation(P);
-	vec3 n = v3(pi.x, pi.y, pi.z);
 	const struct lx_light *light = &f->light;
-	ch->needs_fallback = false;
+	vec4 pi = lx_plane_equation(P);
 	/* the lit side faces away from the light: every point of the plane is shadowed by
 	 * the facing rule, so its map would decide nothing */
-	double facing = light->directional ? -v3_dot(n, light->direction) : v4_dot_point(pi, light->position);
+	double facing = light->directional ? -v3_dot(v3(pi.x, pi.y, pi.z), light->direction) : v4_dot_point(pi, light->position);
 	/* relative to the plane's own size: one caster far from the rest must not make a
 	 * light a few metres above the floor count as lying in it */
 	double near_limit = light->directional ? 1e-3 : 1e-3 * (v3_len(P->edge1) + v3_len(P->edge2));
@@ -175,38 +175,37 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		ch->needs_fallback = true;
 		return false;
 	}
-	/* Wanted rays in this light image (window coordinates on the plane): the visible
-	 * plane, within what the casters can cover. */
-	struct lx_poly wanted = ch->win, cast;
-	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
-	int np = 0;
-	bool bounded = true;
-	for (int id = 0; id < f->object_count && bounded; id++) {
+	return true;
+}
+
+/* The casters' box corners in the light image (8 each, in object order), or false when
+ * one reaches behind the light image (then the casters bound nothing). */
+static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, int *np)
+{
+	*np = 0;
+	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
 		for (int k = 0; k < 8; k++) {
-			vec3 q = v3_box_corner(f->bmin[id], f->bmax[id], k);
-			vec4 h = m4_mul_point(&ch->cam.m, q);
-			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z)))) {
-				bounded = false; /* a caster reaches behind the light image: no bound from casters */
-				break;
-			}
-			pts[np++] = (vec2){h.x / h.w, h.y / h.w}; /* room for every object's 8 corners */
+			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
+			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z))))
+				return false;
+			pts[(*np)++] = (vec2){h.x / h.w, h.y / h.w}; /* room for every object's 8 corners */
 		}
 	}
-	if (bounded) {
-		lx_poly_hull(pts, np, &cast);
-		lx_poly_intersect(&ch->win, &cast, &wanted);
-	}
-	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
-		return false; /* no caster over the visible plane: nothing to shadow there */
-	ch->wanted = wanted;
-	int ncast = np / 8; /* with every caster bounded, 8 corners each */
+	return true;
+}
 
-	/* A_l's twist. A twist by a multiple of 90 degrees (a level camera facing the wall)
-	 * keeps the pixel grid: snap it, so lixel centres can fall exactly on pixel centres. */
+/* A_l's twist and mirror: a twist by a multiple of 90 degrees (a level camera facing the
+ * wall) keeps the pixel grid, so it is snapped and lixel centres can fall exactly on
+ * pixel centres; the map's image of the plane is the view's, mirrored when seen from the
+ * side away from the light (faces turned to the light would wind clockwise in it, and
+ * the shadow pass culls front faces and would store them): x is mirrored back. */
+static void chart_orientation(const struct lx_frame *f, int i, int next, bool twist, struct plane_chart *ch)
+{
+	const struct lx_plane *P = &f->scene->planes[i];
 	double angle = 0;
-	if (twist && next >= 0 && !twist_angle(v, P, &s->planes[next], &ch->win, &angle))
+	if (twist && next >= 0 && !twist_angle(&f->view, P, &f->scene->planes[next], &ch->win, &angle))
 		angle = 0;
 	double quarter = round(angle / (M_PI / 2));
 	ch->on_grid = fabs(angle - quarter * (M_PI / 2)) < 1e-6;
@@ -216,24 +215,48 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		static const double c4[4] = {1, 0, -1, 0}, s4[4] = {0, 1, 0, -1};
 		ch->cs = c4[k], ch->sn = s4[k];
 	}
-	/* The map's image of the plane is the view's: seen from the side away from the light
-	 * it is mirrored, and faces turned to the light would wind clockwise in it (the
-	 * shadow pass culls front faces and would store them): mirror x back. */
-	ch->mx = v4_dot_point(pi, v->eye) < 0 ? -1 : 1;
+	ch->mx = v4_dot_point(lx_plane_equation(P), f->view.eye) < 0 ? -1 : 1;
+}
+
+/* A polygon in the chart's frame: twisted and mirrored. */
+static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
+{
+	for (int k = 0; k < p->n; k++)
+		p->v[k] = (vec2){ch->mx * (ch->cs * p->v[k].x - ch->sn * p->v[k].y), ch->sn * p->v[k].x + ch->cs * p->v[k].y};
+}
+
+static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next, bool twist,
+			struct lx_shadow_result *out, struct plane_chart *ch)
+{
+	ch->needs_fallback = false;
+	if (!chart_usable(f, ls, i, out, ch))
+		return false;
+	/* Wanted rays in this light image (window coordinates on the plane): the visible
+	 * plane, within what the casters can cover. */
+	struct lx_poly wanted = ch->win, cast;
+	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	int np;
+	bool bounded = caster_corners(f, ch, pts, &np);
+	if (bounded) {
+		lx_poly_hull(pts, np, &cast);
+		lx_poly_intersect(&ch->win, &cast, &wanted);
+	}
+	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
+		return false; /* no caster over the visible plane: nothing to shadow there */
+	ch->wanted = wanted;
+	chart_orientation(f, i, next, twist, ch);
 	struct lx_poly rot = wanted;
-	for (int k = 0; k < rot.n; k++)
-		rot.v[k] = (vec2){ch->mx * (ch->cs * wanted.v[k].x - ch->sn * wanted.v[k].y), ch->sn * wanted.v[k].x + ch->cs * wanted.v[k].y};
+	to_chart(ch, &rot);
 	lx_poly_bounds(&rot, &ch->x0, &ch->y0, &ch->x1, &ch->y1);
 	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces) */
 	ch->feet = 0;
-	for (int c = 0; bounded && c < ncast; c++) {
+	for (int c = 0; bounded && c < np / 8; c++) {
 		struct lx_poly one, on;
 		lx_poly_hull(pts + 8 * c, 8, &one);
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
-		for (int k = 0; k < on.n; k++)
-			on.v[k] = (vec2){ch->mx * (ch->cs * on.v[k].x - ch->sn * on.v[k].y), ch->sn * on.v[k].x + ch->cs * on.v[k].y};
+		to_chart(ch, &on);
 		double *b = ch->foot[ch->feet++];
 		lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
 	}
