@@ -225,11 +225,12 @@ static void describe(int fd, const char *path, struct lx_kms_device *d)
 	drmModeFreeResources(res);
 }
 
-struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int want_h, int want_hz, char *err,
-					   size_t errlen)
+/* The DRM nodes to choose from: the one named, else card0 to card7 (missing ones
+ * skipped), each opened and described. Returns the count, or -1 after err when the
+ * named one cannot be opened. */
+static int open_devices(const char *device, struct lx_kms_device *devs, int *fds, char *err, size_t errlen)
 {
-	struct lx_kms_device devs[8];
-	int fds[8], n = 0;
+	int n = 0;
 	for (int i = 0; i < 8; i++) {
 		char path[64];
 		if (device && i > 0)
@@ -242,11 +243,81 @@ struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int w
 			continue; /* no such node: not worth mentioning */
 		if (fd < 0 && device) {
 			snprintf(err, errlen, "kms: %s: cannot open: %s", path, strerror(errno));
-			return NULL;
+			return -1;
 		}
 		describe(fd, path, &devs[n]);
 		fds[n++] = fd;
 	}
+	return n;
+}
+
+/* The chosen connector, CRTC and mode read back (and the CRTC as it was, to restore). */
+static bool take_mode(struct kms *k, const struct lx_kms_device *dev, const struct lx_kms_choice *ch, char *err,
+		      size_t errlen)
+{
+	drmModeRes *res = drmModeGetResources(k->fd);
+	drmModeConnector *con = res ? drmModeGetConnector(k->fd, dev->connectors[ch->connector].id) : NULL;
+	bool ok = res && con && ch->mode < con->count_modes && ch->crtc < res->count_crtcs;
+	if (ok) {
+		k->connector_id = con->connector_id;
+		k->crtc_id = res->crtcs[ch->crtc];
+		k->mode = con->modes[ch->mode];
+		k->saved = drmModeGetCrtc(k->fd, k->crtc_id);
+	} else
+		snprintf(err, errlen, "kms: %s changed while it was being read", dev->path);
+	if (con)
+		drmModeFreeConnector(con);
+	if (res)
+		drmModeFreeResources(res);
+	return ok;
+}
+
+/* A GBM surface of the mode's size and an OpenGL ES 2.0 context on it, through EGL's
+ * GBM platform, with the config whose visual is the surface's format (XRGB8888). */
+static bool gbm_egl(struct kms *k, const char *path, int w, int h, char *err, size_t errlen)
+{
+	k->gbm = gbm_create_device(k->fd);
+	k->surface = k->gbm ? gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, GBM_FORMAT_XRGB8888,
+						 GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING)
+			    : NULL;
+	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
+		(PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+	k->edpy = k->surface && get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
+	EGLint major, minor, count = 0;
+	EGLConfig configs[64], cfg = NULL;
+	const EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8,
+				EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
+	if (k->edpy == EGL_NO_DISPLAY || !eglInitialize(k->edpy, &major, &minor) ||
+	    !eglChooseConfig(k->edpy, attrs, configs, 64, &count)) {
+		snprintf(err, errlen, "kms: %s: no GBM or EGL on this device", path);
+		return false;
+	}
+	for (int i = 0; i < count && !cfg; i++) {
+		EGLint id;
+		if (eglGetConfigAttrib(k->edpy, configs[i], EGL_NATIVE_VISUAL_ID, &id) && id == GBM_FORMAT_XRGB8888)
+			cfg = configs[i];
+	}
+	const EGLint ctx_attrs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+	if (cfg) {
+		eglBindAPI(EGL_OPENGL_ES_API);
+		k->ctx = eglCreateContext(k->edpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
+		k->esurf = eglCreateWindowSurface(k->edpy, cfg, (EGLNativeWindowType)k->surface, NULL);
+	}
+	if (!cfg || k->ctx == EGL_NO_CONTEXT || k->esurf == EGL_NO_SURFACE ||
+	    !eglMakeCurrent(k->edpy, k->esurf, k->esurf, k->ctx)) {
+		snprintf(err, errlen, "kms: %s: cannot create an OpenGL ES 2.0 context on an XRGB8888 GBM surface", path);
+		return false;
+	}
+	return true;
+}
+
+struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int want_h, int want_hz, char *err,
+					   size_t errlen)
+{
+	struct lx_kms_device devs[8];
+	int fds[8], n = open_devices(device, devs, fds, err, errlen);
+	if (n < 0)
+		return NULL;
 	struct lx_kms_choice ch;
 	bool chosen = lx_kms_choose(devs, n, want_w, want_h, want_hz, &ch, err, errlen);
 	for (int i = 0; i < n; i++)
@@ -264,61 +335,13 @@ struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int w
 	k->edpy = EGL_NO_DISPLAY;
 	k->esurf = EGL_NO_SURFACE;
 	k->ctx = EGL_NO_CONTEXT;
-	const char *path = devs[ch.device].path;
-	drmModeRes *res = drmModeGetResources(k->fd);
-	drmModeConnector *con = res ? drmModeGetConnector(k->fd, devs[ch.device].connectors[ch.connector].id) : NULL;
-	if (!res || !con || ch.mode >= con->count_modes || ch.crtc >= res->count_crtcs) {
-		snprintf(err, errlen, "kms: %s changed while it was being read", path);
-		if (con)
-			drmModeFreeConnector(con);
-		if (res)
-			drmModeFreeResources(res);
+	if (!take_mode(k, &devs[ch.device], &ch, err, errlen) ||
+	    !gbm_egl(k, devs[ch.device].path, k->mode.hdisplay, k->mode.vdisplay, err, errlen)) {
 		kms_destroy(&k->base);
 		return NULL;
 	}
-	k->connector_id = con->connector_id;
-	k->crtc_id = res->crtcs[ch.crtc];
-	k->mode = con->modes[ch.mode];
-	k->saved = drmModeGetCrtc(k->fd, k->crtc_id);
-	drmModeFreeConnector(con);
-	drmModeFreeResources(res);
-	int w = k->mode.hdisplay, h = k->mode.vdisplay;
-	k->gbm = gbm_create_device(k->fd);
-	k->surface = k->gbm ? gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, GBM_FORMAT_XRGB8888,
-						 GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING)
-			    : NULL;
-	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-		(PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-	k->edpy = k->surface && get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
-	EGLint major, minor, count = 0;
-	EGLConfig configs[64], cfg = NULL;
-	const EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8,
-				EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
-	if (k->edpy == EGL_NO_DISPLAY || !eglInitialize(k->edpy, &major, &minor) ||
-	    !eglChooseConfig(k->edpy, attrs, configs, 64, &count)) {
-		snprintf(err, errlen, "kms: %s: no GBM or EGL on this device", path);
-		kms_destroy(&k->base);
-		return NULL;
-	}
-	/* the config whose visual is the surface's format (XRGB8888) */
-	for (int i = 0; i < count && !cfg; i++) {
-		EGLint id;
-		if (eglGetConfigAttrib(k->edpy, configs[i], EGL_NATIVE_VISUAL_ID, &id) && id == GBM_FORMAT_XRGB8888)
-			cfg = configs[i];
-	}
-	const EGLint ctx_attrs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-	if (cfg) {
-		eglBindAPI(EGL_OPENGL_ES_API);
-		k->ctx = eglCreateContext(k->edpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
-		k->esurf = eglCreateWindowSurface(k->edpy, cfg, (EGLNativeWindowType)k->surface, NULL);
-	}
-	if (!cfg || k->ctx == EGL_NO_CONTEXT || k->esurf == EGL_NO_SURFACE ||
-	    !eglMakeCurrent(k->edpy, k->esurf, k->esurf, k->ctx)) {
-		snprintf(err, errlen, "kms: %s: cannot create an OpenGL ES 2.0 context on an XRGB8888 GBM surface", path);
-		kms_destroy(&k->base);
-		return NULL;
-	}
-	k->base = (struct lx_platform){.name = "kms", .get_proc = kms_get_proc, .destroy = kms_destroy, .width = w,
-				       .height = h, .swap = kms_swap, .poll_key = kms_poll_key};
+	k->base = (struct lx_platform){.name = "kms", .get_proc = kms_get_proc, .destroy = kms_destroy,
+				       .width = k->mode.hdisplay, .height = k->mode.vdisplay, .swap = kms_swap,
+				       .poll_key = kms_poll_key};
 	return &k->base;
 }
