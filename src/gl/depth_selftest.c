@@ -58,6 +58,68 @@ static void rows_to_matrix(const float r[4][4], float m[16])
 			m[col * 4 + row] = r[row][col];
 }
 
+/* 1. The ramp written by the depth-write shader (window x -> depth a + b x) and read
+ * back: a 24-bit code within a few steps (single-precision interpolation), an 11-bit
+ * one within one. A shader computing in fp16 misses by thousands of 24-bit steps. */
+static bool write_ramp(GLuint write, bool mediump, uint8_t *px, char *detail, size_t len)
+{
+	float m[16];
+	const float r[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {(float)(2 * RAMP_B), 0, 0, (float)(2 * RAMP_A - 1)}, {0, 0, 0, 1}};
+	rows_to_matrix(r, m);
+	lx_gl.UseProgram(write);
+	lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(write, "u_light_clip"), 1, GL_FALSE, m);
+	lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+	lx_gl.ReadPixels(0, 0, N, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+	for (int i = 0; i < N; i++) {
+		double d = RAMP_A + RAMP_B * (i + 0.5) / N;
+		long want = mediump ? (long)floor(d * 2047) : (long)floor(d * LX_DEPTH_MAX_CODE);
+		long got = mediump ? (long)lx_depth_decode_code_fp16(px + 4 * i) : (long)lx_depth_decode_code(px + 4 * i);
+		if (labs(got - want) > (mediump ? 1 : 16)) {
+			snprintf(detail, len, "depth %.6f written as code %ld, expected %ld (%s codes)", d, got, want,
+				 mediump ? "11-bit" : "24-bit");
+			return false;
+		}
+	}
+	return true;
+}
+
+/* 2. The ramp read by the main pass's compare, a little behind it (row 0: shadowed)
+ * and a little in front (row 1: lit), by twice the bias. */
+static bool compare_ramp(GLuint compare, GLuint stored, bool mediump, uint8_t *px, char *detail, size_t len)
+{
+	double bias = mediump ? 1.0 : 64.0, step = mediump ? 1.0 / 2047 : 1.0 / LX_DEPTH_MAX_CODE;
+	double off = (2 * bias + (mediump ? 2 : 16)) * step;
+	float vp[16], tex[16];
+	const float v[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {0, 0, 0, 0}, {0, 0, 0, 1}};
+	/* s = x, t = the row's centre, depth = a + b x + off (2 - 4 y): +off at y = 1/4, -off at 3/4 */
+	const float t[4][4] = {{1, 0, 0, 0}, {0, 0, 0, 0.5f}, {(float)RAMP_B, (float)(-4 * off), 0, (float)(RAMP_A + 2 * off)}, {0, 0, 0, 1}};
+	rows_to_matrix(v, vp);
+	rows_to_matrix(t, tex);
+	lx_gl.UseProgram(compare);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+	lx_gl.BindTexture(GL_TEXTURE_2D, stored);
+	lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_view_proj"), 1, GL_FALSE, vp);
+	lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_shadow_tex"), 1, GL_FALSE, tex);
+	lx_gl.Uniform3f(lx_gl.GetUniformLocation(compare, "u_offset"), 0, 0, 0);
+	lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_light"), 0.5f, 0.5f, 10, 1); /* in front of +z */
+	lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_region"), 0, 0, 1, 1);
+	lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_bias"), (float)bias);
+	lx_gl.Uniform1i(lx_gl.GetUniformLocation(compare, "u_atlas"), 0);
+	lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_object_id"), 0);
+	lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+	lx_gl.ReadPixels(0, 0, N, 2, GL_RGBA, GL_UNSIGNED_BYTE, px);
+	for (int row = 0; row < 2; row++)
+		for (int i = 0; i < N; i++)
+			if ((px[(row * N + i) * 4] > 127) != (row == 0)) {
+				snprintf(detail, len, "depth %.6f compared %s its stored code by %.0f codes reads %s",
+					 RAMP_A + RAMP_B * (i + 0.5) / N, row == 0 ? "behind" : "in front of", off / step,
+					 row == 0 ? "lit" : "shadowed");
+				return false;
+			}
+	return true;
+}
+
 static bool run(bool mediump, char *detail, size_t len)
 {
 	const char *def = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;
@@ -79,64 +141,9 @@ static bool run(bool mediump, char *detail, size_t len)
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.Disable(GL_SCISSOR_TEST);
 	struct target stored = {0, 0}, decided = {0, 0};
-	bool ok = make_target(&stored, N, 1);
 	uint8_t px[N * 2 * 4];
-	/* 1. the ramp written by the depth-write shader: window x -> depth a + b x */
-	if (ok) {
-		float m[16];
-		const float r[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {(float)(2 * RAMP_B), 0, 0, (float)(2 * RAMP_A - 1)}, {0, 0, 0, 1}};
-		rows_to_matrix(r, m);
-		lx_gl.UseProgram(write);
-		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(write, "u_light_clip"), 1, GL_FALSE, m);
-		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
-		lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-		lx_gl.ReadPixels(0, 0, N, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
-		/* a 24-bit code within a few steps (single-precision interpolation); an 11-bit one
-		 * within one. A shader computing in fp16 misses by thousands of 24-bit steps. */
-		for (int i = 0; i < N && ok; i++) {
-			double d = RAMP_A + RAMP_B * (i + 0.5) / N;
-			long want = mediump ? (long)floor(d * 2047) : (long)floor(d * LX_DEPTH_MAX_CODE);
-			long got = mediump ? (long)lx_depth_decode_code_fp16(px + 4 * i) : (long)lx_depth_decode_code(px + 4 * i);
-			if (labs(got - want) > (mediump ? 1 : 16)) {
-				snprintf(detail, len, "depth %.6f written as code %ld, expected %ld (%s codes)", d, got, want,
-					 mediump ? "11-bit" : "24-bit");
-				ok = false;
-			}
-		}
-	}
-	/* 2. the ramp read by the main pass's compare, a little behind it (row 0: shadowed)
-	 * and a little in front (row 1: lit), by twice the bias */
-	if (ok && (ok = make_target(&decided, N, 2))) {
-		double bias = mediump ? 1.0 : 64.0, step = mediump ? 1.0 / 2047 : 1.0 / LX_DEPTH_MAX_CODE;
-		double off = (2 * bias + (mediump ? 2 : 16)) * step;
-		float vp[16], tex[16];
-		const float v[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {0, 0, 0, 0}, {0, 0, 0, 1}};
-		/* s = x, t = the row's centre, depth = a + b x + off (2 - 4 y): +off at y = 1/4, -off at 3/4 */
-		const float t[4][4] = {{1, 0, 0, 0}, {0, 0, 0, 0.5f}, {(float)RAMP_B, (float)(-4 * off), 0, (float)(RAMP_A + 2 * off)}, {0, 0, 0, 1}};
-		rows_to_matrix(v, vp);
-		rows_to_matrix(t, tex);
-		lx_gl.UseProgram(compare);
-		lx_gl.ActiveTexture(GL_TEXTURE0);
-		lx_gl.BindTexture(GL_TEXTURE_2D, stored.tex);
-		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_view_proj"), 1, GL_FALSE, vp);
-		lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(compare, "u_shadow_tex"), 1, GL_FALSE, tex);
-		lx_gl.Uniform3f(lx_gl.GetUniformLocation(compare, "u_offset"), 0, 0, 0);
-		lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_light"), 0.5f, 0.5f, 10, 1); /* in front of +z */
-		lx_gl.Uniform4f(lx_gl.GetUniformLocation(compare, "u_region"), 0, 0, 1, 1);
-		lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_bias"), (float)bias);
-		lx_gl.Uniform1i(lx_gl.GetUniformLocation(compare, "u_atlas"), 0);
-		lx_gl.Uniform1f(lx_gl.GetUniformLocation(compare, "u_object_id"), 0);
-		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
-		lx_gl.ReadPixels(0, 0, N, 2, GL_RGBA, GL_UNSIGNED_BYTE, px);
-		for (int row = 0; row < 2 && ok; row++)
-			for (int i = 0; i < N && ok; i++)
-				if ((px[(row * N + i) * 4] > 127) != (row == 0)) {
-					snprintf(detail, len, "depth %.6f compared %s its stored code by %.0f codes reads %s",
-						 RAMP_A + RAMP_B * (i + 0.5) / N, row == 0 ? "behind" : "in front of",
-						 off / step, row == 0 ? "lit" : "shadowed");
-					ok = false;
-				}
-	}
+	bool ok = make_target(&stored, N, 1) && write_ramp(write, mediump, px, detail, len) && make_target(&decided, N, 2) &&
+		  compare_ramp(compare, stored.tex, mediump, px, detail, len);
 	if (stored.fbo)
 		free_target(&stored);
 	if (decided.fbo)
