@@ -142,9 +142,11 @@ soak: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel
 	@sh tests/kiosk_soak.sh $(BUILD)/lixel
 
-# The include rules between the layers, and the GL-free files' freedom from GL headers.
+# The include rules between the layers, the GL-free files' freedom from GL headers,
+# and no function over 80 lines.
 check-layers:
 	@sh tools/check-layers.sh $(CORE_SRC) && echo "layers: every include follows the rules (tools/check-layers.sh)"
+	@sh tools/check-function-length.sh 80 && echo "functions: none in src/ over 80 lines (tools/check-function-length.sh)"
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check
