@@ -13,8 +13,20 @@
 #include <string.h>
 
 enum { W = 320, H = 240 };
-static const char *const methods[] = {"none", "uniform", "psm", "lispsm", "tsm", "plane"};
-enum { NM = sizeof methods / sizeof methods[0] };
+/* every method the registry (method_registry.c) holds */
+enum { NM_MAX = 16 };
+static const char *methods[NM_MAX];
+static int NM;
+
+static int registry_setup(void **state)
+{
+	(void)state;
+	NM = lx_shadow_method_count();
+	assert_true(NM >= 2 && NM <= NM_MAX);
+	for (int i = 0; i < NM; i++)
+		methods[i] = lx_shadow_method_at(i)->name;
+	return 0;
+}
 
 struct pixels {
 	uint8_t *rgba, *sh, *ref_sh;
@@ -138,7 +150,7 @@ static void random_extremes_warn_or_match(void **state)
 		lx_scene_scale(&base, k);
 		struct lx_scene_meshes meshes = {0};
 		assert_true(lx_meshes_build(&base, &meshes));
-		struct lx_method_run run[NM];
+		struct lx_method_run run[NM_MAX];
 		for (int m = 0; m < NM; m++) {
 			struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 			if (lx_method_run_init(&run[m], methods[m], &base, &meshes, &caps, &o, W, H, LX_DEPTH_AUTO,
@@ -257,5 +269,5 @@ int main(void)
 		cmocka_unit_test(scale_changes_nothing),
 		cmocka_unit_test(random_extremes_warn_or_match),
 	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
+	return cmocka_run_group_tests(tests, registry_setup, NULL);
 }

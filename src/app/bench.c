@@ -68,7 +68,7 @@ static void usage(FILE *f)
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
 		   "  --warmup N       warm-up frames (default 5)\n"
-		   "  --methods LIST   comma-separated, from %s (default none,uniform,psm,lispsm,tsm,plane);\n"
+		   "  --methods LIST   comma-separated, from %s (default: all of them);\n"
 		   "                   plane takes options after slashes to compare settings in one run:\n"
 		   "                   plane/square (the paper's square maps), plane/shared (shared\n"
 		   "                   budgets), plane/lpp1 (at most 1 lixel per pixel), plane/twist (the\n"
@@ -539,6 +539,13 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 	return 0;
 }
 
+static int bad_methods(const char *got)
+{
+	char expected[320];
+	snprintf(expected, sizeof expected, "methods from %s, plane with /square, /shared or /lppX", lx_shadow_method_names());
+	return bad("--methods", expected, got);
+}
+
 /* The lists of methods and configurations split and each name checked. 0 or 2. */
 static int bench_lists(struct bench *b, struct bench_args *ba)
 {
@@ -550,8 +557,7 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 		struct lx_method_options probe = b->options;
 		char why[200];
 		if (!lx_shadow_method_spec(b->methods[m], &probe, why, sizeof why))
-			return bad("--methods", "methods from none|uniform|psm|lispsm|tsm|plane, plane with /square, /shared or /lppX",
-				   b->methods[m]);
+			return bad_methods(b->methods[m]);
 	}
 	if (!ba->configs[0]) {
 		for (int c = 0; c < lx_config_count; c++)
@@ -574,7 +580,8 @@ static int bench_parse(int argc, char **argv, struct bench *b, struct bench_args
 {
 	*b = (struct bench){.width = 1024, .height = 1024, .frames = 30, .warmup = 5, .platform = "osmesa",
 			    .options = LX_METHOD_OPTIONS_DEFAULT};
-	*ba = (struct bench_args){.methods = "none,uniform,psm,lispsm,tsm,plane"};
+	*ba = (struct bench_args){0};
+	snprintf(ba->methods, sizeof ba->methods, "%s", lx_shadow_method_list());
 	lx_scene_default(&b->scene);
 	static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
 						 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES};

@@ -315,7 +315,7 @@ static int render_option(struct render_args *r, const char *a, const char *v)
 /* The command line into *r: 0, 2 after the one line, or -1 when --help was printed. */
 static int render_parse(int argc, char **argv, struct render_args *r)
 {
-	*r = (struct render_args){.job = {.method = "plane", .platform = "osmesa", .width = 1024, .height = 768,
+	*r = (struct render_args){.job = {.method = LX_DEFAULT_METHOD, .platform = "osmesa", .width = 1024, .height = 768,
 					  .warmup_frames = 3, .timed_frames = 10, .bias_codes = LX_DEFAULT_BIAS_CODES,
 					  .reference_threads = 2, .out_png = "lixel.png"}};
 	static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye", "--at", "--fov",

@@ -17,9 +17,15 @@ void lx_board_defaults(struct lx_board *b)
 	b->debounce_ms = 30;
 	b->long_press_ms = 1000;
 	b->lixels = LX_METHOD_OPTIONS_DEFAULT;
-	static const char *const order[] = {"plane", "uniform", "psm", "lispsm", "tsm", "none"};
-	for (int i = 0; i < 6; i++)
-		snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", order[i]);
+	/* the kiosk's default order: the default method, the others as the registry lists
+	 * them, the baseline (none) last */
+	snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", LX_DEFAULT_METHOD);
+	for (int pass = 0; pass < 2; pass++)
+		for (int i = 0; i < lx_shadow_method_count() && b->method_count < LX_BOARD_MAX_METHODS; i++) {
+			const char *name = lx_shadow_method_at(i)->name;
+			if (strcmp(name, LX_DEFAULT_METHOD) && !strcmp(name, "none") == (pass == 1))
+				snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", name);
+		}
 }
 
 static bool fail(char *err, size_t errlen, const char *file, int line, const char *fmt, ...)

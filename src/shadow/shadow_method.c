@@ -6,19 +6,35 @@
 #include <stdlib.h>
 #include <string.h>
 
-extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_plane, lx_method_lispsm,
-	lx_method_tsm, lx_method_psm;
-
-static const struct lx_shadow_method *const methods[] = {&lx_method_none, &lx_method_uniform, &lx_method_plane,
-							 &lx_method_psm, &lx_method_lispsm,
-							 &lx_method_tsm};
-
 const struct lx_shadow_method *lx_shadow_method_find(const char *name)
 {
-	for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++)
-		if (!strcmp(methods[i]->name, name))
-			return methods[i];
+	for (int i = 0; i < lx_shadow_method_count(); i++)
+		if (!strcmp(lx_shadow_method_at(i)->name, name))
+			return lx_shadow_method_at(i);
 	return NULL;
+}
+
+/* The registry's names joined by sep, in a buffer of its own per separator. */
+static const char *joined(char sep, char *buf, size_t len)
+{
+	size_t used = 0;
+	buf[0] = 0;
+	for (int i = 0; i < lx_shadow_method_count(); i++)
+		used += (size_t)snprintf(buf + used, used < len ? len - used : 0, "%s%s", i ? (char[2]){sep, 0} : "",
+					 lx_shadow_method_at(i)->name);
+	return buf;
+}
+
+const char *lx_shadow_method_names(void)
+{
+	static char buf[256];
+	return buf[0] ? buf : joined('|', buf, sizeof buf);
+}
+
+const char *lx_shadow_method_list(void)
+{
+	static char buf[256];
+	return buf[0] ? buf : joined(',', buf, sizeof buf);
 }
 
 const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx_method_options *o, char *err,
@@ -79,7 +95,6 @@ int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_s
 	return 1;
 }
 
-const char *lx_shadow_method_names(void) { return "none|uniform|psm|lispsm|tsm|plane"; }
 
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {

@@ -84,7 +84,15 @@ const struct lx_shadow_method *lx_shadow_method_find(const char *name);
 const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx_method_options *o, char *err,
 						     size_t errlen);
 /* The list of method names, separated by '|', for help and error messages. */
+/* The registry (method_registry.c): how many methods, the i-th (NULL past the end). */
+int lx_shadow_method_count(void);
+const struct lx_shadow_method *lx_shadow_method_at(int i);
+/* Their names, "none|uniform|...", for messages and help texts; and "none,uniform,...",
+ * the bench's default list. */
 const char *lx_shadow_method_names(void);
+const char *lx_shadow_method_list(void);
+/* The default method (render's and the kiosk's first). */
+#define LX_DEFAULT_METHOD "plane"
 /* The method's region requests: its regions(), or its one square map. */
 int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_scene *s,
 			     const struct lx_method_options *o, struct lx_region_request *out);
