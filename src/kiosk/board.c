@@ -1,6 +1,7 @@
 #include "board.h"
 #include "embedded.h"
 #include "number.h"
+#include "text_lines.h"
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -204,19 +205,11 @@ static bool apply_key(struct lx_board *b, const char *key, const char *value, si
 static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)
 {
 	struct at at = {file, 0, err, errlen};
-	while (*text) {
+	char buf[512];
+	for (int r; (r = lx_text_line(&text, buf, sizeof buf)) != 0;) {
 		at.line++;
-		const char *eol = strchr(text, '\n');
-		size_t len = eol ? (size_t)(eol - text) : strlen(text);
-		char buf[512];
-		if (len >= sizeof buf)
+		if (r < 0)
 			return FAIL(&at, "expected a line shorter than %zu characters", sizeof buf);
-		memcpy(buf, text, len);
-		buf[len] = 0;
-		text = eol ? eol + 1 : text + len;
-		char *hash = strchr(buf, '#');
-		if (hash)
-			*hash = 0;
 		char *key = strtok(buf, " \t\r");
 		if (!key)
 			continue;

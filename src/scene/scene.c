@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "number.h"
+#include "text_lines.h"
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -329,19 +330,11 @@ bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char
 	struct parser p = {.file = name, .err = err, .errlen = errlen};
 	bool light = false, camera = false;
 	const char *line = text;
-	while (*line) {
+	char buf[1024];
+	for (int r; (r = lx_text_line(&line, buf, sizeof buf)) != 0;) {
 		p.line++;
-		const char *eol = strchr(line, '\n');
-		size_t len = eol ? (size_t)(eol - line) : strlen(line);
-		char buf[1024];
-		if (len >= sizeof buf)
+		if (r < 0)
 			return fail(&p, "expected a line shorter than %zu characters", sizeof buf);
-		memcpy(buf, line, len);
-		buf[len] = 0;
-		line = eol ? eol + 1 : line + len;
-		char *hash = strchr(buf, '#');
-		if (hash)
-			*hash = 0;
 		p.ntok = p.pos = 0;
 		for (char *t = strtok(buf, " \t\r"); t; t = strtok(NULL, " \t\r")) {
 			if (p.ntok == 64)
