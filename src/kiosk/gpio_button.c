@@ -71,6 +71,19 @@ static bool resolve(const struct lx_board *b, char *path, size_t plen, unsigned 
 	return idx >= 0;
 }
 
+/* What both APIs do first: the chip's path and the line's offset, and the button's
+ * memory (size bytes, zeroed). NULL after err. */
+static void *open_prelude(const struct lx_board *board, char *path, size_t plen, unsigned *offset, size_t size,
+			  char *err, size_t errlen)
+{
+	if (!resolve(board, path, plen, offset, err, errlen))
+		return NULL;
+	void *g = calloc(1, size);
+	if (!g)
+		snprintf(err, errlen, "gpio: out of memory");
+	return g;
+}
+
 #ifdef LX_GPIOD_V2
 
 static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32])
@@ -114,13 +127,9 @@ struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *e
 	char path[272];
 	unsigned offset;
 	/* v2 opens chips by path only */
-	if (!resolve(board, path, sizeof path, &offset, err, errlen))
+	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, &offset, sizeof(*g), err, errlen);
+	if (!g)
 		return NULL;
-	struct lx_gpio_button *g = calloc(1, sizeof(*g));
-	if (!g) {
-		snprintf(err, errlen, "gpio: out of memory");
-		return NULL;
-	}
 	g->offset = offset;
 	g->chip = gpiod_chip_open(path);
 	if (!g->chip) {
@@ -219,13 +228,9 @@ struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *e
 {
 	char path[272];
 	unsigned offset;
-	if (!resolve(board, path, sizeof path, &offset, err, errlen))
+	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, &offset, sizeof(*g), err, errlen);
+	if (!g)
 		return NULL;
-	struct lx_gpio_button *g = calloc(1, sizeof(*g));
-	if (!g) {
-		snprintf(err, errlen, "gpio: out of memory");
-		return NULL;
-	}
 	g->chip = gpiod_chip_open(path);
 	if (!g->chip) {
 		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, errno ? strerror(errno) : "no such chip");
