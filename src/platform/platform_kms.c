@@ -10,6 +10,7 @@
  * (display_loss.c, unit-tested); a verdict other than OK sets the platform's state and
  * the kiosk stops, trying to put the CRTC back on the way out. */
 #include "kms_select.h"
+#include "egl_setup.h"
 #include "platform.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -280,15 +281,11 @@ static bool gbm_egl(struct kms *k, const char *path, int w, int h, char *err, si
 	k->surface = k->gbm ? gbm_surface_create(k->gbm, (uint32_t)w, (uint32_t)h, GBM_FORMAT_XRGB8888,
 						 GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING)
 			    : NULL;
-	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-		(PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-	k->edpy = k->surface && get_display ? get_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL) : EGL_NO_DISPLAY;
-	EGLint major, minor, count = 0;
+	k->edpy = k->surface ? lx_egl_display(EGL_PLATFORM_GBM_KHR, k->gbm) : EGL_NO_DISPLAY;
+	EGLint count = 0;
 	EGLConfig configs[64], cfg = NULL;
-	const EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8,
-				EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
-	if (k->edpy == EGL_NO_DISPLAY || !eglInitialize(k->edpy, &major, &minor) ||
-	    !eglChooseConfig(k->edpy, attrs, configs, 64, &count)) {
+	const EGLint attrs[] = LX_EGL_CONFIG(EGL_WINDOW_BIT, 1);
+	if (k->edpy == EGL_NO_DISPLAY || !eglChooseConfig(k->edpy, attrs, configs, 64, &count)) {
 		snprintf(err, errlen, "kms: %s: no GBM or EGL on this device", path);
 		return false;
 	}
@@ -297,10 +294,8 @@ static bool gbm_egl(struct kms *k, const char *path, int w, int h, char *err, si
 		if (eglGetConfigAttrib(k->edpy, configs[i], EGL_NATIVE_VISUAL_ID, &id) && id == GBM_FORMAT_XRGB8888)
 			cfg = configs[i];
 	}
-	const EGLint ctx_attrs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
 	if (cfg) {
-		eglBindAPI(EGL_OPENGL_ES_API);
-		k->ctx = eglCreateContext(k->edpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
+		k->ctx = lx_egl_context(k->edpy, cfg);
 		k->esurf = eglCreateWindowSurface(k->edpy, cfg, (EGLNativeWindowType)k->surface, NULL);
 	}
 	if (!cfg || k->ctx == EGL_NO_CONTEXT || k->esurf == EGL_NO_SURFACE ||

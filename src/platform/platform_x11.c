@@ -5,6 +5,7 @@
  * (WM_DELETE_WINDOW), another client destroys it (DestroyNotify, or a BadWindow or
  * BadDrawable error naming it), or the X server goes (Xlib's I/O error). Each sets the
  * platform's state instead of letting Xlib end the process, and the kiosk stops. */
+#include "egl_setup.h"
 #include "platform.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -199,15 +200,11 @@ struct lx_platform *lx_platform_x11_create(int width, int height, char *err, siz
 		free(x);
 		return NULL;
 	}
-	PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-		(PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-	x->edpy = get_display ? get_display(EGL_PLATFORM_X11_KHR, x->dpy, NULL) : EGL_NO_DISPLAY;
-	EGLint major, minor, n = 0;
+	x->edpy = lx_egl_display(EGL_PLATFORM_X11_KHR, x->dpy);
+	EGLint n = 0;
 	EGLConfig cfg;
-	const EGLint attrs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8,
-				EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 16, EGL_NONE};
-	if (x->edpy == EGL_NO_DISPLAY || !eglInitialize(x->edpy, &major, &minor) ||
-	    !eglChooseConfig(x->edpy, attrs, &cfg, 1, &n) || n < 1) {
+	const EGLint attrs[] = LX_EGL_CONFIG(EGL_WINDOW_BIT, 1);
+	if (x->edpy == EGL_NO_DISPLAY || !eglChooseConfig(x->edpy, attrs, &cfg, 1, &n) || n < 1) {
 		snprintf(err, errlen, "x11: no EGL config with OpenGL ES 2.0 and a window on this display");
 		x11_destroy(&x->base);
 		return NULL;
@@ -230,10 +227,8 @@ struct lx_platform *lx_platform_x11_create(int width, int height, char *err, siz
 	XSetWMProtocols(x->dpy, x->win, &x->wm_delete, 1);
 	XMapWindow(x->dpy, x->win);
 	XFlush(x->dpy);
-	const EGLint ctx_attrs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-	eglBindAPI(EGL_OPENGL_ES_API);
 	x->surface = eglCreateWindowSurface(x->edpy, cfg, (EGLNativeWindowType)x->win, NULL);
-	x->ctx = eglCreateContext(x->edpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
+	x->ctx = lx_egl_context(x->edpy, cfg);
 	if (x->surface == EGL_NO_SURFACE || x->ctx == EGL_NO_CONTEXT ||
 	    !eglMakeCurrent(x->edpy, x->surface, x->surface, x->ctx)) {
 		snprintf(err, errlen, "x11: cannot create an OpenGL ES 2.0 context on the window");
