@@ -89,10 +89,7 @@ static void usage(FILE *f)
 		lx_shadow_method_names());
 }
 
-static int bad(const char *opt, const char *expected, const char *got)
-{
-	return lx_arg_bad("bench", opt, expected, got);
-}
+#define bad(opt, expected, got) lx_arg_bad("bench", opt, expected, got)
 
 /* Splits a comma list in place into out[]; false on an empty item (",,", a comma at
  * either end) or too many. */

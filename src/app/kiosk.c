@@ -72,10 +72,7 @@ static void usage(FILE *f)
 		lx_board_names());
 }
 
-static int bad(const char *opt, const char *expected, const char *got)
-{
-	return lx_arg_bad("kiosk", opt, expected, got);
-}
+#define bad(opt, expected, got) lx_arg_bad("kiosk", opt, expected, got)
 
 /* What the command line asks for; the board profile with its overrides applied. */
 struct kiosk_args {

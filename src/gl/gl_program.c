@@ -13,6 +13,18 @@ static void trim(char *log)
 		log[--n] = 0;
 }
 
+/* The driver's log of a shader or a program, trimmed: what a failure shows. */
+static const char *driver_log(GLuint obj, bool program, char *log, size_t n)
+{
+	log[0] = 0;
+	if (program)
+		lx_gl.GetProgramInfoLog(obj, (GLsizei)n, NULL, log);
+	else
+		lx_gl.GetShaderInfoLog(obj, (GLsizei)n, NULL, log);
+	trim(log);
+	return log;
+}
+
 static GLuint compile(GLenum type, const char *name, const char *text, const char *defines, char *err, size_t errlen)
 {
 	char *src = lx_shader_text(name, text, defines, type == GL_FRAGMENT_SHADER && lx_simulating_lima(), err, errlen);
@@ -26,10 +38,8 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
 	GLint ok = 0;
 	lx_gl.GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
 	if (!ok) {
-		char log[2048] = "";
-		lx_gl.GetShaderInfoLog(sh, sizeof log, NULL, log);
-		trim(log);
-		snprintf(err, errlen, "%s: compile error: %s", name, log);
+		char log[2048];
+		snprintf(err, errlen, "%s: compile error: %s", name, driver_log(sh, false, log, sizeof log));
 		lx_gl.DeleteShader(sh);
 		return 0;
 	}
@@ -82,10 +92,8 @@ GLuint lx_program_build_text(const char *vert, const char *vert_text, const char
 	GLint ok = 0;
 	lx_gl.GetProgramiv(prog, GL_LINK_STATUS, &ok);
 	if (!ok) {
-		char log[2048] = "";
-		lx_gl.GetProgramInfoLog(prog, sizeof log, NULL, log);
-		trim(log);
-		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, log);
+		char log[2048];
+		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, driver_log(prog, true, log, sizeof log));
 		lx_gl.DeleteProgram(prog);
 		return 0;
 	}
