@@ -130,7 +130,7 @@ $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
 check: deps-check check-layers
-	@$(MAKE) --no-print-directory $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
 	@sh tests/run-tests.sh $(BUILD)
 	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
 	@SOAK_SECONDS=20 sh tests/kiosk_soak.sh $(BUILD)/lixel
@@ -142,6 +142,9 @@ soak: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel
 	@sh tests/kiosk_soak.sh $(BUILD)/lixel
 
+# make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
+CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
+
 # The include rules between the layers, the GL-free files' freedom from GL headers,
 # and no function over 80 lines.
 check-layers:
@@ -150,7 +153,7 @@ check-layers:
 
 # The same tests under AddressSanitizer and UBSan, in their own build directory.
 asan: deps-check
-	@$(MAKE) --no-print-directory BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
 		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window
 	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
 
@@ -180,7 +183,7 @@ $(BUILD)/fuzz/obj: | $(BUILD)
 	mkdir -p $@
 
 fuzz-build: deps-fuzz
-	@$(MAKE) --no-print-directory $(FUZZ_BINS)
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(FUZZ_BINS)
 
 fuzz: fuzz-build
 	@sh tools/fuzz.sh $(BUILD)/fuzz $(FUZZ_SECONDS) $(FUZZ_NAMES)
