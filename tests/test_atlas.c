@@ -64,7 +64,7 @@ static void many_regions_and_guards(void **state)
 	uint64_t s = 99;
 	for (int trial = 0; trial < 500; trial++) {
 		struct lx_region_request req[LX_ATLAS_MAX_REGIONS];
-		char names[LX_ATLAS_MAX_REGIONS][8];
+		char names[LX_ATLAS_MAX_REGIONS][16];
 		int n = 1 + (int)(test_rand(&s) * LX_ATLAS_MAX_REGIONS);
 		for (int i = 0; i < n; i++) {
 			snprintf(names[i], sizeof names[i], "r%d", i);

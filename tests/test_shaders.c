@@ -67,7 +67,7 @@ static void every_variant_is_glsl_es_100(void **state)
 							    "overlay.frag", NULL};
 	     *f; f++)
 		write_variant(&b, *f, NULL, false, "plain");
-	char cmd[sizeof b.list + 128], out[160];
+	char cmd[sizeof b.list + 400], out[300];
 	snprintf(out, sizeof out, "%s/log", b.dir);
 	snprintf(cmd, sizeof cmd, "glslangValidator%s > %s 2>&1", b.list, out);
 	int st = system(cmd);

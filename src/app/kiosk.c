@@ -287,9 +287,11 @@ static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
 		snprintf(k->text[k->nlines++], sizeof k->text[0], "%.1f fps", k->fps);
 		for (int p = 0; p < k->scene.plane_count && k->nlines < 2 + LX_MAX_PLANES; p++) {
 			struct lx_plane_sampling ps;
+			char name[LX_NAME_MAX]; /* a copy: the text and the scene share *k */
+			memcpy(name, k->scene.planes[p].name, sizeof name);
 			if (lx_plane_sampling_sparse(f, &run->atlas, &run->result, p, 16, &ps))
-				snprintf(k->text[k->nlines++], sizeof k->text[0], "%s  lpp %.2f  m %.2f  aniso %.2f",
-					 k->scene.planes[p].name, ps.lpp_median, ps.m_max, ps.aniso_max);
+				snprintf(k->text[k->nlines++], sizeof k->text[0], "%s  lpp %.2f  m %.2f  aniso %.2f", name,
+					 ps.lpp_median, ps.m_max, ps.aniso_max);
 		}
 		for (int i = 0; i < k->nlines; i++)
 			k->lines[i] = k->text[i];

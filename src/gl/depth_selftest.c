@@ -181,7 +181,7 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 		out->mediump = want == LX_DEPTH_MEDIUMP;
 		out->selftest = "forced";
 		if (!lx_depth_selftest(out->mediump, why, sizeof why))
-			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%s)",
+			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%.100s)",
 				 out->mediump ? "11-bit mediump" : "24-bit highp", why);
 	} else if (lx_depth_selftest(false, why, sizeof why)) {
 		out->mediump = false;
