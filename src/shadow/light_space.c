@@ -29,9 +29,8 @@ bool lx_object_can_cast(const struct lx_frame *f, int id)
 }
 
 /* G coordinates and depth of a world point; false at or behind a point light. */
-static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *depth)
+static bool project_view(const struct lx_light_space *ls, vec4 q, vec2 *g, double *depth)
 {
-	vec4 q = m4_mul_point(&ls->view, p);
 	*depth = -q.z;
 	if (ls->directional) {
 		*g = (vec2){q.x, q.y};
@@ -41,6 +40,11 @@ static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *de
 		return false;
 	*g = (vec2){q.x / *depth, q.y / *depth};
 	return true;
+}
+
+static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *depth)
+{
+	return project_view(ls, m4_mul_point(&ls->view, p), g, depth);
 }
 
 /* Whether an object in the box [lo, hi] may lie between the light and a receiver: its
@@ -88,10 +92,17 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	vec2 pts[4 * LX_POLY_MAX];
 	int n = 0;
 	ls->zfar = -INFINITY;
+	/* the receivers' image and depth; and their cone from a point light (the widest angle
+	 * off the axis), or their bounds across a directional light's beam: what a caster
+	 * must reach to matter */
+	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY;
 	for (int i = 0; i < nrec; i++) {
+		vec4 q = m4_mul_point(&ls->view, rec[i]);
+		cone = fmax(cone, atan2(sqrt(q.x * q.x + q.y * q.y), -q.z));
+		rx0 = fmin(rx0, q.x), rx1 = fmax(rx1, q.x), ry0 = fmin(ry0, q.y), ry1 = fmax(ry1, q.y);
 		vec2 g;
 		double depth;
-		if (project(ls, rec[i], &g, &depth)) {
+		if (project_view(ls, q, &g, &depth)) {
 			if (n < 4 * LX_POLY_MAX)
 				pts[n++] = g;
 			ls->zfar = fmax(ls->zfar, depth);
@@ -99,14 +110,6 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 			ls->receivers_behind = true;
 	}
 	lx_poly_hull(pts, n, &ls->receivers);
-	/* the receivers' cone from a point light (the widest angle off the axis), or their
-	 * bounds across a directional light's beam: what a caster must reach to matter */
-	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY;
-	for (int i = 0; i < nrec; i++) {
-		vec4 q = m4_mul_point(&ls->view, rec[i]);
-		cone = fmax(cone, atan2(sqrt(q.x * q.x + q.y * q.y), -q.z));
-		rx0 = fmin(rx0, q.x), rx1 = fmax(rx1, q.x), ry0 = fmin(ry0, q.y), ry1 = fmax(ry1, q.y);
-	}
 	int ncasters = 0;
 	n = 0;
 	ls->znear = INFINITY;
