@@ -216,13 +216,20 @@ bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 	return traverse(rc, o, d, tmin, tmax, true, skip, &t) >= 0;
 }
 
-bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri)
+/* The pixel's decision at p on triangle tri: LX_REF_EDGE_ON where the light grazes it
+ * (|cos| of its incidence at most LX_EDGE_ON_COS: there the lit and the shadowed shading
+ * differ by less than one 8-bit step, and float rounding, the renderer's or this caster's
+ * for a light lying in the plane, decides the side, so neither decision is wrong; no ray
+ * is cast), else 1 where shadowed, 0 where lit. */
+static int decide(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri, bool edge_on)
 {
 	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p);
-	if (!(v3_dot(rc->tris[tri].n, to_light) > 0))
-		return true; /* faces away from the light (or the light lies in its plane) */
+	double cos_len = v3_dot(rc->tris[tri].n, to_light), len = v3_len(to_light); /* n is unit */
+	if (edge_on && fabs(cos_len) <= LX_EDGE_ON_COS * len)
+		return LX_REF_EDGE_ON;
+	if (!(cos_len > 0))
+		return 1; /* faces away from the light (or the light lies in its plane) */
 	/* For a point light the segment ends at the light (s = 1); start a hair off the surface. */
-	double len = v3_len(to_light);
 	double smin = 1e-9 * rc->scale / len; /* len > 0: the dot product above was positive */
 	/* and end a hair before a point light: a surface through the light (a light lying on
 	 * the floor) does not hide the light from points off that surface */
@@ -230,15 +237,9 @@ bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light 
 	return lx_raycast_any(rc, p, to_light, smin, smax, tri);
 }
 
-/* Whether the light grazes triangle tri at p: |cos| of its incidence at most
- * LX_EDGE_ON_COS. There the lit and the shadowed shading differ by less than one 8-bit
- * step, and float rounding (the renderer's, or this caster's for a light lying in the
- * plane) decides the side, so neither decision is wrong. */
-static bool edge_on(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri)
+bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri)
 {
-	vec3 to_light = light->directional ? v3_scale(light->direction, -1) : v3_sub(light->position, p);
-	double len = v3_len(rc->tris[tri].n) * v3_len(to_light);
-	return fabs(v3_dot(rc->tris[tri].n, to_light)) <= LX_EDGE_ON_COS * len;
+	return decide(rc, light, p, tri, false);
 }
 
 struct job {
@@ -265,10 +266,7 @@ static void *run_rows(void *arg)
 			double t;
 			int tri = lx_raycast_first(j->rc, pn, d, 0.0, 1.0, &t);
 			j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
-			vec3 p = v3_add(pn, v3_scale(d, t));
-			j->shadowed[i] = tri >= 0 && lx_reference_shadowed(j->rc, &j->f->light, p, tri);
-			if (tri >= 0 && edge_on(j->rc, &j->f->light, p, tri))
-				j->shadowed[i] = LX_REF_EDGE_ON;
+			j->shadowed[i] = tri >= 0 ? (uint8_t)decide(j->rc, &j->f->light, v3_add(pn, v3_scale(d, t)), tri, true) : 0;
 		}
 	return NULL;
 }
