@@ -45,18 +45,21 @@ static bool box_in_view(const struct lx_view *v, double aspect, vec3 lo, vec3 hi
 }
 
 /* f->view_min, view_max: the box of the objects in view, the only receivers there are;
- * the whole scene's when none is. */
-static void view_box(struct lx_frame *f, double aspect)
+ * the whole scene's when none is. Returns which objects are in view (bit id). */
+static unsigned long long view_box(struct lx_frame *f, double aspect)
 {
 	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	unsigned long long in_view = 0;
 	for (int id = 0; id < f->object_count; id++)
 		if (box_in_view(&f->view, aspect, f->bmin[id], f->bmax[id])) {
+			in_view |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
 			lo = v3(fmin(lo.x, f->bmin[id].x), fmin(lo.y, f->bmin[id].y), fmin(lo.z, f->bmin[id].z));
 			hi = v3(fmax(hi.x, f->bmax[id].x), fmax(hi.y, f->bmax[id].y), fmax(hi.z, f->bmax[id].z));
 		}
 	if (!(lo.x <= hi.x))
 		lo = f->scene_min, hi = f->scene_max;
 	f->view_min = lo, f->view_max = hi;
+	return in_view;
 }
 
 /* A point light LX_FAR_LIGHT_RATIO times farther than the size of what is in view (the
@@ -125,14 +128,14 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		snprintf(err, errlen, "camera: eye equals at, or up is along the view direction");
 		return false;
 	}
-	view_box(f, (double)width / height);
+	unsigned long long in_view = view_box(f, (double)width / height);
 	far_light(f);
 	/* far: the farthest scene corner; near: the distance to the scene box, at least
 	 * far / 1000, but never beyond the nearest object (one caster far from the rest
 	 * must not push the near plane past the others), and at least far * 1e-6. */
 	double far = 0, nearest = INFINITY;
 	for (int id = 0; id < f->object_count; id++) {
-		if (!box_in_view(v, (double)width / height, f->bmin[id], f->bmax[id]))
+		if (!(in_view >> id & 1))
 			continue; /* out of view: no reason to stretch the depth range */
 		nearest = fmin(nearest, box_distance(v->eye, f->bmin[id], f->bmax[id]));
 		for (int i = 0; i < 8; i++)
