@@ -18,13 +18,30 @@ enum { NM_MAX = 16 };
 static const char *methods[NM_MAX];
 static int NM;
 
-static int registry_setup(void **state)
+/* One OSMesa context for both tests, and what it can do. */
+static struct lx_platform *plat;
+static struct lx_gl_caps caps;
+
+static int group_setup(void **state)
 {
 	(void)state;
 	NM = lx_shadow_method_count();
-	assert_true(NM >= 2 && NM <= NM_MAX);
+	if (NM < 2 || NM > NM_MAX)
+		return -1;
 	for (int i = 0; i < NM; i++)
 		methods[i] = lx_shadow_method_at(i)->name;
+	char err[512];
+	if (!(plat = lx_platform_create("osmesa", err, sizeof err))) {
+		print_error("%s\n", err);
+		return -1;
+	}
+	lx_gl_caps_probe(&caps);
+	return 0;
+}
+
+static int group_teardown(void **state)
+{
+	(void)state;
 	return 0;
 }
 
@@ -127,11 +144,6 @@ static void random_extremes_warn_or_match(void **state)
 {
 	(void)state;
 	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
-	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
 	struct pixels px = pixels_new();
 	uint64_t rs = 20261130;
 	long frames = 0, warned = 0, refused = 0, configs = 0;
@@ -203,7 +215,6 @@ static void random_extremes_warn_or_match(void **state)
 		      "without one %.3f%%\n", configs, refused, frames, warned, worst_quiet);
 	assert_true(frames > 50 * per_group); /* most configurations rendered */
 	pixels_free(&px);
-	lx_platform_destroy(plat);
 }
 
 /* One scene at 1e-4, 1 and 1e4 metres: the same decisions, pixel for pixel but for a
@@ -211,16 +222,11 @@ static void random_extremes_warn_or_match(void **state)
 static void scale_changes_nothing(void **state)
 {
 	(void)state;
-	enum { w = 320, h = 240 };
+	enum { w = W, h = H };
 	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
-	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
-	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
-	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
-	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	struct pixels px = pixels_new(); /* W x H, as w x h */
+	uint8_t *rgba = px.rgba, *sh[2] = {px.sh, px.ref_sh};
+	int16_t *obj[2] = {px.obj, px.ref_obj};
 	static const double scales[] = {1, 1e-4, 1e4};
 	for (int m = 0; m < NM; m++) {
 		long shadowed = 0;
@@ -259,8 +265,7 @@ static void scale_changes_nothing(void **state)
 		}
 		assert_true(!strcmp(methods[m], "none") || shadowed > 0); /* there were shadows to compare */
 	}
-	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
-	lx_platform_destroy(plat);
+	pixels_free(&px);
 }
 
 int main(void)
@@ -269,5 +274,5 @@ int main(void)
 		cmocka_unit_test(scale_changes_nothing),
 		cmocka_unit_test(random_extremes_warn_or_match),
 	};
-	return cmocka_run_group_tests(tests, registry_setup, NULL);
+	return cmocka_run_group_tests(tests, group_setup, group_teardown);
 }
