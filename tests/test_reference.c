@@ -196,6 +196,33 @@ static void plane_homography_matches_projection(void **state)
 	lx_meshes_free(&m);
 }
 
+static int cmp_sorted(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* lx_median selects rather than sorts; it must give what a sort gives, for every length
+ * (odd, even, one) and for arrays full of ties, sorted, reversed or random. */
+static void median_equals_sorted_middle(void **state)
+{
+	(void)state;
+	uint64_t seed = 7;
+	double v[257], s[257];
+	for (int n = 1; n <= 257; n++) {
+		for (int kind = 0; kind < 4; kind++) {
+			for (int i = 0; i < n; i++)
+				v[i] = kind == 0 ? floor(test_rand(&seed) * 4) /* ties */
+				       : kind == 1 ? i : kind == 2 ? n - i : test_rand(&seed) * 1e3 - 500;
+			memcpy(s, v, (size_t)n * sizeof *v);
+			qsort(s, (size_t)n, sizeof *s, cmp_sorted);
+			double want = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+			assert_true(lx_median(v, n) == want);
+		}
+	}
+	assert_true(isnan(lx_median(v, 0)));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -203,6 +230,7 @@ int main(void)
 		cmocka_unit_test(bvh_depth_cap_loses_nothing),
 		cmocka_unit_test(reference_image_is_deterministic_across_threads),
 		cmocka_unit_test(mismatch_counts_each_kind),
+		cmocka_unit_test(median_equals_sorted_middle),
 		cmocka_unit_test(jacobian_of_known_homographies),
 		cmocka_unit_test(plane_homography_matches_projection),
 	};

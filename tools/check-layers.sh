@@ -5,75 +5,69 @@
 #  2. the GL-free files named on the command line (the Makefile's CORE_SRC) reach no GL,
 #     EGL, X11, GBM or DRM header, directly or through lixel's own headers.
 # Prints one line per broken rule (FILE: what it includes, and why that is refused) and
-# exits 1 if there is any; silent and 0 otherwise.
+# exits 1 if there is any; silent and 0 otherwise. One awk pass reads every file once.
 # Usage: tools/check-layers.sh CORE_FILE...   (from the top of the repository)
 set -u
-order="base geom scene shadow measure gl platform kiosk app"
-gl_headers='<(GLES2|GLES3|GL|EGL|X11)/|<gbm\.h>|<xf86drm|<drm'
-bad=0
-
-rank() { # the position of a layer in $order, or nothing
-  i=0
-  for l in $order; do
-    [ "$l" = "$1" ] && { echo $i; return; }
-    i=$((i + 1))
-  done
-}
-layer_of() { echo "$1" | sed -n 's|^src/\([^/]*\)/.*|\1|p'; }
-# lixel's own headers a file includes, as paths (a name no layer has is reported)
-own_includes() { sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$1"; }
-where() { ls src/*/"$1" 2>/dev/null | head -n 1; }
-
-for f in src/*/*.c src/*/*.h; do
-  l=$(layer_of "$f")
-  r=$(rank "$l")
-  if [ -z "$r" ]; then
-    echo "$f: in src/$l/, which is no layer ($order)"
-    bad=1
-    continue
-  fi
-  for h in $(own_includes "$f"); do
-    p=$(where "$h")
-    [ -n "$p" ] || continue # generated in BUILD (none are included today)
-    hl=$(layer_of "$p")
-    hr=$(rank "$hl")
-    if [ "$hr" -gt "$r" ]; then
-      echo "$f: includes $p, of layer $hl, above its own ($l)"
-      bad=1
-    fi
-  done
-done
-
-# Headers that reach a GL-side system header, found by repeating until nothing changes.
-tainted=""
-changed=1
-while [ $changed -eq 1 ]; do
-  changed=0
-  for h in src/*/*.h; do
-    case " $tainted " in *" $h "*) continue ;; esac
-    hit=""
-    grep -Eq "^[[:space:]]*#[[:space:]]*include[[:space:]]*($gl_headers)" "$h" && hit=1
-    for i in $(own_includes "$h"); do
-      p=$(where "$i")
-      case " $tainted " in *" $p "*) hit=1 ;; esac
-    done
-    if [ -n "$hit" ]; then
-      tainted="$tainted $h"
-      changed=1
-    fi
-  done
-done
-for f in "$@"; do
-  if grep -Eq "^[[:space:]]*#[[:space:]]*include[[:space:]]*($gl_headers)" "$f"; then
-    echo "$f: GL-free (CORE_SRC), yet includes $(grep -Eo "($gl_headers)[^>]*>?" "$f" | head -n 1)"
-    bad=1
-  fi
-  for i in $(own_includes "$f"); do
-    p=$(where "$i")
-    case " $tainted " in *" $p "*)
-      echo "$f: GL-free (CORE_SRC), yet includes $p, which reaches a GL, EGL, X11 or DRM header"
-      bad=1 ;;
-    esac
-  done
-done
-exit $bad
+core=" $* "
+# shellcheck disable=SC2046 # the file names have no spaces (src/LAYER/NAME)
+exec awk -v order="base geom scene shadow measure gl platform kiosk app" -v core="$core" '
+  function layer_of(p) { return (split(p, a, "/") >= 3 && a[1] == "src") ? a[2] : "" }
+  BEGIN {
+    n = split(order, o, " ")
+    for (i = 1; i <= n; i++) rank[o[i]] = i
+    gl = "^<(GLES2|GLES3|GL|EGL|X11)/|^<gbm\\.h>|^<xf86drm|^<drm"
+  }
+  FNR == 1 {
+    files[++nf] = FILENAME
+    k = split(FILENAME, parts, "/"); base = parts[k]
+    if (!(base in where)) where[base] = FILENAME # the first of a name, as ls src/*/NAME gives
+  }
+  /^[ \t]*#[ \t]*include[ \t]*"/ {
+    h = $0; sub(/^[^"]*"/, "", h); sub(/".*/, "", h)
+    inc[FILENAME] = inc[FILENAME] " " h
+  }
+  /^[ \t]*#[ \t]*include[ \t]*</ {
+    h = $0; sub(/^[^<]*/, "", h)
+    if (h ~ gl) { sys_gl[FILENAME] = 1; if (!(FILENAME in first_gl)) { first_gl[FILENAME] = h } }
+  }
+  END {
+    bad = 0
+    for (i = 1; i <= nf; i++) {
+      f = files[i]; l = layer_of(f)
+      if (!(l in rank)) { printf "%s: in src/%s/, which is no layer (%s)\n", f, l, order; bad = 1; continue }
+      m = split(inc[f], hs, " ")
+      for (j = 1; j <= m; j++) {
+        if (!(hs[j] in where)) continue # generated in BUILD (none are included today)
+        p = where[hs[j]]; hl = layer_of(p)
+        if (rank[hl] > rank[l]) { printf "%s: includes %s, of layer %s, above its own (%s)\n", f, p, hl, l; bad = 1 }
+      }
+    }
+    # headers that reach a GL-side system header, repeated until nothing changes
+    do {
+      changed = 0
+      for (i = 1; i <= nf; i++) {
+        f = files[i]
+        if (f !~ /\.h$/ || (f in tainted)) continue
+        hit = (f in sys_gl)
+        m = split(inc[f], hs, " ")
+        for (j = 1; j <= m; j++) if ((hs[j] in where) && (where[hs[j]] in tainted)) hit = 1
+        if (hit) { tainted[f] = 1; changed = 1 }
+      }
+    } while (changed)
+    for (i = 1; i <= nf; i++) {
+      f = files[i]
+      if (index(core, " " f " ") == 0) continue
+      if (f in sys_gl) {
+        g = first_gl[f]; sub(/>.*/, ">", g)
+        printf "%s: GL-free (CORE_SRC), yet includes %s\n", f, g; bad = 1
+      }
+      m = split(inc[f], hs, " ")
+      for (j = 1; j <= m; j++)
+        if ((hs[j] in where) && (where[hs[j]] in tainted)) {
+          printf "%s: GL-free (CORE_SRC), yet includes %s, which reaches a GL, EGL, X11 or DRM header\n", f, where[hs[j]]
+          bad = 1
+        }
+    }
+    exit bad
+  }
+' src/*/*.c src/*/*.h

@@ -3,6 +3,7 @@
 #include "cli_args.h"
 #include "configs.h"
 #include "json.h"
+#include "metrics.h"
 #include "method_run.h"
 #include "platform.h"
 #include "plot.h"
@@ -111,20 +112,13 @@ static bool split(char *list, const char **out, int max, int *n)
 
 static bool is_animation(const char *c) { return !strcmp(c, "animation"); }
 
-static int cmp_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
 static double median_of(const double *v, int n)
 {
 	double *t = malloc((size_t)n * sizeof(double));
 	if (!t)
 		return NAN;
 	memcpy(t, v, (size_t)n * sizeof(double));
-	qsort(t, (size_t)n, sizeof(double), cmp_double);
-	double m = n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+	double m = lx_median(t, n);
 	free(t);
 	return m;
 }

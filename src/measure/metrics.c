@@ -99,16 +99,50 @@ bool lx_homography_jacobian(const mat3 *hm, double x, double y, double *s_max, d
 	return isfinite(*s_max) && isfinite(*s_min);
 }
 
-static int cmp_double(const void *a, const void *b)
+/* The k-th smallest of v[0..n-1] (0-based), reordering v: Hoare's selection with the
+ * median of three as pivot, linear on average; the per-pixel arrays here hold up to a
+ * screen's pixels, where a full sort was most of the metrics' time. NaN-free input. */
+static double select_kth(double *v, long n, long k)
 {
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
+	long lo = 0, hi = n - 1;
+	while (hi > lo) {
+		long mid = lo + (hi - lo) / 2;
+		double a = v[lo], b = v[mid], c = v[hi];
+		double pivot = a < b ? (b < c ? b : (a < c ? c : a)) : (a < c ? a : (b < c ? c : b));
+		long i = lo, j = hi;
+		while (i <= j) {
+			while (v[i] < pivot)
+				i++;
+			while (v[j] > pivot)
+				j--;
+			if (i <= j) {
+				double t = v[i];
+				v[i++] = v[j];
+				v[j--] = t;
+			}
+		}
+		if (k <= j)
+			hi = j;
+		else if (k >= i)
+			lo = i;
+		else
+			return v[k];
+	}
+	return v[k];
 }
 
 double lx_median(double *v, long n)
 {
-	qsort(v, (size_t)n, sizeof(double), cmp_double);
-	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+	if (n <= 0)
+		return NAN;
+	double upper = select_kth(v, n, n / 2);
+	if (n % 2)
+		return upper;
+	/* the lower middle is the largest of the part select_kth left below n/2 */
+	double lower = v[0];
+	for (long i = 1; i < n / 2; i++)
+		lower = v[i] > lower ? v[i] : lower;
+	return 0.5 * (lower + upper);
 }
 
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)

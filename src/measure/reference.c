@@ -161,9 +161,12 @@ static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double 
 			t0 = t1;
 			t1 = t;
 		}
-		/* NaN from 0 * inf (ray in the slab's plane) must not reject: fmax/fmin skip NaN */
-		tmin = fmax(tmin, t0);
-		tmax = fmin(tmax, t1);
+		/* NaN from 0 * inf (ray in the slab's plane) must not reject: a comparison with NaN
+		 * is false, so the bound stays (as fmax/fmin would, without their calls) */
+		if (t0 > tmin)
+			tmin = t0;
+		if (t1 < tmax)
+			tmax = t1;
 		if (tmin > tmax)
 			return false;
 	}
