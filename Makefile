@@ -24,12 +24,22 @@ CFLAGS ?= -O2 -g
 WARN = -Wall -Wextra
 # -MMD -MP: each object's header dependencies, written beside it (BUILD/*.d)
 DEPFLAGS = -MMD -MP
-CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(shell $(PKG_CONFIG) --cflags $(GL_PKGS) 2>/dev/null)
-LIBS_GL = $(shell $(PKG_CONFIG) --libs osmesa egl libpng x11 libdrm gbm 2>/dev/null) -lpthread -lm
+# pkg_once(VAR,ARGS): pkg-config ARGS, asked when VAR is first used (after deps-check has
+# installed what is missing) and kept, not asked again for every command that uses it
+pkg_once = $(eval $(1) := $$(shell $(PKG_CONFIG) $(2) 2>/dev/null))$($(1))
+PKG_GL_CFLAGS = $(call pkg_once,PKG_GL_CFLAGS,--cflags $(GL_PKGS))
+PKG_GL_LIBS = $(call pkg_once,PKG_GL_LIBS,--libs osmesa egl libpng x11 libdrm gbm)
+PKG_X11_LIBS = $(call pkg_once,PKG_X11_LIBS,--libs x11)
+PKG_CMOCKA_CFLAGS = $(call pkg_once,PKG_CMOCKA_CFLAGS,--cflags cmocka)
+PKG_CMOCKA_LIBS = $(call pkg_once,PKG_CMOCKA_LIBS,--libs cmocka)
+PKG_GPIOD_CFLAGS = $(call pkg_once,PKG_GPIOD_CFLAGS,--cflags libgpiod)
+PKG_GPIOD_LIBS = $(call pkg_once,PKG_GPIOD_LIBS,--libs libgpiod)
+PKG_GPIOD_V2 = $(call pkg_once,PKG_GPIOD_V2,--atleast-version=2 libgpiod && echo -DLX_GPIOD_V2)
+CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(PKG_GL_CFLAGS)
+LIBS_GL = $(PKG_GL_LIBS) -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
-GPIOD_CFLAGS = $(shell $(PKG_CONFIG) --cflags libgpiod 2>/dev/null) \
-	$(shell $(PKG_CONFIG) --atleast-version=2 libgpiod 2>/dev/null && echo -DLX_GPIOD_V2)
-LIBS_GPIOD = $(shell $(PKG_CONFIG) --libs libgpiod 2>/dev/null)
+GPIOD_CFLAGS = $(PKG_GPIOD_CFLAGS) $(PKG_GPIOD_V2)
+LIBS_GPIOD = $(PKG_GPIOD_LIBS)
 
 # The layers, lowest first; a file includes headers of its own layer and of the layers
 # LAYERS_<name> lists (tools/check-layers.sh checks it; docs/lixel.md has the table).
@@ -113,15 +123,15 @@ run: deps
 # test_gpio the libgpiod button.
 GL_TESTS = test_render test_extremes
 $(BUILD)/tests/%: tests/%.c $(CORE_LIB) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
-	$(CC) $(CPPFLAGS_ALL) $(shell $(PKG_CONFIG) --cflags cmocka) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
+	$(CC) $(CPPFLAGS_ALL) $(PKG_CMOCKA_CFLAGS) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
 		$(if $(filter $(GL_TESTS),$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) \
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o,) $(CORE_LIB) \
-		$(shell $(PKG_CONFIG) --libs cmocka) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
+		$(PKG_CMOCKA_LIBS) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
 		$(if $(filter test_gpio,$*),$(LIBS_GPIOD),) -lpthread -lm -o $@
 
 # A helper of tests/kiosk_x11.sh: closes the kiosk's window from another X client.
 $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
-	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $(LDFLAGS) $< $(shell $(PKG_CONFIG) --libs x11) -o $@
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $(LDFLAGS) $< $(PKG_X11_LIBS) -o $@
 
 # The suite runs twice: as built, then under AddressSanitizer and UBSan (cheap here).
 # The libgpiod v2 path compiles against the v2 API's declarations (tests/gpiod-v2-api)
@@ -129,13 +139,14 @@ $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
 $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
-check: deps-check check-layers
-	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o
-	@sh tests/run-tests.sh $(BUILD)
-	@echo "== kiosk soak, short (make soak runs it for 10 minutes)"
-	@SOAK_SECONDS=20 sh tests/kiosk_soak.sh $(BUILD)/lixel
-	@$(MAKE) --no-print-directory asan
-	@$(MAKE) --no-print-directory fuzz-check
+# Everything built at once (gcc and clang side by side), then every test, a short kiosk
+# soak and a few seconds of each fuzzer in one pool over the CPUs. The sanitizers cover
+# the GL-free core here through the fuzzers; `make asan` runs every test under them.
+check: deps-check deps-fuzz check-layers
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window \
+		$(BUILD)/gpio_button_v2_check.o $(FUZZ_BINS)
+	@SOAK_SECONDS=$(CHECK_SOAK_SECONDS) FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" \
+		sh tests/run-tests.sh $(BUILD)
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
 soak: deps-check
@@ -144,6 +155,9 @@ soak: deps-check
 
 # make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
 CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
+# make check's kiosk soak and fuzzing, in seconds (make soak and make fuzz run longer)
+CHECK_SOAK_SECONDS ?= 10
+CHECK_FUZZ_SECONDS ?= 2
 
 # The include rules between the layers, the GL-free files' freedom from GL headers,
 # and no function over 80 lines.

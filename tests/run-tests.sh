@@ -1,40 +1,62 @@
 #!/bin/sh
-# Runs every test program of a build directory and the command-line tests, then
-# prints one closing line "N passed, N failed".
-# Usage: tests/run-tests.sh BUILD_DIR
+# Runs every test of a build directory in one pool, JOBS at a time (default: the CPUs),
+# the long ones first, each into its own log, shown in a fixed order when all are done,
+# then prints one closing line "tests: N passed, N failed". None asserts a time, so they
+# may share the CPUs. The pool holds
+#   - every test program BUILD/tests/test_*;
+#   - cli (tests/cli.sh) and kiosk (tests/kiosk_x11.sh, under Xvfb);
+#   - with SOAK_SECONDS=N, a kiosk soak of N seconds (tests/kiosk_soak.sh);
+#   - with FUZZ_SECONDS=N, N seconds of each libFuzzer harness in BUILD/fuzz (tools/fuzz.sh;
+#     FUZZ_NAMES lists them).
+# Usage: tests/run-tests.sh BUILD_DIR   (from the top of the repository)
 set -u
 build=${1:-build}
 passed=0
 failed=0
 failed_names=""
-# The test programs run JOBS at a time (default: the CPUs), the long ones first, each
-# into its own log, shown in name order when all are done; none asserts a time, so they
-# may share the CPUs.
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 1)}
 logs=$(mktemp -d "${TMPDIR:-/tmp}/lixel-tests.XXXXXX") || exit 1
-for name in test_extremes test_render test_plane; do [ -x "$build/tests/$name" ] && echo "$name"; done >"$logs/order"
-for t in "$build"/tests/test_*; do
-  [ -x "$t" ] || continue
-  grep -qx "$(basename "$t")" "$logs/order" || basename "$t" >>"$logs/order"
-done
+trap 'rm -rf "$logs"' EXIT
+
+# The job list, "KIND NAME" a line, longest first (as measured on two cores).
+{
+  for name in test_extremes test_render; do [ -x "$build/tests/$name" ] && echo "program $name"; done
+  echo "script cli"
+  echo "script kiosk"
+  [ -n "${SOAK_SECONDS:-}" ] && echo "script soak"
+  for name in ${FUZZ_SECONDS:+${FUZZ_NAMES:-}}; do echo "fuzz $name"; done
+  for t in "$build"/tests/test_*; do
+    [ -x "$t" ] || continue
+    case $(basename "$t") in test_extremes | test_render) ;; *) echo "program $(basename "$t")" ;; esac
+  done
+} >"$logs/jobs"
+
+# One job: its output into NAME.log, its exit status into NAME.rc.
 # Mesa's llvmpipe and OSMesa keep allocations of their own past exit (JIT code, context
-# caches) that LeakSanitizer cannot attribute; GL-linked programs run under ASan and UBSan
+# caches) that LeakSanitizer cannot attribute: GL-linked programs run under ASan and UBSan
 # without the leak check, the GL-free ones with it.
-xargs -P "$jobs" -I{} sh -c 'case {} in test_render|test_extremes) leaks=0 ;; *) leaks=1 ;; esac
-  ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=$leaks" "$1/tests/{}" >"$2/{}.log" 2>&1; echo $? >"$2/{}.rc"' \
-  sh "$build" "$logs" <"$logs/order"
-for rc in "$logs"/*.rc; do
-  [ -e "$rc" ] || continue
-  name=$(basename "$rc" .rc)
+run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS
+  case $kind:$name in
+    program:test_render | program:test_extremes) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$build/tests/$name" ;;
+    program:*) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=1" "$build/tests/$name" ;;
+    script:cli) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel" ;;
+    script:kiosk) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel" ;;
+    script:soak) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_soak.sh "$build/lixel" ;;
+    fuzz:*) sh tools/fuzz.sh "$build/fuzz" "$FUZZ_SECONDS" "$name" ;;
+  esac >"$logs/$name.log" 2>&1
+  echo $? >"$logs/$name.rc"'
+RUN_BUILD=$build RUN_LOGS=$logs FUZZ_SECONDS=${FUZZ_SECONDS:-} xargs -P "$jobs" -L 1 sh -c "$run_one" sh <"$logs/jobs"
+
+while read -r kind name; do
   echo "== $name"
   cat "$logs/$name.log"
-  if [ "$(cat "$rc")" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names $name"; fi
-done
-rm -rf "$logs"
-echo "== cli"
-if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names cli"; fi
-echo "== kiosk (x11 under Xvfb)"
-if ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel"; then passed=$((passed + 1)); else failed=$((failed + 1)); failed_names="$failed_names kiosk"; fi
+  if [ "$(cat "$logs/$name.rc" 2>/dev/null)" = 0 ]; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    failed_names="$failed_names $name"
+  fi
+done <"$logs/jobs"
 [ -n "$failed_names" ] && echo "failed:$failed_names"
 echo "tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

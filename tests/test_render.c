@@ -19,10 +19,36 @@
 static const char *const platforms[] = {"osmesa", "egl"};
 enum { W = 320, H = 240 };
 
+/* The platform run_path renders on, made once per test and per kind (a new context and
+ * its start-up cost for every render made most of this file's time); the teardown
+ * closes it, so tests that make platforms of their own find none current. */
+static struct lx_platform *shared;
+
+static struct lx_platform *shared_platform(const char *name)
+{
+	char err[512];
+	if (shared && strcmp(shared->name, name)) {
+		lx_platform_destroy(shared);
+		shared = NULL;
+	}
+	if (!shared && !(shared = lx_platform_create(name, err, sizeof err)))
+		fail_msg("%s: %s", name, err);
+	return shared;
+}
+
+static int close_shared_platform(void **state)
+{
+	(void)state;
+	lx_platform_destroy(shared);
+	shared = NULL;
+	return 0;
+}
+
 static void run_path(const char *platform, const char *method, const struct lx_scene *scene, bool mediump,
 		     struct lx_render_report *rep)
 {
-	struct lx_render_job job = {.method = method, .platform = platform, .scene = *scene, .width = W, .height = H,
+	struct lx_render_job job = {.method = method, .platform = platform, .platform_in_use = shared_platform(platform),
+				    .scene = *scene, .width = W, .height = H,
 				    .time = 0.4, .warmup_frames = 0, .timed_frames = 1, .measure = true,
 				    .keep_pixels = true, .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2,
 				    .depth_precision = mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO};
@@ -749,21 +775,21 @@ static void overlay_draws_text(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(uniform_matches_reference),
-		cmocka_unit_test(mediump_path_matches_reference),
-		cmocka_unit_test(plane_matches_reference_and_wins),
-		cmocka_unit_test(warps_match_reference),
-		cmocka_unit_test(paper_bad_case_is_measured),
-		cmocka_unit_test(plane_keeps_every_shadow),
-		cmocka_unit_test(none_shadows_nothing),
-		cmocka_unit_test(lookup_region_changes_no_decision),
-		cmocka_unit_test(depth_selftest_picks_the_path),
-		cmocka_unit_test(simulated_lima_keeps_the_shadows),
-		cmocka_unit_test(platforms_agree),
-		cmocka_unit_test(gpu_depth_encoding_and_guards),
-		cmocka_unit_test(unknown_platform_and_method_are_bad_input),
-		cmocka_unit_test(shader_failures_show_the_log),
-		cmocka_unit_test(overlay_draws_text),
+		cmocka_unit_test_teardown(uniform_matches_reference, close_shared_platform),
+		cmocka_unit_test_teardown(mediump_path_matches_reference, close_shared_platform),
+		cmocka_unit_test_teardown(plane_matches_reference_and_wins, close_shared_platform),
+		cmocka_unit_test_teardown(warps_match_reference, close_shared_platform),
+		cmocka_unit_test_teardown(paper_bad_case_is_measured, close_shared_platform),
+		cmocka_unit_test_teardown(plane_keeps_every_shadow, close_shared_platform),
+		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),
+		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
+		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
+		cmocka_unit_test_teardown(simulated_lima_keeps_the_shadows, close_shared_platform),
+		cmocka_unit_test_teardown(platforms_agree, close_shared_platform),
+		cmocka_unit_test_teardown(gpu_depth_encoding_and_guards, close_shared_platform),
+		cmocka_unit_test_teardown(unknown_platform_and_method_are_bad_input, close_shared_platform),
+		cmocka_unit_test_teardown(shader_failures_show_the_log, close_shared_platform),
+		cmocka_unit_test_teardown(overlay_draws_text, close_shared_platform),
 	};
 	return cmocka_run_group_tests_name("render", tests, NULL, NULL);
 }

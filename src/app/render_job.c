@@ -215,12 +215,14 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	struct lx_frame frame;
 	int status = 2;
 	if (lx_frame_setup(&frame, &job->scene, &meshes, job->time, job->width, job->height, err, errlen)) {
-		struct lx_platform *plat = lx_platform_create(job->platform, err, errlen);
+		struct lx_platform *plat = job->platform_in_use ? job->platform_in_use
+								 : lx_platform_create(job->platform, err, errlen);
 		if (plat)
 			status = render_frames(job, &meshes, &frame, rep, err, errlen);
 		else
 			status = strcmp(job->platform, "osmesa") && strcmp(job->platform, "egl") ? 2 : 1;
-		lx_platform_destroy(plat);
+		if (plat != job->platform_in_use)
+			lx_platform_destroy(plat);
 	}
 	if (status != 0 || !job->keep_pixels)
 		lx_render_report_free(rep);

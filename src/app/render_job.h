@@ -7,6 +7,8 @@
 struct lx_render_job {
 	const char *method;   /* a name lx_shadow_method_find() knows */
 	const char *platform; /* "osmesa" or "egl" */
+	struct lx_platform *platform_in_use; /* a platform already made to render with (the tests share one
+					  * per kind), left open; NULL: one made for this job */
 	struct lx_scene scene;
 	int width, height;
 	double time;
