@@ -39,9 +39,6 @@ bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, c
  * (casters not hidden): cheap enough for a live overlay. */
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 			      int plane, int stride, struct lx_plane_sampling *out);
-/* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
- * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
-bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
 
 /* The 3x3 homography from window pixel (x, y, 1) (GL window coordinates) to the map's
  * lixel coordinates (u, v, 1) for points on the plane; false when the plane is seen
