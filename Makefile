@@ -156,7 +156,7 @@ soak: deps-check
 # make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
 CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
 # make check's kiosk soak and fuzzing, in seconds (make soak and make fuzz run longer)
-CHECK_SOAK_SECONDS ?= 10
+CHECK_SOAK_SECONDS ?= 5
 CHECK_FUZZ_SECONDS ?= 2
 
 # The include rules between the layers, the GL-free files' freedom from GL headers,

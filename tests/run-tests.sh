@@ -35,7 +35,7 @@ trap 'rm -rf "$logs"' EXIT
 # Mesa's llvmpipe and OSMesa keep allocations of their own past exit (JIT code, context
 # caches) that LeakSanitizer cannot attribute: GL-linked programs run under ASan and UBSan
 # without the leak check, the GL-free ones with it.
-run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS
+run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS start=$(date +%s)
   case $kind:$name in
     program:test_render | program:test_extremes) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$build/tests/$name" ;;
     program:*) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=1" "$build/tests/$name" ;;
@@ -44,11 +44,12 @@ run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS
     script:soak) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_soak.sh "$build/lixel" ;;
     fuzz:*) sh tools/fuzz.sh "$build/fuzz" "$FUZZ_SECONDS" "$name" ;;
   esac >"$logs/$name.log" 2>&1
-  echo $? >"$logs/$name.rc"'
+  echo $? >"$logs/$name.rc"
+  echo $(($(date +%s) - start)) >"$logs/$name.secs"'
 RUN_BUILD=$build RUN_LOGS=$logs FUZZ_SECONDS=${FUZZ_SECONDS:-} xargs -P "$jobs" -L 1 sh -c "$run_one" sh <"$logs/jobs"
 
 while read -r kind name; do
-  echo "== $name"
+  echo "== $name ($(cat "$logs/$name.secs" 2>/dev/null) s)"
   cat "$logs/$name.log"
   if [ "$(cat "$logs/$name.rc" 2>/dev/null)" = 0 ]; then
     passed=$((passed + 1))
