@@ -67,7 +67,7 @@ CORE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(CORE_SRC))) $(BUILD)/boards_em
 CORE_LIB = $(BUILD)/liblixel-core.a
 GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 
-TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes
+TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run check check-layers soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
@@ -121,7 +121,7 @@ run: deps
 
 # Unit tests link the GL-free library alone; the render tests link the GL side too,
 # test_gpio the libgpiod button.
-GL_TESTS = test_render test_extremes
+GL_TESTS = test_render test_extremes test_filter
 $(BUILD)/tests/%: tests/%.c $(CORE_LIB) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(PKG_CMOCKA_CFLAGS) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
 		$(if $(filter $(GL_TESTS),$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) \
