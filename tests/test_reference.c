@@ -1,5 +1,6 @@
 #include "metrics.h"
 #include "reference.h"
+#include "soft_reference.h"
 #include "test_util.h"
 #include <math.h>
 #include <stdlib.h>
@@ -223,6 +224,118 @@ static void median_equals_sorted_middle(void **state)
 	assert_true(isnan(lx_median(v, 0)));
 }
 
+/* A thin sheet 1 m above the floor covering x < 0: its edge along z at x = 0 casts a
+ * straight penumbra. */
+static void edge_scene(struct lx_scene *s, struct lx_light light, struct lx_scene_meshes *m, struct lx_frame *f)
+{
+	char err[256];
+	const char *text = "light point 0 5 0\n"
+			   "camera eye 0.5 3 3 at 0 0 0 fov 60\n"
+			   "plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10\n"
+			   "box size 8 0.001 8 at -4 0 bounce 1 1\n";
+	if (!lx_scene_parse(text, "edge.scene", s, err, sizeof err))
+		fail_msg("%s", err);
+	s->light = light;
+	assert_true(lx_meshes_build(s, m));
+	assert_true(lx_frame_setup(f, s, m, 0, 64, 64, err, sizeof err));
+}
+
+/* The share of a unit disc on the side u > t of a chord: its segment's area over pi. */
+static double disc_beyond(double t)
+{
+	t = fmax(-1, fmin(1, t));
+	return (acos(t) - t * sqrt(1 - t * t)) / M_PI;
+}
+
+/* The soft reference across a straight edge against the exact share of the light's disc
+ * the edge leaves uncovered (a chord's segment): a directional light straight down of
+ * 2 degrees (the disc of directions, radius h tan 1 degree on the floor), and a point
+ * light 5 m up whose sphere subtends 2 degrees from the camera's target (the disc's
+ * shadow through the edge: radius r h / (5 - h) on the floor, r the sphere's radius).
+ * Each point within 0.05 (12 x 12 strata; an edge crosses about 17 of them), on average
+ * within 0.012; a point light of size 0 is the hard reference. */
+static void soft_reference_matches_a_penumbra(void **state)
+{
+	(void)state;
+	for (int directional = 0; directional < 2; directional++) {
+		struct lx_scene s;
+		struct lx_scene_meshes m;
+		struct lx_frame f;
+		struct lx_light light = {.directional = directional, .position = {0, 5, 0}, .direction = {0, -1, 0}};
+		edge_scene(&s, light, &m, &f);
+		struct lx_raycaster *rc = lx_raycaster_create(&f);
+		struct lx_area_light area, point;
+		lx_area_light_make(&f, rc, 2.0, &area);
+		lx_area_light_make(&f, rc, 0.0, &point);
+		double half = directional ? tan(M_PI / 180) : area.radius * 1.0 / (5 - 1.0), worst = 0, sum = 0;
+		int n = 0;
+		for (double x = -1.5; x <= 1.5; x += 0.05, n++) {
+			vec3 p = v3(x * half, 0, 0.3), o = v3(p.x, 0.5, p.z); /* below the sheet */
+			double t;
+			int tri = lx_raycast_first(rc, o, v3(0, -1, 0), 0, 10, &t);
+			assert_int_equal(lx_raycaster_object(rc, tri), 0);
+			/* uncovered where a sample's ray passes x > 0 at the edge's height: the disc
+			 * beyond the chord at -x / half */
+			double want = disc_beyond(-x), got = lx_soft_visibility(rc, &area, p, tri, (unsigned long long)n);
+			worst = fmax(worst, fabs(got - want)), sum += fabs(got - want);
+			double hard = lx_soft_visibility(rc, &point, p, tri, 0);
+			assert_true(hard == (lx_reference_shadowed(rc, &s.light, p, tri) ? 0.0 : 1.0));
+		}
+		print_message("%s light: penumbra half-width %.4f m, worst error %.4f, mean %.4f over %d points\n",
+			      directional ? "directional" : "point", half, worst, sum / n, n);
+		assert_true(worst < 0.05);
+		assert_true(sum / n < 0.012);
+		lx_raycaster_destroy(rc);
+		lx_meshes_free(&m);
+	}
+}
+
+/* The soft image: the same with 1 and 3 threads, 1 on the background, 0 on faces turned
+ * away from the light, and in [0, 1], with some pixels in between on the default view. */
+static void soft_image_is_deterministic_and_bounded(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 96, 72, err, sizeof err));
+	long n = 96 * 72, between = 0;
+	float *a = malloc(n * sizeof(float)), *b = malloc(n * sizeof(float));
+	int16_t *o = malloc(n * sizeof(int16_t));
+	uint8_t *sh = malloc(n);
+	assert_true(lx_soft_reference_image(&f, 3.0, a, 1));
+	assert_true(lx_soft_reference_image(&f, 3.0, b, 3));
+	assert_memory_equal(a, b, n * sizeof(float));
+	assert_true(lx_reference_image(&f, o, sh, 2));
+	for (long i = 0; i < n; i++) {
+		assert_true(a[i] >= 0 && a[i] <= 1);
+		if (o[i] < 0)
+			assert_true(a[i] == 1);
+		between += a[i] > 0 && a[i] < 1;
+	}
+	print_message("%ld of %ld pixels in a penumbra of a 3-degree light\n", between, n);
+	assert_true(between > 20);
+	free(a), free(b), free(o), free(sh);
+	lx_meshes_free(&m);
+}
+
+/* soft_error_pct over the compared pixels only, in percent. */
+static void soft_error_counts_compared_pixels(void **state)
+{
+	(void)state;
+	const int16_t ref_o[5] = {-1, 0, 0, 1, 1};
+	const uint8_t ref_s[5] = {0, 0, 0, LX_REF_EDGE_ON, 0};
+	const float ref_v[5] = {1, 0.5f, 1, 0, 0.25f};
+	const int16_t o[5] = {-1, 0, 0, 1, 2};
+	const uint8_t v[5] = {0, 255, 0, 255, 0};
+	/* compared: pixels 1 and 2 (0 is background, 3 grazed, 4 a silhouette) */
+	assert_near(lx_soft_error(ref_o, ref_s, ref_v, o, v, 5), 100 * (0.5 + 1.0) / 2, 1e-6);
+	assert_near(lx_soft_error(ref_o, ref_s, ref_v, o, v, 1), 0, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -230,6 +343,9 @@ int main(void)
 		cmocka_unit_test(bvh_depth_cap_loses_nothing),
 		cmocka_unit_test(reference_image_is_deterministic_across_threads),
 		cmocka_unit_test(mismatch_counts_each_kind),
+		cmocka_unit_test(soft_reference_matches_a_penumbra),
+		cmocka_unit_test(soft_image_is_deterministic_and_bounded),
+		cmocka_unit_test(soft_error_counts_compared_pixels),
 		cmocka_unit_test(median_equals_sorted_middle),
 		cmocka_unit_test(jacobian_of_known_homographies),
 		cmocka_unit_test(plane_homography_matches_projection),

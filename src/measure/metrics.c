@@ -33,6 +33,20 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 	}
 }
 
+double lx_soft_error(const int16_t *ref_object, const uint8_t *ref_shadow, const float *ref_visibility,
+		     const int16_t *object, const uint8_t *visibility, long pixels)
+{
+	double sum = 0;
+	long compared = 0;
+	for (long i = 0; i < pixels; i++) {
+		if (ref_object[i] == LX_NO_OBJECT || ref_object[i] != object[i] || ref_shadow[i] == LX_REF_EDGE_ON)
+			continue; /* background, silhouette, grazed: as lx_mismatch_compare */
+		compared++;
+		sum += fabs(visibility[i] / 255.0 - ref_visibility[i]);
+	}
+	return compared ? 100.0 * sum / compared : 0.0;
+}
+
 /* rows of a 3x4 "viewport" map from clip (x, y, z, w) to (px * w, py * w, w) */
 static void viewport_rows(double x0, double y0, double w, double h, double r[12])
 {

@@ -19,6 +19,15 @@ struct lx_mismatch {
 void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
 
+/* soft_error_pct: the mean of |visibility - ref_visibility| over the pixels
+ * lx_mismatch_compare compares (both see the same object, the light does not graze it),
+ * times 100; 0 when none is compared. visibility is the renderer's, 0 (in shadow) to 255
+ * (lit); ref_visibility the soft reference's share of an area light, 0 to 1. A hard
+ * shadow against a hard reference: the mismatch; against an area light it also counts
+ * how far each penumbra pixel is from either side. */
+double lx_soft_error(const int16_t *ref_object, const uint8_t *ref_shadow, const float *ref_visibility,
+		     const int16_t *object, const uint8_t *visibility, long pixels);
+
 struct lx_plane_sampling {
 	int map;         /* the map the figures are of: the plane's own map, else -1 (each pixel's serving map) */
 	long pixels;     /* pixels of the plane the figures cover */

@@ -173,8 +173,10 @@ static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double 
 	return true;
 }
 
+/* The first (or with `any`, some) triangle hit with t in (tmin, tmax), leaving out
+ * triangle `skip` and every triangle of object `skip_object` (LX_NO_OBJECT: none). */
 static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, bool any, int skip,
-		    double *tbest)
+		    int skip_object, double *tbest)
 {
 	if (!rc->ntris)
 		return -1;
@@ -188,7 +190,7 @@ static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 		if (n->count) {
 			for (int i = n->first; i < n->first + n->count; i++) {
 				double t;
-				if (i != skip && hit_tri(&rc->tris[i], o, d, tmin, tmax, &t)) {
+				if (i != skip && rc->tris[i].object != skip_object && hit_tri(&rc->tris[i], o, d, tmin, tmax, &t)) {
 					best = i;
 					tmax = t;
 					if (any)
@@ -210,14 +212,73 @@ static int traverse(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 
 int lx_raycast_first(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, double *t)
 {
-	return traverse(rc, o, d, tmin, tmax, false, -1, t);
+	return traverse(rc, o, d, tmin, tmax, false, -1, LX_NO_OBJECT, t);
 }
 
 bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip)
 {
 	double t;
-	return traverse(rc, o, d, tmin, tmax, true, skip, &t) >= 0;
+	return traverse(rc, o, d, tmin, tmax, true, skip, LX_NO_OBJECT, &t) >= 0;
 }
+
+bool lx_raycast_blocked(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip_object)
+{
+	double t;
+	return traverse(rc, o, d, tmin, tmax, true, -1, skip_object, &t) >= 0;
+}
+
+/* Whether segment a + s (b - a), s in [0, 1], meets the box [lo - r, hi + r]. */
+static bool segment_meets_box(vec3 a, vec3 inv, vec3 lo, vec3 hi, double r)
+{
+	double smin = 0, smax = 1;
+	for (int k = 0; k < 3; k++) {
+		double o = (&a.x)[k], iv = (&inv.x)[k];
+		double t0 = ((&lo.x)[k] - r - o) * iv, t1 = ((&hi.x)[k] + r - o) * iv;
+		if (t0 > t1) {
+			double t = t0;
+			t0 = t1;
+			t1 = t;
+		}
+		if (t0 > smin) /* NaN (the segment in the slab's plane) keeps the bound, as in hit_box */
+			smin = t0;
+		if (t1 < smax)
+			smax = t1;
+		if (smin > smax)
+			return false;
+	}
+	return true;
+}
+
+bool lx_raycast_near(const struct lx_raycaster *rc, vec3 a, vec3 b, double r, int skip_object)
+{
+	if (!rc->ntris)
+		return false;
+	vec3 d = v3_sub(b, a), inv = v3(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
+	int stack[LX_BVH_MAX_DEPTH + 2], sp = 0;
+	stack[sp++] = 0;
+	while (sp) {
+		const struct node *n = &rc->nodes[stack[--sp]];
+		if (!segment_meets_box(a, inv, n->lo, n->hi, r))
+			continue;
+		if (!n->count) { /* build() caps the depth: the stack holds */
+			stack[sp++] = n->first;
+			stack[sp++] = (int)(n - rc->nodes) + 1;
+			continue;
+		}
+		for (int i = n->first; i < n->first + n->count; i++) {
+			const struct tri *t = &rc->tris[i];
+			vec3 p1 = v3_add(t->a, t->e1), p2 = v3_add(t->a, t->e2);
+			if (t->object != skip_object &&
+			    segment_meets_box(a, inv, vmin(t->a, vmin(p1, p2)), vmax(t->a, vmax(p1, p2)), r))
+				return true;
+		}
+	}
+	return false;
+}
+
+vec3 lx_raycaster_normal(const struct lx_raycaster *rc, int tri) { return rc->tris[tri].n; }
+
+double lx_raycaster_scale(const struct lx_raycaster *rc) { return rc->scale; }
 
 /* The pixel's decision at p on triangle tri: LX_REF_EDGE_ON where the light grazes it
  * (|cos| of its incidence at most LX_EDGE_ON_COS: there the lit and the shadowed shading
@@ -245,49 +306,48 @@ bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light 
 	return decide(rc, light, p, tri, false);
 }
 
-struct job {
-	const struct lx_frame *f;
-	const struct lx_raycaster *rc;
-	int16_t *object;
-	uint8_t *shadowed;
-	int row0, row_step;
+int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, int x, int y, vec3 *p)
+{
+	const struct lx_view *v = &f->view;
+	double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
+	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
+	vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+	/* inside the frustum w > 0 for both */
+	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
+	vec3 d = v3_sub(pf, pn);
+	double t;
+	int tri = lx_raycast_first(rc, pn, d, 0.0, 1.0, &t);
+	if (tri >= 0)
+		*p = v3_add(pn, v3_scale(d, t));
+	return tri;
+}
+
+/* Rows row0, row0 + step, ... of an image, each by the row function. */
+struct rows {
+	void (*row)(void *ctx, int y);
+	void *ctx;
+	int row0, step, height;
 };
 
 static void *run_rows(void *arg)
 {
-	struct job *j = arg;
-	const struct lx_view *v = &j->f->view;
-	for (int y = j->row0; y < v->height; y += j->row_step)
-		for (int x = 0; x < v->width; x++) {
-			double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
-			vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
-			vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
-			/* inside the frustum w > 0 for both */
-			vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
-			vec3 d = v3_sub(pf, pn);
-			size_t i = (size_t)y * v->width + x;
-			double t;
-			int tri = lx_raycast_first(j->rc, pn, d, 0.0, 1.0, &t);
-			j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
-			j->shadowed[i] = tri >= 0 ? (uint8_t)decide(j->rc, &j->f->light, v3_add(pn, v3_scale(d, t)), tri, true) : 0;
-		}
+	struct rows *j = arg;
+	for (int y = j->row0; y < j->height; y += j->step)
+		j->row(j->ctx, y);
 	return NULL;
 }
 
-bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), void *ctx)
 {
-	struct lx_raycaster *rc = lx_raycaster_create(f);
-	if (!rc)
-		return false;
 	if (threads < 1)
 		threads = 1;
 	if (threads > 16)
 		threads = 16;
 	pthread_t th[16];
-	struct job jobs[16];
+	struct rows jobs[16];
 	int started = 0;
 	for (int i = 0; i < threads; i++) {
-		jobs[i] = (struct job){f, rc, object, shadowed, i, threads};
+		jobs[i] = (struct rows){row, ctx, i, threads, height};
 		if (i > 0 && pthread_create(&th[i], NULL, run_rows, &jobs[i]) == 0)
 			started |= 1 << i;
 	}
@@ -298,6 +358,35 @@ bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shad
 		else
 			run_rows(&jobs[i]); /* thread could not start: do its rows here */
 	}
+}
+
+struct image_job {
+	const struct lx_frame *f;
+	const struct lx_raycaster *rc;
+	int16_t *object;
+	uint8_t *shadowed;
+};
+
+static void image_row(void *ctx, int y)
+{
+	struct image_job *j = ctx;
+	int w = j->f->view.width;
+	for (int x = 0; x < w; x++) {
+		size_t i = (size_t)y * w + x;
+		vec3 p;
+		int tri = lx_reference_pixel(j->f, j->rc, x, y, &p);
+		j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
+		j->shadowed[i] = tri >= 0 ? (uint8_t)decide(j->rc, &j->f->light, p, tri, true) : 0;
+	}
+}
+
+bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+{
+	struct lx_raycaster *rc = lx_raycaster_create(f);
+	if (!rc)
+		return false;
+	struct image_job job = {f, rc, object, shadowed};
+	lx_reference_rows(f->view.height, threads, image_row, &job);
 	lx_raycaster_destroy(rc);
 	return true;
 }

@@ -25,6 +25,21 @@ bool lx_raycast_any(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, 
 int lx_raycaster_object(const struct lx_raycaster *rc, int tri);
 /* The BVH's deepest node (at most LX_BVH_MAX_DEPTH): for tests. */
 int lx_raycaster_depth(const struct lx_raycaster *rc);
+/* Whether a triangle of an object other than skip_object (LX_NO_OBJECT: any) meets
+ * o + t d, t in (tmin, tmax). */
+bool lx_raycast_blocked(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip_object);
+/* Whether a triangle of an object other than skip_object may come within r of the
+ * segment from a to b: conservative (boxes grown by r), so false means none does. */
+bool lx_raycast_near(const struct lx_raycaster *rc, vec3 a, vec3 b, double r, int skip_object);
+/* Triangle tri's unit face normal; the scene's size (its bounds' diagonal). */
+vec3 lx_raycaster_normal(const struct lx_raycaster *rc, int tri);
+double lx_raycaster_scale(const struct lx_raycaster *rc);
+/* The eye ray through pixel (x, y)'s centre (GL window coordinates): the triangle it meets
+ * first, and *p the point there, or -1. */
+int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, int x, int y, vec3 *p);
+/* row(ctx, y) for every y in [0, height), over `threads` threads (1 to 16), rows
+ * interleaved. */
+void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), void *ctx);
 /* Whether world point p on triangle tri is in shadow. */
 bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light *light, vec3 p, int tri);
 
