@@ -15,3 +15,6 @@ plane-lixels 350
 fallback-lixels 128
 uniform-lixels 512
 methods plane,uniform,lispsm,psm,tsm,none
+# VideoCore VII has fill to spare over the older boards: the button also steps through
+# a filtered lookup within each method (plane, plane+pcf2x2, uniform, ...)
+filters none,pcf2x2

@@ -33,6 +33,10 @@ static void check_board(const struct lx_board *b)
 		FUZZ_CHECK(terminated(b->methods[i], sizeof b->methods[i]));
 		FUZZ_CHECK(lx_shadow_method_find(b->methods[i]) != NULL);
 	}
+	FUZZ_CHECK(b->filter_count >= 1 && b->filter_count <= LX_FILTER_COUNT);
+	for (int i = 0; i < b->filter_count; i++) /* known, and each once */
+		for (int j = 0; j <= i; j++)
+			FUZZ_CHECK((unsigned)b->filters[i] < LX_FILTER_COUNT && (j == i || b->filters[j] != b->filters[i]));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

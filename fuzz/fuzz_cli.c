@@ -1,7 +1,7 @@
 /* libFuzzer harness: the command line's value parsers. The first byte picks one, the rest
  * is the value: a number (lx_number_real), a whole number (lx_number_whole), a point X,Y,Z
  * (lx_arg_triple), a comma list (lx_list_next), the maps' options (lx_arg_plane_option),
- * --depth-precision, and the kiosk's button overrides, which it applies as one profile
+ * --depth-precision, --filter and --light-size, and the kiosk's button overrides, which it applies as one profile
  * line (lx_board_apply). Whatever parses is in range and reads back the same; whatever
  * does not says so, in one line. */
 #include "board.h"
@@ -94,6 +94,16 @@ static void check_options(const char *v)
 	enum lx_depth_precision d = LX_DEPTH_AUTO;
 	int st = lx_arg_depth_precision("fuzz", "--depth-precision", v, &d);
 	FUZZ_CHECK(st == 0 || st == 2);
+	/* --filter and --light-size: a known filter, a size within [0, 20] degrees */
+	for (int i = 0; i < 2; i++) {
+		enum lx_filter f = LX_FILTER_NONE;
+		double size = 0.5;
+		st = lx_arg_filter("fuzz", i ? "--light-size" : "--filter", v, &f, &size);
+		FUZZ_CHECK(st == 0 || st == 2);
+		FUZZ_CHECK((unsigned)f < LX_FILTER_COUNT && isfinite(size) && size >= 0 && size <= 20);
+		if (st == 0 && i == 0)
+			FUZZ_CHECK(!strcmp(lx_filter_name(f), v));
+	}
 }
 
 /* As lixel kiosk does with --gpio-chip, --gpio-line, ...: one profile line per override,
@@ -101,10 +111,10 @@ static void check_options(const char *v)
 static void check_override(const char *v)
 {
 	static const char *const keys[] = {"gpio-chip", "gpio-line", "gpio-line-name", "gpio-active", "gpio-bias",
-					   "debounce-ms", "long-press-ms", "plane-lixels", "methods", "mode"};
+					   "debounce-ms", "long-press-ms", "plane-lixels", "methods", "mode", "filters"};
 	if (strpbrk(v, "\n\r"))
 		return;
-	for (int i = 0; i < 10; i++) {
+	for (int i = 0; i < 11; i++) {
 		struct lx_board b;
 		lx_board_defaults(&b);
 		char line[600], err[256];
@@ -120,6 +130,9 @@ static void check_override(const char *v)
 		FUZZ_CHECK(b.gpio_line >= -1 && b.gpio_line <= 1023 && b.debounce_ms >= 0 && b.debounce_ms <= 1000);
 		FUZZ_CHECK(b.long_press_ms >= 100 && b.long_press_ms <= 10000);
 		FUZZ_CHECK(b.lixels.plane_lixels >= 0 && b.lixels.plane_lixels <= 8192);
+		FUZZ_CHECK(b.filter_count >= 1 && b.filter_count <= LX_FILTER_COUNT);
+		for (int f = 0; f < b.filter_count; f++)
+			FUZZ_CHECK((unsigned)b.filters[f] < LX_FILTER_COUNT);
 	}
 }
 

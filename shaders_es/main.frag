@@ -11,6 +11,9 @@
 #ifndef LX_USE_3
 #define LX_USE_3 0
 #endif
+#ifndef LX_FILTER
+#define LX_FILTER 0
+#endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
 #else
@@ -18,7 +21,8 @@ precision mediump float;
 #endif
 // Main pass: shading and the shadow decision. With LX_DECISION defined it writes the
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255, B = 1
-// where the pixel ran a lookup (the variant reads a map).
+// where the pixel ran a lookup (the variant reads a map). With LX_FILTER (pcf.glsl), R is
+// the filtered shadow thresholded at one half and A the visibility, 1 - the filtered shadow.
 // The loader compiles one variant per set of maps a frame uses: LX_USE_i is 1 for each
 // map i that a draw reads.
 // With no maps (method none) nothing is shadowed.
@@ -31,6 +35,11 @@ uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (
                                 // empty when not rendered
 uniform float u_bias;           // in depth codes
 varying float v_facing;         // > 0 where the face is turned towards the light
+#if LX_FILTER > 0
+// --filter pcf2x2 (1) or pcf3x3 (2): several texels of the map around the point, each
+// compared, the results averaged (shaders_es/pcf.glsl)
+//!include pcf.glsl
+#endif
 #endif
 #if LX_USE_0
 varying vec4 v_shadow0;
@@ -65,43 +74,70 @@ void main()
 #if LX_MAPS > 0
 	// The first map, in order, that serves the point is read: each later one only takes
 	// over where no earlier one served (GLSL ES 1.00 has no token pasting, so each is
-	// written out). Then one fetch and the compare; a point no map serves is lit.
+	// written out). Then one fetch and the compare (LX_FILTER: several, averaged); a point no
+	// map serves is lit.
 	vec3 p = vec3(0.0), q;
 	float found = 0.0, s;
+#if LX_FILTER > 0
+	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
+#endif
 #if LX_USE_0
 	q = v_shadow0.xyz / v_shadow0.w;
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#if LX_FILTER > 0
+	box = s > 0.5 ? u_clamp[0] : box;
+#endif
 	found += s;
 #endif
 #if LX_USE_1
 	q = v_shadow1.xyz / v_shadow1.w;
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#if LX_FILTER > 0
+	box = s > 0.5 ? u_clamp[1] : box;
+#endif
 	found += s;
 #endif
 #if LX_USE_2
 	q = v_shadow2.xyz / v_shadow2.w;
 	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#if LX_FILTER > 0
+	box = s > 0.5 ? u_clamp[2] : box;
+#endif
 	found += s;
 #endif
 #if LX_USE_3
 	q = v_shadow3.xyz / v_shadow3.w;
 	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#if LX_FILTER > 0
+	box = s > 0.5 ? u_clamp[3] : box;
+#endif
 	found += s;
 #endif
 #if LX_USE_0 || LX_USE_1 || LX_USE_2 || LX_USE_3
+#if LX_FILTER > 0
+	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */
+#else
 	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
+#endif
 #endif
 	// a face turned away from the light is in its own shadow
 	shadowed = max(shadowed, float(v_facing <= 0.0));
 #endif
 #ifdef LX_DECISION
+#if LX_FILTER > 0
+	/* filtered: R the decision, shadowed where the filtered shadow exceeds one half
+	 * (where a NEAREST edge lay); A the visibility the shading uses, 1 - shadowed */
+	gl_FragColor = vec4(float(shadowed > 0.5), (u_object_id + 1.25) / 255.0,
+			    LX_USE_0 + LX_USE_1 + LX_USE_2 + LX_USE_3 > 0 ? 1.0 : 0.0, 1.0 - shadowed);
+#else
 	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_USE_0 + LX_USE_1 + LX_USE_2 + LX_USE_3 > 0 ? 1.0 : 0.0,
 			    1.0);
+#endif
 #else
 	float lambert = max(dot(normalize(v_normal), normalize(v_to_light)), 0.0);
 	vec3 c = u_color * (0.22 + 0.78 * lambert * (1.0 - shadowed));

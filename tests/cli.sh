@@ -27,7 +27,7 @@ expect_bad() {
 "$lixel" --help >"$tmp/help" 2>&1 && grep -q "render" "$tmp/help" && ok || no "lixel --help"
 "$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
 for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json \
-    --plane-lixels --fallback-lixels --uniform-lixels; do
+    --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size; do
   grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
 done
 
@@ -158,9 +158,10 @@ mkdir -p "$tmp/strips"
 if "$lixel" bench --size 64x48 --frames 2 --warmup 1 --json --csv "$tmp/b.csv" --plot "$tmp/b.png" --strips "$tmp/strips" \
     >"$tmp/bench.json" 2>"$tmp/bench.err"; then
   ok
-  for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "config": "default", "frame_ms_median"' \
+  for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "filter": "none", "config": "default", "frame_ms_median"' \
       '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
-      '"summary": \[{"method": "none", "frame_ms_median": [0-9.e-]*, "ratio_none": 1, "ratio_uniform"' '"mismatch_median"' '"mismatch_worst"'; do
+      '"summary": \[{"method": "none", "filter": "none", "frame_ms_median": [0-9.e-]*, "ratio_none": 1, "ratio_uniform"' \
+      '"mismatch_median"' '"mismatch_worst"' '"soft_error_pct"' '"soft_error_median"' '"light_size_deg": 0.5'; do
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
   grep -qiE 'nan|inf' "$tmp/bench.json" && no "bench JSON holds NaN or Infinity" || ok
@@ -229,6 +230,37 @@ expect_bad "bench unknown method" bench --methods none,teapot
 expect_bad "bench zero frames" bench --frames 0
 expect_bad "bench unknown config" bench --configs sideways
 expect_bad "bench strips into a missing directory" bench --strips "$tmp/no/such"
+
+# Filtered shadows: --filter none|pcf2x2|pcf3x3; the soft-edge error against an area
+# light of --light-size degrees with --measure; the bench's runs METHOD+FILTER
+expect_bad "unknown filter" render --filter pcf4x4 $out
+expect_bad "empty filter" render --filter '' $out
+expect_bad "filter list for render" render --filter none,pcf2x2 $out
+expect_bad "negative light size" render --light-size -1 $out
+expect_bad "light size beyond 20 degrees" render --light-size 21 $out
+expect_says "not a decimal number" "light size in words" render --light-size half $out
+expect_bad "bench unknown filter" bench --filters none,pcf5
+expect_bad "bench empty filter" bench --filters none,,pcf2x2
+expect_bad "bench trailing comma in filters" bench --filters pcf2x2,
+expect_bad "bench light size" bench --light-size 90
+for f in none pcf2x2 pcf3x3; do
+  "$lixel" render --method uniform --filter $f --measure --json --size 96x64 --frames 1 --out "$tmp/f-$f.png" \
+    >"$tmp/f.json" 2>"$tmp/stderr" && grep -q "\"filter\": \"$f\"" "$tmp/f.json" && grep -q '"soft_error_pct": [0-9]' "$tmp/f.json" &&
+    grep -q '"light_size_deg": 0.5' "$tmp/f.json" && ok || no "render --filter $f: $(cat "$tmp/f.json" "$tmp/stderr")"
+done
+cmp -s "$tmp/f-none.png" "$tmp/f-pcf3x3.png" && no "--filter pcf3x3 drew the image none drew" || ok
+"$lixel" render --filter pcf2x2 --measure --light-size 2 --size 96x64 --frames 1 --out "$tmp/f.png" >"$tmp/f.txt" 2>&1 &&
+  grep -q '^soft edge: [0-9.]*% mean visibility error (filter pcf2x2) against a 2-degree area light$' "$tmp/f.txt" && ok ||
+  no "render --filter text: $(cat "$tmp/f.txt")"
+if "$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods none,uniform --filters none,pcf3x3 --configs default \
+    --csv "$tmp/f.csv" >"$tmp/f.txt" 2>&1; then
+  grep -q '^\[uniform+pcf3x3\] config=default: FrameTime: .* soft: [0-9.]*%' "$tmp/f.txt" && grep -q '^uniform+pcf3x3 ' "$tmp/f.txt" &&
+    ! grep -q 'none+' "$tmp/f.txt" && ok || no "bench --filters text: $(cat "$tmp/f.txt")"
+  head -1 "$tmp/f.csv" | grep -q '^method,filter,config,.*,mismatch_worst,soft_error_pct' && grep -q '^uniform,pcf3x3,default,' "$tmp/f.csv" &&
+    [ "$(wc -l <"$tmp/f.csv")" -eq 4 ] && ok || no "bench --filters CSV: $(cat "$tmp/f.csv")"
+else
+  no "bench --filters: $(cat "$tmp/f.txt")"
+fi
 
 # The extremes: a correct frame or a word about what was done (exit 0), from the JSON.
 # json_num KEY FILE: the first number after "KEY":

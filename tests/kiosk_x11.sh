@@ -79,6 +79,24 @@ wait "$pid"; st=$?
 [ "$st" -eq 0 ] && ok || no "kiosk exit status $st after q: $(cat "$tmp/out")"
 grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did not: $(cat "$tmp/out")"
 
+# 2a. with filters (a board's filters key, here --filters) a space steps through the
+# method's filters first, then to the next method's first; none reads no map: one step
+"$lixel" kiosk --platform x11 --size 320x240 --methods plane,none,uniform --filters none,pcf3x3 --frames 100000 \
+  >"$tmp/out" 2>&1 &
+pid=$!
+wid=$(find_window)
+if [ -n "$wid" ]; then
+  sleep 0.2
+  for k in 1 2 3 4; do key space; sleep 0.3; done
+  key q
+fi
+for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+if kill -0 "$pid" 2>/dev/null; then kill "$pid"; no "kiosk with filters did not quit on q"; fi
+wait "$pid"; st=$?
+steps=$(grep '^method: ' "$tmp/out" | tr '\n' ' ')
+[ "$st" -eq 0 ] && [ "$steps" = "method: plane -> plane+pcf3x3 method: plane+pcf3x3 -> none method: none -> uniform method: uniform -> uniform+pcf3x3 " ] &&
+  ok || no "kiosk --filters: status $st, steps '$steps': $(cat "$tmp/out")"
+
 # 2b. SIGHUP (a closed session) stops it as SIGTERM does: status 0
 "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
 pid=$!
@@ -111,7 +129,7 @@ nl='
 
 # 5. bad input: exit 2, one line
 for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--methods ," \
-    "--size big" "--shadows" "--depth-precision fp16"; do
+    "--size big" "--shadows" "--depth-precision fp16" "--filters pcf9" "--filters none,none" "--filters ,"; do
   # shellcheck disable=SC2086
   "$lixel" kiosk --platform x11 $args >"$tmp/out" 2>"$tmp/err"; st=$?
   [ "$st" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && ok || no "kiosk $args: status $st: $(cat "$tmp/err")"

@@ -20,14 +20,14 @@ trap 'rm -rf "$logs"' EXIT
 
 # The job list, "KIND NAME" a line, longest first (as measured on two cores).
 {
-  for name in test_extremes test_render; do [ -x "$build/tests/$name" ] && echo "program $name"; done
+  for name in test_extremes test_render test_filter; do [ -x "$build/tests/$name" ] && echo "program $name"; done
   echo "script cli"
   echo "script kiosk"
   [ -n "${SOAK_SECONDS:-}" ] && echo "script soak"
   for name in ${FUZZ_SECONDS:+${FUZZ_NAMES:-}}; do echo "fuzz $name"; done
   for t in "$build"/tests/test_*; do
     [ -x "$t" ] || continue
-    case $(basename "$t") in test_extremes | test_render) ;; *) echo "program $(basename "$t")" ;; esac
+    case $(basename "$t") in test_extremes | test_render | test_filter) ;; *) echo "program $(basename "$t")" ;; esac
   done
 } >"$logs/jobs"
 
@@ -37,7 +37,7 @@ trap 'rm -rf "$logs"' EXIT
 # without the leak check, the GL-free ones with it.
 run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS start=$(date +%s)
   case $kind:$name in
-    program:test_render | program:test_extremes) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$build/tests/$name" ;;
+    program:test_render | program:test_extremes | program:test_filter) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$build/tests/$name" ;;
     program:*) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=1" "$build/tests/$name" ;;
     script:cli) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel" ;;
     script:kiosk) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel" ;;

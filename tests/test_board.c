@@ -36,6 +36,25 @@ static void built_in_profiles(void **state)
 	assert_string_equal(desk.gpio_chip, ""); /* no button: the keyboard */
 }
 
+/* The filters the button steps through: none alone unless the profile says more. */
+static void filters_key(void **state)
+{
+	(void)state;
+	struct lx_board b;
+	char err[256];
+	lx_board_defaults(&b);
+	assert_int_equal(b.filter_count, 1);
+	assert_int_equal(b.filters[0], LX_FILTER_NONE);
+	if (!lx_board_parse("filters pcf3x3,none,pcf2x2\n", "f.profile", &b, err, sizeof err))
+		fail_msg("%s", err);
+	assert_int_equal(b.filter_count, 3);
+	assert_true(b.filters[0] == LX_FILTER_PCF3X3 && b.filters[1] == LX_FILTER_NONE && b.filters[2] == LX_FILTER_PCF2X2);
+	assert_true(lx_board_load("raspberry-pi-5", &b, err, sizeof err));
+	assert_true(b.filter_count == 2 && b.filters[0] == LX_FILTER_NONE && b.filters[1] == LX_FILTER_PCF2X2);
+	assert_true(lx_board_load("mali-400", &b, err, sizeof err));
+	assert_int_equal(b.filter_count, 1); /* fill-limited: NEAREST only */
+}
+
 static void modes(void **state)
 {
 	(void)state;
@@ -73,6 +92,11 @@ static void malformed_profiles(void **state)
 		{"frobnicate 3\n", 1, "got 'frobnicate'"},
 		{"gpio-chip gpiochip0\n", 2, "expected a gpio-line"},
 		{"name\n", 1, "expected a value after 'name'"},
+		{"filters pcf4x4\n", 1, "expected filters from none, pcf2x2 or pcf3x3, got 'pcf4x4'"},
+		{"filters none,,pcf2x2\n", 1, "expected filter names separated by single commas"},
+		{"filters ,\n", 1, "expected filter names separated by single commas"},
+		{"filters pcf2x2,none,pcf2x2\n", 1, "expected each filter once, got 'pcf2x2' twice"},
+		{"filters none pcf2x2\n", 1, "got 'none pcf2x2'"},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct lx_board b;
@@ -95,6 +119,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(built_in_profiles),
 		cmocka_unit_test(modes),
+		cmocka_unit_test(filters_key),
 		cmocka_unit_test(malformed_profiles),
 	};
 	return cmocka_run_group_tests_name("board", tests, NULL, NULL);

@@ -3,6 +3,7 @@
  * texts come from the same code the loader uses (shader_text.c). */
 #include "embedded.h"
 #include "shader_text.h"
+#include "shadow_filter.h"
 #include "test_util.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +13,7 @@
 struct batch {
 	char dir[64];
 	int files;
-	char list[65536];
+	char list[196608];
 };
 
 static void write_variant(struct batch *b, const char *file, const char *defines, bool lima, const char *tag)
@@ -44,19 +45,23 @@ static void every_variant_is_glsl_es_100(void **state)
 	snprintf(b.dir, sizeof b.dir, "/tmp/lixel-glsl-XXXXXX");
 	assert_non_null(mkdtemp(b.dir));
 	b.files = 0, b.list[0] = 0;
-	char defines[320], tag[64];
+	char defines[360], tag[64];
 	/* the main pass: every count of maps, every set of them read, shaded or decision,
-	 * highp or mediump, and the fragment shader under the lima simulation */
+	 * highp or mediump, every shadow filter, and the fragment shader under the lima
+	 * simulation */
 	for (int maps = 0; maps <= 4; maps++)
 		for (unsigned mask = 0; mask < 1u << maps; mask++)
 			for (int decision = 0; decision < 2; decision++)
-				for (int mediump = 0; mediump < 2; mediump++) {
-					lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
-					snprintf(tag, sizeof tag, "main-%d-%u-%d-%d", maps, mask, decision, mediump);
-					write_variant(&b, "main.vert", defines, false, tag);
-					write_variant(&b, "main.frag", defines, false, tag);
-					write_variant(&b, "main.frag", defines, true, tag);
-				}
+				for (int mediump = 0; mediump < 2; mediump++)
+					for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
+						lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
+						strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
+						snprintf(tag, sizeof tag, "main-%d-%u-%d-%d-%d", maps, mask, decision, mediump, filter);
+						if (filter == 0) /* the vertex shader reads no filter */
+							write_variant(&b, "main.vert", defines, false, tag);
+						write_variant(&b, "main.frag", defines, false, tag);
+						write_variant(&b, "main.frag", defines, true, tag);
+					}
 	for (int mediump = 0; mediump < 2; mediump++)
 		for (int lima = 0; lima < 2; lima++) {
 			const char *d = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;

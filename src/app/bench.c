@@ -10,6 +10,7 @@
 #include "png_out.h"
 #include "out_file.h"
 #include "reference.h"
+#include "soft_reference.h"
 #include <sys/stat.h>
 #include <unistd.h>
 #include <errno.h>
@@ -19,6 +20,8 @@
 #include <string.h>
 
 #define MAX_METHODS 12
+/* a run: a method with a filter (none reads no map: once, unfiltered) */
+#define MAX_RUNS (MAX_METHODS * LX_FILTER_COUNT)
 #define MAX_CONFIGS 16
 #define ANIMATION_SAMPLES 5 /* times at which the animation's accuracy is measured */
 
@@ -28,6 +31,7 @@ enum { T_FRAME, T_SETUP, T_SHADOW, T_MAIN, T_KINDS };
 struct row {
 	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us, shadow_ms, main_ms;
 	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
+	double soft_pct; /* soft_error_pct, the same */
 	double lookup_pct; /* share of the image's pixels that ran a shadow lookup (the first sample) */
 	double mismatch_worst;
 	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
@@ -38,16 +42,21 @@ struct bench {
 	int width, height, frames, warmup;
 	const char *platform, *csv, *plot, *strips;
 	bool json;
-	int nm, nc;
-	const char *methods[MAX_METHODS];
+	int nm, nc; /* runs, configurations */
+	const char *methods[MAX_RUNS];     /* each run's method spec */
+	enum lx_filter filters[MAX_RUNS];  /* and its shadow filter */
+	char labels[MAX_RUNS][80];         /* "uniform", "uniform+pcf2x2": the text, plot and strips */
+	int nf;
+	enum lx_filter filter_list[LX_FILTER_COUNT]; /* --filters */
+	double light_size_deg;                      /* the soft reference's area light */
 	struct lx_method_options options; /* the plane maps' options (each method may add its own: plane/square) */
 	enum lx_depth_precision depth_precision;
 	struct lx_depth_choice depth; /* the path every method's run took (one driver, one choice) */
 	const char *configs[MAX_CONFIGS];
 	struct lx_scene scene;
-	struct row rows[MAX_METHODS][MAX_CONFIGS];
-	double *all[MAX_METHODS][T_KINDS]; /* every timed frame of a method over all configurations */
-	int nframes[MAX_METHODS];
+	struct row rows[MAX_RUNS][MAX_CONFIGS];
+	double *all[MAX_RUNS][T_KINDS]; /* every timed frame of a run over all configurations */
+	int nframes[MAX_RUNS];
 };
 
 static void usage(FILE *f)
@@ -56,12 +65,15 @@ static void usage(FILE *f)
 		   "                   [--platform osmesa|egl] [--scene NAME|FILE] [--csv FILE] [--plot FILE.png]\n"
 		   "                   [--strips DIR] [--json] [--region-shape S] [--budget-split S]\n"
 		   "                   [--plane-max-lpp X] [--lookup-region R] [--depth-precision P]\n"
+		   "                   [--filters LIST] [--light-size DEG]\n"
 		   "\n"
 		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
 		   "(glFinish after the shadow passes and after the main pass; the methods interleaved\n"
 		   "frame by frame in a fresh order each frame, so that they share the machine's noise\n"
 		   "and the order of --methods does not matter), then the\n"
-		   "accuracy against the exact reference. Prints a line per method and configuration,\n"
+		   "accuracy against the exact reference (the mismatch of the shadow decision, and the\n"
+		   "soft-edge error of the visibility against a small area light). Prints a line per\n"
+		   "method, filter and configuration,\n"
 		   "then a summary per method: medians of the frame, its shadow passes and its main\n"
 		   "pass, with ratios to no shadows and to uniform. Run with LP_NUM_THREADS=1 to stand\n"
 		   "in for a fill-limited board GPU.\n"
@@ -77,6 +89,10 @@ static void usage(FILE *f)
 		   "                   per plane), plane/uncapped; combined freely (plane/shared/lpp1)\n"
 		   "  --region-shape, --budget-split, --plane-max-lpp: as in lixel render --help,\n"
 		   "                   for every plane method of the run\n"
+		   "  --filters LIST   shadow filters each method runs with, comma-separated, from none,\n"
+		   "                   pcf2x2 and pcf3x3 (default none; see lixel render --help); a run\n"
+		   "                   is named METHOD+FILTER, or METHOD for none\n"
+		   "  --light-size DEG the soft-edge error's area light, as in lixel render --help\n"
 		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
 		   "  --csv FILE       every row as CSV\n"
@@ -132,8 +148,9 @@ static void config_scene(const struct bench *b, const char *config, struct lx_sc
 
 /* The scratch images of a configuration's accuracy and strips. */
 struct pixels {
-	uint8_t *rgba, *sh, *ref_sh;
+	uint8_t *rgba, *sh, *ref_sh, *vis;
 	int16_t *obj, *ref_obj;
+	float *ref_vis; /* the soft reference */
 };
 
 /* A fresh order of the methods for each frame (a fixed sequence, so runs repeat): no
@@ -158,7 +175,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 	for (int i = 0; i < b->warmup + b->frames; i++) {
 		if (!lx_frame_setup(frame, scene, meshes, anim ? i / 30.0 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		int order[MAX_METHODS];
+		int order[MAX_RUNS];
 		shuffled(b->nm, &seq, order);
 		for (int k = 0; k < b->nm; k++) {
 			int m = order[k];
@@ -233,9 +250,11 @@ static void time_rows(struct bench *b, int ci, const double *times)
 
 /* One method's accuracy at one sampled time, against the reference in px. */
 static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_method_run *run,
-			   const struct lx_frame *frame, const struct pixels *px, double mis[3])
+			   const struct lx_frame *frame, const struct pixels *px, double mis[4])
 {
-	long looked = lx_method_run_decision(run, frame, px->rgba, px->obj, px->sh);
+	long looked = lx_method_run_decision(run, frame, px->rgba, px->obj, px->sh), n = (long)b->width * b->height;
+	lx_decision_visibility(px->rgba, n, run->filter, px->vis);
+	mis[3] = lx_soft_error(px->ref_obj, px->ref_sh, px->ref_vis, px->obj, px->vis, n);
 	struct row *rw = &b->rows[m][ci];
 	if (sidx == 0)
 		rw->lookup_pct = 100.0 * looked / ((double)b->width * b->height);
@@ -257,20 +276,21 @@ static int measure_config(struct bench *b, int ci, const struct lx_scene *scene,
 			  const struct lx_scene_meshes *meshes, const struct pixels *px, char *err, size_t errlen)
 {
 	int samples = anim ? ANIMATION_SAMPLES : 1;
-	double mis[MAX_METHODS][3][ANIMATION_SAMPLES];
+	double mis[MAX_RUNS][4][ANIMATION_SAMPLES];
 	struct lx_frame frame;
 	for (int sidx = 0; sidx < samples; sidx++) {
 		if (!lx_frame_setup(&frame, scene, meshes, anim ? sidx * 0.6 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		if (!lx_reference_image(&frame, px->ref_obj, px->ref_sh, 2)) {
+		if (!lx_reference_image(&frame, px->ref_obj, px->ref_sh, 2) ||
+		    !lx_soft_reference_image(&frame, b->light_size_deg, px->ref_vis, 2)) {
 			snprintf(err, errlen, "out of memory for the reference image");
 			return 1;
 		}
 		for (int m = 0; m < b->nm; m++) {
-			double v[3];
+			double v[4];
 			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
 			measure_method(b, ci, m, sidx, &runs[m], &frame, px, v);
-			for (int q = 0; q < 3; q++)
+			for (int q = 0; q < 4; q++)
 				mis[m][q][sidx] = v[q];
 		}
 	}
@@ -279,6 +299,7 @@ static int measure_config(struct bench *b, int ci, const struct lx_scene *scene,
 		r->mismatch_pct = median_of(mis[m][0], samples);
 		r->false_pct = median_of(mis[m][1], samples);
 		r->missing_pct = median_of(mis[m][2], samples);
+		r->soft_pct = median_of(mis[m][3], samples);
 		r->mismatch_worst = 0;
 		for (int k = 0; k < samples; k++)
 			r->mismatch_worst = fmax(r->mismatch_worst, mis[m][0][k]);
@@ -309,73 +330,120 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 	return st ? st : measure_config(b, ci, &scene, anim, runs, meshes, px, err, errlen);
 }
 
+/* The run labelled name ("uniform": uniform unfiltered), or -1. */
 static int method_index(const struct bench *b, const char *name)
 {
 	for (int m = 0; m < b->nm; m++)
-		if (!strcmp(b->methods[m], name))
+		if (!strcmp(b->labels[m], name))
 			return m;
 	return -1;
 }
 
-static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
+/* One line per run and configuration, glmark2's way. */
+static void print_rows(const struct bench *b)
 {
-	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s, depth %s (self-test %s)\n", b->width,
-	       b->height, b->frames, b->warmup, b->platform, caps->renderer, b->depth.path, b->depth.selftest);
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
 			printf("[%s] config=%s: FrameTime: %.3f ms (%.3f-%.3f) shadow: %.3f ms main: %.3f ms setup: %.1f us "
-			       "lookups: %.2f%% mismatch: %.4f%% (false %.4f%%, missing %.4f%%)",
-			       b->methods[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms,
-			       r->main_ms, r->setup_us, r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct);
+			       "lookups: %.2f%% mismatch: %.4f%% (false %.4f%%, missing %.4f%%) soft: %.4f%%",
+			       b->labels[m], b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms,
+			       r->main_ms, r->setup_us, r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct, r->soft_pct);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (!isnan(r->m_max[p]))
 					printf(" %s: m_max %.3g lpp %.3g used %.0f", b->scene.planes[p].name, r->m_max[p], r->lpp[p],
 					       r->used[p]);
 			printf("\n");
 		}
+}
+
+/* A run's figures over every configuration: medians of its configurations' rows (the
+ * frame times over every frame), the worst mismatch and m_max per plane. */
+struct summary {
+	double frame_ms, lo, hi, mismatch, worst, lookups, soft, beyond, m_max[2];
+};
+
+static void summarize(const struct bench *b, int m, int uni, struct summary *s)
+{
+	double mis[MAX_CONFIGS], looked[MAX_CONFIGS], soft[MAX_CONFIGS];
+	*s = (struct summary){.frame_ms = median_of(b->all[m][T_FRAME], b->nframes[m]), .lo = INFINITY,
+			      .beyond = uni >= 0 ? -INFINITY : NAN, .m_max = {NAN, NAN}};
+	for (int k = 0; k < b->nframes[m]; k++)
+		s->lo = fmin(s->lo, b->all[m][T_FRAME][k]), s->hi = fmax(s->hi, b->all[m][T_FRAME][k]);
+	for (int c = 0; c < b->nc; c++) {
+		const struct row *r = &b->rows[m][c];
+		mis[c] = r->mismatch_pct, s->worst = fmax(s->worst, r->mismatch_worst);
+		looked[c] = r->lookup_pct, soft[c] = r->soft_pct;
+		/* the most this run's mismatch exceeds uniform's on one configuration */
+		if (uni >= 0)
+			s->beyond = fmax(s->beyond, r->mismatch_pct - b->rows[uni][c].mismatch_pct);
+		for (int p = 0; p < b->scene.plane_count && p < 2; p++)
+			if (!isnan(r->m_max[p]))
+				s->m_max[p] = isnan(s->m_max[p]) ? r->m_max[p] : fmax(s->m_max[p], r->m_max[p]);
+	}
+	s->mismatch = median_of(mis, b->nc), s->lookups = median_of(looked, b->nc), s->soft = median_of(soft, b->nc);
+}
+
+static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
+{
+	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s, depth %s (self-test %s)\n", b->width,
+	       b->height, b->frames, b->warmup, b->platform, caps->renderer, b->depth.path, b->depth.selftest);
+	print_rows(b);
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
 	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
-	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %8s %10s %9s %9s", "method", "frame ms", "(min-max)", "/none",
-	       "/uniform", "shadow ms", "main ms", "lookups%", "setup us", "mismatch%", "worst%", "-uniform");
+	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %8s %10s %9s %9s %8s", "method", "frame ms", "(min-max)", "/none",
+	       "/uniform", "shadow ms", "main ms", "lookups%", "setup us", "mismatch%", "worst%", "-uniform", "soft%");
 	for (int p = 0; p < b->scene.plane_count && p < 2; p++)
 		printf(" %8s", b->scene.planes[p].name);
 	printf("\n");
 	for (int m = 0; m < b->nm; m++) {
-		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), lo = INFINITY, hi = 0, mis[MAX_CONFIGS], worst = 0;
-		double looked[MAX_CONFIGS];
-		for (int k = 0; k < b->nframes[m]; k++)
-			lo = fmin(lo, b->all[m][T_FRAME][k]), hi = fmax(hi, b->all[m][T_FRAME][k]);
-		for (int c = 0; c < b->nc; c++) {
-			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
-			looked[c] = b->rows[m][c].lookup_pct;
-		}
+		struct summary s;
+		summarize(b, m, uni, &s);
 		char range[40];
-		snprintf(range, sizeof range, "(%.2f-%.2f)", lo, hi);
-		double beyond = -INFINITY; /* the most this method's mismatch exceeds uniform's on one configuration */
-		for (int c = 0; uni >= 0 && c < b->nc; c++)
-			beyond = fmax(beyond, b->rows[m][c].mismatch_pct - b->rows[uni][c].mismatch_pct);
-		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.2f %8.1f %10.4f %9.4f %9.4f", b->methods[m], med, range,
-		       med / none_ms, med / uni_ms, median_of(b->all[m][T_SHADOW], b->nframes[m]),
-		       median_of(b->all[m][T_MAIN], b->nframes[m]), median_of(looked, b->nc),
-		       median_of(b->all[m][T_SETUP], b->nframes[m]), median_of(mis, b->nc), worst, uni >= 0 ? beyond : NAN);
-		for (int p = 0; p < b->scene.plane_count && p < 2; p++) {
-			double w = NAN;
-			for (int c = 0; c < b->nc; c++)
-				if (!isnan(b->rows[m][c].m_max[p]))
-					w = isnan(w) ? b->rows[m][c].m_max[p] : fmax(w, b->rows[m][c].m_max[p]);
-			if (isnan(w))
+		snprintf(range, sizeof range, "(%.2f-%.2f)", s.lo, s.hi);
+		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.2f %8.1f %10.4f %9.4f %9.4f %8.4f", b->labels[m],
+		       s.frame_ms, range, s.frame_ms / none_ms, s.frame_ms / uni_ms,
+		       median_of(b->all[m][T_SHADOW], b->nframes[m]), median_of(b->all[m][T_MAIN], b->nframes[m]), s.lookups,
+		       median_of(b->all[m][T_SETUP], b->nframes[m]), s.mismatch, s.worst, s.beyond, s.soft);
+		for (int p = 0; p < b->scene.plane_count && p < 2; p++)
+			if (isnan(s.m_max[p]))
 				printf(" %8s", "-");
 			else
-				printf(" %8.3g", w);
-		}
+				printf(" %8.3g", s.m_max[p]);
 		printf("\n");
 	}
 	printf("(-uniform: the most a method's mismatch exceeds uniform's on one configuration, in percentage\n"
 	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels;\n"
 	       " shadow ms and main ms: medians of the shadow passes and of the main pass, apart; lookups%%:\n"
-	       " the median share of the pixels that ran a shadow lookup)\n");
+	       " the median share of the pixels that ran a shadow lookup; soft%%: the median soft-edge error,\n"
+	       " the mean |visibility - a %.3g-degree area light's| in percent)\n",
+	       b->light_size_deg);
+}
+
+/* One result object: a run on a configuration. */
+static void json_row(struct lx_json *j, const struct bench *b, int m, int c)
+{
+	const struct row *r = &b->rows[m][c];
+	lx_json_object(j);
+	lx_json_key(j, "method"), lx_json_string(j, b->methods[m]);
+	lx_json_key(j, "filter"), lx_json_string(j, lx_filter_name(b->filters[m]));
+	lx_json_key(j, "config"), lx_json_string(j, b->configs[c]);
+	lx_json_key(j, "frame_ms_median"), lx_json_number(j, r->frame_ms_median);
+	lx_json_key(j, "frame_ms_min"), lx_json_number(j, r->frame_ms_min);
+	lx_json_key(j, "frame_ms_max"), lx_json_number(j, r->frame_ms_max);
+	lx_json_key(j, "shadow_ms_median"), lx_json_number(j, r->shadow_ms);
+	lx_json_key(j, "main_ms_median"), lx_json_number(j, r->main_ms);
+	lx_json_key(j, "setup_us"), lx_json_number(j, r->setup_us);
+	lx_json_key(j, "lookup_pct"), lx_json_number(j, r->lookup_pct);
+	lx_json_key(j, "mismatch_pct"), lx_json_number(j, r->mismatch_pct);
+	lx_json_key(j, "soft_error_pct"), lx_json_number(j, r->soft_pct);
+	lx_json_key(j, "m_max"), lx_json_object(j);
+	for (int p = 0; p < b->scene.plane_count; p++)
+		if (!isnan(r->m_max[p]))
+			lx_json_key(j, b->scene.planes[p].name), lx_json_number(j, r->m_max[p]);
+	lx_json_end(j);
+	lx_json_end(j);
 }
 
 static void print_json(const struct bench *b)
@@ -386,54 +454,36 @@ static void print_json(const struct bench *b)
 	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, b->width), lx_json_int(&j, b->height), lx_json_end(&j);
 	lx_json_key(&j, "depth_path"), lx_json_string(&j, b->depth.path);
 	lx_json_key(&j, "depth_selftest"), lx_json_string(&j, b->depth.selftest);
+	lx_json_key(&j, "light_size_deg"), lx_json_number(&j, b->light_size_deg);
 	lx_json_key(&j, "configs"), lx_json_array(&j);
 	for (int c = 0; c < b->nc; c++)
 		lx_json_string(&j, b->configs[c]);
 	lx_json_end(&j);
 	lx_json_key(&j, "results"), lx_json_array(&j);
 	for (int c = 0; c < b->nc; c++)
-		for (int m = 0; m < b->nm; m++) {
-			const struct row *r = &b->rows[m][c];
-			lx_json_object(&j);
-			lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
-			lx_json_key(&j, "config"), lx_json_string(&j, b->configs[c]);
-			lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, r->frame_ms_median);
-			lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
-			lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
-			lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, r->shadow_ms);
-			lx_json_key(&j, "main_ms_median"), lx_json_number(&j, r->main_ms);
-			lx_json_key(&j, "setup_us"), lx_json_number(&j, r->setup_us);
-			lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
-			lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, r->mismatch_pct);
-			lx_json_key(&j, "m_max"), lx_json_object(&j);
-			for (int p = 0; p < b->scene.plane_count; p++)
-				if (!isnan(r->m_max[p]))
-					lx_json_key(&j, b->scene.planes[p].name), lx_json_number(&j, r->m_max[p]);
-			lx_json_end(&j);
-			lx_json_end(&j);
-		}
+		for (int m = 0; m < b->nm; m++)
+			json_row(&j, b, m, c);
 	lx_json_end(&j);
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
 	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
 	lx_json_key(&j, "summary"), lx_json_array(&j);
 	for (int m = 0; m < b->nm; m++) {
-		double med = median_of(b->all[m][T_FRAME], b->nframes[m]), mis[MAX_CONFIGS], worst = 0, looked[MAX_CONFIGS];
-		for (int c = 0; c < b->nc; c++) {
-			mis[c] = b->rows[m][c].mismatch_pct, worst = fmax(worst, b->rows[m][c].mismatch_worst);
-			looked[c] = b->rows[m][c].lookup_pct;
-		}
+		struct summary s;
+		summarize(b, m, uni, &s);
 		lx_json_object(&j);
 		lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
-		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, med);
-		lx_json_key(&j, "ratio_none"), lx_json_number(&j, med / none_ms);
-		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, med / uni_ms);
+		lx_json_key(&j, "filter"), lx_json_string(&j, lx_filter_name(b->filters[m]));
+		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, s.frame_ms);
+		lx_json_key(&j, "ratio_none"), lx_json_number(&j, s.frame_ms / none_ms);
+		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, s.frame_ms / uni_ms);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
 		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
-		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, median_of(looked, b->nc));
+		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, s.lookups);
 		lx_json_key(&j, "setup_us"), lx_json_number(&j, median_of(b->all[m][T_SETUP], b->nframes[m]));
-		lx_json_key(&j, "mismatch_median"), lx_json_number(&j, median_of(mis, b->nc));
-		lx_json_key(&j, "mismatch_worst"), lx_json_number(&j, worst);
+		lx_json_key(&j, "mismatch_median"), lx_json_number(&j, s.mismatch);
+		lx_json_key(&j, "mismatch_worst"), lx_json_number(&j, s.worst);
+		lx_json_key(&j, "soft_error_median"), lx_json_number(&j, s.soft);
 		lx_json_end(&j);
 	}
 	lx_json_end(&j);
@@ -443,9 +493,9 @@ static void print_json(const struct bench *b)
 static bool csv_rows(FILE *f, void *ctx)
 {
 	const struct bench *b = ctx;
-	fprintf(f, "method,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
+	fprintf(f, "method,filter,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
 		   "lookup_pct,mismatch_pct,false_shadow_pct,"
-		   "missing_shadow_pct,mismatch_worst");
+		   "missing_shadow_pct,mismatch_worst,soft_error_pct");
 	for (int p = 0; p < b->scene.plane_count; p++)
 		fprintf(f, ",m_max_%s,lpp_%s,lixels_used_%s", b->scene.planes[p].name, b->scene.planes[p].name,
 			b->scene.planes[p].name);
@@ -453,9 +503,10 @@ static bool csv_rows(FILE *f, void *ctx)
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
-			fprintf(f, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f", b->methods[m], b->configs[c],
-				r->frame_ms_median, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us,
-				r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct, r->mismatch_worst);
+			fprintf(f, "%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f", b->methods[m],
+				lx_filter_name(b->filters[m]), b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max,
+				r->shadow_ms, r->main_ms, r->setup_us, r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct,
+				r->mismatch_worst, r->soft_pct);
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
 					fprintf(f, ",,,");
@@ -473,13 +524,13 @@ static bool write_csv(const struct bench *b, char *err, size_t errlen)
 
 static bool write_plot(const struct bench *b, char *err, size_t errlen)
 {
-	struct lx_plot_point pts[MAX_METHODS];
+	struct lx_plot_point pts[MAX_RUNS];
 	for (int m = 0; m < b->nm; m++) {
 		double mis[MAX_CONFIGS];
 		for (int c = 0; c < b->nc; c++)
 			mis[c] = b->rows[m][c].mismatch_pct;
 		pts[m] = (struct lx_plot_point){.x = median_of(b->all[m][T_FRAME], b->nframes[m]), .y = median_of(mis, b->nc),
-						.label = b->methods[m]};
+						.label = b->labels[m]};
 		lx_plot_color(m, pts[m].rgb);
 	}
 	char title[96];
@@ -489,7 +540,7 @@ static bool write_plot(const struct bench *b, char *err, size_t errlen)
 
 /* What --methods, --configs and --scene said, kept until the lists are checked. */
 struct bench_args {
-	char methods[256], configs[512];
+	char methods[256], configs[512], filters[64];
 	const char *scene;
 };
 
@@ -497,8 +548,10 @@ struct bench_args {
 static int bench_option(struct bench *b, struct bench_args *ba, const char *a, const char *v)
 {
 	int st, hz;
+	enum lx_filter unused;
 	if ((st = lx_arg_depth_precision("bench", a, v, &b->depth_precision)) >= 0 ||
-	    (st = lx_arg_plane_option("bench", a, v, &b->options)) >= 0)
+	    (st = lx_arg_plane_option("bench", a, v, &b->options)) >= 0 ||
+	    (!strcmp(a, "--light-size") && (st = lx_arg_filter("bench", a, v, &unused, &b->light_size_deg)) >= 0))
 		return st;
 	if (!strcmp(a, "--size")) {
 		if (!lx_parse_mode(v, &b->width, &b->height, &hz) || hz)
@@ -509,9 +562,9 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 		if (e)
 			return lx_arg_bad_number("bench", a, frames ? "a whole number from 1 to 10000" : "a whole number from 0 to 10000",
 						 v, e);
-	} else if (!strcmp(a, "--methods") || !strcmp(a, "--configs")) {
-		char *to = a[2] == 'm' ? ba->methods : ba->configs;
-		size_t room = a[2] == 'm' ? sizeof ba->methods : sizeof ba->configs;
+	} else if (!strcmp(a, "--methods") || !strcmp(a, "--configs") || !strcmp(a, "--filters") || !strcmp(a, "--filter")) {
+		char *to = a[2] == 'm' ? ba->methods : a[2] == 'c' ? ba->configs : ba->filters;
+		size_t room = a[2] == 'm' ? sizeof ba->methods : a[2] == 'c' ? sizeof ba->configs : sizeof ba->filters;
 		if (strlen(v) >= room)
 			return bad(a, "a shorter list", v);
 		strcpy(to, v);
@@ -537,19 +590,57 @@ static int bad_methods(const char *got)
 	return bad("--methods", expected, got);
 }
 
-/* The lists of methods and configurations split and each name checked. 0 or 2. */
+/* --filters: the names split and checked into b->filter_list. 0 or 2. */
+static int filter_list(struct bench *b, struct bench_args *ba)
+{
+	char copy[sizeof ba->filters];
+	const char *names[LX_FILTER_COUNT];
+	strcpy(copy, ba->filters);
+	if (!split(ba->filters, names, LX_FILTER_COUNT, &b->nf))
+		return bad("--filters", "a comma-separated list of filters from none, pcf2x2 and pcf3x3", copy);
+	for (int k = 0; k < b->nf; k++)
+		if (!lx_filter_parse(names[k], &b->filter_list[k]))
+			return bad("--filters", lx_filter_names(), names[k]);
+	return 0;
+}
+
+/* The runs: each method with each filter (none reads no map: it runs once, unfiltered),
+ * named METHOD or METHOD+FILTER; at most MAX_METHODS times LX_FILTER_COUNT (split caps
+ * both lists). */
+static void expand_runs(struct bench *b, const char *const *specs, int ns)
+{
+	b->nm = 0;
+	for (int m = 0; m < ns; m++) {
+		char why[200];
+		struct lx_method_options probe = b->options;
+		bool mapless = !strcmp(lx_shadow_method_spec(specs[m], &probe, why, sizeof why)->name, "none");
+		for (int k = 0; k < (mapless ? 1 : b->nf); k++) {
+			enum lx_filter f = mapless ? LX_FILTER_NONE : b->filter_list[k];
+			b->methods[b->nm] = specs[m], b->filters[b->nm] = f;
+			snprintf(b->labels[b->nm], sizeof b->labels[0], "%s%s%s", specs[m], f ? "+" : "", f ? lx_filter_name(f) : "");
+			b->nm++;
+		}
+	}
+}
+
+/* The lists of methods, filters and configurations split and each name checked. 0 or 2. */
 static int bench_lists(struct bench *b, struct bench_args *ba)
 {
 	char copy[512];
+	const char *specs[MAX_METHODS];
+	int ns, st;
+	if ((st = filter_list(b, ba)))
+		return st;
 	strcpy(copy, ba->methods);
-	if (!split(ba->methods, b->methods, MAX_METHODS, &b->nm))
+	if (!split(ba->methods, specs, MAX_METHODS, &ns))
 		return bad("--methods", "a comma-separated list of methods", copy);
-	for (int m = 0; m < b->nm; m++) {
+	for (int m = 0; m < ns; m++) {
 		struct lx_method_options probe = b->options;
 		char why[200];
-		if (!lx_shadow_method_spec(b->methods[m], &probe, why, sizeof why))
-			return bad_methods(b->methods[m]);
+		if (!lx_shadow_method_spec(specs[m], &probe, why, sizeof why))
+			return bad_methods(specs[m]);
 	}
+	expand_runs(b, specs, ns);
 	if (!ba->configs[0]) {
 		for (int c = 0; c < lx_config_count; c++)
 			b->configs[b->nc++] = lx_configs[c].name;
@@ -570,12 +661,14 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 static int bench_parse(int argc, char **argv, struct bench *b, struct bench_args *ba)
 {
 	*b = (struct bench){.width = 1024, .height = 1024, .frames = 30, .warmup = 5, .platform = "osmesa",
-			    .options = LX_METHOD_OPTIONS_DEFAULT};
+			    .options = LX_METHOD_OPTIONS_DEFAULT, .light_size_deg = LX_DEFAULT_LIGHT_SIZE_DEG};
 	*ba = (struct bench_args){0};
 	snprintf(ba->methods, sizeof ba->methods, "%s", lx_shadow_method_list());
+	snprintf(ba->filters, sizeof ba->filters, "none");
 	lx_scene_default(&b->scene);
 	static const char *const with_value[] = {"--size", "--frames", "--warmup", "--methods", "--configs", "--platform",
-						 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES};
+						 "--scene", "--csv", "--plot", "--strips", "--depth-precision", LX_PLANE_OPTION_NAMES,
+						 "--filters", "--filter", "--light-size"};
 	for (int i = 0; i < argc; i++) {
 		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -619,7 +712,8 @@ static bool bench_alloc(struct bench *b, struct pixels *px)
 	long n = (long)b->width * b->height;
 	px->rgba = malloc((size_t)n * 4), px->sh = malloc((size_t)n), px->ref_sh = malloc((size_t)n);
 	px->obj = malloc((size_t)n * sizeof(int16_t)), px->ref_obj = malloc((size_t)n * sizeof(int16_t));
-	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj;
+	px->vis = malloc((size_t)n), px->ref_vis = malloc((size_t)n * sizeof(float));
+	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj && px->vis && px->ref_vis;
 	for (int m = 0; m < b->nm; m++)
 		for (int q = 0; q < T_KINDS; q++)
 			ok &= (b->all[m][q] = malloc(sizeof(double) * (size_t)b->frames * b->nc)) != NULL;
@@ -632,14 +726,17 @@ static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, stru
 {
 	struct lx_gl_caps caps;
 	lx_gl_caps_probe(&caps);
-	for (; *ready < b->nm; ++*ready) {
-		int status = lx_method_run_init(&runs[*ready], b->methods[*ready], &b->scene, meshes, &caps, &b->options,
-						b->width, b->height, b->depth_precision, LX_DEFAULT_BIAS_CODES, false, err, errlen);
+	while (*ready < b->nm) {
+		struct lx_method_run *run = &runs[*ready];
+		int status = lx_method_run_init(run, b->methods[*ready], &b->scene, meshes, &caps, &b->options, b->width,
+						b->height, b->depth_precision, LX_DEFAULT_BIAS_CODES, false, err, errlen);
 		if (status)
 			return status;
-		b->depth = runs[*ready].depth;
-		if (*ready == 0 && b->depth.warning[0])
-			fprintf(stderr, "lixel bench: warning: %s\n", b->depth.warning);
+		if (++*ready == 1 && run->depth.warning[0])
+			fprintf(stderr, "lixel bench: warning: %s\n", run->depth.warning);
+		b->depth = run->depth;
+		if ((status = lx_method_run_set_filter(run, b->filters[*ready - 1], err, errlen)))
+			return status;
 	}
 	for (int c = 0; c < b->nc; c++) {
 		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b->nc, b->configs[c]);
@@ -673,7 +770,7 @@ int lx_bench_main(int argc, char **argv)
 		lx_meshes_free(&meshes);
 		return 1;
 	}
-	struct lx_method_run runs[MAX_METHODS];
+	static struct lx_method_run runs[MAX_RUNS]; /* large too */
 	struct pixels px = {0};
 	int ready = 0;
 	if (!bench_alloc(&b, &px)) {
@@ -688,7 +785,7 @@ int lx_bench_main(int argc, char **argv)
 	for (int m = 0; m < b.nm; m++)
 		for (int q = 0; q < T_KINDS; q++)
 			free(b.all[m][q]);
-	free(px.rgba), free(px.sh), free(px.ref_sh), free(px.obj), free(px.ref_obj);
+	free(px.rgba), free(px.sh), free(px.ref_sh), free(px.obj), free(px.ref_obj), free(px.vis), free(px.ref_vis);
 	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);
 	return status;

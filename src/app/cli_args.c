@@ -1,5 +1,6 @@
 #include "cli_args.h"
 #include "shadow_method.h"
+#include "soft_reference.h"
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
@@ -79,6 +80,20 @@ int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, 
 		return -1;
 	if (!lx_depth_precision_parse(value, out))
 		return lx_arg_bad(cmd, opt, "auto, highp or mediump", value);
+	return 0;
+}
+
+int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_filter *filter, double *light_size_deg)
+{
+	enum lx_number_error e;
+	if (!strcmp(opt, "--filter")) {
+		if (!lx_filter_parse(value, filter))
+			return lx_arg_bad(cmd, opt, lx_filter_names(), value);
+	} else if (!strcmp(opt, "--light-size")) {
+		if ((e = lx_number_real(value, 0, LX_MAX_LIGHT_SIZE_DEG, light_size_deg)))
+			return lx_arg_bad_number(cmd, opt, "degrees from 0 to 20", value, e);
+	} else
+		return -1;
 	return 0;
 }
 

@@ -36,6 +36,19 @@ int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, 
 	"                       or mediump (forced; a warning when its self-test fails)\n" \
 	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
+/* --filter none|pcf2x2|pcf3x3 and --light-size DEG (render; bench takes --light-size):
+ * 0 when opt is one of them and its value is good, 2 (after the one line) when the value
+ * is bad, -1 for another option. */
+#include "shadow_filter.h"
+int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_filter *filter, double *light_size_deg);
+#define LX_FILTER_OPTION_HELP \
+	"  --filter F           the shadow lookup: none (default: one NEAREST texel), pcf2x2 (the\n" \
+	"                       4 nearest texels' compares weighted bilinearly) or pcf3x3 (9\n" \
+	"                       texels' compares under a box two texels wide): softer edges for\n" \
+	"                       4 or 9 fetches a lookup\n" \
+	"  --light-size DEG     the area light the soft-edge error is measured against: a sphere\n" \
+	"                       (or, for a directional light, a disc of directions) of this\n" \
+	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's)\n"
 #define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \

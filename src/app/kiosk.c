@@ -37,10 +37,11 @@ static void usage(FILE *f)
 		   "                   [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
 		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
-		   "                   [--depth-precision auto|highp|mediump]\n"
+		   "                   [--depth-precision auto|highp|mediump] [--filters LIST]\n"
 		   "\n"
 		   "Shows the animated scene and switches the shadow method on a button press: a short\n"
-		   "press goes to the next method of the board's order, a long press (1 s) toggles the\n"
+		   "press goes to the next method of the board's order (or, on a board whose profile\n"
+		   "lists filters, to the method's next filter first), a long press (1 s) toggles the\n"
 		   "overlay. On a desktop (x11) the keyboard is the button: space a short press, l a\n"
 		   "long press, q or Escape quits. Prints 'method: OLD -> NEW' on each change and a\n"
 		   "status line every 5 seconds.\n"
@@ -54,6 +55,9 @@ static void usage(FILE *f)
 		   "  --frames N        stop after N frames\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
+		   "  --filters LIST    the shadow filters a press steps through within each method,\n"
+		   "                    from none, pcf2x2 and pcf3x3 (default: the board's, else none;\n"
+		   "                    the method is then shown as METHOD+FILTER)\n"
 		   "  --overlay         start with the overlay on (method, FPS, the planes' sampling)\n"
 		   "  --gpio-chip (a name, path or label), --gpio-line (an offset), --gpio-line-name\n"
 		   "  (GPIO17: found on the named chip, or on any with --gpio-chip auto),\n"
@@ -76,7 +80,7 @@ static void usage(FILE *f)
 
 /* What the command line asks for; the board profile with its overrides applied. */
 struct kiosk_args {
-	const char *platform, *scene_arg, *methods_arg;
+	const char *platform, *scene_arg, *methods_arg, *filters_arg;
 	long frames; /* -1: until stopped */
 	bool overlay;
 	int width, height;
@@ -110,6 +114,8 @@ static int kiosk_option(struct kiosk_args *k, const char *a, const char *v)
 		k->scene_arg = v;
 	else if (!strcmp(a, "--methods"))
 		k->methods_arg = v;
+	else if (!strcmp(a, "--filters"))
+		k->filters_arg = v;
 	else if (!strcmp(a, "--device")) {
 		if (strlen(v) >= sizeof b->display)
 			return bad(a, "a device path", v);
@@ -150,7 +156,7 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 	static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
 						 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
 						 "--long-press-ms", "--device", "--mode", "--plane-lixels",
-						 "--fallback-lixels", "--uniform-lixels", "--depth-precision"};
+						 "--fallback-lixels", "--uniform-lixels", "--depth-precision", "--filters"};
 	for (int i = 0; i < argc; i++) {
 		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -172,12 +178,16 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 	/* the overrides together: a --gpio-chip may come before its --gpio-line */
 	if (!lx_board_check(&k->board, "--gpio-chip", 0, err, sizeof err))
 		return bad_override(err);
-	if (k->methods_arg) {
-		if (strpbrk(k->methods_arg, "\n\r"))
-			return bad("--methods", "a value without line breaks", "(a value with a line break)");
+	/* the lists as one-line profiles, checked as the profile's are */
+	const char *lists[2][2] = {{"--methods", k->methods_arg}, {"--filters", k->filters_arg}};
+	for (int i = 0; i < 2; i++) {
+		if (!lists[i][1])
+			continue;
+		if (strpbrk(lists[i][1], "\n\r"))
+			return bad(lists[i][0], "a value without line breaks", "(a value with a line break)");
 		char line[256];
-		snprintf(line, sizeof line, "methods %s\n", k->methods_arg);
-		if (!lx_board_parse(line, "--methods", &k->board, err, sizeof err))
+		snprintf(line, sizeof line, "%s %s\n", lists[i][0] + 2, lists[i][1]);
+		if (!lx_board_parse(line, lists[i][0], &k->board, err, sizeof err))
 			return bad_override(err);
 	}
 	return 0;
@@ -192,7 +202,7 @@ struct kiosk {
 	struct lx_scene scene;
 	struct lx_scene_meshes meshes;
 	struct lx_method_run runs[LX_BOARD_MAX_METHODS];
-	int ready, current;
+	int ready, current, filter; /* the method shown, and the board's filter it runs with */
 	struct lx_gpio_button *gpio;
 	struct lx_button button;
 	struct lx_overlay *ov;
@@ -222,6 +232,20 @@ static struct lx_platform *kiosk_display(const struct kiosk_args *a)
 	return plat;
 }
 
+/* Each method set up with every filter of the board built (so that a shader error shows
+ * at start), running with the first. 0, or the status after the line. */
+static int kiosk_run_filters(struct kiosk *k, struct lx_method_run *run)
+{
+	char err[512];
+	const struct lx_board *b = &k->args->board;
+	for (int f = b->filter_count - 1; f >= 0; f--)
+		if (lx_method_run_set_filter(run, b->filters[f], err, sizeof err)) {
+			fprintf(stderr, "lixel: %s\n", err);
+			return 1;
+		}
+	return 0;
+}
+
 /* Every method set up to draw, then the banner line. 0, or the status after the line. */
 static int kiosk_methods(struct kiosk *k)
 {
@@ -238,6 +262,10 @@ static int kiosk_methods(struct kiosk *k)
 						LX_DEFAULT_BIAS_CODES, true, err, sizeof err);
 		if (status) {
 			fprintf(stderr, "lixel: %s\n", err);
+			return status;
+		}
+		if ((status = kiosk_run_filters(k, &k->runs[k->ready]))) {
+			k->ready++; /* set up: freed with the others */
 			return status;
 		}
 	}
@@ -275,6 +303,17 @@ static void kiosk_inputs(struct kiosk *k)
 		printf("lixel kiosk: warning: no overlay: %s\n", err);
 }
 
+/* What the kiosk shows as the method: its name, with +FILTER when it runs filtered (never
+ * for none, which reads no map). */
+static const char *shown(const struct kiosk *k, char *out, size_t len)
+{
+	const struct lx_board *b = &k->args->board;
+	const char *m = b->methods[k->current];
+	enum lx_filter f = strcmp(m, "none") ? b->filters[k->filter] : LX_FILTER_NONE;
+	snprintf(out, len, "%s%s%s", m, f ? "+" : "", f ? lx_filter_name(f) : "");
+	return out;
+}
+
 /* The overlay's text once a second (the method, the frame rate, each plane's figures),
  * drawn every frame. */
 static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
@@ -283,7 +322,8 @@ static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
 		const struct lx_method_run *run = &k->runs[k->current];
 		k->text_time = t;
 		k->nlines = 0;
-		snprintf(k->text[k->nlines++], sizeof k->text[0], "lixel  %s", k->args->board.methods[k->current]);
+		char name[40];
+		snprintf(k->text[k->nlines++], sizeof k->text[0], "lixel  %s", shown(k, name, sizeof name));
 		snprintf(k->text[k->nlines++], sizeof k->text[0], "%.1f fps", k->fps);
 		for (int p = 0; p < k->scene.plane_count && k->nlines < 2 + LX_MAX_PLANES; p++) {
 			struct lx_plane_sampling ps;
@@ -326,15 +366,33 @@ static void kiosk_presses(struct kiosk *k, int *shorts, int *longs)
 	*shorts += e == LX_BUTTON_SHORT, *longs += e == LX_BUTTON_LONG;
 }
 
-/* A short press: the next method; a long one: the overlay on or off. */
+/* The button's cycle one step on: the method's next filter, else the next method with
+ * the board's first filter (none, which reads no map, is one step). */
+static void kiosk_step(struct kiosk *k)
+{
+	const struct lx_board *b = &k->args->board;
+	char err[512];
+	if (strcmp(b->methods[k->current], "none") && k->filter + 1 < b->filter_count)
+		k->filter++;
+	else
+		k->current = (k->current + 1) % b->method_count, k->filter = 0;
+	if (lx_method_run_set_filter(&k->runs[k->current], b->filters[k->filter], err, sizeof err))
+		printf("lixel kiosk: warning: %s\n", err); /* cannot happen: built at start */
+}
+
+/* A short press: the next method (or filter); a long one: the overlay on or off. */
 static void kiosk_act(struct kiosk *k, int shorts, int longs)
 {
 	const struct lx_board *b = &k->args->board;
-	for (int i = 0; i < shorts && b->method_count > 1; i++) {
-		int next = (k->current + 1) % b->method_count;
-		printf("method: %s -> %s\n", b->methods[k->current], b->methods[next]);
+	int steps = 0; /* the cycle's length */
+	for (int m = 0; m < b->method_count; m++)
+		steps += strcmp(b->methods[m], "none") ? b->filter_count : 1;
+	for (int i = 0; i < shorts && steps > 1; i++) {
+		char from[40], to[40];
+		shown(k, from, sizeof from);
+		kiosk_step(k);
+		printf("method: %s -> %s\n", from, shown(k, to, sizeof to));
 		fflush(stdout);
-		k->current = next;
 	}
 	for (int i = 0; i < longs; i++) {
 		k->args->overlay = !k->args->overlay;
@@ -350,7 +408,8 @@ static void kiosk_status(struct kiosk *k, bool final)
 {
 	int64_t now = now_ns();
 	double secs = (now - k->window_start) / 1e9;
-	const char *method = k->args->board.methods[k->current];
+	char method[40];
+	shown(k, method, sizeof method);
 	if (final) {
 		if (k->window_frames && secs > 0)
 			printf("%ld frames in %.1f s = %.1f FPS (%s)\n", k->window_frames, secs, k->window_frames / secs, method);

@@ -8,6 +8,7 @@
 #include "out_file.h"
 #include "platform.h"
 #include "render_job.h"
+#include "soft_reference.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,7 +44,9 @@ static void render_usage(FILE *f)
 		"                       --measure): missing shadow red, false shadow blue, silhouette yellow\n"
 		"  --atlas-out FILE.png the shadow atlas: depth as grey (near dark, far white), guard bands red\n"
 		"  --measure            compare with the exact reference ray caster and compute the\n"
-		"                       sampling figures of each plane of interest\n"
+		"                       sampling figures of each plane of interest, and the soft-edge\n"
+		"                       error against a small area light (soft_error_pct)\n"
+		LX_FILTER_OPTION_HELP
 		"  --json               print one JSON object on stdout instead of text\n"
 		"  --frames N           timed frames after 3 warm-up frames (default 10)\n"
 		"  --bias CODES         depth bias in 24-bit depth codes (default %g)\n"
@@ -112,6 +115,9 @@ static void print_text(const struct lx_render_report *r, const char *out)
 		if (m->edge_on)
 			printf("; %ld pixels the light grazes, not compared", m->edge_on);
 		printf("\n");
+		if (r->soft_measured)
+			printf("soft edge: %.4f%% mean visibility error (filter %s) against a %.3g-degree area light\n",
+			       r->soft_error_pct, r->filter, r->light_size_deg);
 		for (int p = 0; p < r->plane_count; p++) {
 			const struct lx_plane_report *pr = &r->planes[p];
 			if (!pr->present)
@@ -163,6 +169,7 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_begin(&j, stdout);
 	lx_json_object(&j);
 	lx_json_key(&j, "method"), lx_json_string(&j, r->method);
+	lx_json_key(&j, "filter"), lx_json_string(&j, r->filter);
 	lx_json_key(&j, "platform"), lx_json_string(&j, r->platform);
 	lx_json_key(&j, "renderer"), lx_json_string(&j, r->caps.renderer);
 	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, r->width), lx_json_int(&j, r->height), lx_json_end(&j);
@@ -211,6 +218,10 @@ static void print_json(const struct lx_render_report *r)
 		lx_json_key(&j, "compared_pixels"), lx_json_int(&j, m->compared);
 		lx_json_key(&j, "silhouette_pixels"), lx_json_int(&j, m->silhouette);
 		lx_json_key(&j, "edge_on_pixels"), lx_json_int(&j, m->edge_on);
+		if (r->soft_measured) {
+			lx_json_key(&j, "soft_error_pct"), lx_json_number(&j, r->soft_error_pct);
+			lx_json_key(&j, "light_size_deg"), lx_json_number(&j, r->light_size_deg);
+		}
 		json_planes(&j, r);
 	}
 	lx_json_end(&j);
@@ -292,7 +303,8 @@ static int job_option(struct lx_render_job *job, const char *a, const char *v)
 static int render_option(struct render_args *r, const char *a, const char *v)
 {
 	int st;
-	if ((st = lx_arg_depth_precision("render", a, v, &r->job.depth_precision)) >= 0 ||
+	if ((st = lx_arg_filter("render", a, v, &r->job.filter, &r->job.light_size_deg)) >= 0 ||
+	    (st = lx_arg_depth_precision("render", a, v, &r->job.depth_precision)) >= 0 ||
 	    (st = lx_arg_plane_option("render", a, v, &r->job.budgets)) >= 0 || (st = view_option(r, a, v)) >= 0 ||
 	    (st = job_option(&r->job, a, v)) >= 0)
 		return st;
@@ -317,11 +329,13 @@ static int render_parse(int argc, char **argv, struct render_args *r)
 {
 	*r = (struct render_args){.job = {.method = LX_DEFAULT_METHOD, .platform = "osmesa", .width = 1024, .height = 768,
 					  .warmup_frames = 3, .timed_frames = 10, .bias_codes = LX_DEFAULT_BIAS_CODES,
-					  .reference_threads = 2, .out_png = "lixel.png"}};
+					  .reference_threads = 2, .out_png = "lixel.png",
+					  .light_size_deg = LX_DEFAULT_LIGHT_SIZE_DEG}};
 	static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye", "--at", "--fov",
 						 "--light", "--light-dir", "--time", "--platform", "--out", "--decision-out",
 						 "--mismatch-out", "--atlas-out", "--frames", "--bias", "--depth-precision",
-						 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES};
+						 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES,
+						 "--filter", "--light-size"};
 	for (int i = 0; i < argc; i++) {
 		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -348,6 +362,7 @@ static int render_parse(int argc, char **argv, struct render_args *r)
 	b->uniform_lixels = b->uniform_lixels ? b->uniform_lixels : defaults.uniform_lixels;
 	b->plane_lixels = b->plane_lixels ? b->plane_lixels : defaults.plane_lixels;
 	b->fallback_lixels = b->fallback_lixels ? b->fallback_lixels : defaults.fallback_lixels;
+	r->job.soft = r->job.measure;
 	return 0;
 }
 

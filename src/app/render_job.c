@@ -3,6 +3,7 @@
 #include "png_out.h"
 #include "depth_rgba.h"
 #include "reference.h"
+#include "soft_reference.h"
 #include "renderer.h"
 #include <math.h>
 #include <stdio.h>
@@ -16,8 +17,11 @@ void lx_render_report_free(struct lx_render_report *rep)
 	free(rep->object);
 	free(rep->ref_shadow);
 	free(rep->shadow);
+	free(rep->visibility);
+	free(rep->ref_visibility);
 	rep->ref_object = rep->object = NULL;
-	rep->ref_shadow = rep->shadow = NULL;
+	rep->ref_shadow = rep->shadow = rep->visibility = NULL;
+	rep->ref_visibility = NULL;
 }
 
 /* The decision image: shadowed pixels red, lit ones tinted by object, background black. */
@@ -129,11 +133,13 @@ static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, co
 	long n = (long)job->width * job->height;
 	rep->object = malloc((size_t)n * sizeof(int16_t));
 	rep->shadow = malloc((size_t)n);
-	if (!rep->object || !rep->shadow) {
+	rep->visibility = malloc((size_t)n);
+	if (!rep->object || !rep->shadow || !rep->visibility) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
 	rep->lookup_pct = 100.0 * lx_method_run_decision(mr, frame, rgba, rep->object, rep->shadow) / n;
+	lx_decision_visibility(rgba, n, mr->filter, rep->visibility);
 	if (!job->decision_png)
 		return true;
 	decision_colors(rep->object, rep->shadow, n, rgba);
@@ -158,6 +164,18 @@ static bool measure(const struct lx_render_job *job, const struct lx_frame *fram
 		   &rep->mismatch, rep->planes);
 	lx_sampling_warnings(rep->planes, rep->plane_count, lx_atlas_lixels(&rep->atlas), &rep->result);
 	rep->measured = true;
+	if (job->soft) {
+		rep->ref_visibility = malloc((size_t)n * sizeof(float));
+		if (!rep->ref_visibility ||
+		    !lx_soft_reference_image(frame, job->light_size_deg, rep->ref_visibility, job->reference_threads)) {
+			snprintf(err, errlen, "out of memory for the soft reference image");
+			return false;
+		}
+		rep->soft_error_pct = lx_soft_error(rep->ref_object, rep->ref_shadow, rep->ref_visibility, rep->object,
+						    rep->visibility, n);
+		rep->light_size_deg = job->light_size_deg;
+		rep->soft_measured = true;
+	}
 	if (!job->mismatch_png)
 		return true;
 	mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);
@@ -173,8 +191,12 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 	struct lx_method_run mr;
 	int status = lx_method_run_init(&mr, job->method, &job->scene, meshes, &rep->caps, &opt, job->width,
 					job->height, job->depth_precision, job->bias_codes, false, err, errlen);
-	if (status)
+	if (!status)
+		status = lx_method_run_set_filter(&mr, job->filter, err, errlen);
+	if (status) {
+		lx_method_run_free(&mr);
 		return status;
+	}
 	rep->depth = mr.depth;
 	uint8_t *rgba = malloc((size_t)job->width * job->height * 4);
 	bool ok = rgba != NULL;
@@ -205,6 +227,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 	}
 	snprintf(rep->method, sizeof rep->method, "%s", job->method);
 	snprintf(rep->platform, sizeof rep->platform, "%s", job->platform);
+	snprintf(rep->filter, sizeof rep->filter, "%s", lx_filter_name(job->filter));
 	rep->width = job->width;
 	rep->height = job->height;
 	struct lx_scene_meshes meshes = {0};

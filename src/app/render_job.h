@@ -18,6 +18,9 @@ struct lx_render_job {
 	enum lx_depth_precision depth_precision; /* auto: the self-test decides */
 	double bias_codes;   /* depth bias in 24-bit codes */
 	struct lx_method_options budgets; /* zero: LX_METHOD_OPTIONS_DEFAULT */
+	enum lx_filter filter; /* the main pass's shadow filter (none: one NEAREST lookup) */
+	bool soft;             /* with measure: the soft reference too, and soft_error_pct */
+	double light_size_deg; /* soft: the area light's angular size in degrees (0: a point) */
 	int reference_threads;
 	const char *out_png; /* shaded image, or NULL */
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
@@ -38,11 +41,16 @@ struct lx_render_report {
 	 * pixels that ran a shadow lookup, in percent; negative when not known */
 	double lookup_pct;
 	struct lx_mismatch mismatch;
+	char filter[16];
+	bool soft_measured;    /* soft_error_pct holds, against an area light of light_size_deg */
+	double soft_error_pct, light_size_deg;
 	int plane_count;
 	struct lx_plane_report planes[LX_MAX_PLANES];
 	/* with keep_pixels: width * height each, rows bottom to top; free with lx_render_report_free */
 	int16_t *ref_object, *object;
 	uint8_t *ref_shadow, *shadow;
+	uint8_t *visibility;   /* the shading's visibility, 0 to 255 (lx_decision_visibility) */
+	float *ref_visibility; /* with soft: the soft reference's, 0 to 1 */
 };
 
 /* Returns 0 on success; 2 for bad input (err says what), 1 for a failure of the

@@ -36,6 +36,20 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	return mr->renderer ? 0 : 1;
 }
 
+int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, char *err, size_t errlen)
+{
+	if (!lx_renderer_set_filter(mr->renderer, filter, err, errlen))
+		return 1;
+	mr->filter = filter;
+	return 0;
+}
+
+void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter filter, uint8_t *visibility)
+{
+	for (long i = 0; i < pixels; i++)
+		visibility[i] = filter == LX_FILTER_NONE ? (rgba[i * 4] > 127 ? 0 : 255) : rgba[i * 4 + 3];
+}
+
 void lx_method_run_free(struct lx_method_run *mr)
 {
 	lx_renderer_destroy(mr->renderer);

@@ -19,6 +19,7 @@ struct lx_method_run {
 	struct lx_shadow_result result; /* of the last frame */
 	struct lx_depth_choice depth;   /* the depth path taken, and how */
 	int width, height;
+	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
 };
 
 struct lx_frame_times {
@@ -41,6 +42,9 @@ int lx_method_run_init(struct lx_method_run *mr, const char *method, const struc
 		       const struct lx_method_options *budgets, int width, int height, enum lx_depth_precision precision,
 		       double bias_codes, bool to_window, char *err, size_t errlen);
 void lx_method_run_free(struct lx_method_run *mr);
+/* The main pass's shadow filter from the next frame on (--filter); 1 with err set when
+ * its programs do not build (the filter then stays as it was), else 0. */
+int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, char *err, size_t errlen);
 /* Light matrices, shadow passes and the shaded main pass, each step timed (glFinish
  * after each pass: for the bench and render, not for a display). */
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
@@ -52,6 +56,10 @@ void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
  * Returns how many pixels ran a shadow lookup. */
 long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
 			    uint8_t *shadow);
+/* The visibility the shading used per pixel, 0 (in shadow) to 255 (lit), from the
+ * decision image rgba that lx_method_run_decision left with filter `filter`: the
+ * filtered variants write it in alpha, NEAREST's is 0 or 255 by the decision. */
+void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter filter, uint8_t *visibility);
 /* The mismatch against the reference, and each plane's sampling figures. */
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,

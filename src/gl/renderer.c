@@ -15,6 +15,7 @@
 struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
+	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
 };
 
 /* A window rectangle of a plane and the maps it reads there. */
@@ -66,8 +67,9 @@ struct lx_renderer {
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
-	/* main-pass variants, built when first used: [decision][mask of the maps a draw reads] */
-	struct main_program variant[2][1 << LX_MAX_MAPS];
+	/* main-pass variants, built when first used: [decision][filter][mask of the maps a draw reads] */
+	struct main_program variant[2][LX_FILTER_COUNT][1 << LX_MAX_MAPS];
+	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	bool mediump;
 	float bias_uniform;
 };
@@ -99,11 +101,13 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump, char *err,
-			 size_t errlen)
+static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump,
+			 enum lx_filter filter, char *err, size_t errlen)
 {
-	char defines[320];
+	char defines[360];
 	lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
+	/* nothing for none: the text it always had */
+	strncat(defines, lx_filter_define(filter), sizeof defines - strlen(defines) - 1);
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
 	if (!p->prog)
 		return false;
@@ -116,6 +120,33 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
 	p->object_id = lx_gl.GetUniformLocation(p->prog, "u_object_id");
 	p->atlas = lx_gl.GetUniformLocation(p->prog, "u_atlas");
+	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
+	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
+	return true;
+}
+
+/* The shaded and the decision variant of a filter that read every map (built now, so
+ * that a shader error shows when the filter is chosen). */
+static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
+{
+	unsigned all = (1u << r->d.map_count) - 1;
+	for (int decision = 0; decision < 2; decision++) {
+		struct main_program *p = &r->variant[decision][filter][all];
+		if (!p->prog && !main_program(p, r->d.map_count, decision, all, r->mediump, filter, err, errlen))
+			return false;
+	}
+	return true;
+}
+
+bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
+{
+	if ((unsigned)filter >= LX_FILTER_COUNT) {
+		snprintf(err, errlen, "no such shadow filter (%d)", (int)filter);
+		return false;
+	}
+	if (!filter_programs(r, filter, err, errlen))
+		return false;
+	r->filter = filter;
 	return true;
 }
 
@@ -171,9 +202,7 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 	const struct lx_renderer_desc *d = &r->d;
 	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
 					  r->mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
-	unsigned all = (1u << d->map_count) - 1;
-	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, r->mediump, err, errlen) ||
-	    !main_program(&r->variant[1][all], d->map_count, true, all, r->mediump, err, errlen))
+	if (!r->shadow_prog || !lx_renderer_set_filter(r, d->filter, err, errlen))
 		return false;
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
 	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
@@ -303,9 +332,10 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->clear_vbo)
 		lx_gl.DeleteBuffers(1, &r->clear_vbo);
 	for (int a = 0; a < 2; a++)
-		for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
-			if (r->variant[a][c].prog)
-				lx_gl.DeleteProgram(r->variant[a][c].prog);
+		for (int k = 0; k < LX_FILTER_COUNT; k++)
+			for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
+				if (r->variant[a][k][c].prog)
+					lx_gl.DeleteProgram(r->variant[a][k][c].prog);
 	if (r->piece_vbo)
 		lx_gl.DeleteBuffers(1, &r->piece_vbo);
 	if (r->facing_ibo)
@@ -425,14 +455,14 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 /* The main-pass variant for a set of maps, built when first used. */
 static struct main_program *variant_for(struct lx_renderer *r, bool decision, unsigned mask)
 {
-	struct main_program *p = &r->variant[decision][mask];
+	struct main_program *p = &r->variant[decision][r->filter][mask];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, r->filter, err, sizeof err)) {
 			/* cannot happen once the full variant compiled; fall back to it */
 			fprintf(stderr, "lixel: %s\n", err);
 			unsigned all = (1u << r->d.map_count) - 1;
-			p = &r->variant[decision][all];
+			p = &r->variant[decision][r->filter][all];
 		}
 	}
 	return p;
@@ -491,9 +521,10 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsi
 	return n;
 }
 
+/* A filtered lookup reads up to lx_filter_reach lixels farther than a NEAREST one. */
 static double lookup_margin(const struct lx_renderer *r)
 {
-	return r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP;
+	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(r->filter);
 }
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
@@ -658,24 +689,28 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	return n;
 }
 
-/* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q) and
- * the atlas-space bounds of the rays it serves (an empty box for a map not rendered:
- * every lookup misses and reads lit). */
+/* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q), the
+ * atlas-space bounds of the rays it serves (an empty box for a map not rendered: every
+ * lookup misses and reads lit), and for a filter the texel centres at its region's edges,
+ * which its samples are clamped to. */
 static void map_uniforms(const struct lx_renderer *r, const struct lx_shadow_result *res, float tex[][16],
-			 float region[][4])
+			 float region[][4], float clamp[][4])
 {
 	const struct lx_atlas *atlas = r->d.atlas;
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 		to_float(&t, tex[m]);
+		const struct lx_region *g = &atlas->regions[map->region];
+		clamp[m][0] = (float)((g->x + 0.5) / atlas->width), clamp[m][1] = (float)((g->y + 0.5) / atlas->height);
+		clamp[m][2] = (float)((g->x + g->w - 0.5) / atlas->width);
+		clamp[m][3] = (float)((g->y + g->h - 0.5) / atlas->height);
 		if (!map->rendered) {
 			region[m][0] = region[m][1] = 2;
 			region[m][2] = region[m][3] = -1;
 			continue;
 		}
 		/* region clip space -> atlas texture space: tex = o + s * clip */
-		const struct lx_region *g = &atlas->regions[map->region];
 		double sx = 0.5 * g->w / atlas->width, ox = (g->x + 0.5 * g->w) / atlas->width;
 		double sy = 0.5 * g->h / atlas->height, oy = (g->y + 0.5 * g->h) / atlas->height;
 		region[m][0] = (float)(ox + sx * map->bounds[0]);
@@ -710,7 +745,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 
 /* The uniforms of a frame every main-pass program takes. */
 struct main_uniforms {
-	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4];
+	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
 };
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
@@ -739,6 +774,14 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	}
 }
 
+/* A filtered variant's uniforms: each map's region to clamp to, the atlas's texel. */
+static void filter_uniforms(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u)
+{
+	const struct lx_atlas *a = r->d.atlas;
+	lx_gl.Uniform4fv(p->clamp, r->d.map_count, u->clamp[0]);
+	lx_gl.Uniform4f(p->texel, (float)a->width, (float)a->height, (float)(1.0 / a->width), (float)(1.0 / a->height));
+}
+
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
 			   bool decision)
 {
@@ -757,7 +800,7 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	const struct lx_light *L = &f->light;
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
-	map_uniforms(r, res, u.tex, u.region);
+	map_uniforms(r, res, u.tex, u.region, u.clamp);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
@@ -782,6 +825,8 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 				lx_gl.Uniform4fv(p->region, r->d.map_count, u.region[0]);
 				lx_gl.Uniform1f(p->bias, r->bias_uniform);
 				lx_gl.Uniform1i(p->atlas, 0);
+				if (r->filter != LX_FILTER_NONE)
+					filter_uniforms(r, p, &u);
 			}
 		}
 		issue_draw(r, f, p, d);
@@ -800,6 +845,14 @@ void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
 	lx_gl.ReadPixels(0, 0, r->d.atlas->width, r->d.atlas->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
+{
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	/* the same size and format again: the texture (and the framebuffer holding it) stays */
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->d.atlas->width, r->d.atlas->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
 void lx_renderer_finish(void) { lx_gl.Finish(); }

@@ -4,6 +4,7 @@
 #define LX_RENDERER_H
 #include "gl_caps.h"
 #include "shadow_method.h"
+#include "shadow_filter.h"
 #include <stdint.h>
 
 struct lx_renderer;
@@ -23,10 +24,14 @@ struct lx_renderer_desc {
 	bool clear_whole_atlas;
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
+	enum lx_filter filter;  /* the main pass's shadow filter to start with (shadow_filter.h) */
 };
 
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen);
 void lx_renderer_destroy(struct lx_renderer *r);
+/* The main pass's shadow filter from the next frame on; its programs are built now, so
+ * false (err set, the filter as it was) when they do not build. */
+bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen);
 /* Shadow passes for the rendered maps; then the main pass, shaded or (decision) the
  * per-pixel shadow decision. */
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res);
@@ -36,6 +41,9 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba);
 /* The atlas texture's texels, RGBA (atlas width * height * 4 bytes). */
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba);
+/* The atlas texture's texels replaced (atlas width * height * 4 bytes, RGBA): what the
+ * next main pass reads, for tests of what a lookup may read. */
+void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 void lx_renderer_finish(void);
 
 #endif

@@ -18,6 +18,7 @@ void lx_board_defaults(struct lx_board *b)
 	b->debounce_ms = 30;
 	b->long_press_ms = 1000;
 	b->lixels = LX_METHOD_OPTIONS_DEFAULT;
+	b->filter_count = 1; /* none */
 	/* the kiosk's default order: the default method, the others as the registry lists
 	 * them, the baseline (none) last */
 	snprintf(b->methods[b->method_count++], sizeof b->methods[0], "%s", LX_DEFAULT_METHOD);
@@ -181,6 +182,28 @@ static bool methods_key(struct lx_board *b, const char *value, const struct at *
 	return true;
 }
 
+/* filters A,B,...: known filters, each once, single commas, at least one. */
+static bool filters_key(struct lx_board *b, const char *value, const struct at *at)
+{
+	b->filter_count = 0;
+	const char *rest = value;
+	char t[64];
+	for (int r; (r = lx_list_next(&rest, ',', t, sizeof t)) != 0;) {
+		enum lx_filter f;
+		if (r < 0)
+			return FAIL(at, "expected filter names separated by single commas, got '%s'", value);
+		if (!lx_filter_parse(t, &f))
+			return FAIL(at, "expected filters from %s, got '%s'", lx_filter_names(), t);
+		for (int k = 0; k < b->filter_count; k++)
+			if (b->filters[k] == f)
+				return FAIL(at, "expected each filter once, got '%s' twice", t);
+		b->filters[b->filter_count++] = f; /* at most LX_FILTER_COUNT distinct */
+	}
+	if (b->filter_count == 0)
+		return FAIL(at, "expected at least one filter from %s", lx_filter_names());
+	return true;
+}
+
 /* One "KEY VALUE" line, the value trimmed. */
 static bool apply_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
 {
@@ -195,10 +218,12 @@ static bool apply_key(struct lx_board *b, const char *key, const char *value, si
 		return r;
 	else if (!strcmp(key, "methods"))
 		return methods_key(b, value, at);
+	else if (!strcmp(key, "filters"))
+		return filters_key(b, value, at);
 	else
 		return FAIL(at, "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, "
 			    "debounce-ms, long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, "
-			    "depth-precision or methods, got '%s'", key);
+			    "depth-precision, methods or filters, got '%s'", key);
 	return true;
 }
 

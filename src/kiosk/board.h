@@ -1,10 +1,12 @@
 /* Board profiles: what the kiosk needs to know of a board (the GPIO button, the display,
- * the lixel budgets, the order of methods the button cycles through), as small text
+ * the lixel budgets, the order of methods the button cycles through, and the shadow
+ * filters it cycles through within each method), as small text
  * files in board/ built into the binary; --board NAME|FILE. GL-free. */
 #ifndef LX_BOARD_H
 #define LX_BOARD_H
 #include "depth_selftest.h"
 #include "shadow_method.h"
+#include "shadow_filter.h"
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -28,6 +30,10 @@ struct lx_board {
 	enum lx_depth_precision depth_precision; /* auto: the start-up self-test decides */
 	int method_count;
 	char methods[LX_BOARD_MAX_METHODS][16];
+	/* the filters the button steps through within each method, the first to start
+	 * with (default none alone: a press goes to the next method) */
+	int filter_count;
+	enum lx_filter filters[LX_FILTER_COUNT];
 };
 
 void lx_board_defaults(struct lx_board *b);
