@@ -27,7 +27,7 @@ static unsigned long long mix64(unsigned long long z)
 	return z ^ (z >> 31);
 }
 
-/* The square [-1, 1]^2 onto the unit disc keeping strata compact (Shirley and Chiu's
+/* The square [-1, 1]^2 onto the unit disc keeping strata compact ([Shirley-Chiu]'s
  * concentric map): squares round the centre become rings. */
 static void square_to_disc(double u, double v, double *x, double *y)
 {

@@ -1,5 +1,6 @@
-/* The main pass's shadow filter (--filter), GL-free: percentage-closer filtering done by
- * hand on the RGBA8 depth (ES 2.0 has no depth-compare sampling). Each texel of a small
+/* The main pass's shadow filter (--filter), GL-free: percentage-closer filtering
+ * ([Reeves]; [Segal] notes projective shadow maps take it easily) done by hand on the
+ * RGBA8 depth (ES 2.0 has no depth-compare sampling). Each texel of a small
  * footprint around the lookup point is fetched, decoded and compared with the point's
  * depth (the same bias as one NEAREST lookup), and the 0/1 results are averaged with
  * weights (shaders_es/pcf.glsl):
