@@ -1,3 +1,4 @@
+#include "light_image.h"
 #include "mesh.h"
 #include "scene.h"
 #include "test_util.h"
@@ -70,14 +71,28 @@ static void same_scene(const struct lx_scene *a, const struct lx_scene *b)
 static void scene_files_match_the_built_in_scenes(void **state)
 {
 	(void)state;
-	static const char *const names[] = {"default", "table"};
-	for (int k = 0; k < 2; k++) {
+	static const char *const names[] = {"default", "table", "spotlight", "projector"};
+	for (int k = 0; k < 4; k++) {
 		struct lx_scene a, b;
 		char err[256], path[256];
 		assert_true(lx_scene_builtin(names[k], &a));
 		snprintf(path, sizeof path, "%s/%s.scene", LX_TEST_DATA, names[k]);
 		if (!lx_scene_load(path, &b, err, sizeof err))
 			fail_msg("%s", err);
+		if (a.light.image == LX_IMAGE_BUILTIN_SLIDE) {
+			/* the file names the slide the binary holds: the same pixels */
+			struct lx_image ia, ib;
+			assert_true(lx_light_image_load(&a.light, &ia, err, sizeof err));
+			if (!lx_light_image_load(&b.light, &ib, err, sizeof err))
+				fail_msg("%s", err);
+			assert_int_equal(ia.width, ib.width);
+			assert_int_equal(ia.height, ib.height);
+			assert_memory_equal(ia.rgba, ib.rgba, (size_t)ia.width * ia.height * 4);
+			lx_image_free(&ia);
+			lx_image_free(&ib);
+			b.light.image = a.light.image;
+			memset(b.light.image_path, 0, sizeof b.light.image_path);
+		}
 		same_scene(&a, &b);
 	}
 	struct lx_scene c;
@@ -96,7 +111,8 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 	static const struct bad_case cases[] = {
 		{"light point 1 2\n", 1, "expected a number for light position"},
 		{"light point 1 2 three\n", 1, "got 'three'"},
-		{"light spot 1 2 3\n", 1, "expected 'point' or 'directional'"},
+		{"light lamp 1 2 3\n", 1, "expected 'point', 'directional', 'spot' or 'projector'"},
+		{"light spot 1 2 3\n", 1, "expected 'light spot X Y Z at X Y Z fov DEG"},
 		{"light directional 0 0 0\n", 1, "non-zero light direction"},
 		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 2 0 0\n", 2, "not parallel"},
 		/* found by fuzz_scene: the cross product's squared length overflowed, the
@@ -132,6 +148,19 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light point 0 5 0\nplane fallback corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "other than 'fallback'"},
 		{"light point 0 5 0\nplane fl\xffr corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
 		{"light point 0 5 0\nplane fl\"r corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
+		/* projective lights */
+		{"light spot 0 5 0 at 0 0 0 fov 0\n", 1, "light fov in (0, 150) degrees, got 0"},
+		{"light spot 0 5 0 at 0 0 0 fov 150\n", 1, "light fov in (0, 150)"},
+		{"light spot 0 5 0 fov 40\n", 1, "expected 'light spot X Y Z at X Y Z fov DEG"},
+		{"light spot 0 5 0 at 0 5 0 fov 40\n", 1, "position differs from at"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 up 0 -1 0\n", 1, "up is not along its axis"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 range 3 2\n", 1, "0 <= NEAR < FAR, got 3 2"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 range -1 2\n", 1, "0 <= NEAR < FAR"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 color 1 2 1\n", 1, "color components in [0, 1]"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 slide x.png\n", 1, "expected at, fov, up, beam, color or range in a spot light, got 'slide'"},
+		{"light projector 0 5 0 at 0 0 0 fov 40\n", 1, "expected 'slide FILE.png' in a projector light"},
+		{"light projector 0 5 0 at 0 0 0 fov 40 slide\n", 1, "expected a PNG file after 'slide'"},
+		{"light projector 0 5 0 at 0 0 0 fov 40 slide no-such.png\n", 1, "slide 'no-such.png': cannot read it"},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct lx_scene s;
@@ -153,6 +182,14 @@ static void missing_and_binary_files(void **state)
 	assert_false(lx_scene_load(LX_TEST_DATA "/no-such-file.scene", &s, err, sizeof err));
 	assert_non_null(strstr(err, "no-such-file.scene: cannot open"));
 	assert_false(lx_scene_load(LX_TEST_DATA, &s, err, sizeof err)); /* a directory */
+	/* a slide that is not a PNG; one resolved against the scene file's folder */
+	assert_false(lx_scene_parse("light projector 0 5 0 at 0 0 0 fov 40 slide default.scene\nsphere radius 1 at 0 0\n",
+				    LX_TEST_DATA "/p.scene", &s, err, sizeof err));
+	assert_non_null(strstr(err, "default.scene': expected a PNG file"));
+	assert_true(lx_scene_parse("light projector 0 5 0 at 0 0 0 fov 40 slide slide.png\nsphere radius 1 at 0 0\n",
+				   LX_TEST_DATA "/p.scene", &s, err, sizeof err));
+	assert_int_equal(s.light.image, LX_IMAGE_FILE);
+	assert_true(fabs(s.light.aspect - 256.0 / 192) < 1e-12); /* from the PNG's header */
 }
 
 /* Validation is relative to the scene's own size: the default scene in micrometres or

@@ -18,6 +18,7 @@ struct lx_method_run {
 	struct lx_renderer *renderer;
 	struct lx_shadow_result result; /* of the last frame */
 	struct lx_depth_choice depth;   /* the depth path taken, and how */
+	struct lx_image light_image;    /* a projective light's beam or slide (empty for others) */
 	int width, height;
 };
 

@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "gl_api.h"
 #include "gl_program.h"
+#include "light_image.h"
 #include "lookup_region.h"
 #include "shader_text.h"
 #include <math.h>
@@ -15,6 +16,7 @@
 struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
+	GLint beam, beam_tex, light_color, range; /* a projective light's (-1 in other variants) */
 };
 
 /* A window rectangle of a plane and the maps it reads there. */
@@ -63,6 +65,7 @@ struct lx_renderer {
 	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
+	GLuint beam_tex; /* a projective light's image, 0 for other lights */
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
@@ -99,11 +102,13 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump, char *err,
-			 size_t errlen)
+static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump,
+			 bool projective, char *err, size_t errlen)
 {
-	char defines[320];
+	char defines[352];
 	lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
+	if (projective && !decision) /* the decision needs only the shadow test */
+		strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
 	if (!p->prog)
 		return false;
@@ -116,6 +121,10 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
 	p->object_id = lx_gl.GetUniformLocation(p->prog, "u_object_id");
 	p->atlas = lx_gl.GetUniformLocation(p->prog, "u_atlas");
+	p->beam = lx_gl.GetUniformLocation(p->prog, "u_beam");
+	p->beam_tex = lx_gl.GetUniformLocation(p->prog, "u_beam_tex");
+	p->light_color = lx_gl.GetUniformLocation(p->prog, "u_light_color");
+	p->range = lx_gl.GetUniformLocation(p->prog, "u_range");
 	return true;
 }
 
@@ -172,8 +181,8 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
 					  r->mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
 	unsigned all = (1u << d->map_count) - 1;
-	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, r->mediump, err, errlen) ||
-	    !main_program(&r->variant[1][all], d->map_count, true, all, r->mediump, err, errlen))
+	if (!r->shadow_prog || !main_program(&r->variant[0][all], d->map_count, false, all, r->mediump, r->beam_tex != 0, err, errlen) ||
+	    !main_program(&r->variant[1][all], d->map_count, true, all, r->mediump, r->beam_tex != 0, err, errlen))
 		return false;
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
 	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
@@ -247,6 +256,31 @@ static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 	return true;
 }
 
+/* A projective light's image as a texture on unit 1: LINEAR and CLAMP_TO_EDGE, no mipmaps,
+ * so that any size works in ES 2.0 and the reference can sample it texel for texel. */
+static bool renderer_beam(struct lx_renderer *r, char *err, size_t errlen)
+{
+	const struct lx_image *im = r->d.light_image;
+	if (!im || r->d.scene->light.projective == LX_LIGHT_PLAIN)
+		return true;
+	if (im->width > r->d.caps->max_texture_size || im->height > r->d.caps->max_texture_size) {
+		snprintf(err, errlen, "the light's %dx%d image exceeds the GL's texture limit of %d", im->width, im->height,
+			 r->d.caps->max_texture_size);
+		return false;
+	}
+	lx_gl.GenTextures(1, &r->beam_tex);
+	lx_gl.ActiveTexture(GL_TEXTURE1);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, im->width, im->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, im->rgba);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+	return true;
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -272,7 +306,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
-	if (!renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
+	if (!renderer_beam(r, err, errlen) || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -289,6 +323,8 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
 	}
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
+	if (r->beam_tex)
+		lx_gl.DeleteTextures(1, &r->beam_tex);
 	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
 	if (r->target_fbo) { /* 0 is the window's */
@@ -428,7 +464,7 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, un
 	struct main_program *p = &r->variant[decision][mask];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, r->beam_tex != 0, err, sizeof err)) {
 			/* cannot happen once the full variant compiled; fall back to it */
 			fprintf(stderr, "lixel: %s\n", err);
 			unsigned all = (1u << r->d.map_count) - 1;
@@ -711,7 +747,25 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 /* The uniforms of a frame every main-pass program takes. */
 struct main_uniforms {
 	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4];
+	float beam[16], light_color[3], range[3]; /* a projective light's */
 };
+
+/* A projective light's matrix, colour and range, and its image bound to unit 1. */
+static void beam_uniforms(const struct lx_renderer *r, const struct lx_light *L, struct main_uniforms *u)
+{
+	mat4 m;
+	if (!r->beam_tex || !lx_light_projection(L, &m))
+		return;
+	to_float(&m, u->beam);
+	u->light_color[0] = (float)L->color.x, u->light_color[1] = (float)L->color.y, u->light_color[2] = (float)L->color.z;
+	bool ranged = L->range_far > 0; /* then range_far > range_near: the parser checks it */
+	u->range[0] = (float)L->range_near;
+	u->range[1] = ranged ? (float)(1 / (L->range_far - L->range_near)) : 0.0f;
+	u->range[2] = ranged ? 1.0f : 0.0f;
+	lx_gl.ActiveTexture(GL_TEXTURE1);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+}
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
  * the whole mesh). */
@@ -758,6 +812,7 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
 	map_uniforms(r, res, u.tex, u.region);
+	beam_uniforms(r, L, &u);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
@@ -782,6 +837,12 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 				lx_gl.Uniform4fv(p->region, r->d.map_count, u.region[0]);
 				lx_gl.Uniform1f(p->bias, r->bias_uniform);
 				lx_gl.Uniform1i(p->atlas, 0);
+			}
+			if (p->beam >= 0) {
+				lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u.beam);
+				lx_gl.Uniform3fv(p->light_color, 1, u.light_color);
+				lx_gl.Uniform3fv(p->range, 1, u.range);
+				lx_gl.Uniform1i(p->beam_tex, 1);
 			}
 		}
 		issue_draw(r, f, p, d);
