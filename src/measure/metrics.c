@@ -20,6 +20,10 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 			out->edge_on++; /* the light grazes it: either decision shades it alike */
 			continue;
 		}
+		if (ref_shadow[i] == LX_REF_UNLIT) {
+			out->unlit++; /* the light does not reach it: either decision shades it alike */
+			continue;
+		}
 		out->compared++;
 		if (shadow[i] && !ref_shadow[i])
 			out->false_shadow++;
@@ -31,6 +35,15 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 		out->missing_shadow_pct = 100.0 * out->missing_shadow / out->compared;
 		out->mismatch_pct = 100.0 * (out->false_shadow + out->missing_shadow) / out->compared;
 	}
+}
+
+double lx_colour_error(const uint8_t *a, const uint8_t *b, long pixels)
+{
+	double sum = 0;
+	for (long i = 0; i < pixels; i++)
+		for (int c = 0; c < 3; c++)
+			sum += abs(a[i * 4 + c] - b[i * 4 + c]);
+	return pixels > 0 ? sum / (3.0 * pixels) : 0;
 }
 
 /* rows of a 3x4 "viewport" map from clip (x, y, z, w) to (px * w, py * w, w) */

@@ -11,6 +11,7 @@ struct lx_mismatch {
 	long compared;       /* receiver pixels where both agree on the visible object */
 	long silhouette;     /* pixels where they disagree on the visible object */
 	long edge_on;        /* pixels the light grazes (LX_REF_EDGE_ON): not compared */
+	long unlit;          /* pixels a projective light does not reach (LX_REF_UNLIT): not compared */
 	long false_shadow;   /* renderer shadowed, reference lit */
 	long missing_shadow; /* renderer lit, reference shadowed */
 	double mismatch_pct, false_shadow_pct, missing_shadow_pct; /* of compared; 0 when none compared */
@@ -18,6 +19,9 @@ struct lx_mismatch {
 
 void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
+/* colour_error: the mean absolute difference of two RGBA8 images over their pixels and the
+ * R, G and B channels, in 8-bit levels (0 to 255). */
+double lx_colour_error(const uint8_t *a, const uint8_t *b, long pixels);
 
 struct lx_plane_sampling {
 	int map;         /* the map the figures are of: the plane's own map, else -1 (each pixel's serving map) */

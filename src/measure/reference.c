@@ -1,4 +1,5 @@
 #include "reference.h"
+#include "light_image.h"
 #include <math.h>
 #include <stdio.h>
 #include <pthread.h>
@@ -8,6 +9,7 @@
 struct tri {
 	vec3 a, e1, e2, n; /* vertex, two edges, unit face normal */
 	int object;
+	const float *v; /* its first vertex in the mesh (LX_VERTEX_FLOATS each): the normals to shade with */
 };
 
 struct node {
@@ -107,6 +109,7 @@ struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f)
 			t->n = v3(0, 0, 0);
 			v3_normalize(v3_cross(t->e1, t->e2), &t->n); /* meshes hold no degenerate triangles */
 			t->object = id;
+			t->v = m->v + (size_t)i * LX_VERTEX_FLOATS;
 		}
 	}
 	rc->scale = v3_len(v3_sub(f->scene_max, f->scene_min)) + 1e-300;
@@ -250,8 +253,54 @@ struct job {
 	const struct lx_raycaster *rc;
 	int16_t *object;
 	uint8_t *shadowed;
+	const mat4 *beam;               /* a projective light's matrix, else NULL */
+	const struct lx_image *image;   /* shade: the light's image; NULL: decide only */
+	uint8_t *rgba;                  /* shade: the colours */
 	int row0, row_step;
 };
+
+/* The view ray through a pixel's centre, from the near plane (t = 0) to the far (t = 1). */
+static void pixel_ray(const struct lx_view *v, int x, int y, vec3 *o, vec3 *d)
+{
+	double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
+	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
+	vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+	/* inside the frustum w > 0 for both */
+	*o = v3(a.x / a.w, a.y / a.w, a.z / a.w);
+	*d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), *o);
+}
+
+/* The renderer's shading at p on triangle tri, exactly: the vertex normals interpolated
+ * across the triangle, the ambient and diffuse terms of main.frag, the light's image and
+ * range for a projective light. */
+static vec3 shade(const struct job *j, int tri, vec3 p, int decision)
+{
+	const struct tri *t = &j->rc->tris[tri];
+	const struct lx_scene *s = j->f->scene;
+	int id = t->object;
+	vec3 color = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+	/* barycentric (u, v) of p: p - a = u e1 + v e2 (the triangle is not degenerate) */
+	vec3 r = v3_sub(p, t->a);
+	double e11 = v3_dot(t->e1, t->e1), e12 = v3_dot(t->e1, t->e2), e22 = v3_dot(t->e2, t->e2);
+	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, t->e1), r2 = v3_dot(r, t->e2);
+	double u = det > 0 ? (r1 * e22 - r2 * e12) / det : 0, w = det > 0 ? (r2 * e11 - r1 * e12) / det : 0;
+	vec3 n = v3(0, 0, 0);
+	for (int k = 0; k < 3; k++) {
+		const float *vn = t->v + (size_t)k * LX_VERTEX_FLOATS + 3;
+		double b = k == 0 ? 1 - u - w : k == 1 ? u : w;
+		n = v3_add(n, v3_scale(v3(vn[0], vn[1], vn[2]), b));
+	}
+	const struct lx_light *l = &j->f->light;
+	vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p), nn, ln;
+	double lambert = v3_normalize(n, &nn) && v3_normalize(to_light, &ln) ? fmax(v3_dot(nn, ln), 0) : 0;
+	vec3 light = j->beam ? lx_projective_light_at(l, j->beam, j->image, p) : v3(1, 1, 1);
+	/* shadowed (1): no diffuse term; grazed (2): lambert is ~0 either way; unlit (3): the light
+	 * sends nothing there */
+	double lit = decision == 1 ? 0 : 0.78 * lambert;
+	return v3(color.x * (0.22 + lit * light.x), color.y * (0.22 + lit * light.y), color.z * (0.22 + lit * light.z));
+}
+
+static uint8_t level(double c) { return (uint8_t)lround(255 * fmin(fmax(c, 0), 1)); }
 
 static void *run_rows(void *arg)
 {
@@ -259,35 +308,39 @@ static void *run_rows(void *arg)
 	const struct lx_view *v = &j->f->view;
 	for (int y = j->row0; y < v->height; y += j->row_step)
 		for (int x = 0; x < v->width; x++) {
-			double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
-			vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
-			vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
-			/* inside the frustum w > 0 for both */
-			vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
-			vec3 d = v3_sub(pf, pn);
+			vec3 o, d;
+			pixel_ray(v, x, y, &o, &d);
 			size_t i = (size_t)y * v->width + x;
 			double t;
-			int tri = lx_raycast_first(j->rc, pn, d, 0.0, 1.0, &t);
+			int tri = lx_raycast_first(j->rc, o, d, 0.0, 1.0, &t);
+			vec3 p = v3_add(o, v3_scale(d, t));
+			if (j->image) { /* shade, with the decisions made before */
+				vec3 c = tri >= 0 ? shade(j, tri, p, j->shadowed[i]) : v3(0.08, 0.09, 0.11);
+				uint8_t *q = j->rgba + i * 4;
+				q[0] = level(c.x), q[1] = level(c.y), q[2] = level(c.z), q[3] = 255;
+				continue;
+			}
 			j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
-			j->shadowed[i] = tri >= 0 ? (uint8_t)decide(j->rc, &j->f->light, v3_add(pn, v3_scale(d, t)), tri, true) : 0;
+			if (tri < 0)
+				j->shadowed[i] = 0;
+			else if (j->beam && !lx_light_reaches(&j->f->light, j->beam, p))
+				j->shadowed[i] = LX_REF_UNLIT;
+			else
+				j->shadowed[i] = (uint8_t)decide(j->rc, &j->f->light, p, tri, true);
 		}
 	return NULL;
 }
 
-bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+/* Runs a job's rows on `threads` threads (the calling one among them). */
+static void run_job(struct job proto, int threads)
 {
-	struct lx_raycaster *rc = lx_raycaster_create(f);
-	if (!rc)
-		return false;
-	if (threads < 1)
-		threads = 1;
-	if (threads > 16)
-		threads = 16;
+	threads = threads < 1 ? 1 : threads > 16 ? 16 : threads;
 	pthread_t th[16];
 	struct job jobs[16];
 	int started = 0;
 	for (int i = 0; i < threads; i++) {
-		jobs[i] = (struct job){f, rc, object, shadowed, i, threads};
+		jobs[i] = proto;
+		jobs[i].row0 = i, jobs[i].row_step = threads;
 		if (i > 0 && pthread_create(&th[i], NULL, run_rows, &jobs[i]) == 0)
 			started |= 1 << i;
 	}
@@ -298,6 +351,34 @@ bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shad
 		else
 			run_rows(&jobs[i]); /* thread could not start: do its rows here */
 	}
+}
+
+bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+{
+	struct lx_raycaster *rc = lx_raycaster_create(f);
+	if (!rc)
+		return false;
+	mat4 beam;
+	bool projective = lx_light_projection(&f->light, &beam);
+	run_job((struct job){.f = f, .rc = rc, .object = object, .shadowed = shadowed, .beam = projective ? &beam : NULL},
+		threads);
+	lx_raycaster_destroy(rc);
+	return true;
+}
+
+bool lx_reference_colors(const struct lx_frame *f, const struct lx_image *light_image, const uint8_t *shadowed,
+			 uint8_t *rgba, int threads)
+{
+	static const uint8_t white[4] = {255, 255, 255, 255};
+	const struct lx_image plain = {1, 1, (uint8_t *)white}; /* never written: a plain light's image */
+	struct lx_raycaster *rc = lx_raycaster_create(f);
+	if (!rc)
+		return false;
+	mat4 beam;
+	bool projective = lx_light_projection(&f->light, &beam) && light_image;
+	run_job((struct job){.f = f, .rc = rc, .shadowed = (uint8_t *)shadowed, .beam = projective ? &beam : NULL,
+			     .image = projective ? light_image : &plain, .rgba = rgba},
+		threads);
 	lx_raycaster_destroy(rc);
 	return true;
 }
