@@ -251,5 +251,32 @@ done
 printf 'light point 0 5 0\nsphere radius 1e-300 at 0 0\n' >"$tmp/tiny.scene"
 expect_says "at least 1e-30" "a radius below single precision" render --scene "$tmp/tiny.scene" $out
 
+# Projective lights: the built-in scenes measure shadows and colour against the reference;
+# a bad slide, beam or fov is one line and exit status 2, nothing written.
+for sc in spotlight projector; do
+  ext --scene $sc && below "$(json_num mismatch_pct "$tmp/ext.json")" 0.5 &&
+    below "$(json_num colour_error "$tmp/ext.json")" 0.5 && [ "$(json_num unlit_pixels "$tmp/ext.json")" -gt 1000 ] &&
+    ok || no "--scene $sc: $(cat "$tmp/ext.json" "$tmp/stderr")"
+done
+"$lixel" render --scene projector --size 96x64 --frames 1 --out "$tmp/p.png" --reference-out "$tmp/pref.png" >/dev/null 2>&1 &&
+  [ "$(head -c 4 "$tmp/pref.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "--reference-out wrote no PNG"
+floor='plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10'
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide none.png\n%s\n' "$floor" >"$tmp/noslide.scene"
+expect_says "noslide.scene:1: slide '" "a missing slide" render --scene "$tmp/noslide.scene" $out
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide noslide.scene\n%s\n' "$floor" >"$tmp/textslide.scene"
+expect_says "expected a PNG file" "a slide that is not a PNG" render --scene "$tmp/textslide.scene" $out
+head -c 60 tests/data/slide.png >"$tmp/trunc.png"
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide trunc.png\n%s\n' "$floor" >"$tmp/trunc.scene"
+expect_says "not a readable PNG" "a truncated slide" render --scene "$tmp/trunc.scene" $out
+printf 'light spot 0 3 3 at 0 0 0 fov 40 beam trunc.png\n%s\n' "$floor" >"$tmp/truncbeam.scene"
+expect_says "beam '" "a truncated beam" render --scene "$tmp/truncbeam.scene" $out
+printf 'light spot 0 3 3 at 0 0 0 fov 0\n%s\n' "$floor" >"$tmp/fov0.scene"
+expect_says "fov in (0, 150) degrees, got 0" "a zero fov" render --scene "$tmp/fov0.scene" $out
+printf 'light spot 0 3 3 at 0 3 3 fov 40\n%s\n' "$floor" >"$tmp/at.scene"
+expect_says "position differs from at" "a spotlight looking at itself" render --scene "$tmp/at.scene" $out
+printf 'light spot 0 0.3 0 at 0 0 -3 fov 40\nsphere radius 0.5 at 0 0 bounce 0 0\n%s\n' "$floor" >"$tmp/inside.scene"
+ext --scene "$tmp/inside.scene" && grep -q 'the light is inside the bounds of caster 1' "$tmp/ext.json" && ok ||
+  no "a spotlight inside a caster: $(cat "$tmp/ext.json" "$tmp/stderr")"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -257,6 +257,51 @@ static void caster_meshes_are_closed_and_outward(void **state)
 	lx_meshes_free(&m);
 }
 
+/* A projective light's matrix, image look-up and fall-off [Segal], against values worked
+ * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
+static void projective_light_geometry(void **state)
+{
+	(void)state;
+	struct lx_light l = lx_light_white(v3(0, 5, 0));
+	l.projective = LX_LIGHT_SPOT, l.at = v3(0, 0, 0), l.up = v3(0, 0, -1), l.fov_deg = 60;
+	l.range_near = 2, l.range_far = 6;
+	mat4 m;
+	assert_true(lx_light_projection(&l, &m));
+	vec4 q = m4_mul_point(&m, v3(0, 0, 0)); /* on the axis, 5 m away: the image's centre */
+	assert_true(fabs(q.x / q.w - 0.5) < 1e-12 && fabs(q.y / q.w - 0.5) < 1e-12 && fabs(q.w - 5) < 1e-12);
+	double edge = 5 * tan(M_PI / 6); /* the frustum's side on the floor: s = 1 there */
+	q = m4_mul_point(&m, v3(edge, 0, 0));
+	assert_true(fabs(q.x / q.w - 1) < 1e-12);
+	q = m4_mul_point(&m, v3(0, 0, -edge)); /* up is -z: t = 1 */
+	assert_true(fabs(q.y / q.w - 1) < 1e-12);
+	assert_true(lx_light_reaches(&l, &m, v3(0.99 * edge, 0, 0)));
+	assert_false(lx_light_reaches(&l, &m, v3(1.01 * edge, 0, 0)));
+	assert_false(lx_light_reaches(&l, &m, v3(0, 7, 0)));  /* behind the light */
+	assert_false(lx_light_reaches(&l, &m, v3(0, -1.5, 0))); /* past range_far (6.5 m away) */
+	struct lx_image beam;
+	char err[256];
+	assert_true(lx_light_image_load(&l, &beam, err, sizeof err));
+	assert_int_equal(beam.width, LX_ROUND_BEAM_SIZE);
+	/* the round beam: full near the axis, none past the cone's half-angle, round */
+	vec3 c = lx_image_bilinear(&beam, 0.5, 0.5), corner = lx_image_bilinear(&beam, 0.999, 0.999);
+	assert_true(c.x == 1 && corner.x == 0);
+	vec3 a = lx_image_bilinear(&beam, 0.8, 0.5), b = lx_image_bilinear(&beam, 0.5, 0.8);
+	assert_true(fabs(a.x - b.x) < 1e-12 && a.x > 0 && a.x < 1);
+	/* the fall-off with depth: full up to range_near, half way at 4 m, none at 6 m */
+	assert_true(fabs(lx_projective_light_at(&l, &m, &beam, v3(0, 3.5, 0)).x - 1) < 1e-12);
+	assert_true(fabs(lx_projective_light_at(&l, &m, &beam, v3(0, 1, 0)).x - 0.5) < 1e-12);
+	assert_true(lx_projective_light_at(&l, &m, &beam, v3(0, 7, 0)).x == 0);
+	lx_image_free(&beam);
+	/* bilinear as GL's LINEAR filter: texel centres exact, half way between them the mean,
+	 * clamped to the edge outside */
+	uint8_t px[2 * 4] = {0, 100, 200, 255, 255, 50, 0, 255};
+	struct lx_image im = {2, 1, px};
+	assert_true(fabs(lx_image_bilinear(&im, 0.25, 0.5).y - 100 / 255.0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, 0.5, 0.5).x - 127.5 / 255.0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, 1.5, 0.5).z - 0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, -3, 7).z - 200 / 255.0) < 1e-12);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -264,6 +309,7 @@ int main(void)
 		cmocka_unit_test(scene_files_match_the_built_in_scenes),
 		cmocka_unit_test(malformed_files_name_the_line_and_what_was_expected),
 		cmocka_unit_test(missing_and_binary_files),
+		cmocka_unit_test(projective_light_geometry),
 		cmocka_unit_test(any_scale_parses),
 		cmocka_unit_test(directional_light_and_defaults),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),

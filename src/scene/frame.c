@@ -89,7 +89,7 @@ static void light_inside_casters(struct lx_frame *f)
 	vec3 l = f->light.position;
 	for (int id = f->scene->plane_count; id < f->object_count; id++)
 		if (box_distance(l, f->bmin[id], f->bmax[id]) == 0) {
-			note(f, "light: the point light is inside the bounds of caster %d (a %s); what it hides is in "
+			note(f, "light: the light is inside the bounds of caster %d (a %s); what it hides is in "
 				"shadow", id - f->scene->plane_count + 1,
 			     lx_shape_name(f->scene->casters[id - f->scene->plane_count].shape));
 			return;

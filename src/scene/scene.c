@@ -44,6 +44,11 @@ static void add_caster(struct lx_scene *s, enum lx_shape shape, vec3 size, doubl
 		.period = period, .phase = phase, .color = color};
 }
 
+const char *lx_light_kind_name(const struct lx_light *l)
+{
+	return l->projective == LX_LIGHT_SPOT ? "spot" : l->projective == LX_LIGHT_PROJECTOR ? "projector" : l->directional ? "directional" : "point";
+}
+
 struct lx_light lx_light_white(vec3 position)
 {
 	return (struct lx_light){.position = position, .direction = v3(0, -1, 0), .color = v3(1, 1, 1), .up = v3(0, 1, 0),

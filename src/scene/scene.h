@@ -80,6 +80,8 @@ void lx_scene_default(struct lx_scene *s);
 /* The table scene: a table top (a plane of interest, listed first so its map is tried
  * first) on a slab and four legs, over the floor, with casters above and beside it. */
 void lx_scene_table(struct lx_scene *s);
+/* "point", "directional", "spot" or "projector". */
+const char *lx_light_kind_name(const struct lx_light *l);
 /* A point light at position, white. */
 struct lx_light lx_light_white(vec3 position);
 /* The default scene under a spotlight (lixel's round beam), and lit by a projector
