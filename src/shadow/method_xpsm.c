@@ -1,6 +1,6 @@
-/* Extended perspective shadow maps (XPSM), from what [Kapoulkine]'s notes say of them: a
- * perspective warp in light space along a projection vector P that lies across the
- * light, then unit cube clipping in the warped space, with a floor eps_w on the warped w.
+/* Extended perspective shadow maps (XPSM), built around what [Kapoulkine]'s notes say of
+ * them: light space turned about z by a unit projection vector P, unit cube clipping
+ * after a perspective warp, and a floor eps_w on the warped w.
  *
  * Light space S: the light's view for a directional light, the uniform map's clip space
  * for a point light (its rays run parallel there), z growing towards the light. A turn
