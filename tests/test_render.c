@@ -354,15 +354,16 @@ static void plane_keeps_every_shadow(void **state)
 		fail_msg("eye a millimetre above the floor: plane-optimal %.4f%% against uniform's %.4f%%", pct[1], pct[0]);
 }
 
-/* PSM, LiSPSM and TSM under the same edge bound on every configuration. */
+/* PSM, LiSPSM, XPSM and TSM under the same edge bound on every configuration. */
 static void warps_match_reference(void **state)
 {
 	(void)state;
+	static const char *const warps[] = {"psm", "lispsm", "xpsm", "tsm"};
 	uint8_t *dist = malloc((size_t)W * H);
 	for (size_t p = 0; p < 2; p++)
 		for (int c = 0; c < lx_config_count; c++)
-			for (int m = 0; m < 3; m++)
-				check_config(platforms[p], m == 0 ? "psm" : m == 1 ? "lispsm" : "tsm", lx_configs[c].name, false, dist);
+			for (size_t m = 0; m < sizeof warps / sizeof warps[0]; m++)
+				check_config(platforms[p], warps[m], lx_configs[c].name, false, dist);
 	free(dist);
 }
 
