@@ -166,6 +166,12 @@ static bool on_plane(const struct lx_frame *f, const struct lx_plane *p, vec4 eq
 	return lx_window_on_plane(&f->view, eq, x + 0.5, y + 0.5, out, &t) && t >= 0 && t <= 1 && lx_plane_contains(p, *out);
 }
 
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
+{
+	const struct lx_plane *p = &f->scene->planes[plane];
+	return on_plane(f, p, lx_plane_equation(p), x, y, out);
+}
+
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		     int plane, const int16_t *ref_object, int stride, struct lx_plane_sampling *out)
 {

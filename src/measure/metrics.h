@@ -55,4 +55,8 @@ bool lx_homography_jacobian(const mat3 *h, double x, double y, double *s_max, do
 /* The median of v[0..n-1] (n >= 1); sorts v. */
 double lx_median(double *v, long n);
 
+/* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
+ * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
+
 #endif
