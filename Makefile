@@ -28,7 +28,8 @@ DEPFLAGS = -MMD -MP
 # installed what is missing) and kept, not asked again for every command that uses it
 pkg_once = $(eval $(1) := $$(shell $(PKG_CONFIG) $(2) 2>/dev/null))$($(1))
 PKG_GL_CFLAGS = $(call pkg_once,PKG_GL_CFLAGS,--cflags $(GL_PKGS))
-PKG_GL_LIBS = $(call pkg_once,PKG_GL_LIBS,--libs osmesa egl libpng x11 libdrm gbm)
+# libOSMesa is opened at run time (platform_osmesa.c): only its headers come from pkg-config
+PKG_GL_LIBS = $(call pkg_once,PKG_GL_LIBS,--libs egl libpng x11 libdrm gbm)
 PKG_PNG_LIBS = $(call pkg_once,PKG_PNG_LIBS,--libs libpng)
 PKG_X11_LIBS = $(call pkg_once,PKG_X11_LIBS,--libs x11)
 PKG_CMOCKA_CFLAGS = $(call pkg_once,PKG_CMOCKA_CFLAGS,--cflags cmocka)
@@ -37,7 +38,7 @@ PKG_GPIOD_CFLAGS = $(call pkg_once,PKG_GPIOD_CFLAGS,--cflags libgpiod)
 PKG_GPIOD_LIBS = $(call pkg_once,PKG_GPIOD_LIBS,--libs libgpiod)
 PKG_GPIOD_V2 = $(call pkg_once,PKG_GPIOD_V2,--atleast-version=2 libgpiod && echo -DLX_GPIOD_V2)
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(PKG_GL_CFLAGS)
-LIBS_GL = $(PKG_GL_LIBS) -lpthread -lm
+LIBS_GL = $(PKG_GL_LIBS) -ldl -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
 GPIOD_CFLAGS = $(PKG_GPIOD_CFLAGS) $(PKG_GPIOD_V2)
 LIBS_GPIOD = $(PKG_GPIOD_LIBS)

@@ -62,10 +62,15 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 				     .frame_ms = t3 - t0};
 }
 
-void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
+void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f)
 {
 	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
 	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+}
+
+void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
+{
+	lx_method_run_shadows(mr, f);
 	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
 }
 
