@@ -28,7 +28,9 @@ DEPFLAGS = -MMD -MP
 # installed what is missing) and kept, not asked again for every command that uses it
 pkg_once = $(eval $(1) := $$(shell $(PKG_CONFIG) $(2) 2>/dev/null))$($(1))
 PKG_GL_CFLAGS = $(call pkg_once,PKG_GL_CFLAGS,--cflags $(GL_PKGS))
-PKG_GL_LIBS = $(call pkg_once,PKG_GL_LIBS,--libs osmesa egl libpng x11 libdrm gbm)
+# libOSMesa is opened at run time (platform_osmesa.c): only its headers come from pkg-config
+PKG_GL_LIBS = $(call pkg_once,PKG_GL_LIBS,--libs egl libpng x11 libdrm gbm)
+PKG_PNG_LIBS = $(call pkg_once,PKG_PNG_LIBS,--libs libpng)
 PKG_X11_LIBS = $(call pkg_once,PKG_X11_LIBS,--libs x11)
 PKG_CMOCKA_CFLAGS = $(call pkg_once,PKG_CMOCKA_CFLAGS,--cflags cmocka)
 PKG_CMOCKA_LIBS = $(call pkg_once,PKG_CMOCKA_LIBS,--libs cmocka)
@@ -36,7 +38,7 @@ PKG_GPIOD_CFLAGS = $(call pkg_once,PKG_GPIOD_CFLAGS,--cflags libgpiod)
 PKG_GPIOD_LIBS = $(call pkg_once,PKG_GPIOD_LIBS,--libs libgpiod)
 PKG_GPIOD_V2 = $(call pkg_once,PKG_GPIOD_V2,--atleast-version=2 libgpiod && echo -DLX_GPIOD_V2)
 CPPFLAGS_ALL = -std=c11 -D_DEFAULT_SOURCE -Isrc -I$(BUILD) $(PKG_GL_CFLAGS)
-LIBS_GL = $(PKG_GL_LIBS) -lpthread -lm
+LIBS_GL = $(PKG_GL_LIBS) -ldl -lpthread -lm
 # libgpiod: the v2 API from 2.0 on (Debian 13, Raspberry Pi OS), the v1 API before
 GPIOD_CFLAGS = $(PKG_GPIOD_CFLAGS) $(PKG_GPIOD_V2)
 LIBS_GPIOD = $(PKG_GPIOD_LIBS)
@@ -55,22 +57,23 @@ CPPFLAGS_ALL += $(SRC_DIRS:%=-I%)
 CORE_SRC = $(wildcard src/base/*.c src/geom/*.c src/scene/*.c src/shadow/*.c src/measure/*.c) \
 	src/gl/shader_text.c src/platform/display_loss.c src/platform/kms_select.c \
 	src/kiosk/board.c src/kiosk/button.c src/kiosk/gpio_lookup.c src/app/cli_args.c
-CORE_SRC := $(filter-out src/base/png_out.c,$(sort $(CORE_SRC)))
-# The GL side, the platforms, libpng's writer and the commands.
-GL_SRC = src/base/png_out.c $(filter-out src/gl/shader_text.c,$(wildcard src/gl/*.c)) \
+CORE_SRC := $(sort $(CORE_SRC))
+# The GL side, the platforms and the commands.
+GL_SRC = $(filter-out src/gl/shader_text.c,$(wildcard src/gl/*.c)) \
 	$(filter-out src/platform/display_loss.c src/platform/kms_select.c,$(wildcard src/platform/*.c)) \
 	$(filter-out src/app/cli_args.c src/app/main.c,$(wildcard src/app/*.c))
 SHADERS = $(sort $(wildcard shaders_es/*.vert shaders_es/*.frag shaders_es/*.glsl))
 BOARDS = $(sort $(wildcard board/*.profile))
 
-CORE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(CORE_SRC))) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o
+CORE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(CORE_SRC))) $(BUILD)/boards_embedded.o $(BUILD)/shaders_embedded.o \
+	$(BUILD)/slide_embedded.o
 CORE_LIB = $(BUILD)/liblixel-core.a
 GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run check check-layers soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
+.PHONY: all run slide check check-layers soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
 
 all: $(BUILD)/lixel
 
@@ -101,6 +104,16 @@ $(BUILD)/shaders_embedded.c: $(SHADERS) tools/embed-files.sh | $(BUILD)
 $(BUILD)/boards_embedded.c: $(BOARDS) tools/embed-files.sh | $(BUILD)
 	sh tools/embed-files.sh lx_board_files $(BOARDS) > $@.tmp && mv $@.tmp $@
 
+# lixel's own slide, kept in the repository as tests/data/slide.png: `make slide` redraws it.
+slide: $(BUILD)/make-slide
+	$(BUILD)/make-slide tests/data/slide.png
+
+$(BUILD)/make-slide: tools/make-slide.c $(BUILD)/png_out.o $(BUILD)/font5x7.o $(BUILD)/out_file.o | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $^ $(PKG_PNG_LIBS) -lm -o $@
+
+$(BUILD)/slide_embedded.c: tests/data/slide.png tools/embed-binary.sh | $(BUILD)
+	sh tools/embed-binary.sh lx_builtin_slide_png tests/data/slide.png > $@.tmp && mv $@.tmp $@
+
 $(BUILD)/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h
 	$(CC) $(CPPFLAGS_ALL) $(DEPFLAGS) $(WARN) $(CFLAGS) -c $< -o $@
 
@@ -126,7 +139,7 @@ $(BUILD)/tests/%: tests/%.c $(CORE_LIB) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUI
 	$(CC) $(CPPFLAGS_ALL) $(PKG_CMOCKA_CFLAGS) $(DEPFLAGS) $(WARN) $(CFLAGS) $< \
 		$(if $(filter $(GL_TESTS),$*),$(GL_OBJ) $(BUILD)/gpio_button.o,) \
 		$(if $(filter test_gpio,$*),$(BUILD)/gpio_button.o,) $(CORE_LIB) \
-		$(PKG_CMOCKA_LIBS) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
+		$(PKG_CMOCKA_LIBS) $(PKG_PNG_LIBS) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
 		$(if $(filter test_gpio,$*),$(LIBS_GPIOD),) -lpthread -lm -o $@
 
 # A helper of tests/kiosk_x11.sh: closes the kiosk's window from another X client.
@@ -182,7 +195,7 @@ FUZZ_BINS = $(FUZZ_NAMES:%=$(BUILD)/fuzz/%)
 FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE $(SRC_DIRS:%=-I%) -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
 	-fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_OBJ = $(patsubst %.c,$(BUILD)/fuzz/obj/%.o,$(notdir $(CORE_SRC))) $(BUILD)/fuzz/obj/boards_embedded.o \
-	$(BUILD)/fuzz/obj/shaders_embedded.o
+	$(BUILD)/fuzz/obj/shaders_embedded.o $(BUILD)/fuzz/obj/slide_embedded.o
 
 $(BUILD)/fuzz/obj/%.o: %.c | $(BUILD)/fuzz/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
@@ -191,7 +204,7 @@ $(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h | $(BU
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
 $(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c $(FUZZ_OBJ)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) -lpthread -lm -o $@
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) $(PKG_PNG_LIBS) -lpthread -lm -o $@
 
 $(BUILD)/fuzz/obj: | $(BUILD)
 	mkdir -p $@

@@ -55,6 +55,24 @@ varying vec4 v_shadow3;
 #endif
 varying vec3 v_to_light; // towards the light, not normalised
 varying vec3 v_normal;
+#ifdef LX_PROJECTIVE
+// A spotlight's beam or a projector's slide, looked up through the light's projective
+// matrix [Segal]: nothing behind the light or outside its image is lit; past range_near
+// the light falls linearly with its depth, to none at range_far.
+uniform sampler2D u_beam_tex;
+uniform vec3 u_light_color;
+uniform vec3 u_range; // range_near, 1 / (range_far - range_near), 1 when a range is set else 0
+varying vec4 v_beam;
+
+vec3 projected_light()
+{
+	vec2 st = v_beam.xy / v_beam.w;
+	bvec4 inside = bvec4(greaterThanEqual(st, vec2(0.0)), lessThanEqual(st, vec2(1.0)));
+	float reach = float(all(inside)) * float(v_beam.w > 0.0);
+	float fall = 1.0 - u_range.z * clamp((v_beam.w - u_range.x) * u_range.y, 0.0, 1.0);
+	return texture2D(u_beam_tex, st).rgb * u_light_color * (reach * fall);
+}
+#endif
 
 #if LX_MAPS > 0
 // 1.0 where a map serves the point (in front of its light, inside its bounds), else 0.0.
@@ -140,7 +158,11 @@ void main()
 #endif
 #else
 	float lambert = max(dot(normalize(v_normal), normalize(v_to_light)), 0.0);
+#ifdef LX_PROJECTIVE
+	vec3 c = u_color * (0.22 + 0.78 * lambert * (1.0 - shadowed) * projected_light());
+#else
 	vec3 c = u_color * (0.22 + 0.78 * lambert * (1.0 - shadowed));
+#endif
 	gl_FragColor = vec4(c, 1.0);
 #endif
 }

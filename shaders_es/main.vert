@@ -39,12 +39,20 @@ attribute vec3 a_normal;
 attribute vec3 a_face_normal;
 varying vec3 v_to_light; // affine in the position: interpolated exactly
 varying vec3 v_normal;
+#ifdef LX_PROJECTIVE
+// A spotlight or projector [Segal]: world -> (s q, t q, d, q) of its image, q = d its depth.
+uniform mat4 u_beam;
+varying vec4 v_beam;
+#endif
 
 void main()
 {
 	vec4 world = vec4(a_position + u_offset, 1.0);
 	v_to_light = u_light.w > 0.5 ? u_light.xyz - world.xyz : -u_light.xyz;
 	v_normal = a_normal;
+#ifdef LX_PROJECTIVE
+	v_beam = u_beam * world;
+#endif
 #if LX_MAPS > 0
 	v_facing = dot(a_face_normal, v_to_light);
 #endif

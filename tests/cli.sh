@@ -165,7 +165,10 @@ if "$lixel" bench --size 64x48 --frames 2 --warmup 1 --json --csv "$tmp/b.csv" -
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
   grep -qiE 'nan|inf' "$tmp/bench.json" && no "bench JSON holds NaN or Infinity" || ok
-  [ "$(wc -l <"$tmp/b.csv")" -eq $((6 * 11 + 1)) ] && ok || no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected 67"
+  # a line per method of the registry (the help's list) and configuration, and the header
+  nm=$("$lixel" bench --help 2>&1 | sed -n 's/.*--methods LIST .*from \([a-z|]*\) .*/\1/p' | tr '|' '\n' | grep -c .)
+  [ "$nm" -ge 6 ] && [ "$(wc -l <"$tmp/b.csv")" -eq $((nm * 11 + 1)) ] && ok ||
+    no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected $((nm * 11 + 1)) ($nm methods)"
   head -1 "$tmp/b.csv" | grep -q ',shadow_ms_median,main_ms_median,' && ok || no "bench CSV header: $(head -1 "$tmp/b.csv")"
   [ "$(head -c 4 "$tmp/b.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "bench plot is not a PNG"
   [ "$(ls "$tmp/strips" | wc -l)" -eq 11 ] && ok || no "bench wrote $(ls "$tmp/strips" | wc -l) strips, expected 11"
@@ -269,19 +272,46 @@ below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a + 0 < b + 0) }'; 
 ext() { "$lixel" render --size 160x120 --frames 1 --measure --json --out "$tmp/ext.png" "$@" >"$tmp/ext.json" 2>"$tmp/stderr"; }
 ext --light 0,1e12,0 && grep -q 'taken as directional' "$tmp/ext.json" && below "$(json_num mismatch_pct "$tmp/ext.json")" 1 &&
   ok || no "a light 1e12 m away: $(cat "$tmp/ext.json" "$tmp/stderr")"
-for m in uniform psm tsm lispsm plane; do
+for m in uniform psm tsm lispsm xpsm plane; do
   ext --method $m --light 0,0,0 && below "$(json_num mismatch_pct "$tmp/ext.json")" 1 &&
     [ "$(json_num edge_on_pixels "$tmp/ext.json")" -gt 1000 ] && ok || no "$m, the light on the floor: $(cat "$tmp/ext.json" "$tmp/stderr")"
 done
 ext --scene table --light 0,0.73,0 && grep -q 'inside the bounds of caster' "$tmp/ext.json" && ok ||
   no "the light inside the table's slab: $(cat "$tmp/ext.json" "$tmp/stderr")"
 { cat tests/data/default.scene; echo "box size 1 1 1 at 100000 0"; } >"$tmp/far.scene"
-for m in uniform psm lispsm tsm plane; do
+for m in uniform psm lispsm xpsm tsm plane; do
   ext --method $m --scene "$tmp/far.scene" && below "$(json_num mismatch_pct "$tmp/ext.json")" 0.5 && ok ||
     no "$m, one caster 100 km away: $(cat "$tmp/ext.json" "$tmp/stderr")"
 done
 printf 'light point 0 5 0\nsphere radius 1e-300 at 0 0\n' >"$tmp/tiny.scene"
 expect_says "at least 1e-30" "a radius below single precision" render --scene "$tmp/tiny.scene" $out
+
+# Projective lights: the built-in scenes measure shadows and colour against the reference;
+# a bad slide, beam or fov is one line and exit status 2, nothing written.
+for sc in spotlight projector; do
+  ext --scene $sc && below "$(json_num mismatch_pct "$tmp/ext.json")" 0.5 &&
+    below "$(json_num colour_error "$tmp/ext.json")" 0.5 && [ "$(json_num unlit_pixels "$tmp/ext.json")" -gt 1000 ] &&
+    ok || no "--scene $sc: $(cat "$tmp/ext.json" "$tmp/stderr")"
+done
+"$lixel" render --scene projector --size 96x64 --frames 1 --out "$tmp/p.png" --reference-out "$tmp/pref.png" >/dev/null 2>&1 &&
+  [ "$(head -c 4 "$tmp/pref.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "--reference-out wrote no PNG"
+floor='plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10'
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide none.png\n%s\n' "$floor" >"$tmp/noslide.scene"
+expect_says "noslide.scene:1: slide '" "a missing slide" render --scene "$tmp/noslide.scene" $out
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide noslide.scene\n%s\n' "$floor" >"$tmp/textslide.scene"
+expect_says "expected a PNG file" "a slide that is not a PNG" render --scene "$tmp/textslide.scene" $out
+head -c 60 tests/data/slide.png >"$tmp/trunc.png"
+printf 'light projector 0 3 3 at 0 0 0 fov 40 slide trunc.png\n%s\n' "$floor" >"$tmp/trunc.scene"
+expect_says "not a readable PNG" "a truncated slide" render --scene "$tmp/trunc.scene" $out
+printf 'light spot 0 3 3 at 0 0 0 fov 40 beam trunc.png\n%s\n' "$floor" >"$tmp/truncbeam.scene"
+expect_says "beam '" "a truncated beam" render --scene "$tmp/truncbeam.scene" $out
+printf 'light spot 0 3 3 at 0 0 0 fov 0\n%s\n' "$floor" >"$tmp/fov0.scene"
+expect_says "fov in (0, 150) degrees, got 0" "a zero fov" render --scene "$tmp/fov0.scene" $out
+printf 'light spot 0 3 3 at 0 3 3 fov 40\n%s\n' "$floor" >"$tmp/at.scene"
+expect_says "position differs from at" "a spotlight looking at itself" render --scene "$tmp/at.scene" $out
+printf 'light spot 0 0.3 0 at 0 0 -3 fov 40\nsphere radius 0.5 at 0 0 bounce 0 0\n%s\n' "$floor" >"$tmp/inside.scene"
+ext --scene "$tmp/inside.scene" && grep -q 'the light is inside the bounds of caster 1' "$tmp/ext.json" && ok ||
+  no "a spotlight inside a caster: $(cat "$tmp/ext.json" "$tmp/stderr")"
 
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -115,7 +115,7 @@ wait "$pid"; st=$?
 # 4. a board whose GPIO chip is missing (no GPIO here): one warning, and it runs on
 "$lixel" kiosk --platform x11 --board raspberry-pi-4 --gpio-chip lixel-no-chip --size 320x240 --frames 10 >"$tmp/out" 2>&1; st=$?
 [ "$st" -eq 0 ] && grep -q '^lixel kiosk: warning: gpio: no chip named lixel-no-chip' "$tmp/out" &&
-  grep -q 'board raspberry-pi-4$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
+  grep -q 'board raspberry-pi-4; light point$' "$tmp/out" && ok || no "missing chip: status $st: $(cat "$tmp/out")"
 
 # 4b. --gpio-chip before --gpio-line on a board without a button: accepted, the chip
 # missing here is one warning and it runs on
@@ -244,5 +244,16 @@ else
   no "no second Xvfb display could be started"
 fi
 
+
+# 9. the projector scene on x11: the slide through the projective light, the casters
+#    cutting it; frame N read back into --snapshot (a PNG), and --snapshot needs --frames
+"$lixel" kiosk --platform x11 --size 320x240 --scene projector --frames 20 --snapshot "$tmp/snap.png" >"$tmp/out" 2>&1
+st=$?
+[ "$st" -eq 0 ] && grep -q '; light projector$' "$tmp/out" && ok || no "kiosk --scene projector: exit status $st: $(cat "$tmp/out")"
+[ "$(head -c 4 "$tmp/snap.png" 2>/dev/null | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "kiosk --snapshot wrote no PNG"
+"$lixel" kiosk --platform x11 --scene projector --snapshot "$tmp/snap2.png" >"$tmp/out" 2>&1
+st=$?
+[ "$st" -eq 2 ] && [ ! -e "$tmp/snap2.png" ] && grep -q -- '--snapshot: expected --frames N' "$tmp/out" && ok ||
+  no "kiosk --snapshot without --frames: exit status $st: $(cat "$tmp/out")"
 echo "kiosk: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,3 +1,4 @@
+#include "light_image.h"
 #include "mesh.h"
 #include "scene.h"
 #include "test_util.h"
@@ -70,14 +71,28 @@ static void same_scene(const struct lx_scene *a, const struct lx_scene *b)
 static void scene_files_match_the_built_in_scenes(void **state)
 {
 	(void)state;
-	static const char *const names[] = {"default", "table"};
-	for (int k = 0; k < 2; k++) {
+	static const char *const names[] = {"default", "table", "spotlight", "projector"};
+	for (int k = 0; k < 4; k++) {
 		struct lx_scene a, b;
 		char err[256], path[256];
 		assert_true(lx_scene_builtin(names[k], &a));
 		snprintf(path, sizeof path, "%s/%s.scene", LX_TEST_DATA, names[k]);
 		if (!lx_scene_load(path, &b, err, sizeof err))
 			fail_msg("%s", err);
+		if (a.light.image == LX_IMAGE_BUILTIN_SLIDE) {
+			/* the file names the slide the binary holds: the same pixels */
+			struct lx_image ia, ib;
+			assert_true(lx_light_image_load(&a.light, &ia, err, sizeof err));
+			if (!lx_light_image_load(&b.light, &ib, err, sizeof err))
+				fail_msg("%s", err);
+			assert_int_equal(ia.width, ib.width);
+			assert_int_equal(ia.height, ib.height);
+			assert_memory_equal(ia.rgba, ib.rgba, (size_t)ia.width * ia.height * 4);
+			lx_image_free(&ia);
+			lx_image_free(&ib);
+			b.light.image = a.light.image;
+			memset(b.light.image_path, 0, sizeof b.light.image_path);
+		}
 		same_scene(&a, &b);
 	}
 	struct lx_scene c;
@@ -96,7 +111,8 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 	static const struct bad_case cases[] = {
 		{"light point 1 2\n", 1, "expected a number for light position"},
 		{"light point 1 2 three\n", 1, "got 'three'"},
-		{"light spot 1 2 3\n", 1, "expected 'point' or 'directional'"},
+		{"light lamp 1 2 3\n", 1, "expected 'point', 'directional', 'spot' or 'projector'"},
+		{"light spot 1 2 3\n", 1, "expected 'light spot X Y Z at X Y Z fov DEG"},
 		{"light directional 0 0 0\n", 1, "non-zero light direction"},
 		{"light point 0 5 0\nplane floor corner 0 0 0 edge1 1 0 0 edge2 2 0 0\n", 2, "not parallel"},
 		/* found by fuzz_scene: the cross product's squared length overflowed, the
@@ -132,6 +148,19 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light point 0 5 0\nplane fallback corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "other than 'fallback'"},
 		{"light point 0 5 0\nplane fl\xffr corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
 		{"light point 0 5 0\nplane fl\"r corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a plane name"},
+		/* projective lights */
+		{"light spot 0 5 0 at 0 0 0 fov 0\n", 1, "light fov in (0, 150) degrees, got 0"},
+		{"light spot 0 5 0 at 0 0 0 fov 150\n", 1, "light fov in (0, 150)"},
+		{"light spot 0 5 0 fov 40\n", 1, "expected 'light spot X Y Z at X Y Z fov DEG"},
+		{"light spot 0 5 0 at 0 5 0 fov 40\n", 1, "position differs from at"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 up 0 -1 0\n", 1, "up is not along its axis"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 range 3 2\n", 1, "0 <= NEAR < FAR, got 3 2"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 range -1 2\n", 1, "0 <= NEAR < FAR"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 color 1 2 1\n", 1, "color components in [0, 1]"},
+		{"light spot 0 5 0 at 0 0 0 fov 40 slide x.png\n", 1, "expected at, fov, up, beam, color or range in a spot light, got 'slide'"},
+		{"light projector 0 5 0 at 0 0 0 fov 40\n", 1, "expected 'slide FILE.png' in a projector light"},
+		{"light projector 0 5 0 at 0 0 0 fov 40 slide\n", 1, "expected a PNG file after 'slide'"},
+		{"light projector 0 5 0 at 0 0 0 fov 40 slide no-such.png\n", 1, "slide 'no-such.png': cannot read it"},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct lx_scene s;
@@ -153,6 +182,14 @@ static void missing_and_binary_files(void **state)
 	assert_false(lx_scene_load(LX_TEST_DATA "/no-such-file.scene", &s, err, sizeof err));
 	assert_non_null(strstr(err, "no-such-file.scene: cannot open"));
 	assert_false(lx_scene_load(LX_TEST_DATA, &s, err, sizeof err)); /* a directory */
+	/* a slide that is not a PNG; one resolved against the scene file's folder */
+	assert_false(lx_scene_parse("light projector 0 5 0 at 0 0 0 fov 40 slide default.scene\nsphere radius 1 at 0 0\n",
+				    LX_TEST_DATA "/p.scene", &s, err, sizeof err));
+	assert_non_null(strstr(err, "default.scene': expected a PNG file"));
+	assert_true(lx_scene_parse("light projector 0 5 0 at 0 0 0 fov 40 slide slide.png\nsphere radius 1 at 0 0\n",
+				   LX_TEST_DATA "/p.scene", &s, err, sizeof err));
+	assert_int_equal(s.light.image, LX_IMAGE_FILE);
+	assert_true(fabs(s.light.aspect - 256.0 / 192) < 1e-12); /* from the PNG's header */
 }
 
 /* Validation is relative to the scene's own size: the default scene in micrometres or
@@ -220,6 +257,51 @@ static void caster_meshes_are_closed_and_outward(void **state)
 	lx_meshes_free(&m);
 }
 
+/* A projective light's matrix, image look-up and fall-off [Segal], against values worked
+ * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
+static void projective_light_geometry(void **state)
+{
+	(void)state;
+	struct lx_light l = lx_light_white(v3(0, 5, 0));
+	l.projective = LX_LIGHT_SPOT, l.at = v3(0, 0, 0), l.up = v3(0, 0, -1), l.fov_deg = 60;
+	l.range_near = 2, l.range_far = 6;
+	mat4 m;
+	assert_true(lx_light_projection(&l, &m));
+	vec4 q = m4_mul_point(&m, v3(0, 0, 0)); /* on the axis, 5 m away: the image's centre */
+	assert_true(fabs(q.x / q.w - 0.5) < 1e-12 && fabs(q.y / q.w - 0.5) < 1e-12 && fabs(q.w - 5) < 1e-12);
+	double edge = 5 * tan(M_PI / 6); /* the frustum's side on the floor: s = 1 there */
+	q = m4_mul_point(&m, v3(edge, 0, 0));
+	assert_true(fabs(q.x / q.w - 1) < 1e-12);
+	q = m4_mul_point(&m, v3(0, 0, -edge)); /* up is -z: t = 1 */
+	assert_true(fabs(q.y / q.w - 1) < 1e-12);
+	assert_true(lx_light_reaches(&l, &m, v3(0.99 * edge, 0, 0)));
+	assert_false(lx_light_reaches(&l, &m, v3(1.01 * edge, 0, 0)));
+	assert_false(lx_light_reaches(&l, &m, v3(0, 7, 0)));  /* behind the light */
+	assert_false(lx_light_reaches(&l, &m, v3(0, -1.5, 0))); /* past range_far (6.5 m away) */
+	struct lx_image beam;
+	char err[256];
+	assert_true(lx_light_image_load(&l, &beam, err, sizeof err));
+	assert_int_equal(beam.width, LX_ROUND_BEAM_SIZE);
+	/* the round beam: full near the axis, none past the cone's half-angle, round */
+	vec3 c = lx_image_bilinear(&beam, 0.5, 0.5), corner = lx_image_bilinear(&beam, 0.999, 0.999);
+	assert_true(c.x == 1 && corner.x == 0);
+	vec3 a = lx_image_bilinear(&beam, 0.8, 0.5), b = lx_image_bilinear(&beam, 0.5, 0.8);
+	assert_true(fabs(a.x - b.x) < 1e-12 && a.x > 0 && a.x < 1);
+	/* the fall-off with depth: full up to range_near, half way at 4 m, none at 6 m */
+	assert_true(fabs(lx_projective_light_at(&l, &m, &beam, v3(0, 3.5, 0)).x - 1) < 1e-12);
+	assert_true(fabs(lx_projective_light_at(&l, &m, &beam, v3(0, 1, 0)).x - 0.5) < 1e-12);
+	assert_true(lx_projective_light_at(&l, &m, &beam, v3(0, 7, 0)).x == 0);
+	lx_image_free(&beam);
+	/* bilinear as GL's LINEAR filter: texel centres exact, half way between them the mean,
+	 * clamped to the edge outside */
+	uint8_t px[2 * 4] = {0, 100, 200, 255, 255, 50, 0, 255};
+	struct lx_image im = {2, 1, px};
+	assert_true(fabs(lx_image_bilinear(&im, 0.25, 0.5).y - 100 / 255.0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, 0.5, 0.5).x - 127.5 / 255.0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, 1.5, 0.5).z - 0) < 1e-12);
+	assert_true(fabs(lx_image_bilinear(&im, -3, 7).z - 200 / 255.0) < 1e-12);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -227,6 +309,7 @@ int main(void)
 		cmocka_unit_test(scene_files_match_the_built_in_scenes),
 		cmocka_unit_test(malformed_files_name_the_line_and_what_was_expected),
 		cmocka_unit_test(missing_and_binary_files),
+		cmocka_unit_test(projective_light_geometry),
 		cmocka_unit_test(any_scale_parses),
 		cmocka_unit_test(directional_light_and_defaults),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),

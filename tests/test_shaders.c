@@ -62,6 +62,21 @@ static void every_variant_is_glsl_es_100(void **state)
 						write_variant(&b, "main.frag", defines, false, tag);
 						write_variant(&b, "main.frag", defines, true, tag);
 					}
+	/* a projective light's shaded variants (the decision reads no light image), with each
+	 * filter, every map read */
+	for (int maps = 0; maps <= 4; maps++)
+		for (int mediump = 0; mediump < 2; mediump++)
+			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
+				unsigned all = (1u << maps) - 1;
+				lx_main_defines(maps, all, false, mediump, defines, sizeof defines);
+				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
+				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
+				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, mediump, filter);
+				if (filter == 0)
+					write_variant(&b, "main.vert", defines, false, tag);
+				write_variant(&b, "main.frag", defines, false, tag);
+				write_variant(&b, "main.frag", defines, true, tag);
+			}
 	for (int mediump = 0; mediump < 2; mediump++)
 		for (int lima = 0; lima < 2; lima++) {
 			const char *d = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;

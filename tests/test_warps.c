@@ -1,9 +1,12 @@
-/* The warping methods (PSM, LiSPSM, TSM): LiSPSM's 1-D error oracle, its parameter's
- * pitfalls and fade to uniform, TSM's 80% rule, PSM's three kinds of light in
- * post-perspective space, and for each the coverage of every shadow over the standard
- * and random configurations. GL-free. */
+/* The warping methods (PSM, LiSPSM, XPSM, TSM): LiSPSM's 1-D error oracle, its
+ * parameter's pitfalls and fade to uniform, TSM's 80% rule, PSM's three kinds of light in
+ * post-perspective space, XPSM's degenerate cases, depth range and sampling near the
+ * viewer, and for each the coverage of every shadow over the standard and random
+ * configurations. GL-free. */
 #include "configs.h"
+#include "light_space.h"
 #include "method_lispsm.h"
+#include "metrics.h"
 #include "shadow_method.h"
 #include "test_util.h"
 #include "method_fixture.h"
@@ -169,6 +172,166 @@ static void tsm_covers_every_shadow(void **state)
 	covered("tsm");
 }
 
+static void xpsm_covers_every_shadow(void **state)
+{
+	(void)state;
+	covered("xpsm");
+}
+
+/* One of the scenes the XPSM tests use: the default scene under configuration k (past
+ * the standard ones, a random eye and light), or the table lit from below, where the
+ * floor is the caster of every shadow. */
+static void xpsm_scene(struct setup *s, int k, uint64_t *seed)
+{
+	memset(s, 0, sizeof *s);
+	lx_scene_default(&s->scene);
+	if (k < lx_config_count)
+		lx_config_apply(&lx_configs[k], &s->scene);
+	else if (k == lx_config_count) {
+		assert_true(lx_scene_builtin("table", &s->scene));
+		s->scene.light.directional = true;
+		assert_true(v3_normalize(v3(0.44, 0.888, -0.131), &s->scene.light.direction));
+	} else {
+		s->scene.camera.eye = v3(test_rand(seed) * 10 - 5, 0.3 + test_rand(seed) * 5, test_rand(seed) * 10 - 3);
+		s->scene.camera.at = v3(test_rand(seed) * 4 - 2, test_rand(seed) * 1.5, test_rand(seed) * 4 - 3);
+		s->scene.light.directional = k % 2;
+		if (k % 2)
+			assert_true(v3_normalize(v3(test_rand(seed) - 0.5, 2 * test_rand(seed) - 1, test_rand(seed) - 0.5),
+						 &s->scene.light.direction));
+		else
+			s->scene.light.position = v3(test_rand(seed) * 12 - 6, 3.5 + test_rand(seed) * 5, test_rand(seed) * 12 - 4);
+	}
+}
+
+/* The shadow pass flattens a caster vertex nearer than a one-map method's near plane onto
+ * it, which bends the depth of a long triangle's part in the map: XPSM keeps every
+ * caster that can reach the receivers within its depth range and in front of its w = 0
+ * plane (w >= eps_w), so nothing is flattened. Its first version clipped casters where
+ * w < 1 and kept their x, y only: a floor lit from below (the table scene here) lost
+ * every shadow it cast on the table, 1.04% of the pixels. */
+static void xpsm_flattens_no_caster(void **state)
+{
+	(void)state;
+	uint64_t seed = 77;
+	int warped = 0;
+	for (int k = 0; k < 120; k++) {
+		struct setup s;
+		xpsm_scene(&s, k, &seed);
+		assert_true(build(&s, "xpsm", 320, 240, k == lx_config_count ? 7.353 : 0.3));
+		const struct lx_shadow_map *map = &s.res.maps[0];
+		assert_true(m4_finite(&map->light_clip));
+		if (s.res.warning_count || !map->rendered) { /* the uniform map stands, or no map */
+			lx_meshes_free(&s.meshes);
+			continue;
+		}
+		struct lx_light_space ls;
+		lx_light_space_build(&s.frame, &ls);
+		for (int id = 0; id < s.frame.object_count; id++)
+			for (int c = 0; (ls.casting >> id & 1) && c < 8; c++) {
+				vec4 q = m4_mul_point(&map->light_clip, v3_box_corner(s.frame.bmin[id], s.frame.bmax[id], c));
+				if (!(q.w > 0 && q.z >= -q.w * (1 + 1e-9)))
+					fail_msg("configuration %d: corner %d of object %d at clip depth %g, w %g: the shadow pass would flatten it",
+						 k, c, id, q.z / q.w, q.w);
+			}
+		warped++;
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("xpsm: %d of 120 maps warped, no caster nearer than the near plane\n", warped);
+	assert_true(warped > 60);
+}
+
+/* Where the warp means nothing XPSM keeps the uniform map, finite, and says so. */
+static void xpsm_degenerate_cases_warn(void **state)
+{
+	(void)state;
+	const struct {
+		const char *what;
+		vec3 eye, at;
+		int light; /* 0: point at v, 1: directional along v, 2: point at the eye */
+		vec3 v;
+		const char *warning;
+	} cases[] = {
+		{"directional light along the view (behind the viewer)", {0, 2, 6}, {0, 0.8, 0}, 1, {0, -1.2, -6},
+		 "the view runs along the light's rays (within 1.1 degrees, the light behind"},
+		{"directional light against the view (dueling frusta)", {0, 2, 6}, {0, 0.8, 0}, 1, {0, 1.2, 6},
+		 "the light facing the viewer"},
+		{"miner's lamp: the point light at the eye", {0, 2, 6}, {0, 0.8, 0}, 2, {0, 0, 0}, "runs along the light's rays"},
+		{"the point light on the floor", {0, 2, 6}, {0, 0.8, 0}, 0, {0.5, 0, 1}, "behind the point light"},
+		{"the point light inside the box", {0, 2, 6}, {0, 0.8, 0}, 0, {1.4, 1.0, -0.6}, "behind the point light"},
+		{"the view starts behind the point light", {2.26, 3.03, 6.66}, {1.12, 0.29, -2.46}, 0, {1.3, 3.98, 2.87},
+		 "the view starts behind the point light"},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s, u;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		s.scene.camera.eye = cases[i].eye, s.scene.camera.at = cases[i].at;
+		s.scene.light.directional = cases[i].light == 1;
+		if (cases[i].light == 1)
+			assert_true(v3_normalize(cases[i].v, &s.scene.light.direction));
+		else
+			s.scene.light.position = cases[i].light == 2 ? cases[i].eye : cases[i].v;
+		u = s;
+		assert_true(build(&s, "xpsm", 320, 240, 0.3));
+		assert_true(build(&u, "uniform", 320, 240, 0.3));
+		const char *said = "";
+		for (int w = 0; w < s.res.warning_count; w++)
+			if (!strncmp(s.res.warnings[w], "xpsm: ", 6))
+				said = s.res.warnings[w];
+		print_message("%-52s %s\n", cases[i].what, said);
+		if (!strstr(said, cases[i].warning))
+			fail_msg("%s: expected the warning '%s'", cases[i].what, cases[i].warning);
+		assert_true(s.res.maps[0].rendered && m4_finite(&s.res.maps[0].light_clip));
+		assert_memory_equal(&s.res.maps[0].light_clip, &u.res.maps[0].light_clip, sizeof(mat4));
+		lx_meshes_free(&s.meshes);
+		lx_meshes_free(&u.meshes);
+	}
+}
+
+/* Lixels per pixel (lpp) at window pixel (x, y) of plane p, through map 0. */
+static double lpp_at(const struct setup *s, int p, int x, int y)
+{
+	mat3 h;
+	double smax, smin;
+	vec3 q;
+	assert_true(lx_pixel_on_plane(&s->frame, p, x, y, &q));
+	assert_true(lx_plane_homography(&s->frame, &s->atlas, &s->res.maps[0], p, &h));
+	assert_true(lx_homography_jacobian(&h, x + 0.5, y + 0.5, &smax, &smin));
+	return smax * smin;
+}
+
+/* XPSM's warp on the default view: the floor nearest the viewer (the bottom of the
+ * window) gets more lixels per pixel than from the uniform map, the far floor fewer,
+ * and the floor's worst lixel spans fewer pixels (m_max). */
+static void xpsm_samples_more_near_the_viewer(void **state)
+{
+	(void)state;
+	enum { w = 640, h = 480 };
+	const char *names[2] = {"uniform", "xpsm"};
+	double near[2], far[2], m_max[2];
+	for (int k = 0; k < 2; k++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		assert_true(build(&s, names[k], w, h, 0.3));
+		assert_int_equal(s.res.warning_count, 0);
+		int top = 0; /* the floor's farthest row in the window's centre column */
+		for (int y = 0; y < h; y++)
+			if (lx_pixel_on_plane(&s.frame, 0, w / 2, y, &(vec3){0, 0, 0}))
+				top = y;
+		near[k] = lpp_at(&s, 0, w / 2, 0), far[k] = lpp_at(&s, 0, w / 2, top);
+		struct lx_plane_sampling ps;
+		assert_true(lx_plane_sampling(&s.frame, &s.atlas, &s.res, 0, NULL, &ps));
+		m_max[k] = ps.m_max;
+		print_message("%-8s floor: lpp %.3f nearest the viewer, %.3f at its far end (row %d); m_max %.3f\n", names[k],
+			      near[k], far[k], top, m_max[k]);
+		lx_meshes_free(&s.meshes);
+	}
+	assert_true(near[1] > 1.5 * near[0]);
+	assert_true(far[1] < far[0]);
+	assert_true(m_max[1] < m_max[0]);
+}
+
 /* TSM's 80% rule: the focus point (the view's centre at half its depth) lands on the
  * map's 80% line: 80% of the map lies between the trapezoid's top (y = -1) and it. */
 static void tsm_focus_on_the_80_percent_line(void **state)
@@ -201,6 +364,10 @@ int main(void)
 		cmocka_unit_test(psm_covers_every_shadow),
 		cmocka_unit_test(psm_branches),
 		cmocka_unit_test(tsm_focus_on_the_80_percent_line),
+		cmocka_unit_test(xpsm_covers_every_shadow),
+		cmocka_unit_test(xpsm_flattens_no_caster),
+		cmocka_unit_test(xpsm_degenerate_cases_warn),
+		cmocka_unit_test(xpsm_samples_more_near_the_viewer),
 	};
 	return cmocka_run_group_tests_name("warps", tests, NULL, NULL);
 }

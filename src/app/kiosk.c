@@ -5,7 +5,9 @@
 #include "gl_api.h"
 #include "gpio_button.h"
 #include "method_run.h"
+#include "out_file.h"
 #include "overlay.h"
+#include "png_out.h"
 #include "platform.h"
 #include <math.h>
 #include <poll.h>
@@ -35,7 +37,8 @@ static void usage(FILE *f)
 {
 	fprintf(f, "usage: lixel kiosk [--platform kms|x11] [--board NAME|FILE] [--frames N] [--size WxH]\n"
 		   "                   [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
-		   "                   [--scene NAME|FILE] [--methods LIST] [--gpio-chip NAME] [--gpio-line N]\n"
+		   "                   [--scene NAME|FILE] [--snapshot FILE.png] [--methods LIST]\n"
+		   "                   [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
 		   "                   [--depth-precision auto|highp|mediump] [--filters LIST]\n"
 		   "\n"
@@ -53,6 +56,7 @@ static void usage(FILE *f)
 		   "  --mode WxH[@HZ]   the display mode (default: the board's, else the preferred one)\n"
 		   "  --board NAME|FILE a board profile: %s (default desktop)\n"
 		   "  --frames N        stop after N frames\n"
+		   "  --snapshot FILE.png  with --frames N: frame N, read back before it is shown, as a PNG\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
 		   "  --filters LIST    the shadow filters a press steps through within each method,\n"
@@ -81,6 +85,7 @@ static void usage(FILE *f)
 /* What the command line asks for; the board profile with its overrides applied. */
 struct kiosk_args {
 	const char *platform, *scene_arg, *methods_arg, *filters_arg;
+	const char *snapshot; /* with --frames: the last frame as a PNG, or NULL */
 	long frames; /* -1: until stopped */
 	bool overlay;
 	int width, height;
@@ -112,6 +117,14 @@ static int kiosk_option(struct kiosk_args *k, const char *a, const char *v)
 			return bad(a, "WxH", v);
 	} else if (!strcmp(a, "--scene"))
 		k->scene_arg = v;
+	else if (!strcmp(a, "--snapshot")) {
+		char err[4300];
+		if (!lx_out_check(v, err, sizeof err)) {
+			fprintf(stderr, "lixel kiosk: --snapshot: %s\n", err);
+			return 2;
+		}
+		k->snapshot = v;
+	}
 	else if (!strcmp(a, "--methods"))
 		k->methods_arg = v;
 	else if (!strcmp(a, "--filters"))
@@ -153,7 +166,7 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 		fprintf(stderr, "lixel: %s\n", err);
 		return 2;
 	}
-	static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--methods",
+	static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--snapshot", "--methods",
 						 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
 						 "--long-press-ms", "--device", "--mode", "--plane-lixels",
 						 "--fallback-lixels", "--uniform-lixels", "--depth-precision", "--filters"};
@@ -190,6 +203,8 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 		if (!lx_board_parse(line, lists[i][0], &k->board, err, sizeof err))
 			return bad_override(err);
 	}
+	if (k->snapshot && k->frames < 0)
+		return bad("--snapshot", "--frames N with it (the snapshot is frame N)", k->snapshot);
 	return 0;
 }
 
@@ -271,10 +286,10 @@ static int kiosk_methods(struct kiosk *k)
 	}
 	const struct lx_gl_caps *c = &k->caps;
 	printf("lixel kiosk: GL_VENDOR %s, GL_RENDERER %s, GL_VERSION %s; %s %dx%d; fragment precision %s (%d bits); "
-	       "depth %s, self-test %s; board %s\n",
+	       "depth %s, self-test %s; board %s; light %s\n",
 	       c->vendor, c->renderer, c->version, k->plat->name, k->plat->width, k->plat->height,
 	       c->fragment_highp ? "highp" : "mediump", c->fragment_highp ? c->fragment_highp_bits : c->fragment_mediump_bits,
-	       k->runs[0].depth.path, k->runs[0].depth.selftest, b->name);
+	       k->runs[0].depth.path, k->runs[0].depth.selftest, b->name, lx_light_kind_name(&k->scene.light));
 	if (k->runs[0].depth.warning[0])
 		printf("lixel kiosk: warning: %s\n", k->runs[0].depth.warning);
 	return 0;
@@ -429,6 +444,24 @@ static void kiosk_status(struct kiosk *k, bool final)
 
 /* Frames until stopped: by a key or a signal, after N frames, or when the display goes
  * away. Returns the exit status. */
+/* --snapshot: the frame just drawn, read back before it is shown. */
+static bool kiosk_snapshot(struct kiosk *k)
+{
+	char err[4400];
+	size_t bytes = (size_t)k->plat->width * k->plat->height * 4;
+	uint8_t *rgba = malloc(bytes);
+	if (!rgba) {
+		fprintf(stderr, "lixel kiosk: --snapshot: out of memory for a %dx%d image\n", k->plat->width, k->plat->height);
+		return false;
+	}
+	lx_renderer_read(k->runs[k->current].renderer, rgba);
+	bool ok = lx_png_write(k->args->snapshot, rgba, k->plat->width, k->plat->height, err, sizeof err);
+	if (!ok)
+		fprintf(stderr, "lixel kiosk: --snapshot: %s\n", err);
+	free(rgba);
+	return ok;
+}
+
 static int kiosk_loop(struct kiosk *k)
 {
 	char err[512];
@@ -445,6 +478,10 @@ static int kiosk_loop(struct kiosk *k)
 		lx_method_run_draw(&k->runs[k->current], &f);
 		if (k->args->overlay && k->ov)
 			kiosk_overlay(k, &f, t);
+		if (k->args->snapshot && k->frame + 1 == k->args->frames && !kiosk_snapshot(k)) {
+			status = 1; /* the path was checked at start: a write that fails now is the system's */
+			break;
+		}
 		k->plat->swap(k->plat);
 		k->frame++, k->window_frames++;
 		int shorts = 0, longs = 0;

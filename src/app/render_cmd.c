@@ -42,6 +42,7 @@ static void render_usage(FILE *f)
 		"  --decision-out FILE.png  the per-pixel shadow decision: shadowed red, lit tinted by object\n"
 		"  --mismatch-out FILE.png  where the decision differs from the exact reference (implies\n"
 		"                       --measure): missing shadow red, false shadow blue, silhouette yellow\n"
+		"  --reference-out FILE.png  the exact reference's shaded image (implies --measure)\n"
 		"  --atlas-out FILE.png the shadow atlas: depth as grey (near dark, far white), guard bands red\n"
 		"  --measure            compare with the exact reference ray caster and compute the\n"
 		"                       sampling figures of each plane of interest, and the soft-edge\n"
@@ -114,7 +115,10 @@ static void print_text(const struct lx_render_report *r, const char *out)
 		       m->mismatch_pct, m->compared, m->false_shadow_pct, m->missing_shadow_pct, m->silhouette);
 		if (m->edge_on)
 			printf("; %ld pixels the light grazes, not compared", m->edge_on);
+		if (m->unlit)
+			printf("; %ld pixels the light does not reach, not compared", m->unlit);
 		printf("\n");
+		printf("colour error: %.3f levels of 255 (mean over the pixels and R, G, B)\n", r->colour_error);
 		if (r->soft_measured)
 			printf("soft edge: %.4f%% mean visibility error (filter %s) against a %.3g-degree area light\n",
 			       r->soft_error_pct, r->filter, r->light_size_deg);
@@ -218,6 +222,8 @@ static void print_json(const struct lx_render_report *r)
 		lx_json_key(&j, "compared_pixels"), lx_json_int(&j, m->compared);
 		lx_json_key(&j, "silhouette_pixels"), lx_json_int(&j, m->silhouette);
 		lx_json_key(&j, "edge_on_pixels"), lx_json_int(&j, m->edge_on);
+		lx_json_key(&j, "unlit_pixels"), lx_json_int(&j, m->unlit);
+		lx_json_key(&j, "colour_error"), lx_json_number(&j, r->colour_error);
 		if (r->soft_measured) {
 			lx_json_key(&j, "soft_error_pct"), lx_json_number(&j, r->soft_error_pct);
 			lx_json_key(&j, "light_size_deg"), lx_json_number(&j, r->light_size_deg);
@@ -278,6 +284,8 @@ static int job_option(struct lx_render_job *job, const char *a, const char *v)
 		job->decision_png = v;
 	else if (!strcmp(a, "--mismatch-out"))
 		job->mismatch_png = v, job->measure = true;
+	else if (!strcmp(a, "--reference-out"))
+		job->reference_png = v, job->measure = true;
 	else if (!strcmp(a, "--atlas-out"))
 		job->atlas_png = v;
 	else if (!strcmp(a, "--frames")) {
@@ -333,7 +341,7 @@ static int render_parse(int argc, char **argv, struct render_args *r)
 					  .light_size_deg = LX_DEFAULT_LIGHT_SIZE_DEG}};
 	static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye", "--at", "--fov",
 						 "--light", "--light-dir", "--time", "--platform", "--out", "--decision-out",
-						 "--mismatch-out", "--atlas-out", "--frames", "--bias", "--depth-precision",
+						 "--mismatch-out", "--reference-out", "--atlas-out", "--frames", "--bias", "--depth-precision",
 						 "--uniform-lixels", "--plane-lixels", "--fallback-lixels", LX_PLANE_OPTION_NAMES,
 						 "--filter", "--light-size"};
 	for (int i = 0; i < argc; i++) {
@@ -376,7 +384,8 @@ static int render_scene(struct render_args *r)
 		return 2;
 	}
 	if (!writable_path("--out", job->out_png) || !writable_path("--decision-out", job->decision_png) ||
-	    !writable_path("--mismatch-out", job->mismatch_png) || !writable_path("--atlas-out", job->atlas_png) ||
+	    !writable_path("--mismatch-out", job->mismatch_png) || !writable_path("--reference-out", job->reference_png) ||
+	    !writable_path("--atlas-out", job->atlas_png) ||
 	    !lx_arg_scene(r->scene_file, &job->scene))
 		return 2;
 	struct lx_scene *s = &job->scene;

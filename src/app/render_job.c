@@ -149,16 +149,22 @@ static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, co
 /* The exact reference, the mismatch and the planes' figures (and their warnings), and
  * the mismatch image. False after err. */
 static bool measure(const struct lx_render_job *job, const struct lx_frame *frame, struct lx_render_report *rep,
-		    uint8_t *rgba, char *err, size_t errlen)
+		    const struct lx_method_run *mr, const uint8_t *shaded, uint8_t *rgba, char *err, size_t errlen)
 {
 	long n = (long)job->width * job->height;
 	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
 	rep->ref_shadow = malloc((size_t)n);
 	if (!rep->ref_object || !rep->ref_shadow ||
-	    !lx_reference_image(frame, rep->ref_object, rep->ref_shadow, job->reference_threads)) {
+	    !lx_reference_image(frame, rep->ref_object, rep->ref_shadow, job->reference_threads) ||
+	    !lx_reference_colors(frame, mr->light_image.rgba ? &mr->light_image : NULL, rep->ref_shadow, rgba,
+				 job->reference_threads)) {
 		snprintf(err, errlen, "out of memory for the reference image");
 		return false;
 	}
+	/* colour_error: the shaded frame against the reference's shading of the same view */
+	rep->colour_error = lx_colour_error(shaded, rgba, n);
+	if (job->reference_png && !lx_png_write(job->reference_png, rgba, job->width, job->height, err, errlen))
+		return false;
 	rep->plane_count = job->scene.plane_count;
 	lx_measure(frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
 		   &rep->mismatch, rep->planes);
@@ -205,10 +211,19 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 	ok = ok && time_frames(job, &mr, frame, rep, rgba, err, errlen);
 	ok = ok && (!job->out_png || lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen));
 	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, &rep->atlas, job->atlas_png, err, errlen));
+	/* the shaded frame, kept for the colour error (the decision pass reuses rgba) */
+	uint8_t *shaded = ok && job->measure ? malloc((size_t)job->width * job->height * 4) : NULL;
+	if (ok && job->measure && !shaded) {
+		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
+		ok = false;
+	}
+	if (shaded)
+		memcpy(shaded, rgba, (size_t)job->width * job->height * 4);
 	if (ok && (job->measure || job->keep_pixels || job->decision_png))
 		ok = decide(job, &mr, frame, rep, rgba, err, errlen);
 	if (ok && job->measure)
-		ok = measure(job, frame, rep, rgba, err, errlen);
+		ok = measure(job, frame, rep, &mr, shaded, rgba, err, errlen);
+	free(shaded);
 	free(rgba);
 	lx_method_run_free(&mr);
 	return ok ? 0 : 1;

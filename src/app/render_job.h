@@ -26,6 +26,7 @@ struct lx_render_job {
 	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
 	const char *mismatch_png; /* with measure: where the decision differs from the reference, or NULL */
 	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
+	const char *reference_png; /* with measure: the reference's shaded image, or NULL */
 };
 
 struct lx_render_report {
@@ -41,6 +42,7 @@ struct lx_render_report {
 	 * pixels that ran a shadow lookup, in percent; negative when not known */
 	double lookup_pct;
 	struct lx_mismatch mismatch;
+	double colour_error; /* with measure: colour_error of the shaded frame (docs/lixel.md) */
 	char filter[16];
 	bool soft_measured;    /* soft_error_pct holds, against an area light of light_size_deg */
 	double soft_error_pct, light_size_deg;

@@ -1,4 +1,5 @@
 #include "method_run.h"
+#include "light_image.h"
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -26,12 +27,15 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	int nreq = lx_shadow_method_regions(mr->method, scene, &mr->options, req);
 	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
 		return 2; /* budgets this GL cannot hold: the input asks too much */
+	if (scene->light.projective != LX_LIGHT_PLAIN && !lx_light_image_load(&scene->light, &mr->light_image, err, errlen))
+		return 2; /* the scene names a file that is not a usable PNG */
 	if (!lx_depth_choose(precision, &mr->depth, err, errlen))
 		return 1;
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
 				      .map_count = nreq, .width = width, .height = height,
 				      .mediump = mr->depth.mediump, .bias_codes = bias_codes, .to_window = to_window,
-				      .lookup_everywhere = mr->options.lookup_everywhere};
+				      .lookup_everywhere = mr->options.lookup_everywhere,
+				      .light_image = mr->light_image.rgba ? &mr->light_image : NULL};
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
 	return mr->renderer ? 0 : 1;
 }
@@ -54,6 +58,7 @@ void lx_method_run_free(struct lx_method_run *mr)
 {
 	lx_renderer_destroy(mr->renderer);
 	mr->renderer = NULL;
+	lx_image_free(&mr->light_image);
 }
 
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t)
@@ -71,10 +76,15 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 				     .frame_ms = t3 - t0};
 }
 
-void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
+void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f)
 {
 	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
 	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+}
+
+void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
+{
+	lx_method_run_shadows(mr, f);
 	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
 }
 

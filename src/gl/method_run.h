@@ -18,6 +18,7 @@ struct lx_method_run {
 	struct lx_renderer *renderer;
 	struct lx_shadow_result result; /* of the last frame */
 	struct lx_depth_choice depth;   /* the depth path taken, and how */
+	struct lx_image light_image;    /* a projective light's beam or slide (empty for others) */
 	int width, height;
 	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
 };
@@ -51,6 +52,9 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 /* The same, untimed and unsynchronised: on a tiler a glFinish between the passes costs a
  * flush of every tile; the kiosk's swap is the only sync it needs. */
 void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
+/* The light matrices and the shadow passes only: all that lx_method_run_decision needs
+ * (the tests that judge decisions skip the shaded main pass). */
+void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f);
 /* The main pass's shadow decision for the last frame's matrices: per pixel the visible
  * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4.
  * Returns how many pixels ran a shadow lookup. */

@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "gl_api.h"
 #include "gl_program.h"
+#include "light_image.h"
 #include "lookup_region.h"
 #include "shader_text.h"
 #include <math.h>
@@ -16,6 +17,7 @@ struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
+	GLint beam, beam_tex, light_color, range; /* a projective light's (-1 in other variants) */
 };
 
 /* A window rectangle of a plane and the maps it reads there. */
@@ -64,6 +66,7 @@ struct lx_renderer {
 	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
+	GLuint beam_tex; /* a projective light's image, 0 for other lights */
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
@@ -102,10 +105,12 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 }
 
 static bool main_program(struct main_program *p, int maps, bool decision, unsigned mask, bool mediump,
-			 enum lx_filter filter, char *err, size_t errlen)
+			 bool projective, enum lx_filter filter, char *err, size_t errlen)
 {
-	char defines[360];
+	char defines[400];
 	lx_main_defines(maps, mask, decision, mediump, defines, sizeof defines);
+	if (projective && !decision) /* the decision needs only the shadow test */
+		strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 	/* nothing for none: the text it always had */
 	strncat(defines, lx_filter_define(filter), sizeof defines - strlen(defines) - 1);
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
@@ -120,6 +125,10 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
 	p->object_id = lx_gl.GetUniformLocation(p->prog, "u_object_id");
 	p->atlas = lx_gl.GetUniformLocation(p->prog, "u_atlas");
+	p->beam = lx_gl.GetUniformLocation(p->prog, "u_beam");
+	p->beam_tex = lx_gl.GetUniformLocation(p->prog, "u_beam_tex");
+	p->light_color = lx_gl.GetUniformLocation(p->prog, "u_light_color");
+	p->range = lx_gl.GetUniformLocation(p->prog, "u_range");
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	return true;
@@ -132,7 +141,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 	unsigned all = (1u << r->d.map_count) - 1;
 	for (int decision = 0; decision < 2; decision++) {
 		struct main_program *p = &r->variant[decision][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, decision, all, r->mediump, filter, err, errlen))
+		if (!p->prog && !main_program(p, r->d.map_count, decision, all, r->mediump, r->beam_tex != 0, filter, err, errlen))
 			return false;
 	}
 	return true;
@@ -276,6 +285,31 @@ static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 	return true;
 }
 
+/* A projective light's image as a texture on unit 1: LINEAR and CLAMP_TO_EDGE, no mipmaps,
+ * so that any size works in ES 2.0 and the reference can sample it texel for texel. */
+static bool renderer_beam(struct lx_renderer *r, char *err, size_t errlen)
+{
+	const struct lx_image *im = r->d.light_image;
+	if (!im || r->d.scene->light.projective == LX_LIGHT_PLAIN)
+		return true;
+	if (im->width > r->d.caps->max_texture_size || im->height > r->d.caps->max_texture_size) {
+		snprintf(err, errlen, "the light's %dx%d image exceeds the GL's texture limit of %d", im->width, im->height,
+			 r->d.caps->max_texture_size);
+		return false;
+	}
+	lx_gl.GenTextures(1, &r->beam_tex);
+	lx_gl.ActiveTexture(GL_TEXTURE1);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, im->width, im->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, im->rgba);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+	return true;
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -301,7 +335,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
-	if (!renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
+	if (!renderer_beam(r, err, errlen) || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -318,6 +352,8 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
 	}
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
+	if (r->beam_tex)
+		lx_gl.DeleteTextures(1, &r->beam_tex);
 	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
 	if (r->target_fbo) { /* 0 is the window's */
@@ -458,7 +494,7 @@ static struct main_program *variant_for(struct lx_renderer *r, bool decision, un
 	struct main_program *p = &r->variant[decision][r->filter][mask];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, r->filter, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, r->beam_tex != 0, r->filter, err, sizeof err)) {
 			/* cannot happen once the full variant compiled; fall back to it */
 			fprintf(stderr, "lixel: %s\n", err);
 			unsigned all = (1u << r->d.map_count) - 1;
@@ -746,7 +782,25 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 /* The uniforms of a frame every main-pass program takes. */
 struct main_uniforms {
 	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
+	float beam[16], light_color[3], range[3]; /* a projective light's */
 };
+
+/* A projective light's matrix, colour and range, and its image bound to unit 1. */
+static void beam_uniforms(const struct lx_renderer *r, const struct lx_light *L, struct main_uniforms *u)
+{
+	mat4 m;
+	if (!r->beam_tex || !lx_light_projection(L, &m))
+		return;
+	to_float(&m, u->beam);
+	u->light_color[0] = (float)L->color.x, u->light_color[1] = (float)L->color.y, u->light_color[2] = (float)L->color.z;
+	bool ranged = L->range_far > 0; /* then range_far > range_near: the parser checks it */
+	u->range[0] = (float)L->range_near;
+	u->range[1] = ranged ? (float)(1 / (L->range_far - L->range_near)) : 0.0f;
+	u->range[2] = ranged ? 1.0f : 0.0f;
+	lx_gl.ActiveTexture(GL_TEXTURE1);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+}
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
  * the whole mesh). */
@@ -801,6 +855,7 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
 	map_uniforms(r, res, u.tex, u.region, u.clamp);
+	beam_uniforms(r, L, &u);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
@@ -827,6 +882,12 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 				lx_gl.Uniform1i(p->atlas, 0);
 				if (r->filter != LX_FILTER_NONE)
 					filter_uniforms(r, p, &u);
+			}
+			if (p->beam >= 0) {
+				lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u.beam);
+				lx_gl.Uniform3fv(p->light_color, 1, u.light_color);
+				lx_gl.Uniform3fv(p->range, 1, u.range);
+				lx_gl.Uniform1i(p->beam_tex, 1);
 			}
 		}
 		issue_draw(r, f, p, d);

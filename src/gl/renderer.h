@@ -5,6 +5,7 @@
 #include "gl_caps.h"
 #include "shadow_method.h"
 #include "shadow_filter.h"
+#include "png_in.h"
 #include <stdint.h>
 
 struct lx_renderer;
@@ -22,6 +23,8 @@ struct lx_renderer_desc {
 	/* clear the atlas once per frame, as on a tiler (caps->tiler), here too; also set by
 	 * LIXEL_CLEAR_WHOLE_ATLAS=1 in the environment, so that the tests run that path */
 	bool clear_whole_atlas;
+	const struct lx_image *light_image; /* a projective light's beam or slide (rows bottom to
+					     * top), NULL for other lights */
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
 	enum lx_filter filter;  /* the main pass's shadow filter to start with (shadow_filter.h) */

@@ -20,6 +20,10 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 			out->edge_on++; /* the light grazes it: either decision shades it alike */
 			continue;
 		}
+		if (ref_shadow[i] == LX_REF_UNLIT) {
+			out->unlit++; /* the light does not reach it: either decision shades it alike */
+			continue;
+		}
 		out->compared++;
 		if (shadow[i] && !ref_shadow[i])
 			out->false_shadow++;
@@ -39,12 +43,22 @@ double lx_soft_error(const int16_t *ref_object, const uint8_t *ref_shadow, const
 	double sum = 0;
 	long compared = 0;
 	for (long i = 0; i < pixels; i++) {
-		if (ref_object[i] == LX_NO_OBJECT || ref_object[i] != object[i] || ref_shadow[i] == LX_REF_EDGE_ON)
-			continue; /* background, silhouette, grazed: as lx_mismatch_compare */
+		if (ref_object[i] == LX_NO_OBJECT || ref_object[i] != object[i] || ref_shadow[i] == LX_REF_EDGE_ON ||
+		    ref_shadow[i] == LX_REF_UNLIT)
+			continue; /* background, silhouette, grazed, unlit: as lx_mismatch_compare */
 		compared++;
 		sum += fabs(visibility[i] / 255.0 - ref_visibility[i]);
 	}
 	return compared ? 100.0 * sum / compared : 0.0;
+}
+
+double lx_colour_error(const uint8_t *a, const uint8_t *b, long pixels)
+{
+	double sum = 0;
+	for (long i = 0; i < pixels; i++)
+		for (int c = 0; c < 3; c++)
+			sum += abs(a[i * 4 + c] - b[i * 4 + c]);
+	return pixels > 0 ? sum / (3.0 * pixels) : 0;
 }
 
 /* rows of a 3x4 "viewport" map from clip (x, y, z, w) to (px * w, py * w, w) */
@@ -165,6 +179,12 @@ static bool on_plane(const struct lx_frame *f, const struct lx_plane *p, vec4 eq
 {
 	double t;
 	return lx_window_on_plane(&f->view, eq, x + 0.5, y + 0.5, out, &t) && t >= 0 && t <= 1 && lx_plane_contains(p, *out);
+}
+
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
+{
+	const struct lx_plane *p = &f->scene->planes[plane];
+	return on_plane(f, p, lx_plane_equation(p), x, y, out);
 }
 
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -11,6 +11,7 @@ struct lx_mismatch {
 	long compared;       /* receiver pixels where both agree on the visible object */
 	long silhouette;     /* pixels where they disagree on the visible object */
 	long edge_on;        /* pixels the light grazes (LX_REF_EDGE_ON): not compared */
+	long unlit;          /* pixels a projective light does not reach (LX_REF_UNLIT): not compared */
 	long false_shadow;   /* renderer shadowed, reference lit */
 	long missing_shadow; /* renderer lit, reference shadowed */
 	double mismatch_pct, false_shadow_pct, missing_shadow_pct; /* of compared; 0 when none compared */
@@ -18,9 +19,13 @@ struct lx_mismatch {
 
 void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
+/* colour_error: the mean absolute difference of two RGBA8 images over their pixels and the
+ * R, G and B channels, in 8-bit levels (0 to 255). */
+double lx_colour_error(const uint8_t *a, const uint8_t *b, long pixels);
 
 /* soft_error_pct: the mean of |visibility - ref_visibility| over the pixels
- * lx_mismatch_compare compares (both see the same object, the light does not graze it),
+ * lx_mismatch_compare compares (both see the same object, the light reaches it and does
+ * not graze it),
  * times 100; 0 when none is compared. visibility is the renderer's, 0 (in shadow) to 255
  * (lit); ref_visibility the soft reference's share of an area light, 0 to 1. A hard
  * shadow against a hard reference: the mismatch; against an area light it also counts
@@ -59,5 +64,9 @@ bool lx_homography_jacobian(const mat3 *h, double x, double y, double *s_max, do
 
 /* The median of v[0..n-1] (n >= 1); sorts v. */
 double lx_median(double *v, long n);
+
+/* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
+ * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
+bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
 
 #endif

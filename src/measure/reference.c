@@ -1,4 +1,5 @@
 #include "reference.h"
+#include "light_image.h"
 #include <math.h>
 #include <stdio.h>
 #include <pthread.h>
@@ -8,6 +9,7 @@
 struct tri {
 	vec3 a, e1, e2, n; /* vertex, two edges, unit face normal */
 	int object;
+	const float *v; /* its first vertex in the mesh (LX_VERTEX_FLOATS each): the normals to shade with */
 };
 
 struct node {
@@ -107,6 +109,7 @@ struct lx_raycaster *lx_raycaster_create(const struct lx_frame *f)
 			t->n = v3(0, 0, 0);
 			v3_normalize(v3_cross(t->e1, t->e2), &t->n); /* meshes hold no degenerate triangles */
 			t->object = id;
+			t->v = m->v + (size_t)i * LX_VERTEX_FLOATS;
 		}
 	}
 	rc->scale = v3_len(v3_sub(f->scene_max, f->scene_min)) + 1e-300;
@@ -306,20 +309,96 @@ bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light 
 	return decide(rc, light, p, tri, false);
 }
 
-int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, int x, int y, vec3 *p)
+struct job {
+	const struct lx_frame *f;
+	const struct lx_raycaster *rc;
+	int16_t *object;
+	uint8_t *shadowed;
+	const mat4 *beam;               /* a projective light's matrix, else NULL */
+	const struct lx_image *image;   /* shade: the light's image; NULL: decide only */
+	uint8_t *rgba;                  /* shade: the colours */
+};
+
+/* The view ray through a pixel's centre, from the near plane (t = 0) to the far (t = 1). */
+static void pixel_ray(const struct lx_view *v, int x, int y, vec3 *o, vec3 *d)
 {
-	const struct lx_view *v = &f->view;
 	double nx = (x + 0.5) / v->width * 2 - 1, ny = (y + 0.5) / v->height * 2 - 1;
 	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1});
 	vec4 b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
 	/* inside the frustum w > 0 for both */
-	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), pf = v3(b.x / b.w, b.y / b.w, b.z / b.w);
-	vec3 d = v3_sub(pf, pn);
+	*o = v3(a.x / a.w, a.y / a.w, a.z / a.w);
+	*d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), *o);
+}
+
+/* The renderer's shading at p on triangle tri, exactly: the vertex normals interpolated
+ * across the triangle, the ambient and diffuse terms of main.frag, the light's image and
+ * range for a projective light. */
+static vec3 shade(const struct job *j, int tri, vec3 p, int decision)
+{
+	const struct tri *t = &j->rc->tris[tri];
+	const struct lx_scene *s = j->f->scene;
+	int id = t->object;
+	vec3 color = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+	/* barycentric (u, v) of p: p - a = u e1 + v e2 (the triangle is not degenerate) */
+	vec3 r = v3_sub(p, t->a);
+	double e11 = v3_dot(t->e1, t->e1), e12 = v3_dot(t->e1, t->e2), e22 = v3_dot(t->e2, t->e2);
+	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, t->e1), r2 = v3_dot(r, t->e2);
+	double u = det > 0 ? (r1 * e22 - r2 * e12) / det : 0, w = det > 0 ? (r2 * e11 - r1 * e12) / det : 0;
+	vec3 n = v3(0, 0, 0);
+	for (int k = 0; k < 3; k++) {
+		const float *vn = t->v + (size_t)k * LX_VERTEX_FLOATS + 3;
+		double b = k == 0 ? 1 - u - w : k == 1 ? u : w;
+		n = v3_add(n, v3_scale(v3(vn[0], vn[1], vn[2]), b));
+	}
+	const struct lx_light *l = &j->f->light;
+	vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p), nn, ln;
+	double lambert = v3_normalize(n, &nn) && v3_normalize(to_light, &ln) ? fmax(v3_dot(nn, ln), 0) : 0;
+	vec3 light = j->beam ? lx_projective_light_at(l, j->beam, j->image, p) : v3(1, 1, 1);
+	/* shadowed (1): no diffuse term; grazed (2): lambert is ~0 either way; unlit (3): the light
+	 * sends nothing there */
+	double lit = decision == 1 ? 0 : 0.78 * lambert;
+	return v3(color.x * (0.22 + lit * light.x), color.y * (0.22 + lit * light.y), color.z * (0.22 + lit * light.z));
+}
+
+static uint8_t level(double c) { return (uint8_t)lround(255 * fmin(fmax(c, 0), 1)); }
+
+int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, int x, int y, vec3 *p)
+{
+	vec3 o, d;
+	pixel_ray(&f->view, x, y, &o, &d);
 	double t;
-	int tri = lx_raycast_first(rc, pn, d, 0.0, 1.0, &t);
+	int tri = lx_raycast_first(rc, o, d, 0.0, 1.0, &t);
 	if (tri >= 0)
-		*p = v3_add(pn, v3_scale(d, t));
+		*p = v3_add(o, v3_scale(d, t));
 	return tri;
+}
+
+/* One row of a job: each pixel's object and decision, or with an image its colour. */
+static void job_row(void *ctx, int y)
+{
+	const struct job *j = ctx;
+	const struct lx_view *v = &j->f->view;
+	for (int x = 0; x < v->width; x++) {
+		vec3 o, d;
+		pixel_ray(v, x, y, &o, &d);
+		size_t i = (size_t)y * v->width + x;
+		double t;
+		int tri = lx_raycast_first(j->rc, o, d, 0.0, 1.0, &t);
+		vec3 p = v3_add(o, v3_scale(d, t));
+		if (j->image) { /* shade, with the decisions made before */
+			vec3 c = tri >= 0 ? shade(j, tri, p, j->shadowed[i]) : v3(0.08, 0.09, 0.11);
+			uint8_t *q = j->rgba + i * 4;
+			q[0] = level(c.x), q[1] = level(c.y), q[2] = level(c.z), q[3] = 255;
+			continue;
+		}
+		j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
+		if (tri < 0)
+			j->shadowed[i] = 0;
+		else if (j->beam && !lx_light_reaches(&j->f->light, j->beam, p))
+			j->shadowed[i] = LX_REF_UNLIT;
+		else
+			j->shadowed[i] = (uint8_t)decide(j->rc, &j->f->light, p, tri, true);
+	}
 }
 
 /* Rows row0, row0 + step, ... of an image, each by the row function. */
@@ -339,10 +418,7 @@ static void *run_rows(void *arg)
 
 void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), void *ctx)
 {
-	if (threads < 1)
-		threads = 1;
-	if (threads > 16)
-		threads = 16;
+	threads = threads < 1 ? 1 : threads > 16 ? 16 : threads;
 	pthread_t th[16];
 	struct rows jobs[16];
 	int started = 0;
@@ -360,33 +436,32 @@ void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), v
 	}
 }
 
-struct image_job {
-	const struct lx_frame *f;
-	const struct lx_raycaster *rc;
-	int16_t *object;
-	uint8_t *shadowed;
-};
-
-static void image_row(void *ctx, int y)
-{
-	struct image_job *j = ctx;
-	int w = j->f->view.width;
-	for (int x = 0; x < w; x++) {
-		size_t i = (size_t)y * w + x;
-		vec3 p;
-		int tri = lx_reference_pixel(j->f, j->rc, x, y, &p);
-		j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
-		j->shadowed[i] = tri >= 0 ? (uint8_t)decide(j->rc, &j->f->light, p, tri, true) : 0;
-	}
-}
-
 bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
 {
 	struct lx_raycaster *rc = lx_raycaster_create(f);
 	if (!rc)
 		return false;
-	struct image_job job = {f, rc, object, shadowed};
-	lx_reference_rows(f->view.height, threads, image_row, &job);
+	mat4 beam;
+	bool projective = lx_light_projection(&f->light, &beam);
+	struct job job = {.f = f, .rc = rc, .object = object, .shadowed = shadowed, .beam = projective ? &beam : NULL};
+	lx_reference_rows(f->view.height, threads, job_row, &job);
+	lx_raycaster_destroy(rc);
+	return true;
+}
+
+bool lx_reference_colors(const struct lx_frame *f, const struct lx_image *light_image, const uint8_t *shadowed,
+			 uint8_t *rgba, int threads)
+{
+	static const uint8_t white[4] = {255, 255, 255, 255};
+	const struct lx_image plain = {1, 1, (uint8_t *)white}; /* never written: a plain light's image */
+	struct lx_raycaster *rc = lx_raycaster_create(f);
+	if (!rc)
+		return false;
+	mat4 beam;
+	bool projective = lx_light_projection(&f->light, &beam) && light_image;
+	struct job job = {.f = f, .rc = rc, .shadowed = (uint8_t *)shadowed, .beam = projective ? &beam : NULL,
+			  .image = projective ? light_image : &plain, .rgba = rgba};
+	lx_reference_rows(f->view.height, threads, job_row, &job);
 	lx_raycaster_destroy(rc);
 	return true;
 }

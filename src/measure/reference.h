@@ -52,5 +52,15 @@ bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light 
  * (either decision is right there: the metrics do not compare it). Arrays of
  * width*height. Uses `threads` threads. */
 bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads);
+/* The pixels that a projective light does not reach (behind it, outside its image or past
+ * its range): unlit, shaded alike whatever the decision; the metrics do not compare them. */
+#define LX_REF_UNLIT 3
+/* The renderer's shaded image as it should be, RGBA8 rows bottom to top: the visible
+ * triangle shaded with main.frag's model in double precision, with the decisions of
+ * lx_reference_image (shadowed) and the light's image (a projective light's beam or slide,
+ * sampled as GL's LINEAR filter does; NULL for other lights). */
+struct lx_image;
+bool lx_reference_colors(const struct lx_frame *f, const struct lx_image *light_image, const uint8_t *shadowed,
+			 uint8_t *rgba, int threads);
 
 #endif

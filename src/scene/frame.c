@@ -1,4 +1,5 @@
 #include "frame.h"
+#include "convex.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -68,7 +69,7 @@ static unsigned long long view_box(struct lx_frame *f, double aspect)
  * it becomes the directional light from there to the centre of what is in view. */
 static void far_light(struct lx_frame *f)
 {
-	if (f->light.directional)
+	if (f->light.directional || f->light.projective != LX_LIGHT_PLAIN) /* a projective light keeps its frustum */
 		return;
 	vec3 lo = f->view_min, hi = f->view_max, d;
 	vec3 c = v3_scale(v3_add(lo, hi), 0.5);
@@ -88,11 +89,44 @@ static void light_inside_casters(struct lx_frame *f)
 	vec3 l = f->light.position;
 	for (int id = f->scene->plane_count; id < f->object_count; id++)
 		if (box_distance(l, f->bmin[id], f->bmax[id]) == 0) {
-			note(f, "light: the point light is inside the bounds of caster %d (a %s); what it hides is in "
+			note(f, "light: the light is inside the bounds of caster %d (a %s); what it hides is in "
 				"shadow", id - f->scene->plane_count + 1,
 			     lx_shape_name(f->scene->casters[id - f->scene->plane_count].shape));
 			return;
 		}
+}
+
+/* f->lit_min, lit_max: the view box within a projective light's frustum, as a box (the
+ * frustum's apex at the light, its far face at its range or past the whole scene). */
+static void lit_box(struct lx_frame *f)
+{
+	const struct lx_light *l = &f->light;
+	f->lit_min = f->view_min, f->lit_max = f->view_max;
+	mat4 view;
+	if (l->projective == LX_LIGHT_PLAIN || !m4_look_at(l->position, l->at, l->up, &view))
+		return;
+	vec3 s = v3(view.m[0], view.m[4], view.m[8]), u = v3(view.m[1], view.m[5], view.m[9]);
+	vec3 fw = v3(-view.m[2], -view.m[6], -view.m[10]);
+	double far = l->range_far;
+	if (!(far > 0)) /* no range: past the farthest corner of the view box */
+		for (int i = 0; i < 8; i++)
+			far = fmax(far, v3_dot(v3_sub(v3_box_corner(f->view_min, f->view_max, i), l->position), fw));
+	double size = v3_len(v3_sub(f->scene_max, f->scene_min)), near = 1e-9 * (size + 1e-300);
+	double ty = tan(l->fov_deg * M_PI / 360), tx = l->aspect * ty; /* fov in (0, 150) degrees */
+	vec3 fc[8], pts[LX_CONVEX_MAX_POINTS];
+	static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+	for (int k = 0; k < 8; k++) {
+		double d = k < 4 ? near : fmax(far * 1.001, 2 * near);
+		const double *c = corner[k % 4];
+		fc[k] = v3_add(l->position, v3_add(v3_scale(fw, d), v3_add(v3_scale(s, c[0] * tx * d), v3_scale(u, c[1] * ty * d))));
+	}
+	int n = lx_frustum_box_points(fc, f->view_min, f->view_max, pts, LX_CONVEX_MAX_POINTS);
+	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	for (int i = 0; i < n; i++) {
+		lo = v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
+		hi = v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+	}
+	f->lit_min = lo, f->lit_max = hi; /* n == 0: an empty box, lo > hi */
 }
 
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
@@ -130,6 +164,7 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	}
 	unsigned long long in_view = view_box(f, (double)width / height);
 	far_light(f);
+	lit_box(f);
 	/* far: the farthest scene corner; near: the distance to the scene box, at least
 	 * far / 1000, but never beyond the nearest object (one caster far from the rest
 	 * must not push the near plane past the others), and at least far * 1e-6. */

@@ -29,6 +29,10 @@ struct lx_frame {
 	vec3 bmin[LX_MAX_PLANES + LX_MAX_CASTERS], bmax[LX_MAX_PLANES + LX_MAX_CASTERS]; /* world bounds */
 	vec3 scene_min, scene_max;
 	vec3 view_min, view_max; /* the box of the objects whose boxes reach the view (receivers) */
+	/* the part of that box a projective light reaches (its frustum's part of it, as a box);
+	 * the view box itself for other lights; empty (min > max) when the light reaches none of
+	 * it: no shadow map needs to cover more */
+	vec3 lit_min, lit_max;
 	/* what the set-up changed or found that a user should hear of (a point light so far
 	 * away it is taken as directional, the light inside a caster, ...); every method's
 	 * result repeats them among its warnings */

@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "number.h"
+#include "png_in.h"
 #include "text_lines.h"
 #include <ctype.h>
 #include <errno.h>
@@ -43,6 +44,17 @@ static void add_caster(struct lx_scene *s, enum lx_shape shape, vec3 size, doubl
 		.period = period, .phase = phase, .color = color};
 }
 
+const char *lx_light_kind_name(const struct lx_light *l)
+{
+	return l->projective == LX_LIGHT_SPOT ? "spot" : l->projective == LX_LIGHT_PROJECTOR ? "projector" : l->directional ? "directional" : "point";
+}
+
+struct lx_light lx_light_white(vec3 position)
+{
+	return (struct lx_light){.position = position, .direction = v3(0, -1, 0), .color = v3(1, 1, 1), .up = v3(0, 1, 0),
+				 .aspect = 1};
+}
+
 void lx_scene_default(struct lx_scene *s)
 {
 	memset(s, 0, sizeof(*s));
@@ -53,7 +65,7 @@ void lx_scene_default(struct lx_scene *s)
 	add_caster(s, LX_BOX, v3(0.8, 0.8, 0.8), 1.4, -0.6, 2.3, 0.9, v3(0.25, 0.55, 0.85));
 	add_caster(s, LX_CYLINDER, v3(0.35, 1.1, 0.35), 0.4, 1.6, 1.9, 2.1, v3(0.3, 0.75, 0.35));
 	add_caster(s, LX_CONE, v3(0.5, 1.0, 0.5), -0.3, -2.0, 2.9, 0.5, v3(0.9, 0.7, 0.2));
-	s->light = (struct lx_light){.directional = false, .position = v3(2.5, 6, 3), .direction = v3(0, -1, 0)};
+	s->light = lx_light_white(v3(2.5, 6, 3));
 	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
 }
 
@@ -80,8 +92,29 @@ void lx_scene_table(struct lx_scene *s)
 		.z = -0.25, .low = 0.8, .high = 1.6, .period = 2.3, .phase = 1.1, .color = v3(0.9, 0.7, 0.2)};
 	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_CYLINDER, .size = v3(0.3, 0.8, 0.3), .x = 2.3,
 		.z = 1.3, .low = 0.3, .high = 1.5, .period = 1.9, .phase = 2.0, .color = v3(0.3, 0.75, 0.35)};
-	s->light = (struct lx_light){.directional = false, .position = v3(2.0, 5.5, 2.5), .direction = v3(0, -1, 0)};
+	s->light = lx_light_white(v3(2.0, 5.5, 2.5));
 	s->camera = (struct lx_camera){.eye = v3(0, 2.6, 4.2), .at = v3(0, 0.6, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
+}
+
+/* The default scene under a warm spotlight with lixel's round beam, from above and to the
+ * right, its light ending 12 m away. */
+void lx_scene_spotlight(struct lx_scene *s)
+{
+	lx_scene_default(s);
+	struct lx_light *l = &s->light;
+	l->position = v3(1.5, 5, 2.5), l->projective = LX_LIGHT_SPOT, l->at = v3(-0.3, 0, -1.2), l->fov_deg = 65;
+	l->color = v3(1, 0.92, 0.75), l->range_near = 4, l->range_far = 12;
+}
+
+/* The default scene lit by a projector beside the camera showing lixel's own slide on
+ * the wall, the casters cutting it. */
+void lx_scene_projector(struct lx_scene *s)
+{
+	lx_scene_default(s);
+	struct lx_light *l = &s->light;
+	l->position = v3(1.2, 2.6, 5), l->projective = LX_LIGHT_PROJECTOR, l->at = v3(-0.2, 1.9, -5), l->fov_deg = 30;
+	l->image = LX_IMAGE_BUILTIN_SLIDE;
+	l->aspect = 256.0 / 192; /* the slide's size (tools/make-slide.c) */
 }
 
 bool lx_scene_builtin(const char *name, struct lx_scene *s)
@@ -90,6 +123,10 @@ bool lx_scene_builtin(const char *name, struct lx_scene *s)
 		lx_scene_default(s);
 	else if (!strcmp(name, "table"))
 		lx_scene_table(s);
+	else if (!strcmp(name, "spotlight"))
+		lx_scene_spotlight(s);
+	else if (!strcmp(name, "projector"))
+		lx_scene_projector(s);
 	else
 		return false;
 	return true;
@@ -196,26 +233,110 @@ static bool parse_camera(struct parser *p, struct lx_scene *s)
 	return true;
 }
 
+/* FILE of a beam or slide, against the scene file's folder unless absolute; it must be
+ * readable and start like a PNG (the pixels are read when the light is set up). */
+static bool image_file(struct parser *p, const char *what, struct lx_light *l)
+{
+	const char *f = peek(p);
+	if (!f)
+		return fail(p, "expected a PNG file after '%s', got end of line", what);
+	p->pos++;
+	const char *slash = strrchr(p->file, '/');
+	int dir = f[0] != '/' && slash ? (int)(slash - p->file) + 1 : 0;
+	if (snprintf(l->image_path, sizeof l->image_path, "%.*s%s", dir, p->file, f) >= (int)sizeof l->image_path)
+		return fail(p, "expected a %s path under %d characters", what, LX_PATH_MAX);
+	bool is_png = false;
+	int w = 0, h = 0;
+	if (!lx_png_header(l->image_path, &is_png, &w, &h))
+		return fail(p, "%s '%s': cannot read it (%s)", what, l->image_path, strerror(errno));
+	if (!is_png)
+		return fail(p, "%s '%s': expected a PNG file", what, l->image_path);
+	if (w < 1 || h < 1 || w > LX_PNG_IN_MAX_SIDE || h > LX_PNG_IN_MAX_SIDE)
+		return fail(p, "%s '%s': a %dx%d image, expected sides from 1 to %d", what, l->image_path, w, h,
+			    LX_PNG_IN_MAX_SIDE);
+	l->aspect = (double)w / h;
+	l->image = LX_IMAGE_FILE;
+	return true;
+}
+
+/* The options after a projective light's position: at, fov, up, beam or slide, color,
+ * range, in any order, at and fov required. */
+static bool projective_options(struct parser *p, struct lx_light *l, const char *kind)
+{
+	bool at = false, fov = false, up = false;
+	while (peek(p)) {
+		const char *k = p->tok[p->pos++];
+		if (!strcmp(k, "at")) {
+			if (!triple(p, "light at", &l->at))
+				return false;
+			at = true;
+		} else if (!strcmp(k, "up")) {
+			if (!triple(p, "light up", &l->up))
+				return false;
+			up = true;
+		} else if (!strcmp(k, "fov")) {
+			if (!number(p, "light fov (degrees)", &l->fov_deg))
+				return false;
+			if (!(l->fov_deg > 0 && l->fov_deg < LX_SPOT_FOV_MAX))
+				return fail(p, "expected light fov in (0, %g) degrees, got %g", LX_SPOT_FOV_MAX, l->fov_deg);
+			fov = true;
+		} else if (!strcmp(k, l->projective == LX_LIGHT_SPOT ? "beam" : "slide")) {
+			if (!image_file(p, k, l))
+				return false;
+		} else if (!strcmp(k, "color")) {
+			if (!color(p, &l->color))
+				return false;
+		} else if (!strcmp(k, "range")) {
+			if (!number(p, "range near", &l->range_near) || !number(p, "range far", &l->range_far))
+				return false;
+			if (!(l->range_near >= 0 && l->range_far > l->range_near))
+				return fail(p, "expected range NEAR FAR with 0 <= NEAR < FAR, got %g %g", l->range_near,
+					    l->range_far);
+		} else
+			return fail(p, "expected at, fov, up, %s, color or range in a %s light, got '%s'",
+				    l->projective == LX_LIGHT_SPOT ? "beam" : "slide", kind, k);
+	}
+	if (!at || !fov)
+		return fail(p, "expected 'light %s X Y Z at X Y Z fov DEG ...'", kind);
+	if (l->projective == LX_LIGHT_PROJECTOR && l->image != LX_IMAGE_FILE)
+		return fail(p, "expected 'slide FILE.png' in a projector light");
+	vec3 axis;
+	/* without up: +y, unless the light looks straight up or down, then -z */
+	if (!up && v3_normalize(v3_sub(l->at, l->position), &axis) && fabs(axis.y) > 0.9999)
+		l->up = v3(0, 0, -1);
+	mat4 m;
+	if (!m4_look_at(l->position, l->at, l->up, &m))
+		return fail(p, "expected a %s light whose position differs from at and whose up is not along its axis",
+			    kind);
+	return true;
+}
+
 static bool parse_light(struct parser *p, struct lx_scene *s)
 {
 	const char *k = peek(p);
 	if (!k)
-		return fail(p, "expected 'point X Y Z' or 'directional DX DY DZ' after 'light'");
+		return fail(p, "expected 'point', 'directional', 'spot' or 'projector' after 'light'");
 	p->pos++;
+	struct lx_light *l = &s->light;
+	*l = (struct lx_light){.direction = v3(0, -1, 0), .color = v3(1, 1, 1), .up = v3(0, 1, 0), .aspect = 1};
 	if (!strcmp(k, "point")) {
-		s->light.directional = false;
-		s->light.direction = v3(0, -1, 0); /* unused for a point light; kept canonical */
-		if (!triple(p, "light position", &s->light.position))
+		/* direction unused for a point light; kept canonical */
+		if (!triple(p, "light position", &l->position))
 			return false;
 	} else if (!strcmp(k, "directional")) {
-		s->light.directional = true;
+		l->directional = true;
 		vec3 d;
 		if (!triple(p, "light direction", &d))
 			return false;
-		if (!v3_normalize(d, &s->light.direction))
+		if (!v3_normalize(d, &l->direction))
 			return fail(p, "expected a non-zero light direction");
+	} else if (!strcmp(k, "spot") || !strcmp(k, "projector")) {
+		l->projective = !strcmp(k, "spot") ? LX_LIGHT_SPOT : LX_LIGHT_PROJECTOR;
+		if (!triple(p, "light position", &l->position))
+			return false;
+		return projective_options(p, l, k);
 	} else
-		return fail(p, "expected 'point' or 'directional' after 'light', got '%s'", k);
+		return fail(p, "expected 'point', 'directional', 'spot' or 'projector' after 'light', got '%s'", k);
 	return true;
 }
 
@@ -444,5 +565,7 @@ void lx_scene_scale(struct lx_scene *s, double k)
 	}
 	if (!s->light.directional)
 		s->light.position = v3_scale(s->light.position, k);
+	s->light.at = v3_scale(s->light.at, k);
+	s->light.range_near *= k, s->light.range_far *= k;
 	s->camera.eye = v3_scale(s->camera.eye, k), s->camera.at = v3_scale(s->camera.at, k);
 }

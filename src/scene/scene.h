@@ -35,10 +35,32 @@ struct lx_caster {
 	vec3 color;
 };
 
+/* A projective light [Segal]: a point light at position that lights only through its
+ * frustum, looking at `at` with a vertical field of view fov_deg, the frustum's aspect
+ * that of its image: a spotlight's beam (an intensity map of the beam's cross-section,
+ * the angular fall-off in it; without a file, lixel's round beam) or a projector's
+ * slide. Nothing behind it is lit. */
+enum lx_projective { LX_LIGHT_PLAIN, LX_LIGHT_SPOT, LX_LIGHT_PROJECTOR };
+/* Where a projective light's image comes from. */
+enum lx_light_image_source { LX_IMAGE_ROUND_BEAM, LX_IMAGE_FILE, LX_IMAGE_BUILTIN_SLIDE };
+#define LX_PATH_MAX 512
+#define LX_SPOT_FOV_MAX 150.0 /* degrees: the shadow maps' cone stops at 150 (light_space.c) */
+
 struct lx_light {
 	bool directional;
 	vec3 position;  /* point light */
 	vec3 direction; /* directional: the direction light travels, unit length */
+	vec3 color;     /* projective lights: the colour, each in [0, 1] (the others are white) */
+	enum lx_projective projective;
+	vec3 at, up;        /* projective: where it points, and which way is up in its image */
+	double fov_deg;     /* projective: vertical field of view, in (0, LX_SPOT_FOV_MAX) */
+	/* projective, when range_far > 0: lit only up to range_far along its axis, the light
+	 * falling linearly from full at range_near to none at range_far (a function of the
+	 * light's depth, as [Segal] suggests for distance attenuation) */
+	double range_near, range_far;
+	double aspect; /* projective: the image's width / height, the frustum's too */
+	enum lx_light_image_source image;
+	char image_path[LX_PATH_MAX]; /* LX_IMAGE_FILE: the PNG, resolved against the scene's folder */
 };
 
 struct lx_camera {
@@ -58,7 +80,15 @@ void lx_scene_default(struct lx_scene *s);
 /* The table scene: a table top (a plane of interest, listed first so its map is tried
  * first) on a slab and four legs, over the floor, with casters above and beside it. */
 void lx_scene_table(struct lx_scene *s);
-/* Fills *s with the built-in scene of that name ("default", "table"); false if none. */
+/* "point", "directional", "spot" or "projector". */
+const char *lx_light_kind_name(const struct lx_light *l);
+/* A point light at position, white. */
+struct lx_light lx_light_white(vec3 position);
+/* The default scene under a spotlight (lixel's round beam), and lit by a projector
+ * showing lixel's own slide. */
+void lx_scene_spotlight(struct lx_scene *s);
+void lx_scene_projector(struct lx_scene *s);
+/* Fills *s with the built-in scene of that name ("default", "table", "spotlight", "projector"); false if none. */
 bool lx_scene_builtin(const char *name, struct lx_scene *s);
 /* Loads a scene file. On error returns false with "FILE:LINE: what was expected" in err
  * and leaves *s unspecified. */

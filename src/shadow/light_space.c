@@ -11,8 +11,10 @@
 int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts)
 {
 	vec3 fc[8];
+	if (!(f->lit_min.x <= f->lit_max.x && f->lit_min.y <= f->lit_max.y && f->lit_min.z <= f->lit_max.z))
+		return 0; /* a projective light that reaches nothing in view */
 	lx_view_frustum_corners(&f->view, fc);
-	return lx_frustum_box_points(fc, f->view_min, f->view_max, pts, LX_CONVEX_MAX_POINTS);
+	return lx_frustum_box_points(fc, f->lit_min, f->lit_max, pts, LX_CONVEX_MAX_POINTS);
 }
 
 /* Which objects can cast: casters always; planes only when their back face is lit. */

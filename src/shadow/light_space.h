@@ -28,7 +28,8 @@ struct lx_light_space {
 /* Whether object id can cast: casters always, planes only when their back face is lit
  * (the shadow passes write back faces). */
 bool lx_object_can_cast(const struct lx_frame *f, int id);
-/* The receiver volume's vertices (the view frustum clipped to the scene box); returns
+/* The receiver volume's vertices (the view frustum clipped to the box of what is in view
+ * and lit, f->lit_min and lit_max); returns
  * the count, at most LX_CONVEX_MAX_POINTS. */
 int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'

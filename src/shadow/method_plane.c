@@ -94,7 +94,7 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 		all[n++] = v4_lin(1, m4_row(vp, 3), 1, m4_row(vp, r));
 		all[n++] = v4_lin(1, m4_row(vp, 3), -1, m4_row(vp, r));
 	}
-	vec3 lo = f->view_min, hi = f->view_max; /* the objects in view: the only receivers */
+	vec3 lo = f->lit_min, hi = f->lit_max; /* the objects in view that the light reaches: the only receivers */
 	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
 	for (int k = 0; k < 6; k++)
 		all[n++] = box[k];

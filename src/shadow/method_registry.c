@@ -6,13 +6,14 @@
 #include <stddef.h>
 
 extern const struct lx_shadow_method lx_method_none, lx_method_uniform, lx_method_psm, lx_method_lispsm,
-	lx_method_tsm, lx_method_plane;
+	lx_method_xpsm, lx_method_tsm, lx_method_plane;
 
 static const struct lx_shadow_method *const registry[] = {
 	&lx_method_none,
 	&lx_method_uniform,
 	&lx_method_psm,
 	&lx_method_lispsm,
+	&lx_method_xpsm,
 	&lx_method_tsm,
 	&lx_method_plane,
 };
