@@ -247,11 +247,14 @@ expect_bad "bench empty filter" bench --filters none,,pcf2x2
 expect_bad "bench trailing comma in filters" bench --filters pcf2x2,
 expect_bad "bench light size" bench --light-size 90
 for f in none pcf2x2 pcf3x3; do
-  "$lixel" render --method uniform --filter $f --measure --json --size 96x64 --frames 1 --out "$tmp/f-$f.png" \
+  "$lixel" render --method uniform --filter $f --light-size 0.5 --measure --json --size 96x64 --frames 1 --out "$tmp/f-$f.png" \
     >"$tmp/f.json" 2>"$tmp/stderr" && grep -q "\"filter\": \"$f\"" "$tmp/f.json" && grep -q '"soft_error_pct": [0-9]' "$tmp/f.json" &&
     grep -q '"light_size_deg": 0.5' "$tmp/f.json" && ok || no "render --filter $f: $(cat "$tmp/f.json" "$tmp/stderr")"
 done
 cmp -s "$tmp/f-none.png" "$tmp/f-pcf3x3.png" && no "--filter pcf3x3 drew the image none drew" || ok
+# without a filter or --light-size, --measure skips the soft reference (seconds a frame at 1024^2)
+"$lixel" render --method uniform --measure --json --size 96x64 --frames 1 --out "$tmp/f.png" >"$tmp/f.json" 2>"$tmp/stderr" &&
+  ! grep -q '"soft_error_pct"' "$tmp/f.json" && ok || no "render --measure computed the soft reference: $(cat "$tmp/f.json")"
 "$lixel" render --filter pcf2x2 --measure --light-size 2 --size 96x64 --frames 1 --out "$tmp/f.png" >"$tmp/f.txt" 2>&1 &&
   grep -q '^soft edge: [0-9.]*% mean visibility error (filter pcf2x2) against a 2-degree area light$' "$tmp/f.txt" && ok ||
   no "render --filter text: $(cat "$tmp/f.txt")"

@@ -48,7 +48,8 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       4 or 9 fetches a lookup\n" \
 	"  --light-size DEG     the area light the soft-edge error is measured against: a sphere\n" \
 	"                       (or, for a directional light, a disc of directions) of this\n" \
-	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's)\n"
+	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
+	"                       --measure computes it when a filter is on or this is given\n"
 #define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
