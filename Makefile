@@ -152,13 +152,15 @@ $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
 $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
-# Everything built at once (gcc and clang side by side), then every test, a short kiosk
-# soak and a few seconds of each fuzzer in one pool over the CPUs. The sanitizers cover
-# the GL-free core here through the fuzzers; `make asan` runs every test under them.
+# Everything built at once (gcc and clang side by side), then every test and a few
+# seconds of each fuzzer in one pool over the CPUs. The sanitizers cover the GL-free core
+# here through the fuzzers; `make asan` runs every test under them, and CI (.ci/run) runs
+# it and a 20-second `make soak` after make check.
 check: deps-check deps-fuzz check-layers
-	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window \
-		$(BUILD)/gpio_button_v2_check.o $(FUZZ_BINS)
-	@SOAK_SECONDS=$(CHECK_SOAK_SECONDS) FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" \
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) FUZZ_DIR=$(BUILD)/fuzz-quick FUZZ_OPT="-O0 -gline-tables-only" \
+		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o \
+		$(FUZZ_NAMES:%=$(BUILD)/fuzz-quick/%)
+	@FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=$(BUILD)/fuzz-quick \
 		sh tests/run-tests.sh $(BUILD)
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
@@ -168,8 +170,7 @@ soak: deps-check
 
 # make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
 CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
-# make check's kiosk soak and fuzzing, in seconds (make soak and make fuzz run longer)
-CHECK_SOAK_SECONDS ?= 5
+# make check's fuzzing, in seconds (make fuzz runs longer)
 CHECK_FUZZ_SECONDS ?= 2
 
 # The include rules between the layers, the GL-free files' freedom from GL headers,
@@ -191,32 +192,36 @@ asan: deps-check
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods fuzz_cli
-FUZZ_BINS = $(FUZZ_NAMES:%=$(BUILD)/fuzz/%)
-FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE $(SRC_DIRS:%=-I%) -I$(BUILD) $(WARN) -O1 -g -fno-omit-frame-pointer \
+# make check builds them apart, unoptimised (half the compile time, for its seconds of
+# fuzzing); make fuzz at -O1, for the runs per second of long sessions
+FUZZ_DIR ?= $(BUILD)/fuzz
+FUZZ_OPT ?= -O1 -g
+FUZZ_BINS = $(FUZZ_NAMES:%=$(FUZZ_DIR)/%)
+FUZZ_CFLAGS = -std=c11 -D_DEFAULT_SOURCE $(SRC_DIRS:%=-I%) -I$(BUILD) $(WARN) $(FUZZ_OPT) -fno-omit-frame-pointer \
 	-fsanitize=address,undefined -fno-sanitize-recover=all
-FUZZ_OBJ = $(patsubst %.c,$(BUILD)/fuzz/obj/%.o,$(notdir $(CORE_SRC))) $(BUILD)/fuzz/obj/boards_embedded.o \
-	$(BUILD)/fuzz/obj/shaders_embedded.o $(BUILD)/fuzz/obj/slide_embedded.o
+FUZZ_OBJ = $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(notdir $(CORE_SRC))) $(FUZZ_DIR)/obj/boards_embedded.o \
+	$(FUZZ_DIR)/obj/shaders_embedded.o $(FUZZ_DIR)/obj/slide_embedded.o
 
-$(BUILD)/fuzz/obj/%.o: %.c | $(BUILD)/fuzz/obj
+$(FUZZ_DIR)/obj/%.o: %.c | $(FUZZ_DIR)/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
-$(BUILD)/fuzz/obj/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h | $(BUILD)/fuzz/obj
+$(FUZZ_DIR)/obj/%_embedded.o: $(BUILD)/%_embedded.c src/base/embedded.h | $(FUZZ_DIR)/obj
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
 
-$(FUZZ_BINS): $(BUILD)/fuzz/%: fuzz/%.c $(FUZZ_OBJ)
+$(FUZZ_BINS): $(FUZZ_DIR)/%: fuzz/%.c $(FUZZ_OBJ)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $(DEPFLAGS) -fsanitize=fuzzer $< $(FUZZ_OBJ) $(PKG_PNG_LIBS) -lpthread -lm -o $@
 
-$(BUILD)/fuzz/obj: | $(BUILD)
+$(FUZZ_DIR)/obj: | $(BUILD)
 	mkdir -p $@
 
 fuzz-build: deps-fuzz
 	@$(MAKE) --no-print-directory $(CHECK_JOBS) $(FUZZ_BINS)
 
 fuzz: fuzz-build
-	@sh tools/fuzz.sh $(BUILD)/fuzz $(FUZZ_SECONDS) $(FUZZ_NAMES)
+	@sh tools/fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_NAMES)
 
 fuzz-check: fuzz-build
-	@sh tools/fuzz.sh $(BUILD)/fuzz 3 $(FUZZ_NAMES)
+	@sh tools/fuzz.sh $(FUZZ_DIR) 3 $(FUZZ_NAMES)
 
 # The binary (shaders and board profiles are built in), the man page, the profiles as
 # files to copy and edit (--board FILE), and the kiosk's systemd unit.
@@ -239,4 +244,4 @@ clean:
 -include tools/cross.mk
 
 # the header dependencies -MMD wrote (none before the first build)
--include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/fuzz/*.d $(BUILD)/fuzz/obj/*.d)
+-include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/fuzz*/*.d $(BUILD)/fuzz*/obj/*.d)

@@ -64,7 +64,7 @@ grep -q '^overlay: on$' "$tmp/out" && ok || no "l did not toggle the overlay: $(
 grep -q '^[0-9]* frames in .* s = .* FPS (uniform)$' "$tmp/out" && ok || no "no status line at the end: $(cat "$tmp/out")"
 
 # 2. two spaces walk the board's order; q quits with status 0
-"$lixel" kiosk --platform x11 --size 800x600 --frames 100000 >"$tmp/out" 2>&1 &
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
 if [ -n "$wid" ]; then
@@ -170,7 +170,7 @@ helper=$(dirname "$lixel")/tests/destroy_window
 # 8. N key presses sent at once (one xdotool call, no delay between them) make N method
 #    changes: the loop reads every pending key each frame, not one per frame
 presses=30
-"$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>&1 &
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
 wait_started
@@ -191,7 +191,7 @@ awk '/^method: /{ if (prev != "" && $2 != prev) bad = 1; prev = $4; if (first ==
 # 9. the window destroyed by another client (XDestroyWindow): one line, status 0, and the
 #    kiosk does not touch the window again (Xlib's default handler would end it with 1)
 if [ -x "$helper" ]; then
-  "$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wid=$(find_window)
   wait_started
@@ -229,7 +229,7 @@ fi
 start_xvfb 81
 xvfb2_pid=$started_pid
 if [ -n "$started_display" ]; then
-  DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 640x480 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wait_started
   sleep 0.5

@@ -6,7 +6,8 @@
 #   - every test program BUILD/tests/test_*;
 #   - cli (tests/cli.sh) and kiosk (tests/kiosk_x11.sh, under Xvfb);
 #   - with SOAK_SECONDS=N, a kiosk soak of N seconds (tests/kiosk_soak.sh);
-#   - with FUZZ_SECONDS=N, N seconds of each libFuzzer harness in BUILD/fuzz (tools/fuzz.sh;
+#   - with FUZZ_SECONDS=N, N seconds of each libFuzzer harness in FUZZ_DIR (default
+#     BUILD/fuzz; tools/fuzz.sh;
 #     FUZZ_NAMES lists them).
 # Usage: tests/run-tests.sh BUILD_DIR   (from the top of the repository)
 set -u
@@ -42,7 +43,7 @@ run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS start=$(date +%s)
     script:cli) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/cli.sh "$build/lixel" ;;
     script:kiosk) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel" ;;
     script:soak) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_soak.sh "$build/lixel" ;;
-    fuzz:*) sh tools/fuzz.sh "$build/fuzz" "$FUZZ_SECONDS" "$name" ;;
+    fuzz:*) sh tools/fuzz.sh "${FUZZ_DIR:-$build/fuzz}" "$FUZZ_SECONDS" "$name" ;;
   esac >"$logs/$name.log" 2>&1
   echo $? >"$logs/$name.rc"
   echo $(($(date +%s) - start)) >"$logs/$name.secs"'

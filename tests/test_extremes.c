@@ -242,8 +242,7 @@ static void scale_changes_nothing(void **state)
 				fail_msg("%s: %s", methods[m], err);
 			struct lx_frame frame;
 			assert_true(lx_frame_setup(&frame, &sc, &meshes, 0.4, w, h, err, sizeof err));
-			struct lx_frame_times t;
-			lx_method_run_frame(&run, &frame, &t);
+			lx_method_run_shadows(&run, &frame);
 			lx_method_run_decision(&run, &frame, rgba, obj[i > 0], sh[i > 0]);
 			for (int k = 0; k < run.result.warning_count; k++)
 				print_message("%s at scale %g: warning: %s\n", methods[m], scales[i], run.result.warnings[k]);

@@ -248,9 +248,8 @@ static double worst_m(const struct lx_frame *f, const struct lx_method_run *run,
 static double check_run(struct lx_method_run *run, const struct lx_frame *f, struct pixels *px, const char *what,
 			double *mismatch)
 {
-	struct lx_frame_times t;
 	long n = (long)f->view.width * f->view.height;
-	lx_method_run_frame(run, f, &t);
+	lx_method_run_shadows(run, f);
 	lx_method_run_decision(run, f, px->rgba, px->obj, px->sh);
 	lx_decision_visibility(px->rgba, n, run->filter, px->vis);
 	int reach = (int)fmin(ceil(worst_m(f, run, px)) + 2, 250);
@@ -418,8 +417,7 @@ static void filters_stay_in_their_region(void **state)
 				struct lx_frame f;
 				assert_true(lx_frame_setup(&f, &scene, &meshes, 0.4, w, h, err, sizeof err));
 				assert_int_equal(lx_method_run_set_filter(&run, (enum lx_filter)k, err, sizeof err), 0);
-				struct lx_frame_times t;
-				lx_method_run_frame(&run, &f, &t);
+				lx_method_run_shadows(&run, &f);
 				lx_method_run_decision(&run, &f, before, obj, sh);
 				for (int ring = 0; ring < 2; ring++) {
 					lx_renderer_read_atlas(run.renderer, tex);
@@ -433,7 +431,7 @@ static void filters_stay_in_their_region(void **state)
 						fail_msg("%s+%s %s: %ld pixels changed with the %ld texels outside the regions near", name,
 							 lx_filter_name((enum lx_filter)k), lx_configs[c].name, d, painted);
 					outside += ring ? 0 : painted;
-					lx_method_run_frame(&run, &f, &t); /* the atlas drawn again */
+					lx_method_run_shadows(&run, &f); /* the atlas drawn again */
 				}
 			}
 		print_message("%-7s: %ld texels outside the regions made near changed nothing; the regions' edge texels "
@@ -488,9 +486,8 @@ static void filters_lookup_where_shadows_fall(void **state)
 						struct lx_frame f;
 						assert_true(lx_frame_setup(&f, &scene, &meshes, 0.4, w, h, err, sizeof err));
 						for (int k = 0; k < 2; k++) {
-							struct lx_frame_times t;
 							assert_int_equal(lx_method_run_set_filter(&run[k], (enum lx_filter)fl, err, sizeof err), 0);
-							lx_method_run_frame(&run[k], &f, &t);
+							lx_method_run_shadows(&run[k], &f);
 							looked[k] += lx_method_run_decision(&run[k], &f, rgba[k], obj, sh);
 						}
 						long d = differ(rgba[0], rgba[1], (long)w * h);
