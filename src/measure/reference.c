@@ -154,11 +154,13 @@ static bool hit_tri(const struct tri *t, vec3 o, vec3 d, double tmin, double tma
 	return true;
 }
 
-static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double tmax)
+/* Whether the ray o + t d, t in [tmin, tmax] (inv = 1 / d per axis), meets the box
+ * [lo - r, hi + r]: the slab test. */
+static bool slabs_meet(vec3 o, vec3 inv, vec3 lo, vec3 hi, double r, double tmin, double tmax)
 {
 	for (int k = 0; k < 3; k++) {
 		double oo = (&o.x)[k], iv = (&inv.x)[k];
-		double t0 = ((&n->lo.x)[k] - oo) * iv, t1 = ((&n->hi.x)[k] - oo) * iv;
+		double t0 = ((&lo.x)[k] - r - oo) * iv, t1 = ((&hi.x)[k] + r - oo) * iv;
 		if (t0 > t1) {
 			double t = t0;
 			t0 = t1;
@@ -174,6 +176,11 @@ static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double 
 			return false;
 	}
 	return true;
+}
+
+static bool hit_box(const struct node *n, vec3 o, vec3 inv, double tmin, double tmax)
+{
+	return slabs_meet(o, inv, n->lo, n->hi, 0, tmin, tmax);
 }
 
 /* The first (or with `any`, some) triangle hit with t in (tmin, tmax), leaving out
@@ -233,23 +240,7 @@ bool lx_raycast_blocked(const struct lx_raycaster *rc, vec3 o, vec3 d, double tm
 /* Whether segment a + s (b - a), s in [0, 1], meets the box [lo - r, hi + r]. */
 static bool segment_meets_box(vec3 a, vec3 inv, vec3 lo, vec3 hi, double r)
 {
-	double smin = 0, smax = 1;
-	for (int k = 0; k < 3; k++) {
-		double o = (&a.x)[k], iv = (&inv.x)[k];
-		double t0 = ((&lo.x)[k] - r - o) * iv, t1 = ((&hi.x)[k] + r - o) * iv;
-		if (t0 > t1) {
-			double t = t0;
-			t0 = t1;
-			t1 = t;
-		}
-		if (t0 > smin) /* NaN (the segment in the slab's plane) keeps the bound, as in hit_box */
-			smin = t0;
-		if (t1 < smax)
-			smax = t1;
-		if (smin > smax)
-			return false;
-	}
-	return true;
+	return slabs_meet(a, inv, lo, hi, r, 0, 1);
 }
 
 bool lx_raycast_near(const struct lx_raycaster *rc, vec3 a, vec3 b, double r, int skip_object)
