@@ -64,7 +64,7 @@ grep -q '^overlay: on$' "$tmp/out" && ok || no "l did not toggle the overlay: $(
 grep -q '^[0-9]* frames in .* s = .* FPS (uniform)$' "$tmp/out" && ok || no "no status line at the end: $(cat "$tmp/out")"
 
 # 2. two spaces walk the board's order; q quits with status 0
-"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
 if [ -n "$wid" ]; then
@@ -81,7 +81,7 @@ grep -q '^method: uniform -> psm$' "$tmp/out" && ok || no "the second space did 
 
 # 2a. with filters (a board's filters key, here --filters) a space steps through the
 # method's filters first, then to the next method's first; none reads no map: one step
-"$lixel" kiosk --platform x11 --size 320x240 --methods plane,none,uniform --filters none,pcf3x3 --frames 100000 \
+"$lixel" kiosk --platform x11 --size 320x240 --methods plane,none,uniform --filters none,pcf3x3 --frames 100000 --max-fps 30 \
   >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
@@ -98,7 +98,7 @@ steps=$(grep '^method: ' "$tmp/out" | tr '\n' ' ')
   ok || no "kiosk --filters: status $st, steps '$steps': $(cat "$tmp/out")"
 
 # 2b. SIGHUP (a closed session) stops it as SIGTERM does: status 0
-"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
 pid=$!
 for i in $(seq 1 100); do grep -q 'frames in\|^lixel kiosk: GL_VENDOR' "$tmp/out" 2>/dev/null && break; sleep 0.1; done
 sleep 0.3
@@ -129,7 +129,8 @@ nl='
 
 # 5. bad input: exit 2, one line
 for args in "--board no-such-board" "--gpio-line seventeen" "--frames 0" "--methods plane,teapot" "--methods ," \
-    "--size big" "--shadows" "--depth-precision fp16" "--filters pcf9" "--filters none,none" "--filters ,"; do
+    "--size big" "--shadows" "--depth-precision fp16" "--filters pcf9" "--filters none,none" "--filters ," \
+    "--max-fps 0" "--max-fps 1001" "--snapshot x.png"; do
   # shellcheck disable=SC2086
   "$lixel" kiosk --platform x11 $args >"$tmp/out" 2>"$tmp/err"; st=$?
   [ "$st" -eq 2 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && ok || no "kiosk $args: status $st: $(cat "$tmp/err")"
@@ -170,7 +171,7 @@ helper=$(dirname "$lixel")/tests/destroy_window
 # 8. N key presses sent at once (one xdotool call, no delay between them) make N method
 #    changes: the loop reads every pending key each frame, not one per frame
 presses=30
-"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+"$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
 wait_started
@@ -191,7 +192,7 @@ awk '/^method: /{ if (prev != "" && $2 != prev) bad = 1; prev = $4; if (first ==
 # 9. the window destroyed by another client (XDestroyWindow): one line, status 0, and the
 #    kiosk does not touch the window again (Xlib's default handler would end it with 1)
 if [ -x "$helper" ]; then
-  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wid=$(find_window)
   wait_started
@@ -207,7 +208,7 @@ if [ -x "$helper" ]; then
     no "could not destroy the kiosk's window '$wid': $(cat "$tmp/helper")"
   fi
   # the window manager's close (WM_DELETE_WINDOW): the same, in its own words
-  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>&1 &
+  "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
   pid=$!
   wid=$(find_window)
   wait_started
@@ -229,7 +230,7 @@ fi
 start_xvfb 81
 xvfb2_pid=$started_pid
 if [ -n "$started_display" ]; then
-  DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 >"$tmp/out" 2>"$tmp/err" &
+  DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wait_started
   sleep 0.5

@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
 #include <limits.h>
 #include <time.h>
 
@@ -33,10 +34,17 @@ static int64_t now_ns(void)
 	return (int64_t)ts.tv_sec * 1000000000 + ts.tv_nsec;
 }
 
+static void sleep_until(int64_t t_ns)
+{
+	struct timespec ts = {.tv_sec = t_ns / 1000000000, .tv_nsec = t_ns % 1000000000};
+	while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR && !stop_requested)
+		;
+}
+
 static void usage(FILE *f)
 {
-	fprintf(f, "usage: lixel kiosk [--platform kms|x11] [--board NAME|FILE] [--frames N] [--size WxH]\n"
-		   "                   [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
+	fprintf(f, "usage: lixel kiosk [--platform kms|x11] [--board NAME|FILE] [--frames N] [--max-fps N]\n"
+		   "                   [--size WxH] [--device PATH] [--mode WxH[@HZ]] [--overlay]\n"
 		   "                   [--scene NAME|FILE] [--snapshot FILE.png] [--methods LIST]\n"
 		   "                   [--gpio-chip NAME] [--gpio-line N]\n"
 		   "                   [--gpio-active low|high] [--debounce-ms N] [--long-press-ms N]\n"
@@ -56,6 +64,8 @@ static void usage(FILE *f)
 		   "  --mode WxH[@HZ]   the display mode (default: the board's, else the preferred one)\n"
 		   "  --board NAME|FILE a board profile: %s (default desktop)\n"
 		   "  --frames N        stop after N frames\n"
+		   "  --max-fps N       at most N frames a second (default: as fast as the display takes\n"
+		   "                    them; where nothing paces it, as in a window under Xvfb)\n"
 		   "  --snapshot FILE.png  with --frames N: frame N, read back before it is shown, as a PNG\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
@@ -87,6 +97,7 @@ struct kiosk_args {
 	const char *platform, *scene_arg, *methods_arg, *filters_arg;
 	const char *snapshot; /* with --frames: the last frame as a PNG, or NULL */
 	long frames; /* -1: until stopped */
+	int max_fps; /* 0: as fast as the display takes frames (a board's vsync paces it) */
 	bool overlay;
 	int width, height;
 	struct lx_board board;
@@ -111,6 +122,12 @@ static int kiosk_option(struct kiosk_args *k, const char *a, const char *v)
 		enum lx_number_error e = lx_number_whole(v, 1, LONG_MAX, &k->frames);
 		if (e)
 			return lx_arg_bad_number("kiosk", a, "a whole number of frames >= 1", v, e);
+	} else if (!strcmp(a, "--max-fps")) {
+		long n;
+		enum lx_number_error e = lx_number_whole(v, 1, 1000, &n);
+		if (e)
+			return lx_arg_bad_number("kiosk", a, "a whole number of frames a second from 1 to 1000", v, e);
+		k->max_fps = (int)n;
 	} else if (!strcmp(a, "--size")) {
 		int hz;
 		if (!lx_parse_mode(v, &k->width, &k->height, &hz) || hz)
@@ -166,7 +183,7 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 		fprintf(stderr, "lixel: %s\n", err);
 		return 2;
 	}
-	static const char *const with_value[] = {"--platform", "--board", "--frames", "--size", "--scene", "--snapshot", "--methods",
+	static const char *const with_value[] = {"--platform", "--board", "--frames", "--max-fps", "--size", "--scene", "--snapshot", "--methods",
 						 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
 						 "--long-press-ms", "--device", "--mode", "--plane-lixels",
 						 "--fallback-lixels", "--uniform-lixels", "--depth-precision", "--filters"};
@@ -483,6 +500,8 @@ static int kiosk_loop(struct kiosk *k)
 			break;
 		}
 		k->plat->swap(k->plat);
+		if (k->args->max_fps) /* no vsync (a window under Xvfb): keep the CPU for others */
+			sleep_until(t + 1000000000 / k->args->max_fps);
 		k->frame++, k->window_frames++;
 		int shorts = 0, longs = 0;
 		kiosk_presses(k, &shorts, &longs);
