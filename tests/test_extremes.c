@@ -124,6 +124,29 @@ static const char *extreme(struct lx_scene *sc, double k, uint64_t *rs)
 	}
 }
 
+/* A third of the point lights become spotlights of the same place [Segal], aimed at a random
+ * point of the scene with a random fov (2 to 148 degrees) and now and then a range: the
+ * maps then cover only what the light's frustum reaches, and the pixels it does not reach
+ * are not compared. Their decisions are what the frame's geometry gives; the renderer
+ * needs no beam image for them. */
+static const char *as_spotlight(struct lx_scene *sc, double k, const char *kind, uint64_t *rs)
+{
+	static char name[96];
+	struct lx_light l = sc->light;
+	l.projective = LX_LIGHT_SPOT, l.aspect = 1, l.fov_deg = 2 + 146 * uniform01(rs);
+	l.at = v3(k * (8 * uniform01(rs) - 4), k * 2 * uniform01(rs), k * (8 * uniform01(rs) - 4));
+	vec3 axis;
+	l.up = v3_normalize(v3_sub(l.at, l.position), &axis) && fabs(axis.y) > 0.9999 ? v3(0, 0, -1) : v3(0, 1, 0);
+	if (uniform01(rs) < 0.3)
+		l.range_near = k * 2 * uniform01(rs), l.range_far = l.range_near + k * (0.5 + 8 * uniform01(rs));
+	mat4 m;
+	if (!m4_look_at(l.position, l.at, l.up, &m))
+		return kind; /* aimed at itself: stays a point light */
+	sc->light = l;
+	snprintf(name, sizeof name, "%s, as a spotlight (fov %.0f)", kind, l.fov_deg);
+	return name;
+}
+
 static bool finite_report(const struct lx_shadow_result *res, const struct lx_mismatch *mm,
 			  const struct lx_plane_report *planes, int nplanes)
 {
@@ -146,7 +169,7 @@ static void random_extremes_warn_or_match(void **state)
 	char err[512];
 	struct pixels px = pixels_new();
 	uint64_t rs = 20261130;
-	long frames = 0, warned = 0, refused = 0, configs = 0;
+	long frames = 0, warned = 0, refused = 0, configs = 0, spots = 0;
 	double worst_quiet = 0;
 	static const double scales[] = {1e-4, 1e-2, 1, 1e2, 1e4};
 	/* 300 configurations; 60 under the sanitizers (make asan sets LIXEL_TEST_QUICK),
@@ -173,6 +196,8 @@ static void random_extremes_warn_or_match(void **state)
 			struct lx_scene sc = base;
 			const char *kind = extreme(&sc, k, &rs);
 			double t = 10 * uniform01(&rs);
+			if (!sc.light.directional && uniform01(&rs) < 1.0 / 3)
+				kind = as_spotlight(&sc, k, kind, &rs);
 			struct lx_frame frame;
 			mat4 look;
 			if (!m4_look_at(sc.camera.eye, sc.camera.at, sc.camera.up, &look) ||
@@ -180,6 +205,7 @@ static void random_extremes_warn_or_match(void **state)
 				refused++; /* the command line refuses it with exit status 2 */
 				continue;
 			}
+			spots += sc.light.projective != LX_LIGHT_PLAIN;
 			assert_true(lx_reference_image(&frame, px.ref_obj, px.ref_sh, 2));
 			for (int m = 0; m < NM; m++) {
 				lx_method_run_shadows(&run[m], &frame); /* the decision needs no shaded frame */
@@ -197,8 +223,11 @@ static void random_extremes_warn_or_match(void **state)
 					continue;
 				}
 				worst_quiet = fmax(worst_quiet, mm.mismatch_pct);
+				if (!(mm.mismatch_pct < 1.0) && sc.light.projective)
+					print_message("the spotlight looks at %.9g %.9g %.9g, range %g %g\n", sc.light.at.x, sc.light.at.y,
+						      sc.light.at.z, sc.light.range_near, sc.light.range_far);
 				if (!(mm.mismatch_pct < 1.0))
-					fail_msg("scale %g, %s (light %g %g %g%s, eye %g %g %g, time %.3f), %s: mismatch %.3f%% with no warning", k,
+					fail_msg("scale %g, %s (light %.9g %.9g %.9g%s, eye %g %g %g, time %.3f), %s: mismatch %.3f%% with no warning", k,
 						 kind, sc.light.directional ? sc.light.direction.x : sc.light.position.x,
 						 sc.light.directional ? sc.light.direction.y : sc.light.position.y,
 						 sc.light.directional ? sc.light.direction.z : sc.light.position.z,
@@ -210,8 +239,8 @@ static void random_extremes_warn_or_match(void **state)
 			lx_method_run_free(&run[m]);
 		lx_meshes_free(&meshes);
 	}
-	print_message("%ld configurations (%ld refused as bad input), %ld frames: %ld with a warning, the worst mismatch "
-		      "without one %.3f%%\n", configs, refused, frames, warned, worst_quiet);
+	print_message("%ld configurations (%ld refused as bad input, %ld spotlights), %ld frames: %ld with a warning, the "
+		      "worst mismatch without one %.3f%%\n", configs, refused, spots, frames, warned, worst_quiet);
 	assert_true(frames > 50 * per_group); /* most configurations rendered */
 	pixels_free(&px);
 }

@@ -48,8 +48,8 @@ static void mismatch_colors(const int16_t *ref_object, const uint8_t *ref_shadow
 		uint8_t *p = rgba + i * 4, c[3] = {40, 40, 40};
 		if (ref_object[i] != object[i])
 			c[0] = 230, c[1] = 200, c[2] = 40;
-		else if (object[i] >= 0 && ref_shadow[i] == LX_REF_EDGE_ON)
-			c[0] = c[1] = c[2] = 70; /* grazed by the light: not compared */
+		else if (object[i] >= 0 && (ref_shadow[i] == LX_REF_EDGE_ON || ref_shadow[i] == LX_REF_UNLIT))
+			c[0] = c[1] = c[2] = 70; /* grazed by the light, or out of its reach: not compared */
 		else if (object[i] >= 0 && shadow[i] && !ref_shadow[i])
 			c[0] = 40, c[1] = 90, c[2] = 255;
 		else if (object[i] >= 0 && !shadow[i] && ref_shadow[i])
