@@ -94,6 +94,8 @@ static void usage(FILE *f)
 		   "  --light-size DEG the soft-edge error's area light, as in lixel render --help\n"
 		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
+		   "  --scene NAME|FILE  as in lixel render --help (default, table, spotlight, projector,\n"
+		   "                   or a scene file)\n"
 		   "  --csv FILE       every row as CSV\n"
 		   "  --plot FILE.png  median mismatch against median frame time, one mark per method\n"
 		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods\n"

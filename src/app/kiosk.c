@@ -67,6 +67,8 @@ static void usage(FILE *f)
 		   "  --max-fps N       at most N frames a second (default: as fast as the display takes\n"
 		   "                    them; where nothing paces it, as in a window under Xvfb)\n"
 		   "  --snapshot FILE.png  with --frames N: frame N, read back before it is shown, as a PNG\n"
+		   "  --scene NAME|FILE a built-in scene (default, table, spotlight, projector; default\n"
+		   "                    default) or a scene file (docs/scene-format.md)\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
 		   "  --filters LIST    the shadow filters a press steps through within each method,\n"

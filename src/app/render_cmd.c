@@ -23,8 +23,8 @@ static void render_usage(FILE *f)
 		"frame's figures (median frame time over the timed frames, light-matrix set-up).\n"
 		"\n"
 		"  --method NAME        shadow method: %s (default plane)\n"
-		"  --scene NAME|FILE    built-in scene 'default' or 'table', or a scene file\n"
-		"                       (docs/scene-format.md)\n"
+		"  --scene NAME|FILE    built-in scene default, table, spotlight or projector, or a\n"
+		"                       scene file (docs/scene-format.md)\n"
 		"  --config NAME        a named view/light configuration applied to the scene:\n",
 		lx_shadow_method_names());
 	for (int i = 0; i < lx_config_count; i++)
