@@ -49,6 +49,7 @@ expect_bad "missing value" render --size
 expect_bad "unknown option" render --shadows $out
 expect_bad "output into a missing directory" render --out "$tmp/no/such/dir/x.png"
 expect_bad "second output into a missing directory" render $out --decision-out "$tmp/no/d.png"
+expect_bad "reference output into a missing directory" render $out --reference-out "$tmp/no/r.png"
 expect_bad "unreadable scene" render --scene "$tmp/none.scene" $out
 printf 'light point 0 5 0\nsphere radius 0.5 at 0 0 colour 1 0 0\n' >"$tmp/bad.scene"
 expect_bad "malformed scene" render --scene "$tmp/bad.scene" $out
