@@ -1,22 +1,29 @@
+#include "light_image.h"
 #include "metrics.h"
 #include "reference.h"
 #include "soft_reference.h"
 #include "test_util.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* A 10 m floor and one box, 1 m wide with its bottom at 1 m, centred at the origin. */
-static void box_scene(struct lx_scene *s, struct lx_light light)
+/* A 10 m floor seen by camera (a "camera ..." line), one box (a "box ..." line) and the
+ * given light. */
+static void floor_scene(struct lx_scene *s, const char *camera, const char *box, struct lx_light light)
 {
-	char err[256];
-	const char *text = "light point 0 5 0\n"
-			   "camera eye 0 6 0.001 at 0 0 0 fov 60\n"
-			   "plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10\n"
-			   "box size 1 1 1 at 0 0 bounce 1 1\n";
-	if (!lx_scene_parse(text, "box.scene", s, err, sizeof err))
+	char err[256], text[512];
+	snprintf(text, sizeof text, "light point 0 5 0\n%s\nplane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10\n%s\n",
+		 camera, box);
+	if (!lx_scene_parse(text, "test.scene", s, err, sizeof err))
 		fail_msg("%s", err);
 	s->light = light;
+}
+
+/* One box, 1 m wide with its bottom at 1 m, centred at the origin. */
+static void box_scene(struct lx_scene *s, struct lx_light light)
+{
+	floor_scene(s, "camera eye 0 6 0.001 at 0 0 0 fov 60", "box size 1 1 1 at 0 0 bounce 1 1", light);
 }
 
 static void shadows_fall_where_geometry_says(void **state)
@@ -229,13 +236,7 @@ static void median_equals_sorted_middle(void **state)
 static void edge_scene(struct lx_scene *s, struct lx_light light, struct lx_scene_meshes *m, struct lx_frame *f)
 {
 	char err[256];
-	const char *text = "light point 0 5 0\n"
-			   "camera eye 0.5 3 3 at 0 0 0 fov 60\n"
-			   "plane floor corner -5 0 5 edge1 10 0 0 edge2 0 0 -10\n"
-			   "box size 8 0.001 8 at -4 0 bounce 1 1\n";
-	if (!lx_scene_parse(text, "edge.scene", s, err, sizeof err))
-		fail_msg("%s", err);
-	s->light = light;
+	floor_scene(s, "camera eye 0.5 3 3 at 0 0 0 fov 60", "box size 8 0.001 8 at -4 0 bounce 1 1", light);
 	assert_true(lx_meshes_build(s, m));
 	assert_true(lx_frame_setup(f, s, m, 0, 64, 64, err, sizeof err));
 }
@@ -336,6 +337,31 @@ static void soft_error_counts_compared_pixels(void **state)
 	assert_near(lx_soft_error(ref_o, ref_s, ref_v, o, v, 1), 0, 0);
 }
 
+/* The shaded reference of a spotlight needs the light's image; with it the same decisions
+ * come out as without colours. */
+static void shaded_reference_needs_the_light_image(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m = {0};
+	struct lx_frame f;
+	char err[256];
+	assert_true(lx_scene_builtin("spotlight", &s));
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0.4, 32, 24, err, sizeof err));
+	int16_t o1[32 * 24], o2[32 * 24];
+	uint8_t s1[32 * 24], s2[32 * 24], rgba[32 * 24 * 4];
+	assert_false(lx_reference_image_shaded(&f, NULL, o1, s1, rgba, 2));
+	struct lx_image beam;
+	assert_true(lx_light_image_load(&s.light, &beam, err, sizeof err));
+	assert_true(lx_reference_image_shaded(&f, &beam, o1, s1, rgba, 2));
+	assert_true(lx_reference_image(&f, o2, s2, 1));
+	assert_memory_equal(o1, o2, sizeof o1);
+	assert_memory_equal(s1, s2, sizeof s1);
+	lx_image_free(&beam);
+	lx_meshes_free(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -347,6 +373,7 @@ int main(void)
 		cmocka_unit_test(soft_image_is_deterministic_and_bounded),
 		cmocka_unit_test(soft_error_counts_compared_pixels),
 		cmocka_unit_test(median_equals_sorted_middle),
+		cmocka_unit_test(shaded_reference_needs_the_light_image),
 		cmocka_unit_test(jacobian_of_known_homographies),
 		cmocka_unit_test(plane_homography_matches_projection),
 	};

@@ -155,9 +155,8 @@ static bool measure(const struct lx_render_job *job, const struct lx_frame *fram
 	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
 	rep->ref_shadow = malloc((size_t)n);
 	if (!rep->ref_object || !rep->ref_shadow ||
-	    !lx_reference_image(frame, rep->ref_object, rep->ref_shadow, job->reference_threads) ||
-	    !lx_reference_colors(frame, mr->light_image.rgba ? &mr->light_image : NULL, rep->ref_shadow, rgba,
-				 job->reference_threads)) {
+	    !lx_reference_image_shaded(frame, mr->light_image.rgba ? &mr->light_image : NULL, rep->ref_object,
+				       rep->ref_shadow, rgba, job->reference_threads)) {
 		snprintf(err, errlen, "out of memory for the reference image");
 		return false;
 	}

@@ -305,9 +305,9 @@ struct job {
 	const struct lx_raycaster *rc;
 	int16_t *object;
 	uint8_t *shadowed;
-	const mat4 *beam;               /* a projective light's matrix, else NULL */
-	const struct lx_image *image;   /* shade: the light's image; NULL: decide only */
-	uint8_t *rgba;                  /* shade: the colours */
+	const mat4 *beam;             /* a projective light's matrix, else NULL */
+	const struct lx_image *image; /* a projective light's image, else NULL */
+	uint8_t *rgba;                /* the shaded colours too, or NULL */
 };
 
 /* The view ray through a pixel's centre, from the near plane (t = 0) to the far (t = 1). */
@@ -364,7 +364,8 @@ int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, 
 	return tri;
 }
 
-/* One row of a job: each pixel's object and decision, or with an image its colour. */
+/* One row of a job: each pixel's object and decision, and its colour when asked, from
+ * the one ray that finds what the pixel sees. */
 static void job_row(void *ctx, int y)
 {
 	const struct job *j = ctx;
@@ -376,12 +377,6 @@ static void job_row(void *ctx, int y)
 		double t;
 		int tri = lx_raycast_first(j->rc, o, d, 0.0, 1.0, &t);
 		vec3 p = v3_add(o, v3_scale(d, t));
-		if (j->image) { /* shade, with the decisions made before */
-			vec3 c = tri >= 0 ? shade(j, tri, p, j->shadowed[i]) : v3(0.08, 0.09, 0.11);
-			uint8_t *q = j->rgba + i * 4;
-			q[0] = level(c.x), q[1] = level(c.y), q[2] = level(c.z), q[3] = 255;
-			continue;
-		}
 		j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
 		if (tri < 0)
 			j->shadowed[i] = 0;
@@ -389,6 +384,11 @@ static void job_row(void *ctx, int y)
 			j->shadowed[i] = LX_REF_UNLIT;
 		else
 			j->shadowed[i] = (uint8_t)decide(j->rc, &j->f->light, p, tri, true);
+		if (j->rgba) {
+			vec3 c = tri >= 0 ? shade(j, tri, p, j->shadowed[i]) : v3(0.08, 0.09, 0.11);
+			uint8_t *q = j->rgba + i * 4;
+			q[0] = level(c.x), q[1] = level(c.y), q[2] = level(c.z), q[3] = 255;
+		}
 	}
 }
 
@@ -427,32 +427,26 @@ void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), v
 	}
 }
 
-bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
+bool lx_reference_image_shaded(const struct lx_frame *f, const struct lx_image *light_image, int16_t *object,
+				uint8_t *shadowed, uint8_t *rgba, int threads)
 {
 	struct lx_raycaster *rc = lx_raycaster_create(f);
 	if (!rc)
 		return false;
 	mat4 beam;
 	bool projective = lx_light_projection(&f->light, &beam);
-	struct job job = {.f = f, .rc = rc, .object = object, .shadowed = shadowed, .beam = projective ? &beam : NULL};
+	if (projective && rgba && !light_image) {
+		lx_raycaster_destroy(rc);
+		return false; /* a projective light's colours need its image */
+	}
+	struct job job = {.f = f, .rc = rc, .object = object, .shadowed = shadowed, .beam = projective ? &beam : NULL,
+			  .image = projective ? light_image : NULL, .rgba = rgba};
 	lx_reference_rows(f->view.height, threads, job_row, &job);
 	lx_raycaster_destroy(rc);
 	return true;
 }
 
-bool lx_reference_colors(const struct lx_frame *f, const struct lx_image *light_image, const uint8_t *shadowed,
-			 uint8_t *rgba, int threads)
+bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)
 {
-	static const uint8_t white[4] = {255, 255, 255, 255};
-	const struct lx_image plain = {1, 1, (uint8_t *)white}; /* never written: a plain light's image */
-	struct lx_raycaster *rc = lx_raycaster_create(f);
-	if (!rc)
-		return false;
-	mat4 beam;
-	bool projective = lx_light_projection(&f->light, &beam) && light_image;
-	struct job job = {.f = f, .rc = rc, .shadowed = (uint8_t *)shadowed, .beam = projective ? &beam : NULL,
-			  .image = projective ? light_image : &plain, .rgba = rgba};
-	lx_reference_rows(f->view.height, threads, job_row, &job);
-	lx_raycaster_destroy(rc);
-	return true;
+	return lx_reference_image_shaded(f, NULL, object, shadowed, NULL, threads);
 }

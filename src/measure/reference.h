@@ -55,12 +55,13 @@ bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shad
 /* The pixels that a projective light does not reach (behind it, outside its image or past
  * its range): unlit, shaded alike whatever the decision; the metrics do not compare them. */
 #define LX_REF_UNLIT 3
-/* The renderer's shaded image as it should be, RGBA8 rows bottom to top: the visible
- * triangle shaded with main.frag's model in double precision, with the decisions of
- * lx_reference_image (shadowed) and the light's image (a projective light's beam or slide,
- * sampled as GL's LINEAR filter does; NULL for other lights). */
+/* The same decisions, and from the same rays the renderer's shaded image as it should be,
+ * RGBA8 rows bottom to top: the visible triangle shaded with main.frag's model in double
+ * precision, with those decisions and the light's image (a projective light's beam or
+ * slide, sampled as GL's LINEAR filter does; NULL for other lights). False when out of
+ * memory, or when a projective light's image is missing. */
 struct lx_image;
-bool lx_reference_colors(const struct lx_frame *f, const struct lx_image *light_image, const uint8_t *shadowed,
-			 uint8_t *rgba, int threads);
+bool lx_reference_image_shaded(const struct lx_frame *f, const struct lx_image *light_image, int16_t *object,
+				uint8_t *shadowed, uint8_t *rgba, int threads);
 
 #endif
