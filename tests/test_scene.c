@@ -278,6 +278,15 @@ static void projective_light_geometry(void **state)
 	assert_false(lx_light_reaches(&l, &m, v3(1.01 * edge, 0, 0)));
 	assert_false(lx_light_reaches(&l, &m, v3(0, 7, 0)));  /* behind the light */
 	assert_false(lx_light_reaches(&l, &m, v3(0, -1.5, 0))); /* past range_far (6.5 m away) */
+	/* the frustum's corners: the image's corners, the far face just past range_far */
+	vec3 fc[8];
+	assert_true(lx_light_frustum(&l, v3(-5, 0, -5), v3(5, 5, 5), fc));
+	static const double st[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_point(&m, fc[k]);
+		assert_true(fabs(c.x / c.w - st[k % 4][0]) < 1e-9 && fabs(c.y / c.w - st[k % 4][1]) < 1e-9);
+		assert_true(k < 4 ? c.w > 0 && c.w < 1e-6 : fabs(c.w - 6 * 1.001) < 1e-9);
+	}
 	struct lx_image beam;
 	char err[256];
 	assert_true(lx_light_image_load(&l, &beam, err, sizeof err));

@@ -1,4 +1,5 @@
 #include "frame.h"
+#include "light_image.h"
 #include "convex.h"
 #include <math.h>
 #include <stdarg.h>
@@ -100,26 +101,10 @@ static void light_inside_casters(struct lx_frame *f)
  * frustum's apex at the light, its far face at its range or past the whole scene). */
 static void lit_box(struct lx_frame *f)
 {
-	const struct lx_light *l = &f->light;
 	f->lit_min = f->view_min, f->lit_max = f->view_max;
-	mat4 view;
-	if (l->projective == LX_LIGHT_PLAIN || !m4_look_at(l->position, l->at, l->up, &view))
-		return;
-	vec3 s = v3(view.m[0], view.m[4], view.m[8]), u = v3(view.m[1], view.m[5], view.m[9]);
-	vec3 fw = v3(-view.m[2], -view.m[6], -view.m[10]);
-	double far = l->range_far;
-	if (!(far > 0)) /* no range: past the farthest corner of the view box */
-		for (int i = 0; i < 8; i++)
-			far = fmax(far, v3_dot(v3_sub(v3_box_corner(f->view_min, f->view_max, i), l->position), fw));
-	double size = v3_len(v3_sub(f->scene_max, f->scene_min)), near = 1e-9 * (size + 1e-300);
-	double ty = tan(l->fov_deg * M_PI / 360), tx = l->aspect * ty; /* fov in (0, 150) degrees */
 	vec3 fc[8], pts[LX_CONVEX_MAX_POINTS];
-	static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-	for (int k = 0; k < 8; k++) {
-		double d = k < 4 ? near : fmax(far * 1.001, 2 * near);
-		const double *c = corner[k % 4];
-		fc[k] = v3_add(l->position, v3_add(v3_scale(fw, d), v3_add(v3_scale(s, c[0] * tx * d), v3_scale(u, c[1] * ty * d))));
-	}
+	if (!lx_light_frustum(&f->light, f->view_min, f->view_max, fc))
+		return;
 	int n = lx_frustum_box_points(fc, f->view_min, f->view_max, pts, LX_CONVEX_MAX_POINTS);
 	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
 	for (int i = 0; i < n; i++) {

@@ -76,13 +76,22 @@ bool lx_light_image_load(const struct lx_light *l, struct lx_image *out, char *e
 	return true;
 }
 
+/* A projective light's view (world -> light, looking down -z) and the tangents of its
+ * half-angles across (tx) and up (ty); false for other lights or a degenerate frame. */
+static bool light_view(const struct lx_light *l, mat4 *view, double *tx, double *ty)
+{
+	if (l->projective == LX_LIGHT_PLAIN || !(l->aspect > 0) || !m4_look_at(l->position, l->at, l->up, view))
+		return false;
+	*ty = tan(l->fov_deg * M_PI / 360), *tx = l->aspect * *ty; /* fov in (0, 150) degrees */
+	return true;
+}
+
 bool lx_light_projection(const struct lx_light *l, mat4 *out)
 {
 	mat4 view;
-	double aspect = l->aspect;
-	if (l->projective == LX_LIGHT_PLAIN || !(aspect > 0) || !m4_look_at(l->position, l->at, l->up, &view))
+	double tx, ty;
+	if (!light_view(l, &view, &tx, &ty))
 		return false;
-	double ty = tan(l->fov_deg * M_PI / 360), tx = aspect * ty; /* fov in (0, 150) degrees */
 	/* depth d = -z in the light's view; s = 0.5 + 0.5 x / (d tx), t = 0.5 + 0.5 y / (d ty) */
 	mat4 m = {{0}};
 	for (int c = 0; c < 4; c++) {
@@ -94,6 +103,28 @@ bool lx_light_projection(const struct lx_light *l, mat4 *out)
 	}
 	*out = m;
 	return m4_finite(out);
+}
+
+bool lx_light_frustum(const struct lx_light *l, vec3 lo, vec3 hi, vec3 fc[8])
+{
+	mat4 view;
+	double tx, ty;
+	if (!light_view(l, &view, &tx, &ty))
+		return false;
+	vec3 s = v3(view.m[0], view.m[4], view.m[8]), u = v3(view.m[1], view.m[5], view.m[9]);
+	vec3 fw = v3(-view.m[2], -view.m[6], -view.m[10]);
+	double far = l->range_far;
+	if (!(far > 0)) /* no range: past the farthest corner of the box */
+		for (int i = 0; i < 8; i++)
+			far = fmax(far, v3_dot(v3_sub(v3_box_corner(lo, hi, i), l->position), fw));
+	double near = 1e-9 * (v3_len(v3_sub(hi, lo)) + 1e-300);
+	static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+	for (int k = 0; k < 8; k++) {
+		double d = k < 4 ? near : fmax(far * 1.001, 2 * near);
+		const double *c = corner[k % 4];
+		fc[k] = v3_add(l->position, v3_add(v3_scale(fw, d), v3_add(v3_scale(s, c[0] * tx * d), v3_scale(u, c[1] * ty * d))));
+	}
+	return true;
 }
 
 static double texel(const struct lx_image *im, int x, int y, int ch)

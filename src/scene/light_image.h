@@ -19,6 +19,10 @@ bool lx_light_image_load(const struct lx_light *l, struct lx_image *out, char *e
  * q = d the depth along its axis (positive in front); the frustum's aspect is l->aspect.
  * False when the light is not projective or its frame is degenerate. */
 bool lx_light_projection(const struct lx_light *l, mat4 *out);
+/* The light's frustum as 8 corners (near face 0-3, far face 4-7, as lx_frustum_box_points
+ * takes them): its apex a hair off the light, its far face at range_far or past the box
+ * [lo, hi]. False for other lights. */
+bool lx_light_frustum(const struct lx_light *l, vec3 lo, vec3 hi, vec3 fc[8]);
 /* The image at (s, t) as GL's LINEAR filter with CLAMP_TO_EDGE reads it: texel centres at
  * (i + 0.5) / width; RGB in [0, 1]. */
 vec3 lx_image_bilinear(const struct lx_image *im, double s, double t);

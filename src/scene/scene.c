@@ -318,7 +318,7 @@ static bool parse_light(struct parser *p, struct lx_scene *s)
 		return fail(p, "expected 'point', 'directional', 'spot' or 'projector' after 'light'");
 	p->pos++;
 	struct lx_light *l = &s->light;
-	*l = (struct lx_light){.direction = v3(0, -1, 0), .color = v3(1, 1, 1), .up = v3(0, 1, 0), .aspect = 1};
+	*l = lx_light_white(v3(0, 0, 0));
 	if (!strcmp(k, "point")) {
 		/* direction unused for a point light; kept canonical */
 		if (!triple(p, "light position", &l->position))
