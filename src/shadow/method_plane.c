@@ -145,9 +145,7 @@ static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *
 	/* the lit side faces away from the light: every point of the plane is shadowed by
 	 * the facing rule, so its map would decide nothing */
 	double facing = light->directional ? -v3_dot(v3(pi.x, pi.y, pi.z), light->direction) : v4_dot_point(pi, light->position);
-	/* relative to the plane's own size: one caster far from the rest must not make a
-	 * light a few metres above the floor count as lying in it */
-	double near_limit = light->directional ? 1e-3 : 1e-3 * (v3_len(P->edge1) + v3_len(P->edge2));
+	double near_limit = light->directional ? 1e-3 : lx_plane_near_limit(P);
 	if (fabs(facing) < near_limit) {
 		lx_shadow_warn(out, light->directional ? "plane %s: the light grazes the plane; its map is skipped and the fallback map serves it"
 						     : "plane %s: the light is within %.3g m of the plane; its map is skipped and the fallback map serves it",

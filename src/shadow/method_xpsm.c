@@ -154,7 +154,7 @@ static mat4 warp(vec3 o, double n)
 	return m4_mul(&W, &T);
 }
 
-/* A point light lying on a plane of the scene (within a thousandth of the plane's size):
+/* A point light lying on a plane of the scene (lx_plane_near_limit, as plane-optimal judges it):
  * its rays graze that plane and what stands on it, where the warped depth decides the side
  * by rounding (a spotlight on the floor put false shadows on a cone's lit side, 16% of the
  * compared pixels, found by test_extremes). False after a warning: the uniform map stands. */
@@ -164,7 +164,7 @@ static bool light_off_the_planes(const struct lx_frame *f, struct lx_shadow_resu
 		return true;
 	for (int i = 0; i < f->scene->plane_count; i++) {
 		const struct lx_plane *P = &f->scene->planes[i];
-		double limit = 1e-3 * (v3_len(P->edge1) + v3_len(P->edge2));
+		double limit = lx_plane_near_limit(P);
 		if (fabs(v4_dot_point(lx_plane_equation(P), f->light.position)) < limit) {
 			lx_shadow_warn(out, "xpsm: the point light lies within %.3g m of plane %s; uniform this frame", limit,
 				       P->name);

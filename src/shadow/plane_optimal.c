@@ -31,6 +31,8 @@ bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double w
 	return true;
 }
 
+double lx_plane_near_limit(const struct lx_plane *p) { return 1e-3 * (v3_len(p->edge1) + v3_len(p->edge2)); }
+
 bool lx_plane_contains(const struct lx_plane *p, vec3 q)
 {
 	/* parallelogram coordinates: solve q - corner = s e1 + u e2 in the plane (the edges

@@ -23,6 +23,10 @@ struct lx_plane_camera {
 vec4 lx_light_point(const struct lx_light *l);
 /* Plane of interest as (n, d) with n . x + d = 0, n the unit front normal. */
 vec4 lx_plane_equation(const struct lx_plane *p);
+/* How near a point light may come to plane p's surface before it counts as lying in it (its
+ * rays graze the plane and what stands on it): a thousandth of the plane's size, so that
+ * one caster far from the rest does not make a light a few metres up count as in it. */
+double lx_plane_near_limit(const struct lx_plane *p);
 
 /* Solves the five point constraints (the paper's equations 1 and 7-10): L -> [0, 0, 1, 0];
  * the points where the eye's rays through the window corners (0, 0), (0, H), (W, H) meet
