@@ -8,6 +8,7 @@
 #include "platform.h"
 #include "soft_reference.h"
 #include "test_util.h"
+#include "gl_fixture.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -143,12 +144,8 @@ static void compare_golden(const char *golden, const char *now)
 static void filter_none_draws_as_before(void **state)
 {
 	(void)state;
-	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
 	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	char renderer[512];
 	snprintf(renderer, sizeof renderer, "%s | %s", caps.renderer, caps.version);
 	size_t room = 1 << 20;
@@ -275,11 +272,8 @@ static double check_run(struct lx_method_run *run, const struct lx_frame *f, str
 static void filters_against_references(const char *platform, bool mediump, const char *const *configs, int nc)
 {
 	char err[512];
-	struct lx_platform *plat = lx_platform_create(platform, err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
 	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	struct lx_platform *plat = platform_with_caps(platform, &caps);
 	struct lx_scene base;
 	lx_scene_default(&base);
 	struct lx_scene_meshes meshes = {0};
@@ -389,11 +383,8 @@ static void filters_stay_in_their_region(void **state)
 	(void)state;
 	enum { w = 256, h = 192 };
 	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
 	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	struct lx_scene base;
 	lx_scene_default(&base);
 	struct lx_scene_meshes meshes = {0};
@@ -455,11 +446,8 @@ static void filters_lookup_where_shadows_fall(void **state)
 	(void)state;
 	enum { w = 256, h = 192 };
 	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
 	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	uint8_t *rgba[2] = {malloc((size_t)w * h * 4), malloc((size_t)w * h * 4)}, *sh = malloc((size_t)w * h);
 	int16_t *obj = malloc((size_t)w * h * sizeof(int16_t));
 	long frames = 0, looked[2] = {0, 0};

@@ -12,6 +12,7 @@
 #include "render_job.h"
 #include "renderer.h"
 #include "test_util.h"
+#include "gl_fixture.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -411,17 +412,6 @@ static void none_shadows_nothing(void **state)
 	}
 }
 
-/* An OSMesa context for tests that drive lx_method_run directly, and what it can do. */
-static struct lx_platform *osmesa_with_caps(struct lx_gl_caps *caps)
-{
-	char err[512];
-	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
-	if (!plat)
-		fail_msg("%s", err);
-	lx_gl_caps_probe(caps);
-	return plat;
-}
-
 /* --lookup-region footprint (the default) draws without a lookup wherever no shadow can
  * fall, and casters with only the maps that serve them: no pixel's decision or object may
  * change against --lookup-region all. Every method, every standard configuration of both
@@ -432,7 +422,7 @@ static void lookup_region_changes_no_decision(void **state)
 	enum { w = 256, h = 192 };
 	char err[512];
 	struct lx_gl_caps caps;
-	struct lx_platform *plat = osmesa_with_caps(&caps);
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
 	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
 	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
@@ -553,7 +543,7 @@ static void simulated_lima_keeps_the_shadows(void **state)
 	enum { w = 256, h = 192 };
 	char err[512];
 	struct lx_gl_caps caps;
-	struct lx_platform *plat = osmesa_with_caps(&caps);
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	if (!mediump_is_fp16(&caps)) {
 		print_message("%s: mediump is not fp16 here, nothing to simulate (skipped)\n", caps.renderer);
 		lx_platform_destroy(plat);
@@ -646,11 +636,8 @@ static void gpu_depth_encoding_and_guards(void **state)
 		assert_true(lx_meshes_build(&s, &m));
 		struct lx_frame f;
 		assert_true(lx_frame_setup(&f, &s, &m, 0, 64, 64, err, sizeof err));
-		struct lx_platform *plat = lx_platform_create(platforms[p], err, sizeof err);
-		if (!plat)
-			fail_msg("%s", err);
 		struct lx_gl_caps caps;
-		lx_gl_caps_probe(&caps);
+		struct lx_platform *plat = platform_with_caps(platforms[p], &caps);
 		const struct lx_shadow_method *me = lx_shadow_method_find("uniform");
 		struct lx_region_request req[LX_MAX_MAPS];
 		struct lx_atlas atlas;
