@@ -362,6 +362,171 @@ static void shaded_reference_needs_the_light_image(void **state)
 	lx_meshes_free(&m);
 }
 
+/* The multi-light reference's tests: 120 x 90 views of the default scene at t = 0.3. */
+#define LW 120
+#define LH 90
+#define LN (LW * LH)
+
+struct shaded {
+	int16_t object[LN];
+	uint8_t shadowed[LN], rgba[LN * 4];
+};
+
+static void lights_frame(const char *scene, struct lx_scene *s, struct lx_scene_meshes *m, struct lx_frame *f)
+{
+	char err[256];
+	assert_true(lx_scene_builtin(scene, s));
+	assert_true(lx_meshes_build(s, m));
+	assert_true(lx_frame_setup(f, s, m, 0.3, LW, LH, err, sizeof err));
+}
+
+/* The shaded reference of frame f's light alone (im: a projective light's image). */
+static struct shaded *alone(const struct lx_frame *f, const struct lx_image *im)
+{
+	struct shaded *r = malloc(sizeof *r);
+	assert_non_null(r);
+	assert_true(lx_reference_image_shaded(f, im, r->object, r->shadowed, r->rgba, 3));
+	return r;
+}
+
+/* Frames a's and b's lights together: a's decisions in r->shadowed, b's in sh_b. */
+static struct shaded *together(const struct lx_frame *a, const struct lx_frame *b, uint8_t *sh_b)
+{
+	struct shaded *r = malloc(sizeof *r);
+	assert_non_null(r);
+	const struct lx_frame *frames[2] = {a, b};
+	uint8_t *sh[2] = {r->shadowed, sh_b};
+	assert_true(lx_reference_lights(frames, NULL, 2, r->object, sh, r->rgba, 3));
+	return r;
+}
+
+/* One light through lx_reference_lights is lx_reference_image_shaded, byte for byte, for
+ * a point light, a spotlight and a projector; n out of range and a projective light's
+ * missing image are refused. */
+static void one_light_is_the_single_reference(void **state)
+{
+	(void)state;
+	static const char *const scenes[] = {"default", "spotlight", "projector"};
+	struct shaded *b = malloc(sizeof *b);
+	assert_non_null(b);
+	for (int k = 0; k < 3; k++) {
+		struct lx_scene s;
+		struct lx_scene_meshes m;
+		struct lx_frame f;
+		struct lx_image im;
+		char err[256];
+		lights_frame(scenes[k], &s, &m, &f);
+		assert_true(lx_light_image_load(&s.light, &im, err, sizeof err));
+		const struct lx_image *ims[1] = {k ? &im : NULL}; /* a plain light needs no image */
+		struct shaded *a = alone(&f, ims[0]);
+		const struct lx_frame *frames[LX_MAX_LIGHTS + 1] = {&f, &f, &f, &f, &f};
+		uint8_t *sh[LX_MAX_LIGHTS + 1] = {b->shadowed, b->shadowed, b->shadowed, b->shadowed, b->shadowed};
+		memset(b, 0xa5, sizeof *b);
+		assert_true(lx_reference_lights(frames, ims, 1, b->object, sh, b->rgba, 2));
+		assert_memory_equal(a->object, b->object, sizeof a->object);
+		assert_memory_equal(a->shadowed, b->shadowed, sizeof a->shadowed);
+		assert_memory_equal(a->rgba, b->rgba, sizeof a->rgba);
+		assert_false(lx_reference_lights(frames, ims, 0, b->object, sh, b->rgba, 2));
+		assert_false(lx_reference_lights(frames, NULL, LX_MAX_LIGHTS + 1, b->object, sh, NULL, 2));
+		/* without colours no image is needed; with them a projective light's is */
+		assert_true(lx_reference_lights(frames, NULL, 1, b->object, sh, NULL, 2));
+		assert_memory_equal(a->shadowed, b->shadowed, sizeof a->shadowed);
+		assert_true(lx_reference_lights(frames, NULL, 1, b->object, sh, b->rgba, 2) == (k == 0));
+		free(a);
+		lx_image_free(&im);
+		lx_meshes_free(&m);
+	}
+	free(b);
+}
+
+/* Two point lights. Each light's decisions are its own reference's. The colours add as
+ * the passes do: with light 1 black (the ambient term alone, A) the image is A + D2, D2
+ * light 2's pass, within one level of light 2's own image (a sum of two roundings against
+ * one); with light 1 white it is min(255, S1 + D2), S1 light 1's own image, exactly, and
+ * S1 itself where light 2 sends nothing. */
+static void two_lights_add_as_the_passes_do(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f1, f2, fk;
+	lights_frame("default", &s, &m, &f1);
+	f2 = f1, fk = f1;
+	f2.light.position = v3(-3, 4, 2.5);
+	fk.light.color = v3(0, 0, 0);
+	struct shaded *s1 = alone(&f1, NULL), *s2 = alone(&f2, NULL), *a = alone(&fk, NULL);
+	uint8_t *sh2 = malloc(LN), *shk = malloc(LN);
+	struct shaded *both = together(&f1, &f2, sh2), *k2 = together(&fk, &f2, shk);
+	assert_memory_equal(both->object, s1->object, sizeof s1->object);
+	assert_memory_equal(both->shadowed, s1->shadowed, LN);
+	assert_memory_equal(sh2, s2->shadowed, LN);
+	assert_memory_equal(shk, s2->shadowed, LN);
+	long added = 0, clamped = 0, dark = 0;
+	for (long i = 0; i < LN; i++)
+		for (int ch = 0; ch < 3; ch++) {
+			long j = i * 4 + ch, d2 = k2->rgba[j] - a->rgba[j], sum = s1->rgba[j] + d2;
+			assert_true(d2 >= 0 && abs(k2->rgba[j] - s2->rgba[j]) <= 1);
+			if (both->rgba[j] != (sum < 255 ? sum : 255))
+				fail_msg("pixel %ld channel %d: %d, expected min(255, %d + %ld)", i, ch, both->rgba[j],
+					 s1->rgba[j], d2);
+			if (s1->object[i] < 0 || s2->shadowed[i] == 1) {
+				assert_int_equal(both->rgba[j], s1->rgba[j]);
+				dark++;
+			}
+			added += d2 > 0, clamped += sum > 255;
+		}
+	print_message("two lights: %ld channels added to, %ld clamped, %ld unchanged (background, light 2 shadowed)\n",
+		      added, clamped, dark);
+	assert_true(added > LN); /* light 2 lights much of the view */
+	assert_true(clamped > 0 && dark > 0); /* and the clamp and its shadows are exercised */
+	free(s1), free(s2), free(a), free(both), free(k2), free(sh2), free(shk);
+	lx_meshes_free(&m);
+}
+
+/* Every light is multiplied by its colour, a point or a directional light too: a red
+ * light's red is a white light's, its green and blue the ambient term's alone; added to a
+ * white light, it changes no green or blue, and where only it lights (the white light's
+ * shadow) green and blue stay at the ambient level. */
+static void a_coloured_light_tints_its_own_channel(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame white, red, black, red2;
+	lights_frame("default", &s, &m, &white);
+	for (int directional = 0; directional < 2; directional++) {
+		if (directional) {
+			white.light.directional = true;
+			assert_true(v3_normalize(v3(-0.4, -1, -0.3), &white.light.direction));
+		}
+		red = white, black = white, red2 = white;
+		red.light.color = red2.light.color = v3(1, 0, 0), black.light.color = v3(0, 0, 0);
+		red2.light.position = v3(-3, 4, 2.5); /* elsewhere: by position or by direction */
+		assert_true(v3_normalize(v3(0.5, -1, -0.2), &red2.light.direction));
+		struct shaded *w = alone(&white, NULL), *r = alone(&red, NULL), *a = alone(&black, NULL);
+		uint8_t *sh2 = malloc(LN);
+		struct shaded *both = together(&white, &red2, sh2);
+		long greener = 0, only_red = 0;
+		for (long i = 0; i < LN; i++) {
+			const uint8_t *pw = w->rgba + i * 4, *pr = r->rgba + i * 4, *pa = a->rgba + i * 4;
+			const uint8_t *pb = both->rgba + i * 4;
+			assert_true(pr[0] == pw[0] && pr[1] == pa[1] && pr[2] == pa[2]);
+			greener += pw[1] > pa[1];
+			assert_true(pb[1] == pw[1] && pb[2] == pw[2] && pb[0] >= pw[0]);
+			if (w->object[i] >= 0 && w->shadowed[i] == 1 && sh2[i] == 0) {
+				assert_true(pb[1] == pa[1] && pb[2] == pa[2]);
+				only_red += pb[0] > pa[0];
+			}
+		}
+		print_message("%s: %ld pixels greener under white than under red, %ld lit red only\n",
+			      directional ? "directional" : "point", greener, only_red);
+		assert_true(greener > LN / 4); /* a white light does light green: the equality above means something */
+		assert_true(only_red > 20);
+		free(w), free(r), free(a), free(both), free(sh2);
+	}
+	lx_meshes_free(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -374,6 +539,9 @@ int main(void)
 		cmocka_unit_test(soft_error_counts_compared_pixels),
 		cmocka_unit_test(median_equals_sorted_middle),
 		cmocka_unit_test(shaded_reference_needs_the_light_image),
+		cmocka_unit_test(one_light_is_the_single_reference),
+		cmocka_unit_test(two_lights_add_as_the_passes_do),
+		cmocka_unit_test(a_coloured_light_tints_its_own_channel),
 		cmocka_unit_test(jacobian_of_known_homographies),
 		cmocka_unit_test(plane_homography_matches_projection),
 	};

@@ -1,3 +1,5 @@
+#include "configs.h"
+#include "frame.h"
 #include "light_image.h"
 #include "mesh.h"
 #include "scene.h"
@@ -227,6 +229,54 @@ static void directional_light_and_defaults(void **state)
 	assert_near(s.camera.fovy_deg, 60, 0);
 }
 
+static void assert_color(vec3 c, double r, double g, double b)
+{
+	if (!(c.x == r && c.y == g && c.z == b))
+		fail_msg("light colour %g %g %g, expected %g %g %g", c.x, c.y, c.z, r, g, b);
+}
+
+/* Every light is multiplied by its colour, so a light nobody coloured must be white
+ * whichever way it was made: parsed, built in, set by a configuration, or turned
+ * directional by the frame for being far away (which keeps a colour it has). */
+static void lights_are_white_unless_coloured(void **state)
+{
+	(void)state;
+	static const char *const texts[] = {"light point 0 5 0\n", "light directional 0 -2 0\n",
+					    "light spot 0 5 0 at 0 0 0 fov 40\n"};
+	struct lx_scene s;
+	char err[256], text[256];
+	for (int i = 0; i < 3; i++) {
+		snprintf(text, sizeof text, "%sbox size 1 1 1 at 0 0\n", texts[i]);
+		if (!lx_scene_parse(text, "white.scene", &s, err, sizeof err))
+			fail_msg("%s", err);
+		assert_color(s.light.color, 1, 1, 1);
+	}
+	if (!lx_scene_parse("light spot 0 5 0 at 0 0 0 fov 40 color 1 0.5 0\nbox size 1 1 1 at 0 0\n", "c.scene", &s,
+			    err, sizeof err))
+		fail_msg("%s", err);
+	assert_color(s.light.color, 1, 0.5, 0);
+	static const char *const builtins[] = {"default", "table", "projector"};
+	for (int i = 0; i < 3; i++) {
+		assert_true(lx_scene_builtin(builtins[i], &s));
+		assert_color(s.light.color, 1, 1, 1);
+	}
+	for (int i = 0; i < lx_config_count; i++) {
+		lx_scene_default(&s);
+		lx_config_apply(&lx_configs[i], &s);
+		assert_color(s.light.color, 1, 1, 1);
+	}
+	/* a point light 1e9 m away: the frame takes it as directional, in its own colour */
+	lx_scene_default(&s);
+	s.light.position = v3(0, 1e9, 0), s.light.color = v3(0.5, 0.25, 1);
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 32, 24, err, sizeof err));
+	assert_true(f.light.directional);
+	assert_color(f.light.color, 0.5, 0.25, 1);
+	lx_meshes_free(&m);
+}
+
 /* The shadow rule (back faces are shadowed) needs closed, outward-facing meshes. */
 static void caster_meshes_are_closed_and_outward(void **state)
 {
@@ -321,6 +371,7 @@ int main(void)
 		cmocka_unit_test(projective_light_geometry),
 		cmocka_unit_test(any_scale_parses),
 		cmocka_unit_test(directional_light_and_defaults),
+		cmocka_unit_test(lights_are_white_unless_coloured),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);

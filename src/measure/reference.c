@@ -300,14 +300,23 @@ bool lx_reference_shadowed(const struct lx_raycaster *rc, const struct lx_light 
 	return decide(rc, light, p, tri, false);
 }
 
+/* One light of a job: the light (frames[i]'s, as its frame set it up), its projective
+ * matrix and image when it is projective, and where its decisions go. */
+struct job_light {
+	const struct lx_light *light;
+	bool projective;
+	mat4 beam;
+	const struct lx_image *image;
+	uint8_t *shadowed;
+};
+
 struct job {
-	const struct lx_frame *f;
+	const struct lx_frame *f; /* the view, scene and meshes: the first light's frame */
 	const struct lx_raycaster *rc;
 	int16_t *object;
-	uint8_t *shadowed;
-	const mat4 *beam;             /* a projective light's matrix, else NULL */
-	const struct lx_image *image; /* a projective light's image, else NULL */
-	uint8_t *rgba;                /* the shaded colours too, or NULL */
+	int n;
+	struct job_light lights[LX_MAX_LIGHTS];
+	uint8_t *rgba; /* the shaded colours too, or NULL */
 };
 
 /* The view ray through a pixel's centre, from the near plane (t = 0) to the far (t = 1). */
@@ -321,34 +330,47 @@ static void pixel_ray(const struct lx_view *v, int x, int y, vec3 *o, vec3 *d)
 	*d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), *o);
 }
 
-/* The renderer's shading at p on triangle tri, exactly: the vertex normals interpolated
- * across the triangle, the ambient and diffuse terms of main.frag, the light's image and
- * range for a projective light. */
-static vec3 shade(const struct job *j, int tri, vec3 p, int decision)
+/* What a visible point's shading starts from: the object's colour and the vertex normals
+ * interpolated across its triangle (not normalised). */
+struct surface {
+	vec3 color, n;
+};
+
+static struct surface surface_at(const struct job *j, int tri, vec3 p)
 {
 	const struct tri *t = &j->rc->tris[tri];
 	const struct lx_scene *s = j->f->scene;
 	int id = t->object;
-	vec3 color = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
+	struct surface out = {.n = v3(0, 0, 0)};
+	out.color = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
 	/* barycentric (u, v) of p: p - a = u e1 + v e2 (the triangle is not degenerate) */
 	vec3 r = v3_sub(p, t->a);
 	double e11 = v3_dot(t->e1, t->e1), e12 = v3_dot(t->e1, t->e2), e22 = v3_dot(t->e2, t->e2);
 	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, t->e1), r2 = v3_dot(r, t->e2);
 	double u = det > 0 ? (r1 * e22 - r2 * e12) / det : 0, w = det > 0 ? (r2 * e11 - r1 * e12) / det : 0;
-	vec3 n = v3(0, 0, 0);
 	for (int k = 0; k < 3; k++) {
 		const float *vn = t->v + (size_t)k * LX_VERTEX_FLOATS + 3;
 		double b = k == 0 ? 1 - u - w : k == 1 ? u : w;
-		n = v3_add(n, v3_scale(v3(vn[0], vn[1], vn[2]), b));
+		out.n = v3_add(out.n, v3_scale(v3(vn[0], vn[1], vn[2]), b));
 	}
-	const struct lx_light *l = &j->f->light;
+	return out;
+}
+
+/* The renderer's shading at p by one light, exactly: main.frag's diffuse term with the
+ * light's colour (for a projective light its image and range too, which
+ * lx_projective_light_at already multiplies by the colour), plus the ambient term for the
+ * first light only, as the additive passes make it [Segal]. */
+static vec3 shade(const struct job_light *L, const struct surface *s, vec3 p, int decision, bool first)
+{
+	const struct lx_light *l = L->light;
 	vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p), nn, ln;
-	double lambert = v3_normalize(n, &nn) && v3_normalize(to_light, &ln) ? fmax(v3_dot(nn, ln), 0) : 0;
-	vec3 light = j->beam ? lx_projective_light_at(l, j->beam, j->image, p) : v3(1, 1, 1);
+	double lambert = v3_normalize(s->n, &nn) && v3_normalize(to_light, &ln) ? fmax(v3_dot(nn, ln), 0) : 0;
+	vec3 light = L->projective ? lx_projective_light_at(l, &L->beam, L->image, p) : l->color;
 	/* shadowed (1): no diffuse term; grazed (2): lambert is ~0 either way; unlit (3): the light
 	 * sends nothing there */
-	double lit = decision == 1 ? 0 : 0.78 * lambert;
-	return v3(color.x * (0.22 + lit * light.x), color.y * (0.22 + lit * light.y), color.z * (0.22 + lit * light.z));
+	double lit = decision == 1 ? 0 : 0.78 * lambert, amb = first ? 0.22 : 0;
+	vec3 c = s->color;
+	return v3(c.x * (amb + lit * light.x), c.y * (amb + lit * light.y), c.z * (amb + lit * light.z));
 }
 
 static uint8_t level(double c) { return (uint8_t)lround(255 * fmin(fmax(c, 0), 1)); }
@@ -364,30 +386,50 @@ int lx_reference_pixel(const struct lx_frame *f, const struct lx_raycaster *rc, 
 	return tri;
 }
 
-/* One row of a job: each pixel's object and decision, and its colour when asked, from
- * the one ray that finds what the pixel sees. */
+/* Light k's decision at p on triangle tri (-1: the background). */
+static uint8_t job_decision(const struct job *j, int k, int tri, vec3 p)
+{
+	const struct job_light *L = &j->lights[k];
+	if (tri < 0)
+		return 0;
+	if (L->projective && !lx_light_reaches(L->light, &L->beam, p))
+		return LX_REF_UNLIT;
+	return (uint8_t)decide(j->rc, L->light, p, tri, true);
+}
+
+/* One row of a job: each pixel's object, every light's decision, and its colour when asked,
+ * from the one ray that finds what the pixel sees. Each light's pass is quantised to
+ * 8 bits and the sum clamps at 255, as additive blending into RGBA8 does. */
 static void job_row(void *ctx, int y)
 {
 	const struct job *j = ctx;
 	const struct lx_view *v = &j->f->view;
 	for (int x = 0; x < v->width; x++) {
-		vec3 o, d;
+		vec3 o, d, p = v3(0, 0, 0);
 		pixel_ray(v, x, y, &o, &d);
 		size_t i = (size_t)y * v->width + x;
 		double t;
 		int tri = lx_raycast_first(j->rc, o, d, 0.0, 1.0, &t);
-		vec3 p = v3_add(o, v3_scale(d, t));
+		if (tri >= 0)
+			p = v3_add(o, v3_scale(d, t));
 		j->object[i] = (int16_t)lx_raycaster_object(j->rc, tri);
-		if (tri < 0)
-			j->shadowed[i] = 0;
-		else if (j->beam && !lx_light_reaches(&j->f->light, j->beam, p))
-			j->shadowed[i] = LX_REF_UNLIT;
-		else
-			j->shadowed[i] = (uint8_t)decide(j->rc, &j->f->light, p, tri, true);
+		struct surface s = {{0.08, 0.09, 0.11}, {0, 0, 0}}; /* the background: the clear colour */
+		if (j->rgba && tri >= 0)
+			s = surface_at(j, tri, p);
+		int sum[3] = {0, 0, 0};
+		for (int k = 0; k < j->n; k++) {
+			uint8_t dec = job_decision(j, k, tri, p);
+			j->lights[k].shadowed[i] = dec;
+			if (!j->rgba || (tri < 0 && k > 0))
+				continue;
+			vec3 c = tri >= 0 ? shade(&j->lights[k], &s, p, dec, k == 0) : s.color;
+			sum[0] += level(c.x), sum[1] += level(c.y), sum[2] += level(c.z);
+		}
 		if (j->rgba) {
-			vec3 c = tri >= 0 ? shade(j, tri, p, j->shadowed[i]) : v3(0.08, 0.09, 0.11);
 			uint8_t *q = j->rgba + i * 4;
-			q[0] = level(c.x), q[1] = level(c.y), q[2] = level(c.z), q[3] = 255;
+			for (int ch = 0; ch < 3; ch++)
+				q[ch] = (uint8_t)(sum[ch] < 255 ? sum[ch] : 255);
+			q[3] = 255;
 		}
 	}
 }
@@ -427,23 +469,34 @@ void lx_reference_rows(int height, int threads, void (*row)(void *ctx, int y), v
 	}
 }
 
+bool lx_reference_lights(const struct lx_frame *const *frames, const struct lx_image *const *images, int n,
+			 int16_t *object, uint8_t *const *shadowed, uint8_t *rgba, int threads)
+{
+	if (n < 1 || n > LX_MAX_LIGHTS)
+		return false;
+	struct job job = {.f = frames[0], .object = object, .n = n, .rgba = rgba};
+	for (int k = 0; k < n; k++) {
+		struct job_light *L = &job.lights[k];
+		L->light = &frames[k]->light;
+		L->projective = lx_light_projection(L->light, &L->beam);
+		L->image = L->projective && images ? images[k] : NULL;
+		L->shadowed = shadowed[k];
+		if (L->projective && rgba && !L->image)
+			return false; /* a projective light's colours need its image */
+	}
+	struct lx_raycaster *rc = lx_raycaster_create(frames[0]);
+	if (!rc)
+		return false;
+	job.rc = rc;
+	lx_reference_rows(frames[0]->view.height, threads, job_row, &job);
+	lx_raycaster_destroy(rc);
+	return true;
+}
+
 bool lx_reference_image_shaded(const struct lx_frame *f, const struct lx_image *light_image, int16_t *object,
 				uint8_t *shadowed, uint8_t *rgba, int threads)
 {
-	struct lx_raycaster *rc = lx_raycaster_create(f);
-	if (!rc)
-		return false;
-	mat4 beam;
-	bool projective = lx_light_projection(&f->light, &beam);
-	if (projective && rgba && !light_image) {
-		lx_raycaster_destroy(rc);
-		return false; /* a projective light's colours need its image */
-	}
-	struct job job = {.f = f, .rc = rc, .object = object, .shadowed = shadowed, .beam = projective ? &beam : NULL,
-			  .image = projective ? light_image : NULL, .rgba = rgba};
-	lx_reference_rows(f->view.height, threads, job_row, &job);
-	lx_raycaster_destroy(rc);
-	return true;
+	return lx_reference_lights(&f, &light_image, 1, object, &shadowed, rgba, threads);
 }
 
 bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shadowed, int threads)

@@ -57,11 +57,23 @@ bool lx_reference_image(const struct lx_frame *f, int16_t *object, uint8_t *shad
 #define LX_REF_UNLIT 3
 /* The same decisions, and from the same rays the renderer's shaded image as it should be,
  * RGBA8 rows bottom to top: the visible triangle shaded with main.frag's model in double
- * precision, with those decisions and the light's image (a projective light's beam or
- * slide, sampled as GL's LINEAR filter does; NULL for other lights). False when out of
- * memory, or when a projective light's image is missing. */
+ * precision, with those decisions and the light's colour and image (a projective light's
+ * beam or slide, sampled as GL's LINEAR filter does; NULL for other lights). False when out
+ * of memory, or when a projective light's image is missing. lx_reference_lights with one
+ * light. */
 struct lx_image;
 bool lx_reference_image_shaded(const struct lx_frame *f, const struct lx_image *light_image, int16_t *object,
 				uint8_t *shadowed, uint8_t *rgba, int threads);
+/* The same for n lights (1 to LX_MAX_LIGHTS) from one eye ray per pixel: frames[i] is the
+ * view at the same time lit by light i (only its light is read for i > 0; the view, scene
+ * and BVH come from frames[0]), images[i] that light's image or NULL (images itself may be
+ * NULL when no colours are asked or no light is projective). shadowed[i] gets light i's
+ * decisions, exactly what lx_reference_image_shaded gives for that light alone. rgba (or
+ * NULL) gets what the renderer's additive passes make [Segal]: per channel the first
+ * light's shading with the ambient term, plus each later light's diffuse term alone, each
+ * quantised to 8 bits, the sum clamped at 255; the clear colour on the background. False
+ * when n is out of range, out of memory, or a projective light's image is missing. */
+bool lx_reference_lights(const struct lx_frame *const *frames, const struct lx_image *const *images, int n,
+			 int16_t *object, uint8_t *const *shadowed, uint8_t *rgba, int threads);
 
 #endif

@@ -36,14 +36,14 @@ void lx_config_apply(const struct lx_config *c, struct lx_scene *s)
 	}
 	switch (c->light) {
 	case 1:
-		s->light = (struct lx_light){.directional = false, .position = c->light_pos, .direction = v3(0, -1, 0)};
+		s->light = lx_light_white(c->light_pos);
 		break;
 	case 2:
 		s->light.directional = true;
 		v3_normalize(c->light_dir, &s->light.direction); /* table entries are non-zero */
 		break;
 	case 3:
-		s->light = (struct lx_light){.directional = false, .position = s->camera.eye, .direction = v3(0, -1, 0)};
+		s->light = lx_light_white(s->camera.eye);
 		break;
 	default:
 		break;

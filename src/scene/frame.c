@@ -77,7 +77,9 @@ static void far_light(struct lx_frame *f)
 	double size = v3_len(v3_sub(hi, lo)), dist = box_distance(f->light.position, lo, hi);
 	if (!(dist > LX_FAR_LIGHT_RATIO * size) || !v3_normalize(v3_sub(c, f->light.position), &d))
 		return;
-	f->light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = d};
+	/* the same light from afar: its colour stays */
+	vec3 color = f->light.color;
+	f->light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = d, .color = color};
 	note(f, "light: the point light is %.3g times farther than the view's objects are wide; taken as directional "
 		"(its rays spread by less than 1e-6 rad over them)", dist / size);
 }

@@ -165,7 +165,7 @@ vec3 lx_projective_light_at(const struct lx_light *l, const mat4 *proj, const st
 {
 	double s, t, d;
 	if (l->projective == LX_LIGHT_PLAIN)
-		return v3(1, 1, 1);
+		return l->color; /* every light is multiplied by its colour */
 	if (!project(l, proj, p, &s, &t, &d))
 		return v3(0, 0, 0);
 	double fall = 1;

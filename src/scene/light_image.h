@@ -28,7 +28,7 @@ bool lx_light_frustum(const struct lx_light *l, vec3 lo, vec3 hi, vec3 fc[8]);
 vec3 lx_image_bilinear(const struct lx_image *im, double s, double t);
 /* The colour a projective light sends to world point p (before the surface's own
  * colour and the cosine): image x light colour x range fall-off; zero behind the light,
- * outside its frustum, or past its range. */
+ * outside its frustum, or past its range. A plain light: its colour everywhere. */
 vec3 lx_projective_light_at(const struct lx_light *l, const mat4 *proj, const struct lx_image *im, vec3 p);
 /* Whether p is inside the light's frustum (in front, within the image, within its range);
  * plain lights reach everywhere. */

@@ -8,6 +8,8 @@
 #include <stddef.h>
 
 #define LX_MAX_PLANES 8
+/* Lights of one frame at most: the renderer adds one pass per light [Segal]. */
+#define LX_MAX_LIGHTS 4
 #define LX_MAX_CASTERS 32
 #define LX_NAME_MAX 16
 /* No coordinate, size or time of a scene beyond this (options included): products of two
@@ -50,7 +52,7 @@ struct lx_light {
 	bool directional;
 	vec3 position;  /* point light */
 	vec3 direction; /* directional: the direction light travels, unit length */
-	vec3 color;     /* projective lights: the colour, each in [0, 1] (the others are white) */
+	vec3 color;     /* every kind's colour, each in [0, 1]: (1, 1, 1) unless the scene sets one */
 	enum lx_projective projective;
 	vec3 at, up;        /* projective: where it points, and which way is up in its image */
 	double fov_deg;     /* projective: vertical field of view, in (0, LX_SPOT_FOV_MAX) */
@@ -82,7 +84,8 @@ void lx_scene_default(struct lx_scene *s);
 void lx_scene_table(struct lx_scene *s);
 /* "point", "directional", "spot" or "projector". */
 const char *lx_light_kind_name(const struct lx_light *l);
-/* A point light at position, white. */
+/* A point light at position, white: what every light starts from, so that its colour is
+ * (1, 1, 1) unless set. */
 struct lx_light lx_light_white(vec3 position);
 /* The default scene under a spotlight (lixel's round beam), and lit by a projector
  * showing lixel's own slide. */
