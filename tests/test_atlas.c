@@ -1,4 +1,6 @@
 #include "atlas.h"
+#include "scene.h"
+#include "shadow_method.h"
 #include "test_util.h"
 #include <math.h>
 #include <stdio.h>
@@ -239,6 +241,393 @@ static void size_limits_give_clear_errors(void **state)
 	assert_int_equal(lx_atlas_lixels(&a), 0);
 }
 
+/* Stacking: several lights' atlases (parts) in one texture. */
+
+enum part_kind { PART_PLANE, PART_UNIFORM, PART_KINDS };
+
+/* A light's atlas as the method lays it out for the default scene (floor and wall), with
+ * method_run's guard and the given options. */
+static void method_part(const char *method, const struct lx_method_options *o, struct lx_atlas *a)
+{
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_region_request req[LX_MAX_MAPS];
+	const struct lx_shadow_method *m = lx_shadow_method_find(method);
+	assert_non_null(m);
+	int n = lx_shadow_method_regions(m, &s, o, req);
+	char err[256];
+	if (!lx_atlas_layout(a, req, n, 1, 2048, err, sizeof err))
+		fail_msg("%s", err);
+}
+
+/* With the default options: plane-optimal's variable floor and wall budgets of 350^2, its
+ * 128^2 fallback and its borrowed second piece; uniform's 512^2. */
+static void real_part(enum part_kind kind, struct lx_atlas *a)
+{
+	method_part(kind == PART_PLANE ? "plane" : "uniform", &LX_METHOD_OPTIONS_DEFAULT, a);
+	if (kind == PART_PLANE) { /* the shapes named in the design: what the parts below stand for */
+		assert_int_equal(a->count, 4);
+		assert_true(a->regions[0].variable && a->regions[0].budget == 350 * 350);
+		assert_true(a->regions[1].variable && a->regions[1].budget == 350 * 350);
+		assert_true(!a->regions[2].variable && a->regions[2].w == 128 && a->regions[2].h == 128);
+		assert_true(a->regions[3].variable && a->regions[3].counted == 0);
+	} else {
+		assert_int_equal(a->count, 1);
+		assert_true(!a->regions[0].variable && a->regions[0].w == 512 && a->regions[0].h == 512);
+	}
+}
+
+/* The parts lie inside the texture and apart; each region, grown by its guard, inside its
+ * own part (so inside the texture) and apart from every region of every part. */
+static void check_stack(struct lx_atlas *const *parts, int n)
+{
+	int tw = parts[0]->texture_width, th = parts[0]->texture_height;
+	for (int i = 0; i < n; i++) {
+		const struct lx_atlas *a = parts[i];
+		assert_int_equal(a->texture_width, tw);
+		assert_int_equal(a->texture_height, th);
+		assert_true(a->x0 >= 0 && a->y0 >= 0 && a->x0 + a->width <= tw && a->y0 + a->height <= th);
+		for (int j = 0; j < i; j++) {
+			const struct lx_atlas *b = parts[j];
+			if (!(a->x0 + a->width <= b->x0 || b->x0 + b->width <= a->x0 || a->y0 + a->height <= b->y0 ||
+			      b->y0 + b->height <= a->y0))
+				fail_msg("parts %d and %d overlap", j, i);
+		}
+		for (int r = 0; r < a->count; r++) {
+			const struct lx_region *g = &a->regions[r];
+			if (g->w == 0 && g->h == 0)
+				continue;
+			int gd = a->guard;
+			if (g->x - gd < a->x0 || g->y - gd < a->y0 || g->x + g->w + gd > a->x0 + a->width ||
+			    g->y + g->h + gd > a->y0 + a->height)
+				fail_msg("part %d: region %s %dx%d at (%d, %d) leaves its part %dx%d at (%d, %d)", i,
+					 g->name, g->w, g->h, g->x, g->y, a->width, a->height, a->x0, a->y0);
+			for (int j = 0; j <= i; j++)
+				for (int q = 0; q < parts[j]->count; q++) {
+					const struct lx_region *o = &parts[j]->regions[q];
+					if ((j == i && q == r) || (o->w == 0 && o->h == 0))
+						continue;
+					int og = parts[j]->guard;
+					bool apart = g->x + g->w + gd + og <= o->x || o->x + o->w + og + gd <= g->x ||
+						     g->y + g->h + gd + og <= o->y || o->y + o->h + og + gd <= g->y;
+					if (j != i && !apart) /* across parts, both guard rings must be free */
+						fail_msg("region %s of part %d and %s of part %d overlap", g->name, i,
+							 o->name, j);
+					if (j == i && !(g->x + g->w + gd <= o->x || o->x + o->w + gd <= g->x ||
+							g->y + g->h + gd <= o->y || o->y + o->h + gd <= g->y))
+						fail_msg("regions %s and %s of part %d overlap", g->name, o->name, i);
+				}
+		}
+	}
+}
+
+/* One part alone: stacking leaves a fresh layout exactly as it is; a part that had been
+ * stacked elsewhere goes back to the origin with its regions. */
+static void one_part_stays_alone(void **state)
+{
+	(void)state;
+	char err[256];
+	for (int k = 0; k < PART_KINDS; k++) {
+		struct lx_atlas a, fresh, other;
+		real_part(k, &a);
+		assert_int_equal(a.x0, 0);
+		assert_int_equal(a.y0, 0);
+		assert_int_equal(a.texture_width, a.width);
+		assert_int_equal(a.texture_height, a.height);
+		fresh = a;
+		struct lx_atlas *one[] = {&a};
+		assert_true(lx_atlas_stack(one, 1, 2048, err, sizeof err));
+		assert_memory_equal(&a, &fresh, sizeof a);
+		real_part(k, &other); /* the same size, first: a goes second */
+		struct lx_atlas *two[] = {&other, &a};
+		assert_true(lx_atlas_stack(two, 2, 2048, err, sizeof err));
+		assert_true(a.x0 > 0 || a.y0 > 0); /* else this says nothing about going back */
+		assert_true(lx_atlas_stack(one, 1, 2048, err, sizeof err));
+		assert_memory_equal(&a, &fresh, sizeof a);
+	}
+}
+
+/* A few lixels per frame: the aspect 2^(a/4) of a budget, as plane_budgets_fit_every_aspect. */
+static void part_frame(const struct lx_atlas *a, int ea, int eb, int *w, int *h)
+{
+	for (int r = 0; r < a->count; r++) {
+		w[r] = a->regions[r].w, h[r] = a->regions[r].h;
+		if (a->regions[r].variable && a->regions[r].counted == 0)
+			w[r] = h[r] = 0; /* the borrowed piece: its lixels are the others' */
+		else if (a->regions[r].variable)
+			shape(a->regions[r].budget, pow(2, (r ? eb : ea) / 4.0), &w[r], &h[r]);
+	}
+}
+
+/* Frames in aspects 1:32 to 32:1 packed in every stacked part: each packing, deterministic
+ * and nothing shrunk, is the one the part has alone (`alone`) moved by its origin, and
+ * leaves the stack apart (check_stack). Returns the frames packed. */
+static int pack_stacked_frames(const struct lx_atlas *alone, struct lx_atlas *const *parts, int n)
+{
+	int frames = 0;
+	for (int ea = -20; ea <= 20; ea += 5)
+		for (int eb = -20; eb <= 20; eb += 5) {
+			for (int i = 0; i < n; i++) {
+				struct lx_atlas *a = parts[i];
+				int w[LX_ATLAS_MAX_REGIONS], h[LX_ATLAS_MAX_REGIONS];
+				part_frame(a, ea + i, eb - i, w, h);
+				assert_int_equal(lx_atlas_pack(a, w, h), 0);
+				struct lx_atlas again = *a, lone = alone[i];
+				assert_int_equal(lx_atlas_pack(&again, w, h), 0);
+				assert_memory_equal(&again, a, sizeof again);
+				assert_int_equal(lx_atlas_pack(&lone, w, h), 0);
+				for (int r = 0; r < lone.count; r++) { /* unplaced ones too: at the origin */
+					const struct lx_region *p = &a->regions[r], *l = &lone.regions[r];
+					assert_true(p->w == l->w && p->h == l->h && p->turned == l->turned);
+					assert_int_equal(p->x, l->x + a->x0);
+					assert_int_equal(p->y, l->y + a->y0);
+				}
+			}
+			check_stack(parts, n);
+			frames++;
+		}
+	return frames;
+}
+
+/* Every mix of 1 to 4 plane-optimal and uniform parts that can share a 2048 texture does,
+ * and every frame's packing stays in its own part and apart from the other parts' regions. */
+static void stacked_parts_pack_apart(void **state)
+{
+	(void)state;
+	char err[512];
+	int stacks = 0, frames = 0;
+	for (int n = 1; n <= LX_ATLAS_MAX_PARTS; n++)
+		for (unsigned mix = 0; mix < 1u << n; mix++) {
+			struct lx_atlas alone[LX_ATLAS_MAX_PARTS], part[LX_ATLAS_MAX_PARTS], *parts[LX_ATLAS_MAX_PARTS];
+			int planes = 0;
+			for (int i = 0; i < n; i++) {
+				real_part(mix >> i & 1 ? PART_PLANE : PART_UNIFORM, &alone[i]);
+				planes += mix >> i & 1;
+				part[i] = alone[i];
+				parts[i] = &part[i];
+			}
+			/* a plane part is wider than half of 2048, so parts cannot sit beside it: each
+			 * takes a band of its height; three of them leave no room for a fourth part */
+			bool fits = !(n == 4 && planes >= 3);
+			if (!fits) {
+				assert_false(lx_atlas_stack(parts, n, 2048, err, sizeof err));
+				continue;
+			}
+			if (!lx_atlas_stack(parts, n, 2048, err, sizeof err))
+				fail_msg("%d parts, %d plane-optimal: %s", n, planes, err);
+			check_stack(parts, n);
+			assert_true(part[0].texture_width <= 2048 && part[0].texture_height <= 2048);
+			stacks++;
+			frames += pack_stacked_frames(alone, parts, n);
+		}
+	print_message("%d stacks, %d frames of each stack's parts packed\n", stacks, frames);
+	assert_int_equal(stacks, 30 - 5); /* 2 + 4 + 8 + 16 mixes, 5 of them with 3 or 4 plane parts of 4 */
+}
+
+/* Smaller plane-optimal budgets (160^2 maps, a 64^2 fallback) make parts narrow enough to
+ * sit beside another: two of them in a column beside a fixed part as tall, so their
+ * frames pack from origins off both axes. */
+static void variable_parts_side_by_side(void **state)
+{
+	(void)state;
+	char err[512];
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	o.plane_lixels = 160, o.fallback_lixels = 64;
+	struct lx_atlas alone[3], part[3], *parts[3];
+	method_part("plane", &o, &alone[1]);
+	method_part("plane", &o, &alone[2]);
+	assert_int_equal(alone[1].width, 908);
+	assert_int_equal(alone[1].height, 292);
+	struct lx_region_request wide[] = {{"wide", 998, 582, 0, false}}; /* 1000 x twice 292 */
+	assert_true(lx_atlas_layout(&alone[0], wide, 1, 1, 2048, err, sizeof err));
+	for (int i = 0; i < 3; i++) {
+		part[i] = alone[i];
+		parts[i] = &part[i];
+	}
+	assert_true(lx_atlas_stack(parts, 3, 2048, err, sizeof err));
+	/* 1908x584 turned beats the best shelves, all in a column 1000x1168 */
+	assert_int_equal(part[0].texture_width, 1908);
+	assert_int_equal(part[0].texture_height, 584);
+	assert_true(part[0].x0 == 0 && part[0].y0 == 0);
+	assert_true(part[1].x0 == 1000 && part[1].y0 == 0 && part[2].x0 == 1000 && part[2].y0 == 292);
+	check_stack(parts, 3);
+	assert_int_equal(pack_stacked_frames(alone, parts, 3), 81);
+}
+
+/* The arrangement: the smallest texture, then the squarest, then the first tried (a row). */
+static void stack_arrangements(void **state)
+{
+	(void)state;
+	char err[512];
+	struct lx_atlas u[4], pl[2];
+	for (int i = 0; i < 4; i++)
+		real_part(PART_UNIFORM, &u[i]);
+	struct lx_atlas *pair[] = {&u[0], &u[1]};
+	assert_true(lx_atlas_stack(pair, 2, 2048, err, sizeof err));
+	/* a row and a column tie: the narrowest shelves are tried first, a column wins */
+	assert_int_equal(u[0].texture_width, 514);
+	assert_int_equal(u[0].texture_height, 1028);
+	assert_true(u[0].x0 == 0 && u[0].y0 == 0 && u[1].x0 == 0 && u[1].y0 == 514);
+	assert_int_equal(u[1].regions[0].x, 1);
+	assert_int_equal(u[1].regions[0].y, 514 + 1);
+	struct lx_atlas *four[] = {&u[0], &u[1], &u[2], &u[3]};
+	assert_true(lx_atlas_stack(four, 4, 2048, err, sizeof err));
+	assert_int_equal(u[0].texture_width, 1028); /* two shelves of two: square */
+	assert_int_equal(u[0].texture_height, 1028);
+	check_stack(four, 4);
+	/* four 514 parts in at most 600 a side: no arrangement, nothing moved */
+	struct lx_atlas kept = u[3];
+	assert_false(lx_atlas_stack(four, 4, 600, err, sizeof err));
+	assert_memory_equal(&u[3], &kept, sizeof kept);
+	real_part(PART_PLANE, &pl[0]);
+	real_part(PART_PLANE, &pl[1]);
+	print_message("plane-optimal part %dx%d, uniform part %dx%d\n", pl[0].width, pl[0].height, u[0].width,
+		      u[0].height);
+	struct lx_atlas *mixed[] = {&u[0], &pl[0], &u[1], &pl[1]};
+	assert_true(lx_atlas_stack(mixed, 4, 2048, err, sizeof err));
+	check_stack(mixed, 4);
+	int tw = u[0].texture_width, th = u[0].texture_height;
+	/* no worse than all in a column (the widest part's width) */
+	assert_true((long)tw * th <= (long)pl[0].width * (2 * pl[0].height + 2 * u[0].height));
+	assert_true((long)tw * th >= 2L * pl[0].width * pl[0].height + 2L * u[0].width * u[0].height);
+	/* deterministic: the same sizes, the same places */
+	struct lx_atlas again[4] = {u[0], pl[0], u[1], pl[1]};
+	struct lx_atlas *mixed2[] = {&again[0], &again[1], &again[2], &again[3]};
+	assert_true(lx_atlas_stack(mixed2, 4, 2048, err, sizeof err));
+	for (int i = 0; i < 4; i++)
+		assert_memory_equal(mixed2[i], mixed[i], sizeof again[i]);
+	/* tall parts: columns side by side beat one row or one column */
+	struct lx_region_request tall[] = {{"t", 98, 998, 0, false}};
+	struct lx_atlas t[3];
+	for (int i = 0; i < 3; i++)
+		assert_true(lx_atlas_layout(&t[i], tall, 1, 1, 4096, err, sizeof err));
+	struct lx_atlas *three[] = {&t[0], &t[1], &t[2]};
+	assert_true(lx_atlas_stack(three, 3, 4096, err, sizeof err));
+	assert_int_equal(t[0].texture_width, 300);
+	assert_int_equal(t[0].texture_height, 1000);
+	check_stack(three, 3);
+	/* one tall part and two half as tall: the best shelves give 100x2000, the turned
+	 * packing (a column of the two beside the tall one) the squarer 200x1000 */
+	struct lx_region_request half[] = {{"h", 98, 498, 0, false}};
+	assert_true(lx_atlas_layout(&t[1], half, 1, 1, 4096, err, sizeof err));
+	assert_true(lx_atlas_layout(&t[2], half, 1, 1, 4096, err, sizeof err));
+	assert_true(lx_atlas_stack(three, 3, 4096, err, sizeof err));
+	assert_int_equal(t[0].texture_width, 200);
+	assert_int_equal(t[0].texture_height, 1000);
+	assert_true(t[0].x0 == 0 && t[1].x0 == 100 && t[2].x0 == 100 && t[1].y0 + t[2].y0 == 500);
+	check_stack(three, 3);
+	/* 1000x200, 500x1000, 1000x500: no prefix of widths makes a shelf as wide as the widest
+	 * part (turned, 1000 tall); that shelf stacks the two wide parts beside the tall one */
+	struct lx_region_request sizes[3][1] = {{{"a", 998, 198, 0, false}}, {{"b", 498, 998, 0, false}},
+						 {{"c", 998, 498, 0, false}}};
+	for (int i = 0; i < 3; i++)
+		assert_true(lx_atlas_layout(&t[i], sizes[i], 1, 1, 4096, err, sizeof err));
+	assert_true(lx_atlas_stack(three, 3, 4096, err, sizeof err));
+	assert_int_equal(t[0].texture_width, 1500);
+	assert_int_equal(t[0].texture_height, 1000);
+	assert_true(t[0].x0 == 0 && t[0].y0 == 0 && t[2].x0 == 0 && t[2].y0 == 200 && t[1].x0 == 1000 && t[1].y0 == 0);
+	check_stack(three, 3);
+}
+
+/* Region clip space lands on the region's texels in the shared texture. */
+static void stacked_texture_matrix(void **state)
+{
+	(void)state;
+	char err[256];
+	struct lx_atlas u, p;
+	real_part(PART_UNIFORM, &u);
+	real_part(PART_PLANE, &p);
+	struct lx_atlas *two[] = {&u, &p};
+	assert_true(lx_atlas_stack(two, 2, 2048, err, sizeof err));
+	assert_true(u.texture_width != u.width || u.texture_height != u.height);
+	mat4 id = m4_identity();
+	for (int k = 0; k < 2; k++)
+		for (int r = 0; r < two[k]->count; r++) {
+			const struct lx_atlas *a = two[k];
+			const struct lx_region *g = &a->regions[r];
+			mat4 t = lx_shadow_texture_matrix(a, r, &id);
+			vec4 lo = m4_mul_v4(&t, (vec4){-1, -1, -1, 1}), hi = m4_mul_v4(&t, (vec4){1, 1, 1, 1});
+			assert_near(lo.x * a->texture_width, g->x, 1e-9);
+			assert_near(lo.y * a->texture_height, g->y, 1e-9);
+			assert_near(hi.x * a->texture_width, g->x + g->w, 1e-9);
+			assert_near(hi.y * a->texture_height, g->y + g->h, 1e-9);
+		}
+}
+
+/* Parts that cannot share a texture: false, a reason naming their sizes and the limit,
+ * the parts as they were. */
+static void stack_that_cannot_fit_fails(void **state)
+{
+	(void)state;
+	char err[512];
+	struct lx_region_request big[] = {{"big", 1998, 1998, 0, false}};
+	struct lx_atlas b[4], before[4];
+	struct lx_atlas *parts[] = {&b[0], &b[1], &b[2], &b[3]};
+	for (int i = 0; i < 4; i++) {
+		assert_true(lx_atlas_layout(&b[i], big, 1, 1, 2048, err, sizeof err));
+		assert_int_equal(b[i].width, 2000);
+	}
+	memcpy(before, b, sizeof b);
+	err[0] = 0;
+	assert_false(lx_atlas_stack(parts, 4, 2048, err, sizeof err));
+	print_message("%s\n", err);
+	assert_non_null(strstr(err, "2000x2000, 2000x2000, 2000x2000, 2000x2000"));
+	assert_non_null(strstr(err, "2048"));
+	assert_null(strchr(err, '\n'));
+	assert_memory_equal(b, before, sizeof b);
+	/* a short buffer: cut, still a string */
+	char small[24];
+	assert_false(lx_atlas_stack(parts, 4, 2048, small, sizeof small));
+	assert_int_equal(strlen(small), sizeof small - 1);
+	/* the GL's limit holds fixed parts... */
+	assert_true(lx_atlas_stack(parts, 4, 4096, err, sizeof err));
+	assert_int_equal(b[0].texture_width, 4000);
+	check_stack(parts, 4);
+	/* ...but variable ones keep to LX_ATLAS_MAX_SIDE whatever the GL allows */
+	struct lx_atlas p[4], pbefore[4];
+	struct lx_atlas *planes[] = {&p[0], &p[1], &p[2], &p[3]};
+	for (int i = 0; i < 4; i++)
+		real_part(PART_PLANE, &p[i]);
+	memcpy(pbefore, p, sizeof p);
+	assert_false(lx_atlas_stack(planes, 4, 8192, err, sizeof err));
+	assert_non_null(strstr(err, "2048"));
+	assert_memory_equal(p, pbefore, sizeof p);
+	assert_true(lx_atlas_stack(planes, 3, 8192, err, sizeof err));
+	assert_true(p[0].texture_width <= LX_ATLAS_MAX_SIDE && p[0].texture_height <= LX_ATLAS_MAX_SIDE);
+}
+
+/* Out-of-range counts and parts that are not laid out: errors, nothing moved. */
+static void stack_bad_requests(void **state)
+{
+	(void)state;
+	char err[256];
+	struct lx_atlas u[5], before[5], zero = {0};
+	for (int i = 0; i < 5; i++)
+		real_part(PART_UNIFORM, &u[i]);
+	memcpy(before, u, sizeof u);
+	struct lx_atlas *five[] = {&u[0], &u[1], &u[2], &u[3], &u[4]};
+	err[0] = 0;
+	assert_false(lx_atlas_stack(five, 0, 2048, err, sizeof err));
+	assert_non_null(strstr(err, "expected 1 to 4"));
+	err[0] = 0;
+	assert_false(lx_atlas_stack(five, 5, 8192, err, sizeof err));
+	assert_non_null(strstr(err, "expected 1 to 4"));
+	assert_false(lx_atlas_stack(five, -1, 2048, err, sizeof err));
+	assert_false(lx_atlas_stack(NULL, 1, 2048, err, sizeof err));
+	assert_false(lx_atlas_stack(five, 2, 0, err, sizeof err));
+	struct lx_atlas *twice[] = {&u[0], &u[1], &u[0]};
+	err[0] = 0;
+	assert_false(lx_atlas_stack(twice, 3, 2048, err, sizeof err));
+	assert_non_null(strstr(err, "again"));
+	struct lx_atlas *unset[] = {&u[0], &zero};
+	err[0] = 0;
+	assert_false(lx_atlas_stack(unset, 2, 2048, err, sizeof err));
+	assert_non_null(strstr(err, "not laid out"));
+	struct lx_atlas *gap[] = {&u[0], NULL};
+	assert_false(lx_atlas_stack(gap, 2, 2048, err, sizeof err));
+	assert_memory_equal(u, before, sizeof u);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -249,6 +638,13 @@ int main(void)
 		cmocka_unit_test(plane_budgets_fit_every_aspect),
 		cmocka_unit_test(shared_budgets_fit),
 		cmocka_unit_test(a_frame_that_cannot_fit_shrinks),
+		cmocka_unit_test(one_part_stays_alone),
+		cmocka_unit_test(stacked_parts_pack_apart),
+		cmocka_unit_test(variable_parts_side_by_side),
+		cmocka_unit_test(stack_arrangements),
+		cmocka_unit_test(stacked_texture_matrix),
+		cmocka_unit_test(stack_that_cannot_fit_fails),
+		cmocka_unit_test(stack_bad_requests),
 	};
 	return cmocka_run_group_tests_name("atlas", tests, NULL, NULL);
 }

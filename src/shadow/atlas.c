@@ -20,8 +20,8 @@ static int tallest_first(const struct lx_atlas *a, int *order)
 	return n;
 }
 
-/* Next-fit shelf packing of the n regions in order, shelves at most shelf_width wide;
- * gives the extent used (guards included). */
+/* Next-fit shelf packing of the n regions in order, shelves at most shelf_width wide, from
+ * the atlas's origin; gives the extent used (guards included), relative to the origin. */
 static void pack_shelves(struct lx_atlas *a, const int *order, int n, int shelf_width, int *width, int *height)
 {
 	int g = a->guard, x = g, y = g, shelf_h = 0;
@@ -33,8 +33,8 @@ static void pack_shelves(struct lx_atlas *a, const int *order, int n, int shelf_
 			x = g;
 			shelf_h = 0;
 		}
-		r->x = x;
-		r->y = y;
+		r->x = a->x0 + x;
+		r->y = a->y0 + y;
 		x += r->w + g;
 		if (x > *width)
 			*width = x;
@@ -186,7 +186,7 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 	atlas->count = count;
 	atlas->guard = guard;
 	if (count == 0) { /* a method without maps still gets a valid 1x1 texture */
-		atlas->width = atlas->height = 1;
+		atlas->width = atlas->height = atlas->texture_width = atlas->texture_height = 1;
 		return true;
 	}
 	if (!(variable ? layout_variable(atlas, max_size) : layout_fixed(atlas, max_size))) {
@@ -207,6 +207,8 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 		}
 		*atlas = trial;
 	}
+	atlas->texture_width = atlas->width; /* alone in its texture until stacked */
+	atlas->texture_height = atlas->height;
 	return true;
 }
 
@@ -257,7 +259,8 @@ int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
 			r->turned = ch[i] > cw[i];
 			r->w = r->turned ? ch[i] : cw[i];
 			r->h = r->turned ? cw[i] : ch[i];
-			r->x = r->y = 0;
+			r->x = a->x0; /* an unplaced region stays inside the atlas's own area */
+			r->y = a->y0;
 		}
 		if (pack_nfdh(a))
 			return shrunk;
@@ -275,6 +278,131 @@ int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
 			return -1;
 		}
 	}
+}
+
+/* Where the parts go in their texture, and its size. */
+struct stack_plan {
+	int x[LX_ATLAS_MAX_PARTS], y[LX_ATLAS_MAX_PARTS];
+	int width, height;
+};
+
+/* Next-fit shelves of the parts in order, at most shelf_width wide (as pack_shelves, with
+ * no guard: each part keeps its regions' guards inside its own area). */
+static void stack_shelves(const int *w, const int *h, const int *order, int n, long shelf_width, int *x, int *y,
+			  int *width, int *height)
+{
+	int cx = 0, cy = 0, shelf_h = 0;
+	*width = 0;
+	for (int k = 0; k < n; k++) {
+		int i = order[k];
+		if (cx + w[i] > shelf_width && cx > 0) {
+			cy += shelf_h;
+			cx = shelf_h = 0;
+		}
+		x[i] = cx;
+		y[i] = cy;
+		cx += w[i];
+		if (cx > *width)
+			*width = cx;
+		if (h[i] > shelf_h)
+			shelf_h = h[i];
+	}
+	*height = cy + shelf_h;
+}
+
+/* The smallest texture (then the squarest, then the first tried) of a few arrangements:
+ * shelves of the parts tallest first, every shelf width from the widest part's to all in
+ * one row; then the same a quarter turned (columns, widest first, up to all in one
+ * column). Four rectangles at most need no search; the choice follows the sizes alone. */
+static bool best_stack(const int *pw, const int *ph, int n, int cap, struct stack_plan *best)
+{
+	bool found = false;
+	long best_area = 0;
+	int best_side = 0;
+	for (int turn = 0; turn < 2; turn++) {
+		const int *w = turn ? ph : pw, *h = turn ? pw : ph;
+		int order[LX_ATLAS_MAX_PARTS], widest = 0;
+		for (int i = 0; i < n; i++) { /* insertion sort, tallest first: stable */
+			int j = i;
+			for (; j > 0 && h[order[j - 1]] < h[i]; j--)
+				order[j] = order[j - 1];
+			order[j] = i;
+			widest = w[i] > widest ? w[i] : widest;
+		}
+		long shelf = 0;
+		for (int k = -1; k < n; k++) {
+			long shelf_width = k < 0 ? widest : (shelf += w[order[k]]);
+			if (shelf_width < widest)
+				continue;
+			struct stack_plan p;
+			if (turn)
+				stack_shelves(w, h, order, n, shelf_width, p.y, p.x, &p.height, &p.width);
+			else
+				stack_shelves(w, h, order, n, shelf_width, p.x, p.y, &p.width, &p.height);
+			if (p.width > cap || p.height > cap)
+				continue;
+			long area = (long)p.width * p.height;
+			int side = p.width > p.height ? p.width : p.height;
+			if (!found || area < best_area || (area == best_area && side < best_side)) {
+				*best = p;
+				best_area = area;
+				best_side = side;
+				found = true;
+			}
+		}
+	}
+	return found;
+}
+
+bool lx_atlas_stack(struct lx_atlas *const *parts, int n, int max_size, char *err, size_t errlen)
+{
+	if (!parts || n < 1 || n > LX_ATLAS_MAX_PARTS || max_size < 1) {
+		snprintf(err, errlen, "atlas: %d parts to stack, at most %d lixels a side; expected 1 to %d parts, size >= 1",
+			 n, max_size, LX_ATLAS_MAX_PARTS);
+		return false;
+	}
+	int w[LX_ATLAS_MAX_PARTS], h[LX_ATLAS_MAX_PARTS];
+	bool variable = false;
+	for (int i = 0; i < n; i++) {
+		const struct lx_atlas *a = parts[i];
+		if (!a || a->width < 1 || a->height < 1) {
+			snprintf(err, errlen, "atlas: part %d to stack is not laid out", i);
+			return false;
+		}
+		for (int j = 0; j < i; j++)
+			if (parts[j] == a) { /* it would be moved twice */
+				snprintf(err, errlen, "atlas: part %d to stack is part %d again", i, j);
+				return false;
+			}
+		w[i] = a->width;
+		h[i] = a->height;
+		for (int r = 0; r < a->count; r++)
+			variable |= a->regions[r].variable;
+	}
+	/* variable regions keep to a small board's texture limit (lx_atlas_layout) */
+	int cap = variable && max_size > LX_ATLAS_MAX_SIDE ? LX_ATLAS_MAX_SIDE : max_size;
+	struct stack_plan p;
+	if (!best_stack(w, h, n, cap, &p)) {
+		int len = snprintf(err, errlen, "atlas: %d parts (", n);
+		for (int i = 0; i < n && len >= 0 && (size_t)len < errlen; i++)
+			len += snprintf(err + len, errlen - len, "%s%dx%d", i ? ", " : "", w[i], h[i]);
+		if (len >= 0 && (size_t)len < errlen)
+			snprintf(err + len, errlen - len, ") do not fit together in a %dx%d texture", cap, cap);
+		return false;
+	}
+	for (int i = 0; i < n; i++) {
+		struct lx_atlas *a = parts[i];
+		int dx = p.x[i] - a->x0, dy = p.y[i] - a->y0; /* from wherever an earlier stacking put it */
+		for (int r = 0; r < a->count; r++) {
+			a->regions[r].x += dx;
+			a->regions[r].y += dy;
+		}
+		a->x0 = p.x[i];
+		a->y0 = p.y[i];
+		a->texture_width = p.width;
+		a->texture_height = p.height;
+	}
+	return true;
 }
 
 const struct lx_region *lx_atlas_find(const struct lx_atlas *atlas, const char *name)
@@ -303,5 +431,6 @@ long lx_atlas_placed(const struct lx_atlas *atlas)
 
 double lx_atlas_fill(const struct lx_atlas *atlas)
 {
+	/* of the atlas's own area, not the shared texture: each light's use of its part */
 	return (double)lx_atlas_placed(atlas) / ((double)atlas->width * atlas->height); /* width, height >= 1 */
 }

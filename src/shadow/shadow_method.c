@@ -213,8 +213,9 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 	}
 	int shrunk = lx_atlas_pack(atlas, w, h);
 	if (shrunk != 0)
-		lx_shadow_warn(out, shrunk > 0 ? "atlas: this frame's maps did not fit the %dx%d texture and were shrunk"
-					       : "atlas: this frame's maps do not fit the %dx%d texture; they are skipped",
+		/* the atlas's own area: what its maps fit in, whatever texture it shares */
+		lx_shadow_warn(out, shrunk > 0 ? "atlas: this frame's maps did not fit the %dx%d atlas and were shrunk"
+					       : "atlas: this frame's maps do not fit the %dx%d atlas; they are skipped",
 			       atlas->width, atlas->height);
 	for (int i = 0; i < out->map_count; i++) {
 		struct lx_shadow_map *map = &out->maps[i];
@@ -242,11 +243,12 @@ mat4 lx_shadow_texture_matrix(const struct lx_atlas *atlas, int region, const ma
 {
 	const struct lx_region *g = &atlas->regions[region];
 	mat4 s = m4_identity();
-	/* atlas width and height are >= 1 once laid out */
-	s.m[0] = 0.5 * g->w / atlas->width;
-	s.m[12] = (g->x + 0.5 * g->w) / atlas->width;
-	s.m[5] = 0.5 * g->h / atlas->height;
-	s.m[13] = (g->y + 0.5 * g->h) / atlas->height;
+	/* the region's place is absolute in the texture, shared by every light's atlas (>= 1
+	 * a side once laid out) */
+	s.m[0] = 0.5 * g->w / atlas->texture_width;
+	s.m[12] = (g->x + 0.5 * g->w) / atlas->texture_width;
+	s.m[5] = 0.5 * g->h / atlas->texture_height;
+	s.m[13] = (g->y + 0.5 * g->h) / atlas->texture_height;
 	s.m[10] = 0.5;
 	s.m[14] = 0.5;
 	return m4_mul(&s, light_clip);
