@@ -16,5 +16,8 @@ mode 1280x720
 plane-lixels 350
 fallback-lixels 128
 uniform-lixels 512
+# a scene of several lights: the second and later lights' maps get half the lixels
+# (their shadow passes fill half as much)
+light-budget 1,0.5
 depth-precision auto
 methods plane,uniform,lispsm,none

@@ -29,6 +29,10 @@ precision mediump float;
 //!include depth_rgba.glsl
 uniform vec3 u_color;
 uniform float u_object_id;
+// Lights add up pass by pass [Segal]: the first light's pass has the ambient term, each
+// later one's adds only its own light (u_ambient 0), blended ONE, ONE.
+uniform vec3 u_light_color;
+uniform float u_ambient;
 #if LX_MAPS > 0
 uniform sampler2D u_atlas;
 uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
@@ -60,7 +64,6 @@ varying vec3 v_normal;
 // matrix [Segal]: nothing behind the light or outside its image is lit; past range_near
 // the light falls linearly with its depth, to none at range_far.
 uniform sampler2D u_beam_tex;
-uniform vec3 u_light_color;
 uniform vec3 u_range; // range_near, 1 / (range_far - range_near), 1 when a range is set else 0
 varying vec4 v_beam;
 
@@ -159,9 +162,9 @@ void main()
 #else
 	float lambert = max(dot(normalize(v_normal), normalize(v_to_light)), 0.0);
 #ifdef LX_PROJECTIVE
-	vec3 c = u_color * (0.22 + 0.78 * lambert * (1.0 - shadowed) * projected_light());
+	vec3 c = u_color * (u_ambient + 0.78 * lambert * (1.0 - shadowed) * projected_light());
 #else
-	vec3 c = u_color * (0.22 + 0.78 * lambert * (1.0 - shadowed));
+	vec3 c = u_color * (u_ambient + 0.78 * lambert * (1.0 - shadowed) * u_light_color);
 #endif
 	gl_FragColor = vec4(c, 1.0);
 #endif

@@ -31,6 +31,15 @@ static void built_in_profiles(void **state)
 	struct lx_board pi3;
 	assert_true(lx_board_load("raspberry-pi-3", &pi3, err, sizeof err));
 	assert_true(pi3.mode_w == 1280 && pi3.mode_h == 720 && pi3.mode_hz == 60);
+	/* a second light's maps at half the lixels there (light-budget 1,0.5): later lights
+	 * take the list's last share, and a light's sides shrink by its square root */
+	assert_true(pi3.lixels.light_share[0] == 1 && pi3.lixels.light_share[1] == 0.5 && pi3.lixels.light_share[3] == 0.5);
+	struct lx_method_options second = lx_method_options_for_light(&pi3.lixels, 1);
+	assert_int_equal(second.plane_lixels, 247); /* 350 / sqrt(2) */
+	assert_int_equal(second.uniform_lixels, 362);
+	assert_int_equal(lx_method_options_for_light(&pi3.lixels, 0).plane_lixels, 350);
+	assert_true(pi4.lixels.light_share[1] == 0); /* no key: every light the whole budget */
+	assert_int_equal(lx_method_options_for_light(&pi4.lixels, 1).plane_lixels, 350);
 	struct lx_board desk;
 	assert_true(lx_board_load("desktop", &desk, err, sizeof err));
 	assert_string_equal(desk.gpio_chip, ""); /* no button: the keyboard */
@@ -97,10 +106,13 @@ static void malformed_profiles(void **state)
 		{"filters ,\n", 1, "expected filter names separated by single commas"},
 		{"filters pcf2x2,none,pcf2x2\n", 1, "expected each filter once, got 'pcf2x2' twice"},
 		{"filters none pcf2x2\n", 1, "got 'none pcf2x2'"},
+		{"light-budget 1,0\n", 1, "expected light-budget as 1 to 4 shares from 0.01 to 1"},
+		{"light-budget 1,0.5,0.5,0.5,0.5\n", 1, "got '1,0.5,0.5,0.5,0.5'"},
+		{"light-budget half\n", 1, "got 'half'"},
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct lx_board b;
-		char err[256], prefix[64];
+		char err[512], prefix[64]; /* the kiosk's own buffer: the unknown key's line lists every key */
 		lx_board_defaults(&b);
 		if (lx_board_parse(cases[i].text, "bad.profile", &b, err, sizeof err))
 			fail_msg("case %zu parsed: %s", i, cases[i].text);

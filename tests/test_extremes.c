@@ -212,12 +212,12 @@ static void random_extremes_warn_or_match(void **state)
 				lx_method_run_decision(&run[m], &frame, px.rgba, px.obj, px.sh);
 				struct lx_mismatch mm;
 				struct lx_plane_report planes[LX_MAX_PLANES];
-				lx_measure(&frame, &run[m].atlas, &run[m].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &mm, planes);
-				lx_sampling_warnings(planes, sc.plane_count, lx_atlas_lixels(&run[m].atlas), &run[m].result);
+				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &mm, planes);
+				lx_sampling_warnings(planes, sc.plane_count, lx_atlas_lixels(&run[m].lights[0].atlas), &run[m].lights[0].result);
 				frames++;
-				if (!finite_report(&run[m].result, &mm, planes, sc.plane_count))
+				if (!finite_report(&run[m].lights[0].result, &mm, planes, sc.plane_count))
 					fail_msg("scale %g, %s, %s: a NaN or infinity in the matrices or the report", k, kind, methods[m]);
-				bool quiet = run[m].result.warning_count == 0 && strcmp(methods[m], "none");
+				bool quiet = run[m].lights[0].result.warning_count == 0 && strcmp(methods[m], "none");
 				if (!quiet) {
 					warned++;
 					continue;
@@ -273,8 +273,8 @@ static void scale_changes_nothing(void **state)
 			assert_true(lx_frame_setup(&frame, &sc, &meshes, 0.4, w, h, err, sizeof err));
 			lx_method_run_shadows(&run, &frame);
 			lx_method_run_decision(&run, &frame, rgba, obj[i > 0], sh[i > 0]);
-			for (int k = 0; k < run.result.warning_count; k++)
-				print_message("%s at scale %g: warning: %s\n", methods[m], scales[i], run.result.warnings[k]);
+			for (int k = 0; k < run.lights[0].result.warning_count; k++)
+				print_message("%s at scale %g: warning: %s\n", methods[m], scales[i], run.lights[0].result.warnings[k]);
 			lx_method_run_free(&run);
 			lx_meshes_free(&meshes);
 			if (i == 0) {

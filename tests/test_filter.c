@@ -233,7 +233,7 @@ static double worst_m(const struct lx_frame *f, const struct lx_method_run *run,
 	double worst = 1;
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		struct lx_plane_sampling ps;
-		if (lx_plane_sampling(f, &run->atlas, &run->result, p, px->ref_obj, &ps))
+		if (lx_plane_sampling(f, &run->lights[0].atlas, &run->lights[0].result, p, px->ref_obj, &ps))
 			worst = fmax(worst, ps.m_max);
 	}
 	return worst;
@@ -343,20 +343,20 @@ static void filters_on_the_mediump_path(void **state)
  * depth code 0: nearer the light than anything. Returns how many were set. */
 static long paint_near(const struct lx_method_run *run, uint8_t *tex, bool ring)
 {
-	const struct lx_atlas *a = &run->atlas;
+	const struct lx_atlas *a = &run->lights[0].atlas;
 	long painted = 0;
-	for (int y = 0; y < a->height; y++)
-		for (int x = 0; x < a->width; x++) {
+	for (int y = 0; y < a->texture_height; y++)
+		for (int x = 0; x < a->texture_width; x++) {
 			bool inside = false, edge = false;
-			for (int m = 0; m < run->result.map_count; m++) {
-				const struct lx_region *g = &a->regions[run->result.maps[m].region];
-				if (!run->result.maps[m].rendered || x < g->x || y < g->y || x >= g->x + g->w || y >= g->y + g->h)
+			for (int m = 0; m < run->lights[0].result.map_count; m++) {
+				const struct lx_region *g = &a->regions[run->lights[0].result.maps[m].region];
+				if (!run->lights[0].result.maps[m].rendered || x < g->x || y < g->y || x >= g->x + g->w || y >= g->y + g->h)
 					continue;
 				inside = true;
 				edge |= x == g->x || y == g->y || x == g->x + g->w - 1 || y == g->y + g->h - 1;
 			}
 			if (ring ? edge : !inside) {
-				uint8_t *t = tex + ((size_t)y * a->width + x) * 4;
+				uint8_t *t = tex + ((size_t)y * a->texture_width + x) * 4;
 				t[0] = t[1] = t[2] = 0, t[3] = 255;
 				painted++;
 			}
@@ -399,7 +399,7 @@ static void filters_stay_in_their_region(void **state)
 		if (lx_method_run_init(&run, name, &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
 				       err, sizeof err))
 			fail_msg("%s", err);
-		uint8_t *tex = malloc((size_t)run.atlas.width * run.atlas.height * 4);
+		uint8_t *tex = malloc((size_t)run.lights[0].atlas.texture_width * run.lights[0].atlas.texture_height * 4);
 		long outside = 0, control = 0;
 		for (int k = 1; k < LX_FILTER_COUNT; k++)
 			for (int c = 0; c < lx_config_count; c++) {

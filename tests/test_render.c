@@ -115,7 +115,7 @@ static double worst_m(const struct lx_scene *scene, const struct lx_render_repor
 	double worst = 1;
 	for (int p = 0; p < scene->plane_count; p++) {
 		struct lx_plane_sampling ps; /* each pixel with the map the shader reads for it */
-		if (lx_plane_sampling(&f, &r->atlas, &r->result, p, r->ref_object, &ps))
+		if (lx_plane_sampling(&f, &r->light[0].atlas, &r->light[0].result, p, r->ref_object, &ps))
 			worst = fmax(worst, ps.m_max);
 	}
 	lx_meshes_free(&m);
@@ -132,8 +132,8 @@ static double check_against_reference_where(const char *platform, const char *me
 	run_path(platform, method, scene, mediump, &r);
 	if (colour_error)
 		*colour_error = r.colour_error;
-	for (int k = 0; k < r.result.map_count; k++)
-		assert_true(m4_finite(&r.result.maps[k].light_clip));
+	for (int k = 0; k < r.light[0].result.map_count; k++)
+		assert_true(m4_finite(&r.light[0].result.maps[k].light_clip));
 	double m_max = worst_m(scene, &r);
 	int reach = (int)ceil(m_max) + 2;
 	if (reach > 250)
@@ -263,8 +263,8 @@ static void paper_bad_case_is_measured(void **state)
 		run(platforms[p], "plane", &s, &r);
 		print_message("%s: paper's bad case: plane-optimal %.4f%% against uniform %.4f%%; side wall: %ld px, "
 			      "m_max %.2f (fallback map)\n",
-			      platforms[p], plane, uniform, r.planes[2].s.pixels, r.planes[2].s.m_max);
-		assert_true(r.planes[2].present && r.result.maps[2].rendered);
+			      platforms[p], plane, uniform, r.light[0].planes[2].s.pixels, r.light[0].planes[2].s.m_max);
+		assert_true(r.light[0].planes[2].present && r.light[0].result.maps[2].rendered);
 		lx_render_report_free(&r);
 	}
 	free(dist);
@@ -317,13 +317,13 @@ static void plane_keeps_every_shadow(void **state)
 		double diff = p.mismatch.mismatch_pct - u.mismatch.mismatch_pct;
 		print_message("%-36s plane %.4f%% (missing %.4f%%), uniform %.4f%%: %+.4f points%s%s\n", cases[i].what,
 			      p.mismatch.mismatch_pct, p.mismatch.missing_shadow_pct, u.mismatch.mismatch_pct, diff,
-			      p.result.warning_count ? "; " : "", p.result.warning_count ? p.result.warnings[0] : "");
+			      p.light[0].result.warning_count ? "; " : "", p.light[0].result.warning_count ? p.light[0].result.warnings[0] : "");
 		/* Known gap: on the table seen from close to the floor the front legs' edges
 		 * read their shadow from the 128x128 fallback or the floor map; measured +0.056
 		 * points here (+0.035 at 1024x1024), against 0.74 points before. Held to 0.10
 		 * points so that it cannot slide back unnoticed. */
 		double allowed = cases[i].table && cases[i].config && !strcmp(cases[i].config, "floor-close") ? 0.10 : 0.05;
-		if (!(diff <= allowed) && p.result.warning_count == 0)
+		if (!(diff <= allowed) && p.light[0].result.warning_count == 0)
 			fail_msg("%s: plane-optimal %.4f%% against uniform's %.4f%%, and no warning", cases[i].what,
 				 p.mismatch.mismatch_pct, u.mismatch.mismatch_pct);
 		lx_render_report_free(&u);
@@ -394,7 +394,7 @@ static void none_shadows_nothing(void **state)
 		for (long i = 0; i < (long)W * H; i++)
 			shadowed += r.shadow[i], ref_shadowed += r.ref_shadow[i] == 1;
 		assert_int_equal(shadowed, 0);
-		assert_int_equal(r.result.map_count, 0);
+		assert_int_equal(r.light[0].result.map_count, 0);
 		assert_true(ref_shadowed > 0); /* there were shadows to miss */
 		assert_true(r.mismatch.missing_shadow_pct > 1.0);
 		assert_near(r.mismatch.false_shadow_pct, 0, 0);
@@ -645,12 +645,15 @@ static void gpu_depth_encoding_and_guards(void **state)
 		struct lx_shadow_result res = {0};
 		lx_shadow_method_frame(me, &f, &atlas, &(struct lx_method_options)LX_METHOD_OPTIONS_DEFAULT, &res);
 		assert_true(res.maps[0].rendered);
-		struct lx_renderer_desc d = {.scene = &s, .meshes = &m, .atlas = &atlas, .caps = &caps, .map_count = 1,
-					     .width = 64, .height = 64, .bias_codes = LX_DEFAULT_BIAS_CODES};
+		struct lx_renderer_desc d = {.scene = &s, .meshes = &m, .caps = &caps, .map_count = 1, .light_count = 1,
+					     .lights = {{.atlas = &atlas}}, .width = 64, .height = 64,
+					     .bias_codes = LX_DEFAULT_BIAS_CODES};
 		struct lx_renderer *r = lx_renderer_create(&d, err, sizeof err);
 		if (!r)
 			fail_msg("%s", err);
-		lx_renderer_shadow_passes(r, &f, &res);
+		const struct lx_frame *fp = &f;
+		const struct lx_shadow_result *rp = &res;
+		lx_renderer_shadow_passes(r, &fp, &rp, 1);
 		uint8_t *tex = malloc((size_t)atlas.width * atlas.height * 4);
 		lx_renderer_read_atlas(r, tex);
 		const struct lx_region *g = &atlas.regions[0];

@@ -66,15 +66,17 @@ static void same_scene(const struct lx_scene *a, const struct lx_scene *b)
 		assert_near(a->casters[i].period, b->casters[i].period, 0);
 		assert_near(a->casters[i].phase, b->casters[i].phase, 0);
 	}
-	assert_memory_equal(&a->light, &b->light, sizeof a->light);
+	assert_int_equal(lx_scene_light_count(a), lx_scene_light_count(b));
+	for (int i = 0; i < lx_scene_light_count(a); i++)
+		assert_memory_equal(&a->lights[i], &b->lights[i], sizeof a->lights[i]);
 	assert_memory_equal(&a->camera, &b->camera, sizeof a->camera);
 }
 
 static void scene_files_match_the_built_in_scenes(void **state)
 {
 	(void)state;
-	static const char *const names[] = {"default", "table", "spotlight", "projector"};
-	for (int k = 0; k < 4; k++) {
+	static const char *const names[] = {"default", "table", "spotlight", "projector", "twolights"};
+	for (int k = 0; k < 5; k++) {
 		struct lx_scene a, b;
 		char err[256], path[256];
 		assert_true(lx_scene_builtin(names[k], &a));
@@ -134,13 +136,17 @@ static void malformed_files_name_the_line_and_what_was_expected(void **state)
 		{"light point 0 5 0\nteapot at 0 0\n", 2, "got 'teapot'"},
 		{"light point 0 5 0\ncamera eye 0 0 0 at 0 0 0\n", 2, "eye differs from at"},
 		{"light point 0 5 0\ncamera eye 0 1 5 at 0 0 0 fov 180\n", 2, "fov in (0, 180)"},
-		{"light point 0 5 0\nlight point 0 5 0\n", 2, "second"},
+		{"light point 0 5 0\nlight point 1 5 0\nlight directional 0 -1 0\nlight point 2 5 0\nlight point 3 5 0\n", 5,
+		 "expected at most 4 light lines, found one more"},
+		{"light point 0 5 0 color 1 0.5\n", 1, "expected a number"},
+		{"light directional 0 -1 0 color 1 1 1.5\n", 1, "color components in [0, 1]"},
 		{"plane floor corner 0 0 0 edge1 1 0 0 edge2 0 0 -1\n", 2, "expected a 'light point"},
 		{"light point 0 5 0\n", 2, "at least one plane or caster"},
 		{"light point 0 5 0\nsphere radius 1e999 at 0 0\n", 2, "got '1e999'"},
 		{"light point 0 5 0\nsphere radius nan at 0 0\n", 2, "got 'nan'"},
 		{"light point 0 5 0\nsphere radius 1 at 0 0 color 2 0 0\n", 2, "color components in [0, 1]"},
-		{"light point 0 5 0 extra\n", 1, "unexpected 'extra'"},
+		{"light point 0 5 0 extra\n", 1, "expected 'color R G B' or the end of the light line, got 'extra'"},
+		{"light point 0 5 0 color 1 1 1 extra\n", 1, "unexpected 'extra'"},
 		{"light point 0 5 0\nsphere radius 1e999 at 0 0\n", 2, "too large to hold"},
 		{"light point 0 5 0\nsphere radius 1e-320 at 0 0\n", 2, "too small to hold"},
 		{"light point 0 5 0\nsphere radius 1e-300 at 0 0\n", 2, "radius of at least 1e-30"},
@@ -238,6 +244,36 @@ static void assert_color(vec3 c, double r, double g, double b)
 /* Every light is multiplied by its colour, so a light nobody coloured must be white
  * whichever way it was made: parsed, built in, set by a configuration, or turned
  * directional by the frame for being far away (which keeps a colour it has). */
+/* Up to four lights, in file order, each with its own kind and colour; scaling moves all. */
+static void several_lights_keep_their_order_and_scale(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	char err[256];
+	if (!lx_scene_parse("light point 1 5 0 color 0.5 0.4 0.3\nlight directional 0 -2 0\n"
+			    "light spot -2 4 1 at 0 0 0 fov 50 color 0 0 1\nlight point 0 6 -1\nsphere radius 1 at 0 0\n",
+			    "four.scene", &s, err, sizeof err))
+		fail_msg("%s", err);
+	assert_int_equal(lx_scene_light_count(&s), 4);
+	assert_true(s.lights[0].position.x == 1 && s.lights[0].color.x == 0.5 && s.lights[0].color.z == 0.3);
+	assert_true(s.lights[1].directional && s.lights[1].direction.y == -1);
+	assert_true(s.lights[1].color.x == 1 && s.lights[1].color.y == 1 && s.lights[1].color.z == 1);
+	assert_int_equal(s.lights[2].projective, LX_LIGHT_SPOT);
+	assert_true(s.lights[2].color.x == 0 && s.lights[2].color.z == 1);
+	assert_true(s.lights[3].position.y == 6 && !s.lights[3].directional);
+	assert_true(&s.light == &s.lights[0]); /* the first light is the one the methods read */
+	lx_scene_scale(&s, 2);
+	assert_true(s.lights[0].position.x == 2 && s.lights[3].position.y == 12 && s.lights[2].at.x == 0);
+	assert_true(s.lights[2].position.x == -4 && s.lights[1].direction.y == -1);
+	/* the built-in two-light scene; a scene built by hand with its light only has one */
+	assert_true(lx_scene_builtin("twolights", &s));
+	assert_int_equal(lx_scene_light_count(&s), 2);
+	assert_int_equal(s.lights[1].projective, LX_LIGHT_SPOT);
+	struct lx_scene hand = {0};
+	hand.light = lx_light_white(v3(0, 5, 0));
+	assert_int_equal(lx_scene_light_count(&hand), 1);
+}
+
 static void lights_are_white_unless_coloured(void **state)
 {
 	(void)state;
@@ -372,6 +408,7 @@ int main(void)
 		cmocka_unit_test(any_scale_parses),
 		cmocka_unit_test(directional_light_and_defaults),
 		cmocka_unit_test(lights_are_white_unless_coloured),
+		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);

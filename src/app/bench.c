@@ -85,9 +85,12 @@ static void usage(FILE *f)
 		   "                   plane/square (the paper's square maps), plane/shared (shared\n"
 		   "                   budgets), plane/lpp1 (at most 1 lixel per pixel), plane/twist (the\n"
 		   "                   paper's twist, not screen-aligned), plane/onepiece (one rectangle\n"
-		   "                   per plane), plane/uncapped; combined freely (plane/shared/lpp1)\n"
-		   "  --region-shape, --budget-split, --plane-max-lpp: as in lixel render --help,\n"
-		   "                   for every plane method of the run\n"
+		   "                   per plane), plane/uncapped; combined freely (plane/shared/lpp1);\n"
+		   "                   every method takes /all or /footprint (--lookup-region) and\n"
+		   "                   /lightsN (only the scene's first N lights: uniform,uniform/lights1\n"
+		   "                   on a scene of two lights measures what the second costs)\n"
+		   "  --region-shape, --budget-split, --plane-max-lpp, --light-budget: as in lixel\n"
+		   "                   render --help, for every method of the run\n"
 		   "  --filters LIST   shadow filters each method runs with, comma-separated, from none,\n"
 		   "                   pcf2x2 and pcf3x3 (default none; see lixel render --help); a run\n"
 		   "                   is named METHOD+FILTER, or METHOD for none\n"
@@ -95,7 +98,7 @@ static void usage(FILE *f)
 		   "  --configs LIST   comma-separated configurations of lixel render --help, and\n"
 		   "                   'animation' (the default scene's casters bouncing); default all\n"
 		   "  --scene NAME|FILE  as in lixel render --help (default, table, spotlight, projector,\n"
-		   "                   or a scene file)\n"
+		   "                   twolights, or a scene file)\n"
 		   "  --csv FILE       every row as CSV\n"
 		   "  --plot FILE.png  median mismatch against median frame time, one mark per method\n"
 		   "  --strips DIR     per configuration a PNG of the methods side by side, in --methods\n"
@@ -152,6 +155,7 @@ struct pixels {
 	uint8_t *rgba, *sh, *ref_sh, *vis;
 	int16_t *obj, *ref_obj;
 	float *ref_vis; /* the soft reference */
+	/* ref_sh and ref_vis: every light's, light after light (light k's from k * width * height) */
 };
 
 /* A fresh order of the methods for each frame (a fixed sequence, so runs repeat): no
@@ -249,26 +253,55 @@ static void time_rows(struct bench *b, int ci, const double *times)
 	}
 }
 
-/* One method's accuracy at one sampled time, against the reference in px. */
-static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_method_run *run,
-			   const struct lx_frame *frame, const struct pixels *px, double mis[4])
+/* One method's accuracy at one sampled time, against the reference in px: its lights'
+ * decisions together (lx_mismatch_add), the soft error weighted by each light's compared
+ * pixels, the planes' figures of its first light. */
+static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_method_run *run, const struct pixels *px,
+			   double mis[4])
 {
-	long looked = lx_method_run_decision(run, frame, px->rgba, px->obj, px->sh), n = (long)b->width * b->height;
-	lx_decision_visibility(px->rgba, n, run->filter, px->vis);
-	mis[3] = lx_soft_error(px->ref_obj, px->ref_sh, px->ref_vis, px->obj, px->vis, n);
+	long n = (long)b->width * b->height, looked = 0;
+	struct lx_mismatch all = {0};
+	double soft = 0;
 	struct row *rw = &b->rows[m][ci];
+	for (int l = 0; l < run->light_count; l++) {
+		const struct lx_light_maps *lm = &run->lights[l];
+		size_t o = (size_t)l * n;
+		looked += lx_method_run_decision(run, &lm->frame, px->rgba, px->obj, px->sh);
+		lx_decision_visibility(px->rgba, n, run->filter, px->vis);
+		struct lx_mismatch mm;
+		struct lx_plane_report planes[LX_MAX_PLANES];
+		lx_measure(&lm->frame, &lm->atlas, &lm->result, px->ref_obj, px->ref_sh + o, px->obj, px->sh, &mm, planes);
+		soft += mm.compared * lx_soft_error(px->ref_obj, px->ref_sh + o, px->ref_vis + o, px->obj, px->vis, n);
+		lx_mismatch_add(&all, &mm);
+		for (int p = 0; l == 0 && p < lm->frame.scene->plane_count && p < LX_MAX_PLANES; p++)
+			if (planes[p].present) {
+				rw->m_max[p] = isnan(rw->m_max[p]) ? planes[p].s.m_max : fmax(rw->m_max[p], planes[p].s.m_max);
+				if (isnan(rw->lpp[p])) /* the first sampled time (the animation's first) */
+					rw->lpp[p] = planes[p].s.lpp_median, rw->used[p] = planes[p].s.lixels_used;
+			}
+	}
 	if (sidx == 0)
-		rw->lookup_pct = 100.0 * looked / ((double)b->width * b->height);
-	struct lx_mismatch mm;
-	struct lx_plane_report planes[LX_MAX_PLANES];
-	lx_measure(frame, &run->atlas, &run->result, px->ref_obj, px->ref_sh, px->obj, px->sh, &mm, planes);
-	mis[0] = mm.mismatch_pct, mis[1] = mm.false_shadow_pct, mis[2] = mm.missing_shadow_pct;
-	for (int p = 0; p < frame->scene->plane_count && p < LX_MAX_PLANES; p++)
-		if (planes[p].present) {
-			rw->m_max[p] = isnan(rw->m_max[p]) ? planes[p].s.m_max : fmax(rw->m_max[p], planes[p].s.m_max);
-			if (isnan(rw->lpp[p])) /* the first sampled time (the animation's first) */
-				rw->lpp[p] = planes[p].s.lpp_median, rw->used[p] = planes[p].s.lixels_used;
-		}
+		rw->lookup_pct = 100.0 * looked / ((double)n * run->light_count);
+	mis[0] = all.mismatch_pct, mis[1] = all.false_shadow_pct, mis[2] = all.missing_shadow_pct;
+	mis[3] = all.compared > 0 ? soft / all.compared : 0;
+}
+
+/* The exact and the soft reference of every light of the scene at one time, into px. */
+static bool references(const struct bench *b, const struct lx_frame *frame, const struct pixels *px)
+{
+	int lights = lx_scene_light_count(frame->scene);
+	long n = (long)b->width * b->height;
+	struct lx_frame fl[LX_MAX_LIGHTS];
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_image *images[LX_MAX_LIGHTS] = {0};
+	uint8_t *ref_sh[LX_MAX_LIGHTS];
+	for (int l = 0; l < lights; l++) {
+		lx_frame_for_light(frame, l, &fl[l]);
+		frames[l] = &fl[l], ref_sh[l] = px->ref_sh + (size_t)l * n;
+		if (!lx_soft_reference_image(&fl[l], b->light_size_deg, px->ref_vis + (size_t)l * n, 2))
+			return false;
+	}
+	return lx_reference_lights(frames, images, lights, px->ref_obj, ref_sh, NULL, 2);
 }
 
 /* Accuracy: one reference per sampled time, shared by the methods; each row gets the
@@ -282,15 +315,14 @@ static int measure_config(struct bench *b, int ci, const struct lx_scene *scene,
 	for (int sidx = 0; sidx < samples; sidx++) {
 		if (!lx_frame_setup(&frame, scene, meshes, anim ? sidx * 0.6 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		if (!lx_reference_image(&frame, px->ref_obj, px->ref_sh, 2) ||
-		    !lx_soft_reference_image(&frame, b->light_size_deg, px->ref_vis, 2)) {
+		if (!references(b, &frame, px)) {
 			snprintf(err, errlen, "out of memory for the reference image");
 			return 1;
 		}
 		for (int m = 0; m < b->nm; m++) {
 			double v[4];
 			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
-			measure_method(b, ci, m, sidx, &runs[m], &frame, px, v);
+			measure_method(b, ci, m, sidx, &runs[m], px, v);
 			for (int q = 0; q < 4; q++)
 				mis[m][q][sidx] = v[q];
 		}
@@ -711,9 +743,9 @@ static int bench_parse(int argc, char **argv, struct bench *b, struct bench_args
 static bool bench_alloc(struct bench *b, struct pixels *px)
 {
 	long n = (long)b->width * b->height;
-	px->rgba = malloc((size_t)n * 4), px->sh = malloc((size_t)n), px->ref_sh = malloc((size_t)n);
+	px->rgba = malloc((size_t)n * 4), px->sh = malloc((size_t)n), px->ref_sh = malloc((size_t)n * LX_MAX_LIGHTS);
 	px->obj = malloc((size_t)n * sizeof(int16_t)), px->ref_obj = malloc((size_t)n * sizeof(int16_t));
-	px->vis = malloc((size_t)n), px->ref_vis = malloc((size_t)n * sizeof(float));
+	px->vis = malloc((size_t)n), px->ref_vis = malloc((size_t)n * LX_MAX_LIGHTS * sizeof(float));
 	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj && px->vis && px->ref_vis;
 	for (int m = 0; m < b->nm; m++)
 		for (int q = 0; q < T_KINDS; q++)

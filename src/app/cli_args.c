@@ -111,6 +111,9 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 		if (strcmp(value, "footprint") && strcmp(value, "all"))
 			return lx_arg_bad(cmd, opt, "footprint or all", value);
 		o->lookup_everywhere = value[0] == 'a';
+	} else if (!strcmp(opt, "--light-budget")) {
+		if (!lx_light_budget_parse(value, o))
+			return lx_arg_bad(cmd, opt, LX_LIGHT_BUDGET_EXPECTED, value);
 	} else if (!strcmp(opt, "--plane-max-lpp")) {
 		double x = -1; /* none: no cap at all */
 		enum lx_number_error e;

@@ -23,7 +23,8 @@ int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *con
 bool lx_arg_scene(const char *arg, struct lx_scene *s);
 
 /* The maps' options shared by render and bench: --region-shape square|fitted,
- * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all. Returns 0 when opt is one of them and
+ * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all, --light-budget S,...
+ * Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 struct lx_method_options;
 /* --depth-precision auto|highp|mediump (render, bench, kiosk): 0 when opt is it and its
@@ -50,13 +51,16 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       (or, for a directional light, a disc of directions) of this\n" \
 	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
 	"                       --measure computes it when a filter is on or this is given\n"
-#define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region"
+#define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--light-budget"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
 	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (a\n" \
 	"                       map with nothing to serve this frame hands its budget on)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
-	"                       default none: every lixel of the budget)\n"
+	"                       default none: every lixel of the budget)\n" \
+	"  --light-budget S,... a scene of several lights: each light's share of the lixels\n" \
+	"                       above, from 0.01 to 1 (default 1 each; lights past the list take\n" \
+	"                       its last share), e.g. 1,0.5 for half a budget for the second\n"
 
 #endif

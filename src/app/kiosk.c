@@ -67,8 +67,8 @@ static void usage(FILE *f)
 		   "  --max-fps N       at most N frames a second (default: as fast as the display takes\n"
 		   "                    them; where nothing paces it, as in a window under Xvfb)\n"
 		   "  --snapshot FILE.png  with --frames N: frame N, read back before it is shown, as a PNG\n"
-		   "  --scene NAME|FILE a built-in scene (default, table, spotlight, projector; default\n"
-		   "                    default) or a scene file (docs/scene-format.md)\n"
+		   "  --scene NAME|FILE a built-in scene (default, table, spotlight, projector, twolights;\n"
+		   "                    default default) or a scene file (docs/scene-format.md)\n"
 		   "  --size WxH        the window's size on x11 (default 1024x768)\n"
 		   "  --methods LIST    the order the button cycles through (default: the board's)\n"
 		   "  --filters LIST    the shadow filters a press steps through within each method,\n"
@@ -78,7 +78,8 @@ static void usage(FILE *f)
 		   "  --gpio-chip (a name, path or label), --gpio-line (an offset), --gpio-line-name\n"
 		   "  (GPIO17: found on the named chip, or on any with --gpio-chip auto),\n"
 		   "  --gpio-active, --debounce-ms, --long-press-ms,\n"
-		   "  --plane-lixels, --fallback-lixels, --uniform-lixels, --depth-precision\n"
+		   "  --plane-lixels, --fallback-lixels, --uniform-lixels, --light-budget (each light's\n"
+		   "  share of those, e.g. 1,0.5), --depth-precision\n"
 		   "                    override the board profile's values (depth-precision: auto, the\n"
 		   "                    start-up self-test choosing, highp or mediump; --mediump is\n"
 		   "                    --depth-precision mediump)\n"
@@ -188,7 +189,8 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 	static const char *const with_value[] = {"--platform", "--board", "--frames", "--max-fps", "--size", "--scene", "--snapshot", "--methods",
 						 "--gpio-chip", "--gpio-line", "--gpio-line-name", "--gpio-active", "--debounce-ms",
 						 "--long-press-ms", "--device", "--mode", "--plane-lixels",
-						 "--fallback-lixels", "--uniform-lixels", "--depth-precision", "--filters"};
+						 "--fallback-lixels", "--uniform-lixels", "--light-budget", "--depth-precision",
+						 "--filters"};
 	for (int i = 0; i < argc; i++) {
 		const char *a = argv[i], *v;
 		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -350,7 +352,7 @@ static const char *shown(const struct kiosk *k, char *out, size_t len)
 
 /* The overlay's text once a second (the method, the frame rate, each plane's figures),
  * drawn every frame. */
-static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
+static void kiosk_overlay(struct kiosk *k, int64_t t)
 {
 	if (t - k->text_time >= 1000000000LL || !k->nlines) {
 		const struct lx_method_run *run = &k->runs[k->current];
@@ -363,7 +365,9 @@ static void kiosk_overlay(struct kiosk *k, const struct lx_frame *f, int64_t t)
 			struct lx_plane_sampling ps;
 			char name[LX_NAME_MAX]; /* a copy: the text and the scene share *k */
 			memcpy(name, k->scene.planes[p].name, sizeof name);
-			if (lx_plane_sampling_sparse(f, &run->atlas, &run->result, p, 16, &ps))
+			/* the first light's maps (lx_method_run keeps each light's frame) */
+			const struct lx_light_maps *lm = &run->lights[0];
+			if (lx_plane_sampling_sparse(&lm->frame, &lm->atlas, &lm->result, p, 16, &ps))
 				snprintf(k->text[k->nlines++], sizeof k->text[0], "%s  lpp %.2f  m %.2f  aniso %.2f", name,
 					 ps.lpp_median, ps.m_max, ps.aniso_max);
 		}
@@ -496,7 +500,7 @@ static int kiosk_loop(struct kiosk *k)
 		}
 		lx_method_run_draw(&k->runs[k->current], &f);
 		if (k->args->overlay && k->ov)
-			kiosk_overlay(k, &f, t);
+			kiosk_overlay(k, t);
 		if (k->args->snapshot && k->frame + 1 == k->args->frames && !kiosk_snapshot(k)) {
 			status = 1; /* the path was checked at start: a write that fails now is the system's */
 			break;

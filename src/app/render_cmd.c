@@ -23,8 +23,8 @@ static void render_usage(FILE *f)
 		"frame's figures (median frame time over the timed frames, light-matrix set-up).\n"
 		"\n"
 		"  --method NAME        shadow method: %s (default plane)\n"
-		"  --scene NAME|FILE    built-in scene default, table, spotlight or projector, or a\n"
-		"                       scene file (docs/scene-format.md)\n"
+		"  --scene NAME|FILE    built-in scene default, table, spotlight, projector or\n"
+		"                       twolights (two lights), or a scene file (docs/scene-format.md)\n"
 		"  --config NAME        a named view/light configuration applied to the scene:\n",
 		lx_shadow_method_names());
 	for (int i = 0; i < lx_config_count; i++)
@@ -91,65 +91,120 @@ static bool writable_path(const char *opt, const char *path)
 	return false;
 }
 
+/* A warning as printed: with several lights, prefixed by the light it is about. */
+static void light_warning(const struct lx_render_report *r, int l, const char *w, char *out, size_t room)
+{
+	if (r->light_count > 1 && strncmp(w, "light ", 6))
+		snprintf(out, room, "light %d: %s", l + 1, w);
+	else
+		snprintf(out, room, "%s", w);
+}
+
+/* The name of the map serving a plane's figures. */
+static const char *plane_map_name(const struct lx_light_report *lr, const struct lx_plane_report *pr)
+{
+	return pr->s.map >= 0 ? lr->atlas.regions[lr->result.maps[pr->s.map].region].name : "serving";
+}
+
+static void print_atlas(const struct lx_render_report *r)
+{
+	const struct lx_atlas *a0 = &r->light[0].atlas;
+	long lixels = 0;
+	for (int l = 0; l < r->light_count; l++)
+		lixels += lx_atlas_lixels(&r->light[l].atlas);
+	printf("atlas: %dx%d, %ld lixels", a0->texture_width, a0->texture_height, lixels);
+	for (int l = 0; l < r->light_count; l++) {
+		const struct lx_light_report *lr = &r->light[l];
+		if (r->light_count > 1)
+			printf("; light %d (%s): %dx%d (%.0f%% filled)", l + 1, lr->kind, lr->atlas.width, lr->atlas.height,
+			       100 * lx_atlas_fill(&lr->atlas));
+		else
+			printf(" (%.0f%% filled)", 100 * lx_atlas_fill(&lr->atlas));
+		for (int i = 0; i < lr->result.map_count; i++) {
+			const struct lx_region *g = &lr->atlas.regions[lr->result.maps[i].region];
+			printf("; %s %dx%d at (%d, %d)%s", g->name, g->w, g->h, g->x, g->y,
+			       lr->result.maps[i].rendered ? "" : " (not rendered)");
+		}
+	}
+	printf("\n");
+	for (int l = 0; l < r->light_count; l++)
+		for (int i = 0; i < r->light[l].result.warning_count; i++) {
+			char w[LX_WARNING_MAX + 16];
+			light_warning(r, l, r->light[l].result.warnings[i], w, sizeof w);
+			printf("warning: %s\n", w);
+		}
+}
+
+static void print_mismatch(const char *what, const struct lx_mismatch *m)
+{
+	printf("%s: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels", what,
+	       m->mismatch_pct, m->compared, m->false_shadow_pct, m->missing_shadow_pct, m->silhouette);
+	if (m->edge_on)
+		printf("; %ld pixels the light grazes, not compared", m->edge_on);
+	if (m->unlit)
+		printf("; %ld pixels the light does not reach, not compared", m->unlit);
+	printf("\n");
+}
+
+static void print_planes(const struct lx_render_report *r, int l)
+{
+	const struct lx_light_report *lr = &r->light[l];
+	char who[32] = "";
+	if (r->light_count > 1)
+		snprintf(who, sizeof who, "light %d ", l + 1);
+	for (int p = 0; p < r->plane_count; p++) {
+		const struct lx_plane_report *pr = &lr->planes[p];
+		if (!pr->present)
+			printf("%splane %s: not measured (not visible or no map serves it)\n", who, pr->name);
+		else
+			printf("%splane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g, "
+			       "lixels used %.0f\n",
+			       who, pr->name, plane_map_name(lr, pr), pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max,
+			       pr->s.aniso_max, pr->s.lixels_used);
+	}
+}
+
 static void print_text(const struct lx_render_report *r, const char *out)
 {
 	printf("lixel: wrote %s (%dx%d, method %s, %s on %s)\n", out, r->width, r->height, r->method, r->platform,
 	       r->caps.renderer);
 	printf("frame: %.3f ms median (min %.3f, max %.3f): shadow passes %.3f ms, main pass %.3f ms; set-up %.1f us\n",
 	       r->frame_ms, r->frame_ms_min, r->frame_ms_max, r->shadow_ms, r->main_ms, r->setup_us);
-	printf("atlas: %dx%d (%.0f%% filled), %ld lixels", r->atlas.width, r->atlas.height, 100 * lx_atlas_fill(&r->atlas),
-	       lx_atlas_lixels(&r->atlas));
-	for (int i = 0; i < r->result.map_count; i++) {
-		const struct lx_region *g = &r->atlas.regions[r->result.maps[i].region];
-		printf("; %s %dx%d at (%d, %d)%s", g->name, g->w, g->h, g->x, g->y,
-		       r->result.maps[i].rendered ? "" : " (not rendered)");
-	}
-	printf("\n");
-	for (int i = 0; i < r->result.warning_count; i++)
-		printf("warning: %s\n", r->result.warnings[i]);
+	print_atlas(r);
 	if (r->lookup_pct >= 0)
-		printf("lookups: %.2f%% of the pixels ran a shadow lookup\n", r->lookup_pct);
-	if (r->measured) {
-		const struct lx_mismatch *m = &r->mismatch;
-		printf("mismatch: %.4f%% of %ld pixels (false shadow %.4f%%, missing shadow %.4f%%); %ld silhouette pixels",
-		       m->mismatch_pct, m->compared, m->false_shadow_pct, m->missing_shadow_pct, m->silhouette);
-		if (m->edge_on)
-			printf("; %ld pixels the light grazes, not compared", m->edge_on);
-		if (m->unlit)
-			printf("; %ld pixels the light does not reach, not compared", m->unlit);
-		printf("\n");
-		printf("colour error: %.3f levels of 255 (mean over the pixels and R, G, B)\n", r->colour_error);
-		if (r->soft_measured)
-			printf("soft edge: %.4f%% mean visibility error (filter %s) against a %.3g-degree area light\n",
-			       r->soft_error_pct, r->filter, r->light_size_deg);
-		for (int p = 0; p < r->plane_count; p++) {
-			const struct lx_plane_report *pr = &r->planes[p];
-			if (!pr->present)
-				printf("plane %s: not measured (not visible or no map serves it)\n", pr->name);
-			else
-				printf("plane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g, "
-				       "lixels used %.0f\n",
-				       pr->name,
-				       pr->s.map >= 0 ? r->atlas.regions[r->result.maps[pr->s.map].region].name : "serving",
-				       pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max, pr->s.aniso_max, pr->s.lixels_used);
-		}
+		printf("lookups: %.2f%% of the pixels ran a shadow lookup%s\n", r->lookup_pct,
+		       r->light_count > 1 ? " (mean over the lights' passes)" : "");
+	if (!r->measured)
+		return;
+	print_mismatch("mismatch", &r->mismatch);
+	for (int l = 0; l < r->light_count && r->light_count > 1; l++) {
+		char what[48];
+		snprintf(what, sizeof what, "light %d (%s) mismatch", l + 1, r->light[l].kind);
+		print_mismatch(what, &r->light[l].mismatch);
 	}
+	printf("colour error: %.3f levels of 255 (mean over the pixels and R, G, B)\n", r->colour_error);
+	if (r->soft_measured)
+		printf("soft edge: %.4f%% mean visibility error (filter %s) against a %.3g-degree area light\n",
+		       r->soft_error_pct, r->filter, r->light_size_deg);
+	for (int l = 0; l < r->light_count; l++)
+		print_planes(r, l);
 }
 
-/* The measured planes, each an object under its name: the map's figures and budget use. */
-static void json_planes(struct lx_json *j, const struct lx_render_report *r)
+/* A light's measured planes, each an object under its name: the map's figures and budget use. */
+static void json_planes(struct lx_json *j, const struct lx_render_report *r, int l)
 {
+	const struct lx_light_report *lr = &r->light[l];
 	lx_json_key(j, "planes");
 	lx_json_object(j);
 	for (int p = 0; p < r->plane_count; p++) {
-		const struct lx_plane_report *pr = &r->planes[p];
+		const struct lx_plane_report *pr = &lr->planes[p];
 		if (!pr->present)
 			continue;
 		lx_json_key(j, pr->name);
 		lx_json_object(j);
 		/* the figures are of the plane's own map, or of whichever map serves each pixel */
 		lx_json_key(j, "map");
-		lx_json_string(j, pr->s.map >= 0 ? r->atlas.regions[r->result.maps[pr->s.map].region].name : "serving");
+		lx_json_string(j, plane_map_name(lr, pr));
 		lx_json_key(j, "pixels"), lx_json_int(j, pr->s.pixels);
 		lx_json_key(j, "lpp_median"), lx_json_number(j, pr->s.lpp_median);
 		lx_json_key(j, "m_median"), lx_json_number(j, pr->s.m_median);
@@ -159,11 +214,84 @@ static void json_planes(struct lx_json *j, const struct lx_render_report *r)
 		lx_json_key(j, "degenerate_pixels"), lx_json_int(j, pr->s.degenerate);
 		lx_json_key(j, "lixels_used"), lx_json_number(j, pr->s.lixels_used);
 		if (pr->s.map >= 0) { /* budget use: of the plane's own map's lixels */
-			const struct lx_region *g = &r->atlas.regions[r->result.maps[pr->s.map].region];
+			const struct lx_region *g = &lr->atlas.regions[lr->result.maps[pr->s.map].region];
 			lx_json_key(j, "map_lixels"), lx_json_int(j, (long)g->w * g->h);
 		}
 		lx_json_end(j);
 	}
+	lx_json_end(j);
+}
+
+static void json_mismatch(struct lx_json *j, const struct lx_mismatch *m)
+{
+	lx_json_key(j, "mismatch_pct"), lx_json_number(j, m->mismatch_pct);
+	lx_json_key(j, "false_shadow_pct"), lx_json_number(j, m->false_shadow_pct);
+	lx_json_key(j, "missing_shadow_pct"), lx_json_number(j, m->missing_shadow_pct);
+	lx_json_key(j, "compared_pixels"), lx_json_int(j, m->compared);
+	lx_json_key(j, "silhouette_pixels"), lx_json_int(j, m->silhouette);
+	lx_json_key(j, "edge_on_pixels"), lx_json_int(j, m->edge_on);
+	lx_json_key(j, "unlit_pixels"), lx_json_int(j, m->unlit);
+}
+
+/* Every light's maps, each with the light it belongs to (1, 2, ...). */
+static void json_maps(struct lx_json *j, const struct lx_render_report *r)
+{
+	lx_json_key(j, "maps");
+	lx_json_array(j);
+	for (int l = 0; l < r->light_count; l++) {
+		const struct lx_light_report *lr = &r->light[l];
+		for (int i = 0; i < lr->result.map_count; i++) {
+			const struct lx_region *g = &lr->atlas.regions[lr->result.maps[i].region];
+			lx_json_object(j);
+			lx_json_key(j, "name"), lx_json_string(j, g->name);
+			lx_json_key(j, "x"), lx_json_int(j, g->x);
+			lx_json_key(j, "y"), lx_json_int(j, g->y);
+			lx_json_key(j, "w"), lx_json_int(j, g->w);
+			lx_json_key(j, "h"), lx_json_int(j, g->h);
+			lx_json_key(j, "turned"), lx_json_bool(j, g->turned);
+			lx_json_key(j, "rendered"), lx_json_bool(j, lr->result.maps[i].rendered);
+			lx_json_key(j, "light"), lx_json_int(j, l + 1);
+			lx_json_end(j);
+		}
+	}
+	lx_json_end(j);
+}
+
+/* Per light: its kind, lixels and atlas part, and measured, its mismatch and planes. */
+static void json_lights(struct lx_json *j, const struct lx_render_report *r)
+{
+	lx_json_key(j, "lights");
+	lx_json_array(j);
+	for (int l = 0; l < r->light_count; l++) {
+		const struct lx_light_report *lr = &r->light[l];
+		lx_json_object(j);
+		lx_json_key(j, "kind"), lx_json_string(j, lr->kind);
+		lx_json_key(j, "lixels"), lx_json_int(j, lx_atlas_lixels(&lr->atlas));
+		lx_json_key(j, "atlas_part"), lx_json_array(j), lx_json_int(j, lr->atlas.x0), lx_json_int(j, lr->atlas.y0),
+			lx_json_int(j, lr->atlas.width), lx_json_int(j, lr->atlas.height), lx_json_end(j);
+		if (r->lookup_pct >= 0)
+			lx_json_key(j, "lookup_pct"), lx_json_number(j, lr->lookup_pct);
+		if (r->measured) {
+			json_mismatch(j, &lr->mismatch);
+			json_planes(j, r, l);
+		}
+		lx_json_end(j);
+	}
+	lx_json_end(j);
+}
+
+static void json_warnings(struct lx_json *j, const struct lx_render_report *r)
+{
+	lx_json_key(j, "warnings");
+	lx_json_array(j);
+	if (r->depth.warning[0])
+		lx_json_string(j, r->depth.warning);
+	for (int l = 0; l < r->light_count; l++)
+		for (int i = 0; i < r->light[l].result.warning_count; i++) {
+			char w[LX_WARNING_MAX + 16];
+			light_warning(r, l, r->light[l].result.warnings[i], w, sizeof w);
+			lx_json_string(j, w);
+		}
 	lx_json_end(j);
 }
 
@@ -177,25 +305,15 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_key(&j, "platform"), lx_json_string(&j, r->platform);
 	lx_json_key(&j, "renderer"), lx_json_string(&j, r->caps.renderer);
 	lx_json_key(&j, "size"), lx_json_array(&j), lx_json_int(&j, r->width), lx_json_int(&j, r->height), lx_json_end(&j);
-	lx_json_key(&j, "lixels"), lx_json_int(&j, lx_atlas_lixels(&r->atlas));
-	lx_json_key(&j, "atlas"), lx_json_array(&j), lx_json_int(&j, r->atlas.width), lx_json_int(&j, r->atlas.height),
+	long lixels = 0, placed = 0;
+	for (int l = 0; l < r->light_count; l++)
+		lixels += lx_atlas_lixels(&r->light[l].atlas), placed += lx_atlas_placed(&r->light[l].atlas);
+	const struct lx_atlas *a0 = &r->light[0].atlas;
+	lx_json_key(&j, "lixels"), lx_json_int(&j, lixels);
+	lx_json_key(&j, "atlas"), lx_json_array(&j), lx_json_int(&j, a0->texture_width), lx_json_int(&j, a0->texture_height),
 		lx_json_end(&j);
-	lx_json_key(&j, "maps");
-	lx_json_array(&j);
-	for (int i = 0; i < r->result.map_count; i++) {
-		const struct lx_region *g = &r->atlas.regions[r->result.maps[i].region];
-		lx_json_object(&j);
-		lx_json_key(&j, "name"), lx_json_string(&j, g->name);
-		lx_json_key(&j, "x"), lx_json_int(&j, g->x);
-		lx_json_key(&j, "y"), lx_json_int(&j, g->y);
-		lx_json_key(&j, "w"), lx_json_int(&j, g->w);
-		lx_json_key(&j, "h"), lx_json_int(&j, g->h);
-		lx_json_key(&j, "turned"), lx_json_bool(&j, g->turned);
-		lx_json_key(&j, "rendered"), lx_json_bool(&j, r->result.maps[i].rendered);
-		lx_json_end(&j);
-	}
-	lx_json_end(&j);
-	lx_json_key(&j, "atlas_fill"), lx_json_number(&j, lx_atlas_fill(&r->atlas));
+	json_maps(&j, r);
+	lx_json_key(&j, "atlas_fill"), lx_json_number(&j, (double)placed / ((double)a0->texture_width * a0->texture_height));
 	lx_json_key(&j, "frame_ms"), lx_json_number(&j, r->frame_ms);
 	lx_json_key(&j, "frame_ms_min"), lx_json_number(&j, r->frame_ms_min);
 	lx_json_key(&j, "frame_ms_max"), lx_json_number(&j, r->frame_ms_max);
@@ -207,29 +325,17 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_key(&j, "depth_selftest"), lx_json_string(&j, r->depth.selftest);
 	if (r->lookup_pct >= 0)
 		lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
-	lx_json_key(&j, "warnings");
-	lx_json_array(&j);
-	if (r->depth.warning[0])
-		lx_json_string(&j, r->depth.warning);
-	for (int i = 0; i < r->result.warning_count; i++)
-		lx_json_string(&j, r->result.warnings[i]);
-	lx_json_end(&j);
+	json_warnings(&j, r);
 	if (r->measured) {
-		const struct lx_mismatch *m = &r->mismatch;
-		lx_json_key(&j, "mismatch_pct"), lx_json_number(&j, m->mismatch_pct);
-		lx_json_key(&j, "false_shadow_pct"), lx_json_number(&j, m->false_shadow_pct);
-		lx_json_key(&j, "missing_shadow_pct"), lx_json_number(&j, m->missing_shadow_pct);
-		lx_json_key(&j, "compared_pixels"), lx_json_int(&j, m->compared);
-		lx_json_key(&j, "silhouette_pixels"), lx_json_int(&j, m->silhouette);
-		lx_json_key(&j, "edge_on_pixels"), lx_json_int(&j, m->edge_on);
-		lx_json_key(&j, "unlit_pixels"), lx_json_int(&j, m->unlit);
+		json_mismatch(&j, &r->mismatch);
 		lx_json_key(&j, "colour_error"), lx_json_number(&j, r->colour_error);
 		if (r->soft_measured) {
 			lx_json_key(&j, "soft_error_pct"), lx_json_number(&j, r->soft_error_pct);
 			lx_json_key(&j, "light_size_deg"), lx_json_number(&j, r->light_size_deg);
 		}
-		json_planes(&j, r);
+		json_planes(&j, r, 0); /* the first light's, as for a scene of one */
 	}
+	json_lights(&j, r);
 	lx_json_end(&j);
 }
 
@@ -398,9 +504,9 @@ static int render_scene(struct render_args *r)
 	s->camera.at = r->have_at ? r->at : s->camera.at;
 	s->camera.fovy_deg = r->have_fov ? r->fov : s->camera.fovy_deg;
 	if (r->have_light)
-		s->light = (struct lx_light){.directional = false, .position = r->light, .direction = v3(0, -1, 0)};
+		s->light = lx_light_white(r->light); /* the first light; a scene's others stay */
 	if (r->have_dir)
-		s->light = (struct lx_light){.directional = true, .position = v3(0, 0, 0), .direction = r->dir};
+		s->light = lx_light_white(v3(0, 0, 0)), s->light.directional = true, s->light.direction = r->dir;
 	mat4 check;
 	if (!m4_look_at(s->camera.eye, s->camera.at, s->camera.up, &check)) {
 		fprintf(stderr, "lixel render: --eye/--at: expected a camera whose eye differs from at and does not look along up\n");

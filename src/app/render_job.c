@@ -60,10 +60,12 @@ static void mismatch_colors(const int16_t *ref_object, const uint8_t *ref_shadow
 	}
 }
 
-/* The atlas as a picture: depth codes as grey levels (far white), guard bands red. */
-static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, const char *path, char *err, size_t errlen)
+/* The atlas texture as a picture, every light's part: depth codes as grey levels (far
+ * white), guard bands red. atlas[l] is light l's part; they share one texture. */
+static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, int lights, const char *path, char *err,
+			size_t errlen)
 {
-	size_t n = (size_t)atlas->width * atlas->height;
+	size_t n = (size_t)atlas->texture_width * atlas->texture_height;
 	uint8_t *tex = malloc(n * 4);
 	if (!tex) {
 		snprintf(err, errlen, "out of memory for the atlas image");
@@ -75,16 +77,17 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, con
 		tex[i * 4] = tex[i * 4 + 1] = tex[i * 4 + 2] = g;
 		tex[i * 4 + 3] = 255;
 		/* outside every region (the guard bands): red, to show the layout */
-		int x = (int)(i % (size_t)atlas->width), y = (int)(i / (size_t)atlas->width);
+		int x = (int)(i % (size_t)atlas->texture_width), y = (int)(i / (size_t)atlas->texture_width);
 		bool inside = false;
-		for (int k = 0; k < atlas->count; k++) {
-			const struct lx_region *g2 = &atlas->regions[k];
-			inside |= x >= g2->x && x < g2->x + g2->w && y >= g2->y && y < g2->y + g2->h;
-		}
+		for (int l = 0; l < lights; l++)
+			for (int k = 0; k < atlas[l].count; k++) {
+				const struct lx_region *g2 = &atlas[l].regions[k];
+				inside |= x >= g2->x && x < g2->x + g2->w && y >= g2->y && y < g2->y + g2->h;
+			}
 		if (!inside)
 			tex[i * 4] = 200, tex[i * 4 + 1] = 40, tex[i * 4 + 2] = 40;
 	}
-	bool ok = lx_png_write(path, tex, atlas->width, atlas->height, err, errlen);
+	bool ok = lx_png_write(path, tex, atlas->texture_width, atlas->texture_height, err, errlen);
 	free(tex);
 	return ok;
 }
@@ -109,8 +112,10 @@ static bool time_frames(const struct lx_render_job *job, struct lx_method_run *m
 		if (k >= 0)
 			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;
 	}
-	rep->result = mr->result;
-	rep->atlas = mr->atlas; /* as the last frame laid it out */
+	for (int l = 0; l < mr->light_count; l++) {
+		rep->light[l].result = mr->lights[l].result;
+		rep->light[l].atlas = mr->lights[l].atlas; /* as the last frame laid it out */
+	}
 	rep->frame_ms_min = INFINITY;
 	for (int k = 0; k < timed; k++) {
 		rep->frame_ms_min = fmin(rep->frame_ms_min, frame_ms[k]);
@@ -125,38 +130,82 @@ static bool time_frames(const struct lx_render_job *job, struct lx_method_run *m
 	return true;
 }
 
-/* The main pass's decision per pixel (with --measure, --decision-out or for tests), and
- * its image. False after err. */
-static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, const struct lx_frame *frame,
-		   struct lx_render_report *rep, uint8_t *rgba, char *err, size_t errlen)
+/* The main pass's decision per pixel for every light (with --measure, --decision-out or
+ * for tests), and the first light's image. False after err. */
+static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, struct lx_render_report *rep,
+		   uint8_t *rgba, char *err, size_t errlen)
 {
 	long n = (long)job->width * job->height;
+	int lights = mr->light_count;
 	rep->object = malloc((size_t)n * sizeof(int16_t));
-	rep->shadow = malloc((size_t)n);
-	rep->visibility = malloc((size_t)n);
+	rep->shadow = malloc((size_t)n * lights);
+	rep->visibility = malloc((size_t)n * lights);
 	if (!rep->object || !rep->shadow || !rep->visibility) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
-	rep->lookup_pct = 100.0 * lx_method_run_decision(mr, frame, rgba, rep->object, rep->shadow) / n;
-	lx_decision_visibility(rgba, n, mr->filter, rep->visibility);
+	rep->lookup_pct = 0;
+	for (int l = lights - 1; l >= 0; l--) { /* the first light last: its image stays in rgba */
+		uint8_t *shadow = rep->shadow + (size_t)l * n, *vis = rep->visibility + (size_t)l * n;
+		rep->light[l].lookup_pct = 100.0 * lx_method_run_decision(mr, &mr->lights[l].frame, rgba, rep->object, shadow) / n;
+		rep->lookup_pct += rep->light[l].lookup_pct / lights;
+		lx_decision_visibility(rgba, n, mr->filter, vis);
+	}
 	if (!job->decision_png)
 		return true;
 	decision_colors(rep->object, rep->shadow, n, rgba);
 	return lx_png_write(job->decision_png, rgba, job->width, job->height, err, errlen);
 }
 
-/* The exact reference, the mismatch and the planes' figures (and their warnings), and
- * the mismatch image. False after err. */
-static bool measure(const struct lx_render_job *job, const struct lx_frame *frame, struct lx_render_report *rep,
-		    const struct lx_method_run *mr, const uint8_t *shaded, uint8_t *rgba, char *err, size_t errlen)
+/* The soft reference of each light and soft_error_pct over them all (each light's
+ * weighted by the pixels it compares). False after err. */
+static bool measure_soft(const struct lx_render_job *job, const struct lx_method_run *mr, struct lx_render_report *rep,
+			 char *err, size_t errlen)
 {
 	long n = (long)job->width * job->height;
+	rep->ref_visibility = malloc((size_t)n * mr->light_count * sizeof(float));
+	if (!rep->ref_visibility) {
+		snprintf(err, errlen, "out of memory for the soft reference image");
+		return false;
+	}
+	double sum = 0, weight = 0;
+	for (int l = 0; l < mr->light_count; l++) {
+		size_t o = (size_t)l * n;
+		if (!lx_soft_reference_image(&mr->lights[l].frame, job->light_size_deg, rep->ref_visibility + o,
+					     job->reference_threads)) {
+			snprintf(err, errlen, "out of memory for the soft reference image");
+			return false;
+		}
+		double e = lx_soft_error(rep->ref_object, rep->ref_shadow + o, rep->ref_visibility + o, rep->object,
+					 rep->visibility + o, n);
+		double w = rep->light[l].mismatch.compared;
+		sum += e * w, weight += w;
+	}
+	rep->soft_error_pct = weight > 0 ? sum / weight : 0;
+	rep->light_size_deg = job->light_size_deg;
+	rep->soft_measured = true;
+	return true;
+}
+
+/* The exact reference, each light's mismatch and planes' figures (and their warnings),
+ * the mismatch of them all, and the first light's mismatch image. False after err. */
+static bool measure(const struct lx_render_job *job, struct lx_render_report *rep, const struct lx_method_run *mr,
+		    const uint8_t *shaded, uint8_t *rgba, char *err, size_t errlen)
+{
+	long n = (long)job->width * job->height;
+	int lights = mr->light_count;
 	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
-	rep->ref_shadow = malloc((size_t)n);
+	rep->ref_shadow = malloc((size_t)n * lights);
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_image *images[LX_MAX_LIGHTS];
+	uint8_t *ref_shadow[LX_MAX_LIGHTS];
+	for (int l = 0; l < lights; l++) {
+		frames[l] = &mr->lights[l].frame;
+		images[l] = mr->lights[l].image.rgba ? &mr->lights[l].image : NULL;
+		ref_shadow[l] = rep->ref_shadow ? rep->ref_shadow + (size_t)l * n : NULL;
+	}
 	if (!rep->ref_object || !rep->ref_shadow ||
-	    !lx_reference_image_shaded(frame, mr->light_image.rgba ? &mr->light_image : NULL, rep->ref_object,
-				       rep->ref_shadow, rgba, job->reference_threads)) {
+	    !lx_reference_lights(frames, images, lights, rep->ref_object, ref_shadow, rgba, job->reference_threads)) {
 		snprintf(err, errlen, "out of memory for the reference image");
 		return false;
 	}
@@ -165,22 +214,17 @@ static bool measure(const struct lx_render_job *job, const struct lx_frame *fram
 	if (job->reference_png && !lx_png_write(job->reference_png, rgba, job->width, job->height, err, errlen))
 		return false;
 	rep->plane_count = job->scene.plane_count;
-	lx_measure(frame, &rep->atlas, &rep->result, rep->ref_object, rep->ref_shadow, rep->object, rep->shadow,
-		   &rep->mismatch, rep->planes);
-	lx_sampling_warnings(rep->planes, rep->plane_count, lx_atlas_lixels(&rep->atlas), &rep->result);
-	rep->measured = true;
-	if (job->soft) {
-		rep->ref_visibility = malloc((size_t)n * sizeof(float));
-		if (!rep->ref_visibility ||
-		    !lx_soft_reference_image(frame, job->light_size_deg, rep->ref_visibility, job->reference_threads)) {
-			snprintf(err, errlen, "out of memory for the soft reference image");
-			return false;
-		}
-		rep->soft_error_pct = lx_soft_error(rep->ref_object, rep->ref_shadow, rep->ref_visibility, rep->object,
-						    rep->visibility, n);
-		rep->light_size_deg = job->light_size_deg;
-		rep->soft_measured = true;
+	rep->mismatch = (struct lx_mismatch){0};
+	for (int l = 0; l < lights; l++) {
+		struct lx_light_report *lr = &rep->light[l];
+		lx_measure(frames[l], &lr->atlas, &lr->result, rep->ref_object, ref_shadow[l], rep->object,
+			   rep->shadow + (size_t)l * n, &lr->mismatch, lr->planes);
+		lx_sampling_warnings(lr->planes, rep->plane_count, lx_atlas_lixels(&lr->atlas), &lr->result);
+		lx_mismatch_add(&rep->mismatch, &lr->mismatch);
 	}
+	rep->measured = true;
+	if (job->soft && !measure_soft(job, mr, rep, err, errlen))
+		return false;
 	if (!job->mismatch_png)
 		return true;
 	mismatch_colors(rep->ref_object, rep->ref_shadow, rep->object, rep->shadow, n, rgba);
@@ -203,13 +247,19 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 		return status;
 	}
 	rep->depth = mr.depth;
+	rep->light_count = mr.light_count;
+	for (int l = 0; l < mr.light_count; l++)
+		snprintf(rep->light[l].kind, sizeof rep->light[l].kind, "%s", lx_light_kind_name(&job->scene.lights[l]));
 	uint8_t *rgba = malloc((size_t)job->width * job->height * 4);
 	bool ok = rgba != NULL;
 	if (!ok)
 		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
 	ok = ok && time_frames(job, &mr, frame, rep, rgba, err, errlen);
 	ok = ok && (!job->out_png || lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen));
-	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, &rep->atlas, job->atlas_png, err, errlen));
+	struct lx_atlas parts[LX_MAX_LIGHTS];
+	for (int l = 0; l < mr.light_count; l++)
+		parts[l] = rep->light[l].atlas;
+	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, parts, mr.light_count, job->atlas_png, err, errlen));
 	/* the shaded frame, kept for the colour error (the decision pass reuses rgba) */
 	uint8_t *shaded = ok && job->measure ? malloc((size_t)job->width * job->height * 4) : NULL;
 	if (ok && job->measure && !shaded) {
@@ -219,9 +269,9 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 	if (shaded)
 		memcpy(shaded, rgba, (size_t)job->width * job->height * 4);
 	if (ok && (job->measure || job->keep_pixels || job->decision_png))
-		ok = decide(job, &mr, frame, rep, rgba, err, errlen);
+		ok = decide(job, &mr, rep, rgba, err, errlen);
 	if (ok && job->measure)
-		ok = measure(job, frame, rep, &mr, shaded, rgba, err, errlen);
+		ok = measure(job, rep, &mr, shaded, rgba, err, errlen);
 	free(shaded);
 	free(rgba);
 	lx_method_run_free(&mr);

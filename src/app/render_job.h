@@ -23,32 +23,44 @@ struct lx_render_job {
 	double light_size_deg; /* soft: the area light's angular size in degrees (0: a point) */
 	int reference_threads;
 	const char *out_png; /* shaded image, or NULL */
-	const char *decision_png; /* the decision image (shadowed red, lit by object), or NULL */
-	const char *mismatch_png; /* with measure: where the decision differs from the reference, or NULL */
+	const char *decision_png; /* the first light's decision image (shadowed red, lit by object), or NULL */
+	const char *mismatch_png; /* with measure: where the first light's decision differs from the reference, or NULL */
 	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
 	const char *reference_png; /* with measure: the reference's shaded image, or NULL */
+};
+
+/* One light's maps and figures. */
+struct lx_light_report {
+	char kind[16]; /* lx_light_kind_name */
+	struct lx_atlas atlas;           /* its part of the atlas texture, as the last frame laid it out */
+	struct lx_shadow_result result;  /* its maps and warnings */
+	struct lx_mismatch mismatch;     /* with measure: its decisions against the reference's */
+	double lookup_pct;               /* as the report's, for this light's pass */
+	struct lx_plane_report planes[LX_MAX_PLANES];
 };
 
 struct lx_render_report {
 	char method[16], platform[16];
 	struct lx_gl_caps caps;
 	int width, height;
-	struct lx_atlas atlas;
-	struct lx_shadow_result result;
+	int light_count; /* the lights drawn */
+	struct lx_light_report light[LX_MAX_LIGHTS];
 	struct lx_depth_choice depth;
 	double frame_ms, frame_ms_min, frame_ms_max, shadow_ms, main_ms, setup_us;
 	bool measured;
 	/* with the decision (measure, keep_pixels or decision_png): the share of the image's
-	 * pixels that ran a shadow lookup, in percent; negative when not known */
+	 * pixels that ran a shadow lookup, in percent (the mean over the lights' passes);
+	 * negative when not known */
 	double lookup_pct;
-	struct lx_mismatch mismatch;
+	struct lx_mismatch mismatch; /* every light's together (lx_mismatch_add) */
 	double colour_error; /* with measure: colour_error of the shaded frame (docs/lixel.md) */
 	char filter[16];
 	bool soft_measured;    /* soft_error_pct holds, against an area light of light_size_deg */
 	double soft_error_pct, light_size_deg;
 	int plane_count;
-	struct lx_plane_report planes[LX_MAX_PLANES];
-	/* with keep_pixels: width * height each, rows bottom to top; free with lx_render_report_free */
+	/* with keep_pixels: width * height each, rows bottom to top; the decisions and
+	 * visibilities light after light (light k's from k * width * height); free with
+	 * lx_render_report_free */
 	int16_t *ref_object, *object;
 	uint8_t *ref_shadow, *shadow;
 	uint8_t *visibility;   /* the shading's visibility, 0 to 255 (lx_decision_visibility) */

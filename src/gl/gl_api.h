@@ -26,6 +26,7 @@
 	X(GLuint, CreateShader, (GLenum))                                                    \
 	X(void, CullFace, (GLenum))                                                          \
 	X(void, DepthFunc, (GLenum))                                                         \
+	X(void, DepthMask, (GLboolean))                                                      \
 	X(void, DeleteBuffers, (GLsizei, const GLuint *))                                    \
 	X(void, DeleteFramebuffers, (GLsizei, const GLuint *))                               \
 	X(void, DeleteProgram, (GLuint))                                                     \
@@ -56,6 +57,7 @@
 	X(GLint, GetUniformLocation, (GLuint, const GLchar *))                               \
 	X(void, LinkProgram, (GLuint))                                                       \
 	X(void, PixelStorei, (GLenum, GLint))                                                \
+	X(void, PolygonOffset, (GLfloat, GLfloat))                                           \
 	X(void, ReadPixels, (GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void *))        \
 	X(void, RenderbufferStorage, (GLenum, GLenum, GLsizei, GLsizei))                     \
 	X(void, Scissor, (GLint, GLint, GLsizei, GLsizei))                                   \

@@ -11,6 +11,26 @@ static double now_ms(void)
 	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
+/* Each light's budgets, atlas part and image; then the parts stacked in one texture.
+ * Returns 0, or 2 for input the GL cannot hold. */
+static int light_maps(struct lx_method_run *mr, const struct lx_scene *scene, int max_texture, char *err, size_t errlen)
+{
+	struct lx_atlas *parts[LX_MAX_LIGHTS];
+	for (int i = 0; i < mr->light_count; i++) {
+		struct lx_light_maps *lm = &mr->lights[i];
+		lm->options = lx_method_options_for_light(&mr->options, i);
+		struct lx_region_request req[LX_MAX_MAPS];
+		int nreq = lx_shadow_method_regions(mr->method, scene, &lm->options, req);
+		if (!lx_atlas_layout(&lm->atlas, req, nreq, 1, max_texture, err, errlen))
+			return 2; /* budgets this GL cannot hold: the input asks too much */
+		const struct lx_light *l = &scene->lights[i];
+		if (l->projective != LX_LIGHT_PLAIN && !lx_light_image_load(l, &lm->image, err, errlen))
+			return 2; /* the scene names a file that is not a usable PNG */
+		parts[i] = &lm->atlas;
+	}
+	return lx_atlas_stack(parts, mr->light_count, max_texture, err, errlen) ? 0 : 2;
+}
+
 int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct lx_scene *scene,
 		       const struct lx_scene_meshes *meshes, const struct lx_gl_caps *caps,
 		       const struct lx_method_options *budgets, int width, int height, enum lx_depth_precision precision,
@@ -23,19 +43,20 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 2;
 	mr->width = width;
 	mr->height = height;
-	struct lx_region_request req[LX_MAX_MAPS];
-	int nreq = lx_shadow_method_regions(mr->method, scene, &mr->options, req);
-	if (!lx_atlas_layout(&mr->atlas, req, nreq, 1, caps->max_texture_size, err, errlen))
-		return 2; /* budgets this GL cannot hold: the input asks too much */
-	if (scene->light.projective != LX_LIGHT_PLAIN && !lx_light_image_load(&scene->light, &mr->light_image, err, errlen))
-		return 2; /* the scene names a file that is not a usable PNG */
+	mr->light_count = lx_method_lights(&mr->options, scene);
+	int status = light_maps(mr, scene, caps->max_texture_size, err, errlen);
+	if (status)
+		return status;
 	if (!lx_depth_choose(precision, &mr->depth, err, errlen))
 		return 1;
-	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .atlas = &mr->atlas, .caps = caps,
-				      .map_count = nreq, .width = width, .height = height,
+	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .caps = caps,
+				      .map_count = mr->lights[0].atlas.count, .width = width, .height = height,
 				      .mediump = mr->depth.mediump, .bias_codes = bias_codes, .to_window = to_window,
-				      .lookup_everywhere = mr->options.lookup_everywhere,
-				      .light_image = mr->light_image.rgba ? &mr->light_image : NULL};
+				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count};
+	for (int i = 0; i < mr->light_count; i++) {
+		rd.lights[i].atlas = &mr->lights[i].atlas;
+		rd.lights[i].image = mr->lights[i].image.rgba ? &mr->lights[i].image : NULL;
+	}
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
 	return mr->renderer ? 0 : 1;
 }
@@ -58,18 +79,47 @@ void lx_method_run_free(struct lx_method_run *mr)
 {
 	lx_renderer_destroy(mr->renderer);
 	mr->renderer = NULL;
-	lx_image_free(&mr->light_image);
+	for (int i = 0; i < LX_MAX_LIGHTS; i++)
+		lx_image_free(&mr->lights[i].image);
+}
+
+/* Every light's frame and light matrices, its maps placed in its part of the atlas. */
+static void build_maps(struct lx_method_run *mr, const struct lx_frame *f)
+{
+	for (int i = 0; i < mr->light_count; i++) {
+		struct lx_light_maps *lm = &mr->lights[i];
+		lx_frame_for_light(f, i, &lm->frame);
+		lx_shadow_method_frame(mr->method, &lm->frame, &lm->atlas, &lm->options, &lm->result);
+	}
+}
+
+static void shadow_passes(struct lx_method_run *mr)
+{
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_shadow_result *results[LX_MAX_LIGHTS];
+	for (int i = 0; i < mr->light_count; i++)
+		frames[i] = &mr->lights[i].frame, results[i] = &mr->lights[i].result;
+	lx_renderer_shadow_passes(mr->renderer, frames, results, mr->light_count);
+}
+
+static void main_passes(struct lx_method_run *mr)
+{
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_shadow_result *results[LX_MAX_LIGHTS];
+	for (int i = 0; i < mr->light_count; i++)
+		frames[i] = &mr->lights[i].frame, results[i] = &mr->lights[i].result;
+	lx_renderer_main_pass(mr->renderer, frames, results, mr->light_count);
 }
 
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t)
 {
 	double t0 = now_ms();
-	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
+	build_maps(mr, f);
 	double t1 = now_ms();
-	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+	shadow_passes(mr);
 	lx_renderer_finish();
 	double t2 = now_ms();
-	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
+	main_passes(mr);
 	lx_renderer_finish();
 	double t3 = now_ms();
 	*t = (struct lx_frame_times){.setup_us = (t1 - t0) * 1e3, .shadow_ms = t2 - t1, .main_ms = t3 - t2,
@@ -78,21 +128,23 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, str
 
 void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f)
 {
-	lx_shadow_method_frame(mr->method, f, &mr->atlas, &mr->options, &mr->result);
-	lx_renderer_shadow_passes(mr->renderer, f, &mr->result);
+	build_maps(mr, f);
+	shadow_passes(mr);
 }
 
 void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
 {
 	lx_method_run_shadows(mr, f);
-	lx_renderer_main_pass(mr->renderer, f, &mr->result, false);
+	main_passes(mr);
 }
 
 long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
 			    uint8_t *shadow)
 {
+	int light = f->light_index >= 0 && f->light_index < mr->light_count ? f->light_index : 0;
+	const struct lx_light_maps *lm = &mr->lights[light];
 	long lookups = 0;
-	lx_renderer_main_pass(mr->renderer, f, &mr->result, true);
+	lx_renderer_decision_pass(mr->renderer, &lm->frame, &lm->result);
 	lx_renderer_read(mr->renderer, rgba);
 	long n = (long)mr->width * mr->height;
 	for (long i = 0; i < n; i++) {

@@ -1,6 +1,8 @@
 /* A shadow method set up to draw: its atlas and renderer for one scene and view size,
  * one frame at a time with the times of each step, its decision image, and the
- * measurements against the exact reference. Used by `lixel render` and `lixel bench`. */
+ * measurements against the exact reference. Used by `lixel render` and `lixel bench`.
+ * A scene of several lights gets the method once per light: each light its own maps,
+ * in its own part of the one atlas texture, and its own additive main pass [Segal]. */
 #ifndef LX_METHOD_RUN_H
 #define LX_METHOD_RUN_H
 #include "gl_caps.h"
@@ -11,22 +13,31 @@
 /* The default bias: a few 24-bit codes, enough for the rounding of interpolated depth. */
 #define LX_DEFAULT_BIAS_CODES 64.0
 
+/* One light's share of a method run. */
+struct lx_light_maps {
+	struct lx_atlas atlas;            /* its part of the atlas texture; its maps laid out again
+					   * each frame where their shapes vary */
+	struct lx_method_options options; /* the run's budgets scaled by the light's share */
+	struct lx_shadow_result result;   /* of the last frame */
+	struct lx_frame frame;            /* the last frame, as this light sees it */
+	struct lx_image image;            /* a projective light's beam or slide (empty for others) */
+};
+
 struct lx_method_run {
 	const struct lx_shadow_method *method;
-	struct lx_atlas atlas; /* laid out again each frame where the maps' shapes vary */
 	struct lx_method_options options;
+	int light_count; /* the lights drawn: the scene's, or the first options.max_lights */
+	struct lx_light_maps lights[LX_MAX_LIGHTS];
 	struct lx_renderer *renderer;
-	struct lx_shadow_result result; /* of the last frame */
 	struct lx_depth_choice depth;   /* the depth path taken, and how */
-	struct lx_image light_image;    /* a projective light's beam or slide (empty for others) */
 	int width, height;
 	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
 };
 
 struct lx_frame_times {
-	double setup_us;  /* CPU time building the light matrices */
+	double setup_us;  /* CPU time building the light matrices (every light's) */
 	double shadow_ms; /* shadow passes, glFinish'ed */
-	double main_ms;   /* main pass, glFinish'ed */
+	double main_ms;   /* main pass (every light's), glFinish'ed */
 	double frame_ms;  /* all three */
 };
 
@@ -47,7 +58,8 @@ void lx_method_run_free(struct lx_method_run *mr);
  * its programs do not build (the filter then stays as it was), else 0. */
 int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, char *err, size_t errlen);
 /* Light matrices, shadow passes and the shaded main pass, each step timed (glFinish
- * after each pass: for the bench and render, not for a display). */
+ * after each pass: for the bench and render, not for a display). f is the frame set up
+ * for the scene (any light: each light's is made from it). */
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
 /* The same, untimed and unsynchronised: on a tiler a glFinish between the passes costs a
  * flush of every tile; the kiosk's swap is the only sync it needs. */
@@ -55,7 +67,8 @@ void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
 /* The light matrices and the shadow passes only: all that lx_method_run_decision needs
  * (the tests that judge decisions skip the shaded main pass). */
 void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f);
-/* The main pass's shadow decision for the last frame's matrices: per pixel the visible
+/* The main pass's shadow decision for the last frame's matrices of light
+ * f->light_index (f: that light's frame, lx_frame_for_light): per pixel the visible
  * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4.
  * Returns how many pixels ran a shadow lookup. */
 long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,

@@ -17,7 +17,8 @@ struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
-	GLint beam, beam_tex, light_color, range; /* a projective light's (-1 in other variants) */
+	GLint light_color, ambient; /* the light's colour; the ambient term (0 in an added light's pass) */
+	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
 };
 
 /* A window rectangle of a plane and the maps it reads there. */
@@ -66,12 +67,14 @@ struct lx_renderer {
 	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
-	GLuint beam_tex; /* a projective light's image, 0 for other lights */
+	GLuint beam_tex[LX_MAX_LIGHTS]; /* a projective light's image, 0 for other lights */
+	int texture_width, texture_height; /* the atlas texture's, which every light's part shares */
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
-	/* main-pass variants, built when first used: [decision][filter][mask of the maps a draw reads] */
-	struct main_program variant[2][LX_FILTER_COUNT][1 << LX_MAX_MAPS];
+	/* main-pass variants, built when first used: [decision][projective light][filter][mask of
+	 * the maps a draw reads] */
+	struct main_program variant[2][2][LX_FILTER_COUNT][1 << LX_MAX_MAPS];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	bool mediump;
 	float bias_uniform;
@@ -128,22 +131,35 @@ static bool main_program(struct main_program *p, int maps, bool decision, unsign
 	p->beam = lx_gl.GetUniformLocation(p->prog, "u_beam");
 	p->beam_tex = lx_gl.GetUniformLocation(p->prog, "u_beam_tex");
 	p->light_color = lx_gl.GetUniformLocation(p->prog, "u_light_color");
+	p->ambient = lx_gl.GetUniformLocation(p->prog, "u_ambient");
 	p->range = lx_gl.GetUniformLocation(p->prog, "u_range");
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	return true;
 }
 
-/* The shaded and the decision variant of a filter that read every map (built now, so
- * that a shader error shows when the filter is chosen). */
+/* Whether the scene has a projective light among those drawn (whose shaded variants
+ * sample its image), and one of the others. */
+static bool has_light_kind(const struct lx_renderer *r, bool projective)
+{
+	for (int i = 0; i < r->d.light_count; i++)
+		if ((r->beam_tex[i] != 0) == projective)
+			return true;
+	return false;
+}
+
+/* The shaded and the decision variant of a filter that read every map, for each kind of
+ * light drawn (built now, so that a shader error shows when the filter is chosen). */
 static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
 {
 	unsigned all = (1u << r->d.map_count) - 1;
-	for (int decision = 0; decision < 2; decision++) {
-		struct main_program *p = &r->variant[decision][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, decision, all, r->mediump, r->beam_tex != 0, filter, err, errlen))
-			return false;
-	}
+	for (int decision = 0; decision < 2; decision++)
+		for (int proj = 0; proj < 2; proj++) {
+			struct main_program *p = &r->variant[decision][proj][filter][all];
+			if (has_light_kind(r, proj) && !p->prog &&
+			    !main_program(p, r->d.map_count, decision, all, r->mediump, proj, filter, err, errlen))
+				return false;
+		}
 	return true;
 }
 
@@ -263,12 +279,12 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_renderer_desc *d = &r->d;
-	r->atlas_tex = lx_texture_rgba8(d->atlas->width, d->atlas->height);
-	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, d->atlas->width, d->atlas->height,
+	r->atlas_tex = lx_texture_rgba8(r->texture_width, r->texture_height);
+	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, r->texture_width, r->texture_height,
 			 d->caps->depth24, err, errlen, "atlas"))
 		return false;
 	lx_gl.Disable(GL_SCISSOR_TEST);
-	lx_gl.Viewport(0, 0, d->atlas->width, d->atlas->height);
+	lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
 	lx_gl.ClearColor(1, 1, 1, 1);
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 	if (!d->to_window) {
@@ -285,21 +301,22 @@ static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 	return true;
 }
 
-/* A projective light's image as a texture on unit 1: LINEAR and CLAMP_TO_EDGE, no mipmaps,
- * so that any size works in ES 2.0 and the reference can sample it texel for texel. */
-static bool renderer_beam(struct lx_renderer *r, char *err, size_t errlen)
+/* Light i's image (a projective light's) as a texture on unit 1: LINEAR and
+ * CLAMP_TO_EDGE, no mipmaps, so that any size works in ES 2.0 and the reference can
+ * sample it texel for texel. */
+static bool renderer_beam(struct lx_renderer *r, int i, char *err, size_t errlen)
 {
-	const struct lx_image *im = r->d.light_image;
-	if (!im || r->d.scene->light.projective == LX_LIGHT_PLAIN)
+	const struct lx_image *im = r->d.lights[i].image;
+	if (!im || r->d.scene->lights[i].projective == LX_LIGHT_PLAIN)
 		return true;
 	if (im->width > r->d.caps->max_texture_size || im->height > r->d.caps->max_texture_size) {
 		snprintf(err, errlen, "the light's %dx%d image exceeds the GL's texture limit of %d", im->width, im->height,
 			 r->d.caps->max_texture_size);
 		return false;
 	}
-	lx_gl.GenTextures(1, &r->beam_tex);
+	lx_gl.GenTextures(1, &r->beam_tex[i]);
 	lx_gl.ActiveTexture(GL_TEXTURE1);
-	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex[i]);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, im->width, im->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, im->rgba);
 	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -323,6 +340,10 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 		snprintf(err, errlen, "a method returned %d maps; the main pass handles at most %d", d->map_count, LX_MAX_MAPS);
 		return NULL;
 	}
+	if (d->light_count < 1 || d->light_count > LX_MAX_LIGHTS) {
+		snprintf(err, errlen, "%d lights to draw, expected 1 to %d", d->light_count, LX_MAX_LIGHTS);
+		return NULL;
+	}
 	struct lx_renderer *r = calloc(1, sizeof(*r));
 	if (!r) {
 		snprintf(err, errlen, "out of memory");
@@ -335,7 +356,12 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
-	if (!renderer_beam(r, err, errlen) || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
+	r->texture_width = d->lights[0].atlas->texture_width;
+	r->texture_height = d->lights[0].atlas->texture_height;
+	bool ok = true;
+	for (int i = 0; i < d->light_count && ok; i++)
+		ok = renderer_beam(r, i, err, errlen);
+	if (!ok || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -352,8 +378,9 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
 	}
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
-	if (r->beam_tex)
-		lx_gl.DeleteTextures(1, &r->beam_tex);
+	for (int i = 0; i < LX_MAX_LIGHTS; i++)
+		if (r->beam_tex[i])
+			lx_gl.DeleteTextures(1, &r->beam_tex[i]);
 	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
 	if (r->target_fbo) { /* 0 is the window's */
@@ -368,10 +395,11 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->clear_vbo)
 		lx_gl.DeleteBuffers(1, &r->clear_vbo);
 	for (int a = 0; a < 2; a++)
-		for (int k = 0; k < LX_FILTER_COUNT; k++)
-			for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
-				if (r->variant[a][k][c].prog)
-					lx_gl.DeleteProgram(r->variant[a][k][c].prog);
+		for (int b = 0; b < 2; b++)
+			for (int k = 0; k < LX_FILTER_COUNT; k++)
+				for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
+					if (r->variant[a][b][k][c].prog)
+						lx_gl.DeleteProgram(r->variant[a][b][k][c].prog);
 	if (r->piece_vbo)
 		lx_gl.DeleteBuffers(1, &r->piece_vbo);
 	if (r->facing_ibo)
@@ -404,11 +432,10 @@ static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
  * with no scissor when the ring spans it, a small region by a far quad (it pays only
  * its fill), a large one by a scissored clear. */
 #define QUAD_CLEAR_MAX 65536 /* lixels: the fill of a far quad, about 2 ns each, against that */
-static void clear_region(struct lx_renderer *r, const struct lx_region *g)
+static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_region *g)
 {
-	const struct lx_atlas *a = r->d.atlas;
 	int gd = a->guard, x = g->x - gd, y = g->y - gd, w = g->w + 2 * gd, h = g->h + 2 * gd;
-	if (x <= 0 && y <= 0 && x + w >= a->width && y + h >= a->height) {
+	if (x <= 0 && y <= 0 && x + w >= r->texture_width && y + h >= r->texture_height) {
 		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 	} else if ((long)w * h > QUAD_CLEAR_MAX) {
 		lx_gl.Enable(GL_SCISSOR_TEST);
@@ -421,11 +448,69 @@ static void clear_region(struct lx_renderer *r, const struct lx_region *g)
 	}
 }
 
-void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
+/* Every rendered region of the n lights and its guard ring "far" (a per-frame layout
+ * moves the guards over what earlier frames drew): on a tiler the whole atlas in one
+ * clear, else region by region, all with one program and one state. */
+static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f,
+			  const struct lx_shadow_result *const *res, int n)
+{
+	if (r->d.caps->tiler || r->d.clear_whole_atlas) {
+		lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
+		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		return;
+	}
+	lx_gl.UseProgram(r->clear_prog);
+	lx_gl.Disable(GL_CULL_FACE);
+	lx_gl.DepthFunc(GL_ALWAYS);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+	for (int i = 0; i < n; i++) {
+		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
+		for (int m = 0; m < res[i]->map_count; m++) {
+			const struct lx_region *g = &a->regions[res[i]->maps[m].region];
+			if (res[i]->maps[m].rendered && g->w >= 1 && g->h >= 1)
+				clear_region(r, a, g);
+		}
+	}
+}
+
+/* The casters map m of a light can see, inside its region. */
+static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const struct lx_atlas *a,
+		     const struct lx_shadow_map *map)
+{
+	const struct lx_region *g = &a->regions[map->region];
+	if (!map->rendered || g->w < 1 || g->h < 1)
+		return;
+	lx_gl.Viewport(g->x, g->y, g->w, g->h);
+	/* a plane map's depth range holds every caster inside its cone (fit_depth), so
+	 * nothing need be flattened; flattening a vertex of a long triangle crossing the
+	 * near plane would drag the depth of the triangle's visible part past the far
+	 * plane (a caster beside a table under a grazing light lost its shadow) */
+	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
+	for (int id = 0; id < r->objects; id++) {
+		if (!lx_shadow_map_draws(map, f, id))
+			continue; /* no fill and no vertices for what the map cannot see */
+		mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
+		float lcf[16];
+		to_float(&lc, lcf);
+		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
+		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
+		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
+		lx_gl.DrawElements(GL_TRIANGLES, r->shadow_indices[id], GL_UNSIGNED_SHORT, (const void *)0);
+	}
+}
+
+void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
+			       const struct lx_shadow_result *const *res, int n)
 {
 	bool any = false;
-	for (int i = 0; i < res->map_count; i++)
-		any |= res->maps[i].rendered;
+	for (int i = 0; i < n; i++) {
+		if (f[i]->light_index < 0 || f[i]->light_index >= r->d.light_count)
+			return; /* a light the renderer was not made for: cannot happen through lx_method_run */
+		for (int m = 0; m < res[i]->map_count; m++)
+			any |= res[i]->maps[m].rendered;
+	}
 	if (!any)
 		return;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
@@ -435,70 +520,31 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, 
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.ClearColor(1, 1, 1, 1);
-	/* Every region and its guard ring "far" first (a per-frame layout moves the guards over
-	 * what earlier frames drew): on a tiler the whole atlas in one clear, else region by
-	 * region, all with one program and one state; regions never overlap, so the casters
-	 * can then be drawn map after map with another. */
-	if (r->d.caps->tiler || r->d.clear_whole_atlas) {
-		lx_gl.Viewport(0, 0, r->d.atlas->width, r->d.atlas->height);
-		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-	} else {
-		lx_gl.UseProgram(r->clear_prog);
-		lx_gl.Disable(GL_CULL_FACE);
-		lx_gl.DepthFunc(GL_ALWAYS);
-		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
-		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
-		for (int m = 0; m < res->map_count; m++) {
-			const struct lx_region *g = &r->d.atlas->regions[res->maps[m].region];
-			if (res->maps[m].rendered && g->w >= 1 && g->h >= 1)
-				clear_region(r, g);
-		}
-	}
-	/* Then the casters each map can see, inside its region. Back faces only (second-depth
-	 * shadow maps): lit front faces never compare against themselves, so there is no acne;
-	 * the meshes are closed or are planes. */
+	clear_regions(r, f, res, n);
+	/* Regions never overlap, so the casters can then be drawn map after map with another
+	 * program. Back faces only (second-depth shadow maps): lit front faces never compare
+	 * against themselves, so there is no acne; the meshes are closed or are planes. */
 	lx_gl.UseProgram(r->shadow_prog);
 	lx_gl.Enable(GL_CULL_FACE);
 	lx_gl.CullFace(GL_FRONT);
 	lx_gl.DepthFunc(GL_LESS);
-	for (int m = 0; m < res->map_count; m++) {
-		const struct lx_shadow_map *map = &res->maps[m];
-		const struct lx_region *g = &r->d.atlas->regions[map->region];
-		if (!map->rendered || g->w < 1 || g->h < 1)
-			continue;
-		lx_gl.Viewport(g->x, g->y, g->w, g->h);
-		/* a plane map's depth range holds every caster inside its cone (fit_depth), so
-		 * nothing need be flattened; flattening a vertex of a long triangle crossing the
-		 * near plane would drag the depth of the triangle's visible part past the far
-		 * plane (a caster beside a table under a grazing light lost its shadow) */
-		lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
-		for (int id = 0; id < r->objects; id++) {
-			if (!lx_shadow_map_draws(map, f, id))
-				continue; /* no fill and no vertices for what the map cannot see */
-			mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
-			float lcf[16];
-			to_float(&lc, lcf);
-			lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
-			lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
-			lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
-			lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
-			lx_gl.DrawElements(GL_TRIANGLES, r->shadow_indices[id], GL_UNSIGNED_SHORT, (const void *)0);
-		}
-	}
+	for (int i = 0; i < n; i++)
+		for (int m = 0; m < res[i]->map_count; m++)
+			draw_map(r, f[i], r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m]);
 	lx_gl.Disable(GL_CULL_FACE);
 }
 
-/* The main-pass variant for a set of maps, built when first used. */
-static struct main_program *variant_for(struct lx_renderer *r, bool decision, unsigned mask)
+/* The main-pass variant for a set of maps and a kind of light, built when first used. */
+static struct main_program *variant_for(struct lx_renderer *r, bool decision, bool projective, unsigned mask)
 {
-	struct main_program *p = &r->variant[decision][r->filter][mask];
+	struct main_program *p = &r->variant[decision][projective][r->filter][mask];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, r->beam_tex != 0, r->filter, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, decision, mask, r->mediump, projective, r->filter, err, sizeof err)) {
 			/* cannot happen once the full variant compiled; fall back to it */
 			fprintf(stderr, "lixel: %s\n", err);
 			unsigned all = (1u << r->d.map_count) - 1;
-			p = &r->variant[decision][r->filter][all];
+			p = &r->variant[decision][projective][r->filter][all];
 		}
 	}
 	return p;
@@ -729,26 +775,26 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
  * atlas-space bounds of the rays it serves (an empty box for a map not rendered: every
  * lookup misses and reads lit), and for a filter the texel centres at its region's edges,
  * which its samples are clamped to. */
-static void map_uniforms(const struct lx_renderer *r, const struct lx_shadow_result *res, float tex[][16],
-			 float region[][4], float clamp[][4])
+static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			 float tex[][16], float region[][4], float clamp[][4])
 {
-	const struct lx_atlas *atlas = r->d.atlas;
+	double tw = r->texture_width, th = r->texture_height;
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 		to_float(&t, tex[m]);
 		const struct lx_region *g = &atlas->regions[map->region];
-		clamp[m][0] = (float)((g->x + 0.5) / atlas->width), clamp[m][1] = (float)((g->y + 0.5) / atlas->height);
-		clamp[m][2] = (float)((g->x + g->w - 0.5) / atlas->width);
-		clamp[m][3] = (float)((g->y + g->h - 0.5) / atlas->height);
+		clamp[m][0] = (float)((g->x + 0.5) / tw), clamp[m][1] = (float)((g->y + 0.5) / th);
+		clamp[m][2] = (float)((g->x + g->w - 0.5) / tw);
+		clamp[m][3] = (float)((g->y + g->h - 0.5) / th);
 		if (!map->rendered) {
 			region[m][0] = region[m][1] = 2;
 			region[m][2] = region[m][3] = -1;
 			continue;
 		}
 		/* region clip space -> atlas texture space: tex = o + s * clip */
-		double sx = 0.5 * g->w / atlas->width, ox = (g->x + 0.5 * g->w) / atlas->width;
-		double sy = 0.5 * g->h / atlas->height, oy = (g->y + 0.5 * g->h) / atlas->height;
+		double sx = 0.5 * g->w / tw, ox = (g->x + 0.5 * g->w) / tw;
+		double sy = 0.5 * g->h / th, oy = (g->y + 0.5 * g->h) / th;
 		region[m][0] = (float)(ox + sx * map->bounds[0]);
 		region[m][1] = (float)(oy + sy * map->bounds[1]);
 		region[m][2] = (float)(ox + sx * map->bounds[2]);
@@ -763,7 +809,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 {
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
-	lx_lookup_prepare(f, r->d.atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
+	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
 	for (int k = 0; k < r->objects; k++)
 		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, r->draws, n);
 	if (r->piece_vertices > 0) {
@@ -782,23 +828,28 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 /* The uniforms of a frame every main-pass program takes. */
 struct main_uniforms {
 	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
-	float beam[16], light_color[3], range[3]; /* a projective light's */
+	float light_color[3], ambient;
+	float beam[16], range[3]; /* a projective light's */
+	GLuint beam_tex;          /* its image, else 0 */
 };
 
-/* A projective light's matrix, colour and range, and its image bound to unit 1. */
-static void beam_uniforms(const struct lx_renderer *r, const struct lx_light *L, struct main_uniforms *u)
+/* A projective light's matrix and range, and its image bound to unit 1. */
+static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f, struct main_uniforms *u)
 {
+	const struct lx_light *L = &f->light;
 	mat4 m;
-	if (!r->beam_tex || !lx_light_projection(L, &m))
+	u->beam_tex = r->beam_tex[f->light_index];
+	if (!u->beam_tex || !lx_light_projection(L, &m)) {
+		u->beam_tex = 0;
 		return;
+	}
 	to_float(&m, u->beam);
-	u->light_color[0] = (float)L->color.x, u->light_color[1] = (float)L->color.y, u->light_color[2] = (float)L->color.z;
 	bool ranged = L->range_far > 0; /* then range_far > range_near: the parser checks it */
 	u->range[0] = (float)L->range_near;
 	u->range[1] = ranged ? (float)(1 / (L->range_far - L->range_near)) : 0.0f;
 	u->range[2] = ranged ? 1.0f : 0.0f;
 	lx_gl.ActiveTexture(GL_TEXTURE1);
-	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex);
+	lx_gl.BindTexture(GL_TEXTURE_2D, u->beam_tex);
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 }
 
@@ -831,31 +882,86 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 /* A filtered variant's uniforms: each map's region to clamp to, the atlas's texel. */
 static void filter_uniforms(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u)
 {
-	const struct lx_atlas *a = r->d.atlas;
+	double w = r->texture_width, h = r->texture_height; /* >= 1 */
 	lx_gl.Uniform4fv(p->clamp, r->d.map_count, u->clamp[0]);
-	lx_gl.Uniform4f(p->texel, (float)a->width, (float)a->height, (float)(1.0 / a->width), (float)(1.0 / a->height));
+	lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
 }
 
-void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-			   bool decision)
+/* What a pass of the main pass draws: the first light's shading (the target cleared, the
+ * ambient term), another light's added to it, or one light's decision. */
+enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
+
+/* A program's uniforms for a frame, set when the program changes. */
+static void use_program(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
+			bool reads_maps)
+{
+	lx_gl.UseProgram(p->prog);
+	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u->view_proj);
+	lx_gl.Uniform4f(p->light, u->light[0], u->light[1], u->light[2], u->light[3]);
+	lx_gl.Uniform3fv(p->light_color, 1, u->light_color);
+	lx_gl.Uniform1f(p->ambient, u->ambient);
+	if (r->d.map_count > 0 && reads_maps) {
+		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, u->tex[0]);
+		lx_gl.Uniform4fv(p->region, r->d.map_count, u->region[0]);
+		lx_gl.Uniform1f(p->bias, r->bias_uniform);
+		lx_gl.Uniform1i(p->atlas, 0);
+		if (r->filter != LX_FILTER_NONE)
+			filter_uniforms(r, p, u);
+	}
+	if (p->beam >= 0) {
+		lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u->beam);
+		lx_gl.Uniform3fv(p->range, 1, u->range);
+		lx_gl.Uniform1i(p->beam_tex, 1);
+	}
+}
+
+/* The target's state for a pass: cleared for the first light and a decision; an added
+ * light blended on (ONE, ONE) over the depth the first left, pulled a little nearer (its
+ * planes' pieces are cut elsewhere than the first light's, so their depths may differ in
+ * the last bit), writing no depth. */
+static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 {
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
 	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
 	lx_gl.Disable(GL_SCISSOR_TEST);
 	lx_gl.Disable(GL_CULL_FACE); /* planes are seen from both sides, as the reference sees them */
 	lx_gl.Enable(GL_DEPTH_TEST);
-	if (decision)
+	bool added = kind == ADDED_LIGHT;
+	if (added) {
+		lx_gl.Enable(GL_BLEND);
+		lx_gl.BlendFunc(GL_ONE, GL_ONE);
+		lx_gl.DepthFunc(GL_LEQUAL);
+		lx_gl.DepthMask(GL_FALSE);
+		lx_gl.Enable(GL_POLYGON_OFFSET_FILL);
+		lx_gl.PolygonOffset(-1.0f, -4.0f);
+		return;
+	}
+	lx_gl.Disable(GL_BLEND);
+	lx_gl.DepthFunc(GL_LESS);
+	lx_gl.DepthMask(GL_TRUE);
+	lx_gl.Disable(GL_POLYGON_OFFSET_FILL);
+	if (kind == DECISION)
 		lx_gl.ClearColor(0, 0, 0, 1);
 	else
 		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+/* One light's pass of the main pass. */
+static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+		       enum pass_kind kind)
+{
+	pass_state(r, kind);
 	struct main_uniforms u;
 	to_float(&f->view.view_proj, u.view_proj);
 	const struct lx_light *L = &f->light;
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
-	map_uniforms(r, res, u.tex, u.region, u.clamp);
-	beam_uniforms(r, L, &u);
+	u.light_color[0] = (float)L->color.x, u.light_color[1] = (float)L->color.y, u.light_color[2] = (float)L->color.z;
+	u.ambient = kind == ADDED_LIGHT ? 0.0f : 0.22f;
+	map_uniforms(r, r->d.lights[f->light_index].atlas, res, u.tex, u.region, u.clamp);
+	beam_uniforms(r, f, &u);
+	bool projective = kind != DECISION && u.beam_tex != 0; /* the decision needs only the shadow test */
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
@@ -871,27 +977,31 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, cons
 		const struct draw *d = &r->draws[k];
 		if (!p || d->mask != current) {
 			current = d->mask;
-			p = variant_for(r, decision, current);
-			lx_gl.UseProgram(p->prog);
-			lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u.view_proj);
-			lx_gl.Uniform4f(p->light, u.light[0], u.light[1], u.light[2], u.light[3]);
-			if (r->d.map_count > 0 && current) {
-				lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, u.tex[0]);
-				lx_gl.Uniform4fv(p->region, r->d.map_count, u.region[0]);
-				lx_gl.Uniform1f(p->bias, r->bias_uniform);
-				lx_gl.Uniform1i(p->atlas, 0);
-				if (r->filter != LX_FILTER_NONE)
-					filter_uniforms(r, p, &u);
-			}
-			if (p->beam >= 0) {
-				lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u.beam);
-				lx_gl.Uniform3fv(p->light_color, 1, u.light_color);
-				lx_gl.Uniform3fv(p->range, 1, u.range);
-				lx_gl.Uniform1i(p->beam_tex, 1);
-			}
+			p = variant_for(r, kind == DECISION, projective, current);
+			use_program(r, p, &u, current != 0);
 		}
 		issue_draw(r, f, p, d);
 	}
+	if (kind == ADDED_LIGHT) { /* back to the state every other pass expects */
+		lx_gl.Disable(GL_BLEND);
+		lx_gl.DepthMask(GL_TRUE);
+		lx_gl.Disable(GL_POLYGON_OFFSET_FILL);
+		lx_gl.DepthFunc(GL_LESS);
+	}
+}
+
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
+			   const struct lx_shadow_result *const *res, int n)
+{
+	for (int i = 0; i < n; i++)
+		if (f[i]->light_index >= 0 && f[i]->light_index < r->d.light_count)
+			light_pass(r, f[i], res[i], i == 0 ? FIRST_LIGHT : ADDED_LIGHT);
+}
+
+void lx_renderer_decision_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
+{
+	if (f->light_index >= 0 && f->light_index < r->d.light_count)
+		light_pass(r, f, res, DECISION);
 }
 
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)
@@ -905,7 +1015,7 @@ void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 {
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-	lx_gl.ReadPixels(0, 0, r->d.atlas->width, r->d.atlas->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	lx_gl.ReadPixels(0, 0, r->texture_width, r->texture_height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
@@ -913,7 +1023,7 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	/* the same size and format again: the texture (and the framebuffer holding it) stays */
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->d.atlas->width, r->d.atlas->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->texture_width, r->texture_height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
 void lx_renderer_finish(void) { lx_gl.Finish(); }

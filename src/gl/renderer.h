@@ -1,5 +1,6 @@
 /* The GL passes: shadow passes into atlas regions, then the main pass into an
- * off-screen target. Knows nothing of the platform underneath. */
+ * off-screen target, one additive pass per light [Segal]. Knows nothing of the platform
+ * underneath. */
 #ifndef LX_RENDERER_H
 #define LX_RENDERER_H
 #include "gl_caps.h"
@@ -13,9 +14,16 @@ struct lx_renderer;
 struct lx_renderer_desc {
 	const struct lx_scene *scene;
 	const struct lx_scene_meshes *meshes;
-	const struct lx_atlas *atlas;
 	const struct lx_gl_caps *caps;
-	int map_count; /* maps the method returns per frame */
+	/* the lights drawn (1 to LX_MAX_LIGHTS): each light's part of the atlas (the parts
+	 * share one texture, lx_atlas_stack) and a projective light's beam or slide (rows
+	 * bottom to top; NULL for other lights) */
+	int light_count;
+	struct {
+		const struct lx_atlas *atlas;
+		const struct lx_image *image;
+	} lights[LX_MAX_LIGHTS];
+	int map_count; /* maps the method returns per frame and light */
 	int width, height;
 	bool mediump;       /* the fragment shaders' 11-bit mediump depth path (lx_depth_choose) */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
@@ -23,8 +31,6 @@ struct lx_renderer_desc {
 	/* clear the atlas once per frame, as on a tiler (caps->tiler), here too; also set by
 	 * LIXEL_CLEAR_WHOLE_ATLAS=1 in the environment, so that the tests run that path */
 	bool clear_whole_atlas;
-	const struct lx_image *light_image; /* a projective light's beam or slide (rows bottom to
-					     * top), NULL for other lights */
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
 	enum lx_filter filter;  /* the main pass's shadow filter to start with (shadow_filter.h) */
@@ -35,16 +41,21 @@ void lx_renderer_destroy(struct lx_renderer *r);
 /* The main pass's shadow filter from the next frame on; its programs are built now, so
  * false (err set, the filter as it was) when they do not build. */
 bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen);
-/* Shadow passes for the rendered maps; then the main pass, shaded or (decision) the
- * per-pixel shadow decision. */
-void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res);
-void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-			   bool decision);
+/* Shadow passes for the rendered maps of n lights: f[i] and res[i] are a light's frame
+ * (its f[i]->light_index says which) and maps. */
+void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
+			       const struct lx_shadow_result *const *res, int n);
+/* The shaded main pass: the first light's pass with the ambient term, each other light's
+ * added to it. */
+void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
+			   const struct lx_shadow_result *const *res, int n);
+/* The main pass's per-pixel shadow decision for one light (main.frag's LX_DECISION). */
+void lx_renderer_decision_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res);
 /* The main target's pixels, RGBA, rows bottom to top (width * height * 4 bytes). */
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba);
-/* The atlas texture's texels, RGBA (atlas width * height * 4 bytes). */
+/* The atlas texture's texels, RGBA (its texture_width * texture_height * 4 bytes). */
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba);
-/* The atlas texture's texels replaced (atlas width * height * 4 bytes, RGBA): what the
+/* The atlas texture's texels replaced (texture_width * texture_height * 4 bytes, RGBA): what the
  * next main pass reads, for tests of what a lookup may read. */
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 void lx_renderer_finish(void);

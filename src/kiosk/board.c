@@ -153,6 +153,9 @@ static int display_key(struct lx_board *b, const char *key, const char *value, s
 										     : &b->lixels.uniform_lixels;
 		if ((e = lx_number_int(value, 1, 8192, field)))
 			return FAIL(at, "expected %s from 1 to 8192, got '%s' (%s)", key, value, lx_number_why(e));
+	} else if (!strcmp(key, "light-budget")) {
+		if (!lx_light_budget_parse(value, &b->lixels))
+			return FAIL(at, "expected light-budget as %s, got '%s'", LX_LIGHT_BUDGET_EXPECTED, value);
 	} else if (!strcmp(key, "depth-precision")) {
 		if (!lx_depth_precision_parse(value, &b->depth_precision))
 			return FAIL(at, "expected depth-precision auto, highp or mediump, got '%s'", value);
@@ -223,7 +226,7 @@ static bool apply_key(struct lx_board *b, const char *key, const char *value, si
 	else
 		return FAIL(at, "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, "
 			    "debounce-ms, long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, "
-			    "depth-precision, methods or filters, got '%s'", key);
+			    "light-budget, depth-precision, methods or filters, got '%s'", key);
 	return true;
 }
 

@@ -5,6 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The shares of the compared pixels; 0 when none is compared. */
+static void percentages(struct lx_mismatch *m)
+{
+	double c = m->compared > 0 ? (double)m->compared : 1;
+	m->false_shadow_pct = 100.0 * m->false_shadow / c;
+	m->missing_shadow_pct = 100.0 * m->missing_shadow / c;
+	m->mismatch_pct = 100.0 * (m->false_shadow + m->missing_shadow) / c;
+}
+
 void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out)
 {
@@ -30,11 +39,15 @@ void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, c
 		else if (!shadow[i] && ref_shadow[i])
 			out->missing_shadow++;
 	}
-	if (out->compared) {
-		out->false_shadow_pct = 100.0 * out->false_shadow / out->compared;
-		out->missing_shadow_pct = 100.0 * out->missing_shadow / out->compared;
-		out->mismatch_pct = 100.0 * (out->false_shadow + out->missing_shadow) / out->compared;
-	}
+	percentages(out);
+}
+
+void lx_mismatch_add(struct lx_mismatch *total, const struct lx_mismatch *part)
+{
+	total->compared += part->compared, total->silhouette += part->silhouette;
+	total->edge_on += part->edge_on, total->unlit += part->unlit;
+	total->false_shadow += part->false_shadow, total->missing_shadow += part->missing_shadow;
+	percentages(total);
 }
 
 double lx_soft_error(const int16_t *ref_object, const uint8_t *ref_shadow, const float *ref_visibility,

@@ -19,6 +19,8 @@ struct lx_mismatch {
 
 void lx_mismatch_compare(const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object,
 			 const uint8_t *shadow, long pixels, struct lx_mismatch *out);
+/* total += part: the counts added, the shares of the sum (several lights' mismatch as one). */
+void lx_mismatch_add(struct lx_mismatch *total, const struct lx_mismatch *part);
 /* colour_error: the mean absolute difference of two RGBA8 images over their pixels and the
  * R, G and B channels, in 8-bit levels (0 to 255). */
 double lx_colour_error(const uint8_t *a, const uint8_t *b, long pixels);

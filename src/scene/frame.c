@@ -6,13 +6,20 @@
 #include <stdio.h>
 #include <string.h>
 
+/* A note; about a light, in a scene of several, it names which ("light 2: ..."). */
 static void note(struct lx_frame *f, const char *fmt, ...)
 {
 	if (f->note_count == LX_FRAME_NOTES)
 		return;
+	char *o = f->notes[f->note_count++];
+	size_t room = sizeof f->notes[0], n = 0;
+	if (lx_scene_light_count(f->scene) > 1 && !strncmp(fmt, "light: ", 7)) {
+		n = (size_t)snprintf(o, room, "light %d: ", f->light_index + 1);
+		fmt += 7;
+	}
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(f->notes[f->note_count++], sizeof f->notes[0], fmt, ap);
+	vsnprintf(o + n, room - n, fmt, ap);
 	va_end(ap);
 }
 
@@ -123,7 +130,6 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	f->scene = s;
 	f->meshes = m;
 	f->time = t;
-	f->light = s->light;
 	f->object_count = m->count;
 	f->scene_min = v3(INFINITY, INFINITY, INFINITY);
 	f->scene_max = v3(-INFINITY, -INFINITY, -INFINITY);
@@ -137,7 +143,6 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		f->scene_max = v3(fmax(f->scene_max.x, f->bmax[id].x), fmax(f->scene_max.y, f->bmax[id].y),
 				  fmax(f->scene_max.z, f->bmax[id].z));
 	}
-	light_inside_casters(f);
 	struct lx_view *v = &f->view;
 	v->width = width;
 	v->height = height;
@@ -150,8 +155,6 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		return false;
 	}
 	unsigned long long in_view = view_box(f, (double)width / height);
-	far_light(f);
-	lit_box(f);
 	/* far: the farthest scene corner; near: the distance to the scene box, at least
 	 * far / 1000, but never beyond the nearest object (one caster far from the rest
 	 * must not push the near plane past the others), and at least far * 1e-6. */
@@ -188,7 +191,21 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		snprintf(err, errlen, "camera: the view projection is singular");
 		return false;
 	}
+	f->view_note_count = f->note_count;
+	lx_frame_for_light(f, 0, f);
 	return true;
+}
+
+void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *out)
+{
+	if (out != f)
+		*out = *f;
+	out->note_count = f->view_note_count;
+	out->light_index = light;
+	out->light = f->scene->lights[light];
+	light_inside_casters(out);
+	far_light(out);
+	lit_box(out);
 }
 
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])

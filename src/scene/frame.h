@@ -23,6 +23,9 @@ struct lx_frame {
 	const struct lx_scene_meshes *meshes;
 	double time;
 	struct lx_view view;
+	/* the light this frame's maps are for: the scene's light light_index as the set-up
+	 * takes it (a point light far enough away becomes directional) */
+	int light_index;
 	struct lx_light light;
 	int object_count;
 	vec3 offset[LX_MAX_PLANES + LX_MAX_CASTERS]; /* object translation at time t */
@@ -36,7 +39,7 @@ struct lx_frame {
 	/* what the set-up changed or found that a user should hear of (a point light so far
 	 * away it is taken as directional, the light inside a caster, ...); every method's
 	 * result repeats them among its warnings */
-	int note_count;
+	int note_count, view_note_count; /* the view's notes first, then the light's */
 	char notes[LX_FRAME_NOTES][160];
 };
 
@@ -49,5 +52,8 @@ void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8]);
 
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
 		    int width, int height, char *err, size_t errlen);
+/* *out: frame f (set up for any light) for the scene's light `light` (0 to
+ * lx_scene_light_count - 1) instead; out may be f. lx_frame_setup gives light 0. */
+void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *out);
 
 #endif

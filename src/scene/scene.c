@@ -66,6 +66,7 @@ void lx_scene_default(struct lx_scene *s)
 	add_caster(s, LX_CYLINDER, v3(0.35, 1.1, 0.35), 0.4, 1.6, 1.9, 2.1, v3(0.3, 0.75, 0.35));
 	add_caster(s, LX_CONE, v3(0.5, 1.0, 0.5), -0.3, -2.0, 2.9, 0.5, v3(0.9, 0.7, 0.2));
 	s->light = lx_light_white(v3(2.5, 6, 3));
+	s->light_count = 1;
 	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
 }
 
@@ -93,6 +94,7 @@ void lx_scene_table(struct lx_scene *s)
 	s->casters[s->caster_count++] = (struct lx_caster){.shape = LX_CYLINDER, .size = v3(0.3, 0.8, 0.3), .x = 2.3,
 		.z = 1.3, .low = 0.3, .high = 1.5, .period = 1.9, .phase = 2.0, .color = v3(0.3, 0.75, 0.35)};
 	s->light = lx_light_white(v3(2.0, 5.5, 2.5));
+	s->light_count = 1;
 	s->camera = (struct lx_camera){.eye = v3(0, 2.6, 4.2), .at = v3(0, 0.6, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
 }
 
@@ -117,6 +119,17 @@ void lx_scene_projector(struct lx_scene *s)
 	l->aspect = 256.0 / 192; /* the slide's size (tools/make-slide.c) */
 }
 
+void lx_scene_two_lights(struct lx_scene *s)
+{
+	lx_scene_default(s);
+	s->light.color = v3(0.75, 0.68, 0.55); /* the two together stay under full white */
+	struct lx_light *l = &s->lights[1];
+	*l = lx_light_white(v3(-3.5, 4.5, 2));
+	l->projective = LX_LIGHT_SPOT, l->at = v3(0.3, 0, -1), l->fov_deg = 70;
+	l->color = v3(0.35, 0.48, 0.8), l->range_near = 5, l->range_far = 14;
+	s->light_count = 2;
+}
+
 bool lx_scene_builtin(const char *name, struct lx_scene *s)
 {
 	if (!strcmp(name, "default"))
@@ -127,6 +140,8 @@ bool lx_scene_builtin(const char *name, struct lx_scene *s)
 		lx_scene_spotlight(s);
 	else if (!strcmp(name, "projector"))
 		lx_scene_projector(s);
+	else if (!strcmp(name, "twolights"))
+		lx_scene_two_lights(s);
 	else
 		return false;
 	return true;
@@ -311,18 +326,33 @@ static bool projective_options(struct parser *p, struct lx_light *l, const char 
 	return true;
 }
 
+/* A point or directional light's one option: its colour (white without). */
+static bool plain_options(struct parser *p, struct lx_light *l)
+{
+	const char *k = peek(p);
+	if (!k)
+		return true;
+	p->pos++;
+	if (strcmp(k, "color"))
+		return fail(p, "expected 'color R G B' or the end of the light line, got '%s'", k);
+	return color(p, &l->color);
+}
+
 static bool parse_light(struct parser *p, struct lx_scene *s)
 {
 	const char *k = peek(p);
 	if (!k)
 		return fail(p, "expected 'point', 'directional', 'spot' or 'projector' after 'light'");
 	p->pos++;
-	struct lx_light *l = &s->light;
+	if (s->light_count == LX_MAX_LIGHTS)
+		return fail(p, "expected at most %d light lines, found one more", LX_MAX_LIGHTS);
+	struct lx_light *l = &s->lights[s->light_count++];
 	*l = lx_light_white(v3(0, 0, 0));
 	if (!strcmp(k, "point")) {
 		/* direction unused for a point light; kept canonical */
 		if (!triple(p, "light position", &l->position))
 			return false;
+		return plain_options(p, l);
 	} else if (!strcmp(k, "directional")) {
 		l->directional = true;
 		vec3 d;
@@ -330,6 +360,7 @@ static bool parse_light(struct parser *p, struct lx_scene *s)
 			return false;
 		if (!v3_normalize(d, &l->direction))
 			return fail(p, "expected a non-zero light direction");
+		return plain_options(p, l);
 	} else if (!strcmp(k, "spot") || !strcmp(k, "projector")) {
 		l->projective = !strcmp(k, "spot") ? LX_LIGHT_SPOT : LX_LIGHT_PROJECTOR;
 		if (!triple(p, "light position", &l->position))
@@ -449,7 +480,7 @@ bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char
 	memset(s, 0, sizeof(*s));
 	s->camera = (struct lx_camera){.eye = v3(0, 2, 6), .at = v3(0, 0.8, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
 	struct parser p = {.file = name, .err = err, .errlen = errlen};
-	bool light = false, camera = false;
+	bool camera = false;
 	const char *line = text;
 	char buf[1024];
 	for (int r; (r = lx_text_line(&line, buf, sizeof buf)) != 0;) {
@@ -471,9 +502,7 @@ bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char
 				return fail(&p, "expected one camera line, found a second");
 			camera = ok = parse_camera(&p, s);
 		} else if (!strcmp(k, "light")) {
-			if (light)
-				return fail(&p, "expected one light line, found a second");
-			light = ok = parse_light(&p, s);
+			ok = parse_light(&p, s);
 		} else if (!strcmp(k, "plane"))
 			ok = parse_plane(&p, s);
 		else if (!strcmp(k, "sphere"))
@@ -491,7 +520,7 @@ bool lx_scene_parse(const char *text, const char *name, struct lx_scene *s, char
 		if (peek(&p))
 			return fail(&p, "unexpected '%s' at the end of the line", peek(&p));
 	}
-	if (!light) {
+	if (s->light_count == 0) {
 		p.line++;
 		return fail(&p, "expected a 'light point X Y Z' or 'light directional DX DY DZ' line");
 	}
@@ -563,9 +592,12 @@ void lx_scene_scale(struct lx_scene *s, double k)
 		c->size = v3_scale(c->size, k);
 		c->x *= k, c->z *= k, c->low *= k, c->high *= k;
 	}
-	if (!s->light.directional)
-		s->light.position = v3_scale(s->light.position, k);
-	s->light.at = v3_scale(s->light.at, k);
-	s->light.range_near *= k, s->light.range_far *= k;
+	for (int i = 0; i < lx_scene_light_count(s); i++) {
+		struct lx_light *l = &s->lights[i];
+		if (!l->directional)
+			l->position = v3_scale(l->position, k);
+		l->at = v3_scale(l->at, k);
+		l->range_near *= k, l->range_far *= k;
+	}
 	s->camera.eye = v3_scale(s->camera.eye, k), s->camera.at = v3_scale(s->camera.at, k);
 }

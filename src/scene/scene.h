@@ -1,4 +1,4 @@
-/* The scene: planes of interest, bouncing shadow casters, one light, the camera.
+/* The scene: planes of interest, bouncing shadow casters, one to four lights, the camera.
  * GL-free. Distances in metres. A scene comes from lx_scene_default() or from a
  * text file (format in docs/scene-format.md) through lx_scene_load(). */
 #ifndef LX_SCENE_H
@@ -8,9 +8,9 @@
 #include <stddef.h>
 
 #define LX_MAX_PLANES 8
-/* Lights of one frame at most: the renderer adds one pass per light [Segal]. */
-#define LX_MAX_LIGHTS 4
 #define LX_MAX_CASTERS 32
+/* Lights drawn as additive passes [Segal], each with its own maps in the one atlas. */
+#define LX_MAX_LIGHTS 4
 #define LX_NAME_MAX 16
 /* No coordinate, size or time of a scene beyond this (options included): products of two
  * stay far inside double's range. */
@@ -74,9 +74,17 @@ struct lx_scene {
 	int plane_count, caster_count;
 	struct lx_plane planes[LX_MAX_PLANES];
 	struct lx_caster casters[LX_MAX_CASTERS];
-	struct lx_light light;
+	/* light is lights[0], the only light most scenes have: the shadow methods and the
+	 * tests that build scenes by hand work on it; light_count says how many of lights[] are
+	 * in use (0, in a scene built by hand, counts as 1: see lx_scene_light_count) */
+	union {
+		struct lx_light light;
+		struct lx_light lights[LX_MAX_LIGHTS];
+	};
+	int light_count;
 	struct lx_camera camera;
 };
+static inline int lx_scene_light_count(const struct lx_scene *s) { return s->light_count > 1 ? s->light_count : 1; }
 
 void lx_scene_default(struct lx_scene *s);
 /* The table scene: a table top (a plane of interest, listed first so its map is tried
@@ -91,7 +99,11 @@ struct lx_light lx_light_white(vec3 position);
  * showing lixel's own slide. */
 void lx_scene_spotlight(struct lx_scene *s);
 void lx_scene_projector(struct lx_scene *s);
-/* Fills *s with the built-in scene of that name ("default", "table", "spotlight", "projector"); false if none. */
+/* The default scene under two lights: a warm point light and a cool spotlight from the
+ * other side, each casting its own shadows. */
+void lx_scene_two_lights(struct lx_scene *s);
+/* Fills *s with the built-in scene of that name ("default", "table", "spotlight", "projector",
+ * "twolights"); false if none. */
 bool lx_scene_builtin(const char *name, struct lx_scene *s);
 /* Loads a scene file. On error returns false with "FILE:LINE: what was expected" in err
  * and leaves *s unspecified. */

@@ -60,10 +60,14 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		if (rest)
 			*rest++ = 0;
 		double lpp;
+		int lights;
 		if (!strcmp(opt, "all") || !strcmp(opt, "footprint"))
 			o->lookup_everywhere = opt[0] == 'a';
+		else if (!strncmp(opt, "lights", 6) && !lx_number_int(opt + 6, 1, LX_MAX_LIGHTS, &lights))
+			o->max_lights = lights;
 		else if (strcmp(m->name, "plane")) {
-			snprintf(err, errlen, "method '%s': option '%s', expected all or footprint", m->name, opt);
+			snprintf(err, errlen, "method '%s': option '%s', expected all, footprint or lightsN (1 <= N <= %d)",
+				 m->name, opt, LX_MAX_LIGHTS);
 			return NULL;
 		} else if (!strcmp(opt, "square") || !strcmp(opt, "fitted"))
 			o->square_regions = opt[0] == 's';
@@ -78,12 +82,50 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
 			o->plane_max_lpp = lpp;
 		else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, lppX (0 < X <= 10000), all or footprint",
-				 spec, opt);
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, lppX (0 < X <= 10000), all, footprint or lightsN (1 <= N <= %d)",
+				 spec, opt, LX_MAX_LIGHTS);
 			return NULL;
 		}
 	}
 	return m;
+}
+
+static int scaled_side(int side, double k)
+{
+	long s = lround(side * k);
+	return s < 1 ? 1 : s > side ? side : (int)s;
+}
+
+struct lx_method_options lx_method_options_for_light(const struct lx_method_options *o, int light)
+{
+	struct lx_method_options r = *o;
+	double share = light >= 0 && light < LX_MAX_LIGHTS ? o->light_share[light] : 0;
+	if (!(share > 0 && share < 1))
+		return r; /* all of the budget */
+	double k = sqrt(share); /* share > 0 */
+	r.uniform_lixels = scaled_side(o->uniform_lixels, k);
+	r.plane_lixels = scaled_side(o->plane_lixels, k);
+	r.fallback_lixels = scaled_side(o->fallback_lixels, k);
+	return r;
+}
+
+bool lx_light_budget_parse(const char *s, struct lx_method_options *o)
+{
+	int n = 1;
+	for (const char *c = s; *c; c++)
+		n += *c == ',';
+	double share[LX_MAX_LIGHTS];
+	if (n > LX_MAX_LIGHTS || lx_number_reals(s, n, LX_LIGHT_SHARE_MIN, 1, share, NULL))
+		return false;
+	for (int i = 0; i < LX_MAX_LIGHTS; i++)
+		o->light_share[i] = i < n ? share[i] : share[n - 1];
+	return true;
+}
+
+int lx_method_lights(const struct lx_method_options *o, const struct lx_scene *s)
+{
+	int n = lx_scene_light_count(s);
+	return o->max_lights > 0 && o->max_lights < n ? o->max_lights : n;
 }
 
 int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_scene *s,

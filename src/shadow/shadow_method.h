@@ -60,7 +60,15 @@ struct lx_method_options {
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
+	/* Several lights: light i's maps get light_share[i] of the lixels above (0: all of
+	 * them; a share of area, the sides scaled by its square root); only the first
+	 * max_lights lights are drawn (0: all). */
+	double light_share[LX_MAX_LIGHTS];
+	int max_lights;
 };
+/* Shares a light may take: a map of a hundredth of the lixels is still ten lixels a side
+ * of a 1024-lixel one. */
+#define LX_LIGHT_SHARE_MIN 0.01
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
 
@@ -77,7 +85,8 @@ struct lx_shadow_method {
 };
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name);
-/* A method with options, "NAME[/OPTION...]": for the plane method square or fitted
+/* A method with options, "NAME[/OPTION...]": for every method all or footprint (lookup
+ * region) and lightsN (the first N lights only); for the plane method square or fitted
  * (region shape), shared or fixed (budget split), lppX (the densest a plane map gets,
  * lixels per pixel). Applies the options to *o; NULL with one line in err when the spec
  * is not one. Lets the bench run the same method twice with different settings. */
@@ -93,6 +102,16 @@ const char *lx_shadow_method_names(void);
 const char *lx_shadow_method_list(void);
 /* The default method (render's and the kiosk's first). */
 #define LX_DEFAULT_METHOD "plane"
+/* The budgets of light `light`'s maps: o's with every side scaled by the square root of
+ * its share (at least one lixel). */
+struct lx_method_options lx_method_options_for_light(const struct lx_method_options *o, int light);
+/* "S1[,S2...]": each light's share of the budget, 1 to LX_MAX_LIGHTS numbers in
+ * [LX_LIGHT_SHARE_MIN, 1]; lights past the list take its last. False when s is not such
+ * a list (o unchanged). */
+#define LX_LIGHT_BUDGET_EXPECTED "1 to 4 shares from 0.01 to 1 separated by commas, one per light"
+bool lx_light_budget_parse(const char *s, struct lx_method_options *o);
+/* How many of the scene's lights a method run draws (max_lights, at most the scene's). */
+int lx_method_lights(const struct lx_method_options *o, const struct lx_scene *s);
 /* The method's region requests: its regions(), or its one square map. */
 int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_scene *s,
 			     const struct lx_method_options *o, struct lx_region_request *out);
