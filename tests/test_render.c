@@ -5,6 +5,7 @@
 #include "method_run.h"
 #include "metrics.h"
 #include "overlay.h"
+#include "png_in.h"
 #include "png_out.h"
 #include "embedded.h"
 #include "platform.h"
@@ -16,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char *const platforms[] = {"osmesa", "egl"};
 enum { W = 320, H = 240 };
@@ -64,10 +66,11 @@ static void run(const char *platform, const char *method, const struct lx_scene 
 	run_path(platform, method, scene, false, rep);
 }
 
-/* Chessboard distance from each pixel to the nearest reference edge (a pixel whose
- * 4-neighbour differs in visible object or shadow state), capped at `cap`. */
-static void edge_distance(const struct lx_render_report *r, uint8_t *dist, int cap)
+/* Chessboard distance from each pixel to the nearest reference edge of light l (a pixel
+ * whose 4-neighbour differs in visible object or shadow state), capped at `cap`. */
+static void edge_distance(const struct lx_render_report *r, int l, uint8_t *dist, int cap)
 {
+	const uint8_t *ref_shadow = r->ref_shadow + (size_t)l * W * H;
 	for (int y = 0; y < H; y++)
 		for (int x = 0; x < W; x++) {
 			long i = (long)y * W + x;
@@ -78,7 +81,7 @@ static void edge_distance(const struct lx_render_report *r, uint8_t *dist, int c
 				if (nx < 0 || ny < 0 || nx >= W || ny >= H)
 					continue;
 				long j = (long)ny * W + nx;
-				edge |= r->ref_object[j] != r->ref_object[i] || r->ref_shadow[j] != r->ref_shadow[i];
+				edge |= r->ref_object[j] != r->ref_object[i] || ref_shadow[j] != ref_shadow[i];
 			}
 			dist[i] = edge ? 0 : (uint8_t)cap;
 		}
@@ -104,22 +107,59 @@ static void edge_distance(const struct lx_render_report *r, uint8_t *dist, int c
  * lixel-centre rounding). No mismatch far from an edge means no acne, no leaks and no
  * clipped caster. In total they stay under 0.5% of the compared pixels (0.16% at
  * worst measured at this size, in the configuration facing the light). */
-/* The largest number of pixels one lixel spans on any plane pixel, whichever map serves it. */
-static double worst_m(const struct lx_scene *scene, const struct lx_render_report *r)
+/* The largest number of pixels one lixel spans on any plane pixel, whichever of light l's
+ * maps serves it. */
+static double worst_m(const struct lx_scene *scene, const struct lx_render_report *r, int l)
 {
 	struct lx_scene_meshes m;
 	struct lx_frame f;
 	char err[128];
 	assert_true(lx_meshes_build(scene, &m));
 	assert_true(lx_frame_setup(&f, scene, &m, 0.4, W, H, err, sizeof err));
+	lx_frame_for_light(&f, l, &f);
 	double worst = 1;
 	for (int p = 0; p < scene->plane_count; p++) {
 		struct lx_plane_sampling ps; /* each pixel with the map the shader reads for it */
-		if (lx_plane_sampling(&f, &r->light[0].atlas, &r->light[0].result, p, r->ref_object, &ps))
+		if (lx_plane_sampling(&f, &r->light[l].atlas, &r->light[l].result, p, r->ref_object, &ps))
 			worst = fmax(worst, ps.m_max);
 	}
 	lx_meshes_free(&m);
 	return worst;
+}
+
+/* Light l's mismatches of a report: each within the edge bound, their count the
+ * report's, under max_pct of the compared pixels, which are at least min_share of the
+ * view. Returns the mismatch. */
+static double check_light(const struct lx_render_report *r, const struct lx_scene *scene, int l, const char *what,
+			  uint8_t *dist, double max_pct, double min_share)
+{
+	const struct lx_mismatch *mm = &r->light[l].mismatch;
+	for (int k = 0; k < r->light[l].result.map_count; k++)
+		assert_true(m4_finite(&r->light[l].result.maps[k].light_clip));
+	double m_max = worst_m(scene, r, l);
+	int reach = (int)ceil(m_max) + 2;
+	if (reach > 250)
+		reach = 250;
+	edge_distance(r, l, dist, reach + 1);
+	const uint8_t *ref_shadow = r->ref_shadow + (size_t)l * W * H, *shadow = r->shadow + (size_t)l * W * H;
+	long far = 0, n = 0;
+	int worst = 0;
+	for (long i = 0; i < (long)W * H; i++)
+		if (r->ref_object[i] >= 0 && r->ref_object[i] == r->object[i] && ref_shadow[i] != LX_REF_EDGE_ON &&
+		    ref_shadow[i] != LX_REF_UNLIT && ref_shadow[i] != shadow[i]) {
+			n++;
+			worst = dist[i] > worst ? dist[i] : worst;
+			far += dist[i] > reach;
+		}
+	print_message("%s light %d: mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
+		      "worst distance to an edge %d px (allowed %d); %ld beyond\n",
+		      what, l + 1, mm->mismatch_pct, mm->false_shadow_pct, mm->missing_shadow_pct, mm->compared, m_max, worst,
+		      reach, far);
+	assert_int_equal(n, mm->false_shadow + mm->missing_shadow);
+	assert_true(mm->compared > min_share * W * H);
+	assert_int_equal(far, 0);
+	assert_true(mm->mismatch_pct < max_pct);
+	return mm->mismatch_pct;
 }
 
 /* The share of the pixels compared must be at least min_share (the scene's receivers in
@@ -132,31 +172,9 @@ static double check_against_reference_where(const char *platform, const char *me
 	run_path(platform, method, scene, mediump, &r);
 	if (colour_error)
 		*colour_error = r.colour_error;
-	for (int k = 0; k < r.light[0].result.map_count; k++)
-		assert_true(m4_finite(&r.light[0].result.maps[k].light_clip));
-	double m_max = worst_m(scene, &r);
-	int reach = (int)ceil(m_max) + 2;
-	if (reach > 250)
-		reach = 250;
-	edge_distance(&r, dist, reach + 1);
-	long far = 0, n = 0;
-	int worst = 0;
-	for (long i = 0; i < (long)W * H; i++)
-		if (r.ref_object[i] >= 0 && r.ref_object[i] == r.object[i] && r.ref_shadow[i] != LX_REF_EDGE_ON &&
-		    r.ref_shadow[i] != LX_REF_UNLIT && r.ref_shadow[i] != r.shadow[i]) {
-			n++;
-			worst = dist[i] > worst ? dist[i] : worst;
-			far += dist[i] > reach;
-		}
-	print_message("%-6s %-7s %-7s %-12s mismatch %.3f%% (false %.3f%%, missing %.3f%%) of %ld; m_max %.2f; "
-		      "worst distance to an edge %d px (allowed %d); %ld beyond\n",
-		      platform, method, mediump ? "mediump" : "highp", config, r.mismatch.mismatch_pct,
-		      r.mismatch.false_shadow_pct, r.mismatch.missing_shadow_pct, r.mismatch.compared, m_max, worst, reach, far);
-	assert_int_equal(n, r.mismatch.false_shadow + r.mismatch.missing_shadow);
-	assert_true(r.mismatch.compared > min_share * W * H);
-	assert_int_equal(far, 0);
-	assert_true(r.mismatch.mismatch_pct < max_pct);
-	double pct = r.mismatch.mismatch_pct;
+	char what[96];
+	snprintf(what, sizeof what, "%-6s %-7s %-7s %-12s", platform, method, mediump ? "mediump" : "highp", config);
+	double pct = check_light(&r, scene, 0, what, dist, max_pct, min_share);
 	lx_render_report_free(&r);
 	return pct;
 }
@@ -190,6 +208,78 @@ static void projective_lights_match_reference(void **state)
 			print_message("%-9s %-7s colour_error %.4f levels\n", scene_name, name, colour);
 			assert_true(colour < 0.5);
 		}
+	free(dist);
+}
+
+/* Two lights [Segal's additive passes], every method: each light's shadows against its
+ * own reference as for one light (PSM 2%), the summed frame against the reference's sum
+ * (colour_error under half a level), and the first light's pass untouched by the second:
+ * the scene drawn with /lights1 is the scene of the first light alone, pixel for pixel,
+ * and the second light only ever adds (it never darkens a channel, and it brightens the
+ * pixels it reaches). */
+static void two_lights_add_up(void **state)
+{
+	(void)state;
+	uint8_t *dist = malloc((size_t)W * H), *img[3];
+	struct lx_image im[3];
+	assert_non_null(dist);
+	char dir[] = "/tmp/lixel-two-XXXXXX", path[3][64];
+	assert_non_null(mkdtemp(dir));
+	for (int m = 0; m < lx_shadow_method_count(); m++) {
+		const char *name = lx_shadow_method_at(m)->name;
+		struct lx_scene two, one;
+		assert_true(lx_scene_builtin("twolights", &two));
+		one = two;
+		one.light_count = 1;
+		char spec[3][32];
+		const struct lx_scene *scenes[3] = {&two, &two, &one};
+		snprintf(spec[0], sizeof spec[0], "%s", name);
+		snprintf(spec[1], sizeof spec[1], "%s/lights1", name);
+		snprintf(spec[2], sizeof spec[2], "%s", name);
+		for (int k = 0; k < 3; k++) {
+			snprintf(path[k], sizeof path[k], "%s/%d.png", dir, k);
+			struct lx_render_job job = {.method = spec[k], .platform = "osmesa", .platform_in_use = shared_platform("osmesa"),
+						    .scene = *scenes[k], .width = W, .height = H, .time = 0.4, .timed_frames = 1,
+						    .measure = k == 0, .keep_pixels = k == 0, .bias_codes = LX_DEFAULT_BIAS_CODES,
+						    .reference_threads = 2, .out_png = path[k]};
+			struct lx_render_report r;
+			char err[512];
+			if (lx_render_run(&job, &r, err, sizeof err))
+				fail_msg("%s: %s", spec[k], err);
+			assert_int_equal(r.light_count, k == 0 ? 2 : 1);
+			if (k == 0) {
+				for (int l = 0; l < 2 && strcmp(name, "none"); l++)
+					check_light(&r, &two, l, name, dist, strcmp(name, "psm") ? 0.5 : 2.0, 1.0 / 8);
+				struct lx_mismatch sum = r.light[0].mismatch;
+				lx_mismatch_add(&sum, &r.light[1].mismatch);
+				assert_int_equal(r.mismatch.compared, sum.compared);
+				assert_int_equal(r.mismatch.false_shadow + r.mismatch.missing_shadow,
+						 sum.false_shadow + sum.missing_shadow);
+				print_message("two lights %-7s colour_error %.4f levels\n", name, r.colour_error);
+				if (strcmp(name, "none"))
+					assert_true(r.colour_error < 0.5);
+				lx_render_report_free(&r);
+			}
+		}
+		for (int k = 0; k < 3; k++) {
+			char err[512];
+			if (!lx_png_read(path[k], &im[k], err, sizeof err))
+				fail_msg("%s", err);
+			assert_true(im[k].width == W && im[k].height == H);
+			img[k] = im[k].rgba;
+		}
+		assert_memory_equal(img[1], img[2], (size_t)W * H * 4);
+		long brighter = 0;
+		for (long i = 0; i < (long)W * H * 4; i++) {
+			if (img[0][i] < img[1][i])
+				fail_msg("%s: the second light darkened byte %ld (%d < %d)", name, i, img[0][i], img[1][i]);
+			brighter += img[0][i] > img[1][i];
+		}
+		assert_true(brighter > (long)W * H / 4); /* the spotlight reaches much of the view */
+		for (int k = 0; k < 3; k++)
+			lx_image_free(&im[k]), remove(path[k]);
+	}
+	rmdir(dir);
 	free(dist);
 }
 
@@ -401,7 +491,7 @@ static void none_shadows_nothing(void **state)
 		/* the edge-distance check of uniform_matches_reference can fail: shadow
 		 * interiors missed by `none` lie far from every edge */
 		uint8_t *dist = malloc((size_t)W * H);
-		edge_distance(&r, dist, 10);
+		edge_distance(&r, 0, dist, 10);
 		long far = 0;
 		for (long i = 0; i < (long)W * H; i++)
 			far += r.ref_shadow[i] == 1 && !r.shadow[i] && r.ref_object[i] == r.object[i] && dist[i] > 3;
@@ -806,6 +896,7 @@ int main(void)
 		cmocka_unit_test_teardown(plane_matches_reference_and_wins, close_shared_platform),
 		cmocka_unit_test_teardown(warps_match_reference, close_shared_platform),
 		cmocka_unit_test_teardown(projective_lights_match_reference, close_shared_platform),
+		cmocka_unit_test_teardown(two_lights_add_up, close_shared_platform),
 		cmocka_unit_test_teardown(paper_bad_case_is_measured, close_shared_platform),
 		cmocka_unit_test_teardown(plane_keeps_every_shadow, close_shared_platform),
 		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),

@@ -28,7 +28,11 @@ static int light_maps(struct lx_method_run *mr, const struct lx_scene *scene, in
 			return 2; /* the scene names a file that is not a usable PNG */
 		parts[i] = &lm->atlas;
 	}
-	return lx_atlas_stack(parts, mr->light_count, max_texture, err, errlen) ? 0 : 2;
+	if (lx_atlas_stack(parts, mr->light_count, max_texture, err, errlen))
+		return 0;
+	size_t len = strlen(err); /* the lights' budgets are the user's to lower */
+	snprintf(err + len, errlen - len, "; give the lights less with --light-budget (e.g. 1,0.5)");
+	return 2;
 }
 
 int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct lx_scene *scene,
