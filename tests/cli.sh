@@ -317,5 +317,29 @@ printf 'light spot 0 0.3 0 at 0 0 -3 fov 40\nsphere radius 0.5 at 0 0 bounce 0 0
 ext --scene "$tmp/inside.scene" && grep -q 'the light is inside the bounds of caster 1' "$tmp/ext.json" && ok ||
   no "a spotlight inside a caster: $(cat "$tmp/ext.json" "$tmp/stderr")"
 
+# Several lights: each light's figures in the JSON, all measured against the reference;
+# their bad input is one line and exit status 2, nothing written.
+ext --scene twolights && below "$(json_num colour_error "$tmp/ext.json")" 0.5 &&
+  grep -q '"lights": \[{"kind": "point".*{"kind": "spot"' "$tmp/ext.json" &&
+  below "$(grep -o '"mismatch_pct": [-0-9.e+]*' "$tmp/ext.json" | head -n 1 | cut -d' ' -f2)" 0.5 && ok ||
+  no "--scene twolights: $(cat "$tmp/ext.json" "$tmp/stderr")"
+grep -q '"mismatch_pct"' "$tmp/ext.json" || no "twolights JSON has no mismatch"
+{ for x in 1 2 3 4 5; do echo "light point $x 5 0"; done; echo "$floor"; } >"$tmp/five.scene"
+expect_says "five.scene:5: expected at most 4 light lines" "five lights" render --scene "$tmp/five.scene" $out
+{ for x in 1 2 3 4; do echo "light point $x 5 2 color 0.25 0.25 0.25"; done; grep -v '^light' tests/data/default.scene; } \
+  >"$tmp/four.scene"
+expect_says "give the lights less with --light-budget" "four plane lights at full budget" \
+  render --scene "$tmp/four.scene" --method plane $out
+ext --scene "$tmp/four.scene" --method plane --light-budget 1,0.5 && below "$(json_num mismatch_pct "$tmp/ext.json")" 0.5 &&
+  [ "$(grep -o '"kind": "point"' "$tmp/ext.json" | wc -l)" -eq 4 ] && ok ||
+  no "four plane lights with --light-budget 1,0.5: $(cat "$tmp/ext.json" "$tmp/stderr")"
+for v in 0 1,2 half 1,,1 1,0.5,0.5,0.5,0.5 0.001; do
+  expect_says "1 to 4 shares from 0.01 to 1" "--light-budget $v" render --scene twolights --light-budget "$v" $out
+done
+expect_says "1 to 4 shares" "bench --light-budget" bench --light-budget 2 --frames 1 --methods none
+expect_says "light-budget" "kiosk --light-budget" kiosk --light-budget 0 --frames 1
+expect_says "lightsN (1 <= N <= 4)" "a method spec of 5 lights" render --method uniform/lights5 $out
+expect_says "lightsN (1 <= N <= 4)" "a method spec of 0 lights" render --method plane/lights0 $out
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

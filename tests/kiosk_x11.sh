@@ -256,5 +256,11 @@ st=$?
 st=$?
 [ "$st" -eq 2 ] && [ ! -e "$tmp/snap2.png" ] && grep -q -- '--snapshot: expected --frames N' "$tmp/out" && ok ||
   no "kiosk --snapshot without --frames: exit status $st: $(cat "$tmp/out")"
+# 10. two lights on x11, each with its own maps and pass: the start line names both, and
+#     the run writes its snapshot (test_render checks the passes' sum against the reference)
+"$lixel" kiosk --platform x11 --size 320x240 --scene twolights --frames 10 --snapshot "$tmp/two.png" >"$tmp/out" 2>&1
+st=$?
+[ "$st" -eq 0 ] && grep -q '; lights point, spot$' "$tmp/out" && [ -s "$tmp/two.png" ] && ok ||
+  no "kiosk --scene twolights: exit status $st: $(cat "$tmp/out")"
 echo "kiosk: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

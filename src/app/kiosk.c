@@ -306,11 +306,16 @@ static int kiosk_methods(struct kiosk *k)
 		}
 	}
 	const struct lx_gl_caps *c = &k->caps;
+	char lights[64] = ""; /* "point", or "point, spot" */
+	for (int i = 0; i < lx_scene_light_count(&k->scene); i++)
+		snprintf(lights + strlen(lights), sizeof lights - strlen(lights), "%s%s", i ? ", " : "",
+			 lx_light_kind_name(&k->scene.lights[i]));
 	printf("lixel kiosk: GL_VENDOR %s, GL_RENDERER %s, GL_VERSION %s; %s %dx%d; fragment precision %s (%d bits); "
-	       "depth %s, self-test %s; board %s; light %s\n",
+	       "depth %s, self-test %s; board %s; light%s %s\n",
 	       c->vendor, c->renderer, c->version, k->plat->name, k->plat->width, k->plat->height,
 	       c->fragment_highp ? "highp" : "mediump", c->fragment_highp ? c->fragment_highp_bits : c->fragment_mediump_bits,
-	       k->runs[0].depth.path, k->runs[0].depth.selftest, b->name, lx_light_kind_name(&k->scene.light));
+	       k->runs[0].depth.path, k->runs[0].depth.selftest, b->name, lx_scene_light_count(&k->scene) > 1 ? "s" : "",
+	       lights);
 	if (k->runs[0].depth.warning[0])
 		printf("lixel kiosk: warning: %s\n", k->runs[0].depth.warning);
 	return 0;
