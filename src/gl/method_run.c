@@ -97,22 +97,30 @@ static void build_maps(struct lx_method_run *mr, const struct lx_frame *f)
 	}
 }
 
-static void shadow_passes(struct lx_method_run *mr)
-{
+/* The lights' frames and maps as the renderer takes them. */
+struct light_lists {
 	const struct lx_frame *frames[LX_MAX_LIGHTS];
 	const struct lx_shadow_result *results[LX_MAX_LIGHTS];
+};
+
+static struct light_lists light_lists(const struct lx_method_run *mr)
+{
+	struct light_lists l;
 	for (int i = 0; i < mr->light_count; i++)
-		frames[i] = &mr->lights[i].frame, results[i] = &mr->lights[i].result;
-	lx_renderer_shadow_passes(mr->renderer, frames, results, mr->light_count);
+		l.frames[i] = &mr->lights[i].frame, l.results[i] = &mr->lights[i].result;
+	return l;
+}
+
+static void shadow_passes(struct lx_method_run *mr)
+{
+	struct light_lists l = light_lists(mr);
+	lx_renderer_shadow_passes(mr->renderer, l.frames, l.results, mr->light_count);
 }
 
 static void main_passes(struct lx_method_run *mr)
 {
-	const struct lx_frame *frames[LX_MAX_LIGHTS];
-	const struct lx_shadow_result *results[LX_MAX_LIGHTS];
-	for (int i = 0; i < mr->light_count; i++)
-		frames[i] = &mr->lights[i].frame, results[i] = &mr->lights[i].result;
-	lx_renderer_main_pass(mr->renderer, frames, results, mr->light_count);
+	struct light_lists l = light_lists(mr);
+	lx_renderer_main_pass(mr->renderer, l.frames, l.results, mr->light_count);
 }
 
 void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t)

@@ -814,16 +814,45 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 	}
 }
 
+static bool boxes_meet(vec3 a0, vec3 a1, vec3 b0, vec3 b1)
+{
+	return a0.x <= b1.x && b0.x <= a1.x && a0.y <= b1.y && b0.y <= a1.y && a0.z <= b1.z && b0.z <= a1.z;
+}
+
+/* The window rectangle holding the box's image, a pixel wider each way; false when some
+ * corner lies at or behind the eye plane (then it may cover anything) or the box is empty. */
+static bool box_on_screen(const struct lx_frame *f, vec3 lo, vec3 hi, int rect[4])
+{
+	if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z))
+		return false;
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	for (int k = 0; k < 8; k++) {
+		vec4 q = m4_mul_point(&f->view.view_proj, v3_box_corner(lo, hi, k));
+		if (!(q.w > 1e-9 * fabs(q.z) + 1e-300))
+			return false;
+		double x = (q.x / q.w * 0.5 + 0.5) * f->view.width, y = (q.y / q.w * 0.5 + 0.5) * f->view.height;
+		x0 = fmin(x0, x), y0 = fmin(y0, y), x1 = fmax(x1, x), y1 = fmax(y1, y);
+	}
+	rect[0] = (int)fmax(0, floor(x0) - 1), rect[1] = (int)fmax(0, floor(y0) - 1);
+	rect[2] = (int)fmin(f->view.width, ceil(x1) + 1), rect[3] = (int)fmin(f->view.height, ceil(y1) + 1);
+	return true;
+}
+
 /* The frame's draws, casters first (the planes' pixels behind them then fail the depth
  * test before their shading), each object cut by where a shadow can fall on it; the
  * planes' pieces and the casters' facing-sorted indices uploaded. Returns the count. */
-static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
+static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+		       bool lit_only)
 {
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
-	for (int k = 0; k < r->objects; k++)
-		n = object_draws(r, f, res, (k + r->d.scene->plane_count) % r->objects, r->draws, n);
+	for (int k = 0; k < r->objects; k++) {
+		int id = (k + r->d.scene->plane_count) % r->objects;
+		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
+			continue; /* the light reaches none of it */
+		n = object_draws(r, f, res, id, r->draws, n);
+	}
 	if (r->piece_vertices > 0) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
@@ -928,9 +957,11 @@ static void use_program(const struct lx_renderer *r, const struct main_program *
 }
 
 /* The target's state for a pass: cleared for the first light and a decision; an added
- * light blended on (ONE, ONE) over the depth the first left, pulled a little nearer (its
- * planes' pieces are cut elsewhere than the first light's, so their depths may differ in
- * the last bit), writing no depth. */
+ * light blended on (ONE, ONE) over the depth the first left, writing no depth, pulled 4
+ * depth units nearer: its planes' pieces are cut elsewhere than the first light's, so
+ * their depths differ in the last bits (with no offset 2883 of plane's 76800 pixels lost
+ * the second light at 320x240). No slope factor: it let a face seen edge-on pull the face
+ * behind it through as well, and both added their light (a bright seam along the box). */
 static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 {
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
@@ -945,7 +976,7 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 		lx_gl.DepthFunc(GL_LEQUAL);
 		lx_gl.DepthMask(GL_FALSE);
 		lx_gl.Enable(GL_POLYGON_OFFSET_FILL);
-		lx_gl.PolygonOffset(-1.0f, -4.0f);
+		lx_gl.PolygonOffset(0.0f, -4.0f);
 		return;
 	}
 	lx_gl.Disable(GL_BLEND);
@@ -957,6 +988,18 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 	else
 		lx_gl.ClearColor(0.08f, 0.09f, 0.11f, 1);
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+/* After a light's pass: back to the state every other pass expects. */
+static void light_pass_done(enum pass_kind kind)
+{
+	if (kind != ADDED_LIGHT)
+		return;
+	lx_gl.Disable(GL_BLEND);
+	lx_gl.DepthMask(GL_TRUE);
+	lx_gl.Disable(GL_POLYGON_OFFSET_FILL);
+	lx_gl.DepthFunc(GL_LESS);
+	lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
 /* One light's pass of the main pass. */
@@ -974,6 +1017,18 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	map_uniforms(r, r->d.lights[f->light_index].atlas, res, u.tex, u.region, u.clamp);
 	beam_uniforms(r, f, &u);
 	bool projective = kind != DECISION && u.beam_tex != 0; /* the decision needs only the shadow test */
+	/* an added projective light lights only inside its frustum (the lit box): nothing of
+	 * its pass need be drawn outside the box's image, nor any object outside the box */
+	bool lit_only = kind == ADDED_LIGHT && projective;
+	int rect[4];
+	if (lit_only && !(f->lit_min.x <= f->lit_max.x)) {
+		light_pass_done(kind); /* it reaches nothing in view */
+		return;
+	}
+	if (lit_only && box_on_screen(f, f->lit_min, f->lit_max, rect)) {
+		lx_gl.Enable(GL_SCISSOR_TEST);
+		lx_gl.Scissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+	}
 	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
 	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
@@ -981,7 +1036,7 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.ActiveTexture(GL_TEXTURE0);
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	}
-	int n = frame_draws(r, f, res);
+	int n = frame_draws(r, f, res, lit_only);
 	/* a program set up whenever the maps read change */
 	struct main_program *p = NULL;
 	unsigned current = 0;
@@ -994,12 +1049,7 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		}
 		issue_draw(r, f, p, d);
 	}
-	if (kind == ADDED_LIGHT) { /* back to the state every other pass expects */
-		lx_gl.Disable(GL_BLEND);
-		lx_gl.DepthMask(GL_TRUE);
-		lx_gl.Disable(GL_POLYGON_OFFSET_FILL);
-		lx_gl.DepthFunc(GL_LESS);
-	}
+	light_pass_done(kind);
 }
 
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
