@@ -6,6 +6,7 @@
 #include "method_run.h"
 #include "platform.h"
 #include "reference.h"
+#include "renderer.h"
 #include "test_util.h"
 #include <math.h>
 #include <stdio.h>
@@ -245,6 +246,115 @@ static void random_extremes_warn_or_match(void **state)
 	pixels_free(&px);
 }
 
+/* One light of a two-light frame against its reference: a NaN-free report, and without a
+ * warning a mismatch under 1% (but for the method none, which shadows nothing). Returns
+ * whether it warned. */
+static bool light_warns_or_matches(struct lx_method_run *run, int l, const struct pixels *px, const uint8_t *ref_sh,
+				   const char *what)
+{
+	const struct lx_light_maps *lm = &run->lights[l];
+	lx_method_run_decision(run, &lm->frame, px->rgba, px->obj, px->sh);
+	struct lx_mismatch mm;
+	struct lx_plane_report planes[LX_MAX_PLANES];
+	struct lx_shadow_result res = lm->result;
+	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, &mm, planes);
+	lx_sampling_warnings(planes, lm->frame.scene->plane_count, lx_atlas_lixels(&lm->atlas), &res);
+	if (!finite_report(&res, &mm, planes, lm->frame.scene->plane_count))
+		fail_msg("%s, light %d: a NaN or infinity in the matrices or the report", what, l + 1);
+	if (res.warning_count || !strcmp(run->method->name, "none"))
+		return true;
+	if (!(mm.mismatch_pct < 1.0))
+		fail_msg("%s, light %d: mismatch %.3f%% with no warning", what, l + 1, mm.mismatch_pct);
+	return false;
+}
+
+/* Two lights at the extremes: the first an extreme light as above, the second a spotlight
+ * [Segal] of an extreme kind with a random aim (so that its additive pass is cut to its
+ * lit box even when that box reaches behind the eye or misses the view). Each light warns
+ * or matches its own reference; when the first is a plain light the summed frame is shaded
+ * too, and off the reference's sum by under two levels on average (colour_error) where
+ * neither light warns. */
+static void two_extreme_lights_warn_or_match(void **state)
+{
+	(void)state;
+	char err[512];
+	struct pixels px = pixels_new();
+	uint8_t *ref_sh2 = malloc((size_t)W * H), *ref_rgba = malloc((size_t)W * H * 4);
+	assert_true(ref_sh2 && ref_rgba);
+	uint64_t rs = 20261201;
+	long frames = 0, warned = 0, shaded = 0;
+	double worst_colour = 0;
+	static const double scales[] = {1e-4, 1e-2, 1, 1e2, 1e4};
+	for (int g = 0; g < 6; g++) { /* every scale, both scenes; each config sets up its runs */
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(g % 2 ? "table" : "twolights", &base));
+		double k = scales[g % 5];
+		base.lights[1] = lx_scene_light_count(&base) > 1 ? base.lights[1] : base.light;
+		base.light_count = 2;
+		(void)as_spotlight(&base, 1, "", &rs); /* the table's second light a spotlight too */
+		base.lights[1] = base.light.projective ? base.light : base.lights[1];
+		base.light = lx_light_white(v3(2.5, 6, 3));
+		lx_scene_scale(&base, k);
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		for (int c = 0; c < 2; c++) {
+			struct lx_scene sc = base, second = base;
+			const char *kind = extreme(&sc, k, &rs);
+			(void)extreme(&second, k, &rs);
+			second.light = second.light.directional ? base.lights[1] : second.light;
+			if (as_spotlight(&second, k, "", &rs)[0])
+				sc.lights[1] = second.light;
+			struct lx_frame frame, f2;
+			mat4 look;
+			if (!m4_look_at(sc.camera.eye, sc.camera.at, sc.camera.up, &look) ||
+			    !lx_frame_setup(&frame, &sc, &meshes, 10 * uniform01(&rs), W, H, err, sizeof err))
+				continue; /* the command line refuses it with exit status 2 */
+			lx_frame_for_light(&frame, 1, &f2);
+			char what[160];
+			snprintf(what, sizeof what, "scale %g, %s, a spotlight at %g %g %g aimed at %g %g %g", k, kind,
+				 sc.lights[1].position.x, sc.lights[1].position.y, sc.lights[1].position.z, sc.lights[1].at.x,
+				 sc.lights[1].at.y, sc.lights[1].at.z);
+			for (int m = 0; m < NM; m++) {
+				struct lx_method_run run;
+				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				if (lx_method_run_init(&run, methods[m], &sc, &meshes, &caps, &o, W, H, LX_DEPTH_AUTO,
+						       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+					fail_msg("%s: %s: %s", what, methods[m], err);
+				lx_method_run_draw(&run, &frame);
+				const struct lx_frame *fr[2] = {&run.lights[0].frame, &run.lights[1].frame};
+				const struct lx_image *im[2] = {NULL, run.lights[1].image.rgba ? &run.lights[1].image : NULL};
+				uint8_t *sh[2] = {px.ref_sh, ref_sh2};
+				bool plain = !sc.light.projective;
+				assert_true(lx_reference_lights(fr, im, 2, px.ref_obj, sh, plain ? ref_rgba : NULL, 2));
+				if (plain) {
+					lx_renderer_read(run.renderer, px.rgba);
+					double colour = lx_colour_error(px.rgba, ref_rgba, (long)W * H);
+					assert_true(isfinite(colour));
+					bool quiet_frame = !run.lights[0].result.warning_count && !run.lights[1].result.warning_count;
+					if (quiet_frame && strcmp(methods[m], "none")) {
+						shaded++;
+						worst_colour = fmax(worst_colour, colour);
+						if (!(colour < 2.0))
+							fail_msg("%s, %s: colour_error %.3f levels with no warning", what, methods[m], colour);
+					}
+				}
+				char who[400];
+				snprintf(who, sizeof who, "%s, %s (eye %.9g %.9g %.9g at %.9g %.9g %.9g)", what, methods[m], sc.camera.eye.x,
+					 sc.camera.eye.y, sc.camera.eye.z, sc.camera.at.x, sc.camera.at.y, sc.camera.at.z);
+				for (int l = 0; l < 2; l++, frames++)
+					warned += light_warns_or_matches(&run, l, &px, sh[l], who);
+				lx_method_run_free(&run);
+			}
+		}
+		lx_meshes_free(&meshes);
+	}
+	print_message("two lights: %ld light-frames, %ld with a warning; %ld shaded frames compared, worst colour_error "
+		      "%.3f levels\n", frames, warned, shaded, worst_colour);
+	assert_true(frames > 100 && shaded > 10);
+	free(ref_sh2), free(ref_rgba);
+	pixels_free(&px);
+}
+
 /* One scene at 1e-4, 1 and 1e4 metres: the same decisions, pixel for pixel but for a
  * few where rounding falls the other way (at most 0.1% of the image). */
 static void scale_changes_nothing(void **state)
@@ -300,6 +410,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(scale_changes_nothing),
 		cmocka_unit_test(random_extremes_warn_or_match),
+		cmocka_unit_test(two_extreme_lights_warn_or_match),
 	};
 	return cmocka_run_group_tests(tests, group_setup, group_teardown);
 }

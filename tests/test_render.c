@@ -239,14 +239,17 @@ static void two_lights_case(const struct lx_scene *two, const char *name, const 
 		if (k == 0)
 			wrong = r.mismatch.false_shadow + r.mismatch.missing_shadow + r.mismatch.silhouette;
 		if (k == 0) {
+			/* each light warns or matches: a light the method warns about (PSM's spotlight
+			 * behind the eye: "one lixel spans 187 pixels") keeps only the edge bound */
 			for (int l = 0; l < 2 && strcmp(name, "none"); l++)
-				check_light(&r, two, l, name, dist, strcmp(name, "psm") ? 0.5 : 2.0, reach);
+				check_light(&r, two, l, name, dist,
+					    r.light[l].result.warning_count ? INFINITY : strcmp(name, "psm") ? 0.5 : 2.0, reach);
 			struct lx_mismatch sum = r.light[0].mismatch;
 			lx_mismatch_add(&sum, &r.light[1].mismatch);
 			assert_int_equal(r.mismatch.compared, sum.compared);
 			assert_int_equal(r.mismatch.false_shadow + r.mismatch.missing_shadow, sum.false_shadow + sum.missing_shadow);
 			print_message("two lights %-7s colour_error %.4f levels\n", name, r.colour_error);
-			if (strcmp(name, "none"))
+			if (strcmp(name, "none") && !r.light[0].result.warning_count && !r.light[1].result.warning_count)
 				assert_true(r.colour_error < 0.5);
 			lx_render_report_free(&r);
 		}
@@ -287,8 +290,10 @@ static void two_lights_case(const struct lx_scene *two, const char *name, const 
  * (colour_error under half a level), and the first light's pass untouched by the second:
  * the scene drawn with /lights1 is the scene of the first light alone, pixel for pixel,
  * and the second light only ever adds (it never darkens a channel, and it brightens the
- * pixels it reaches). Twice: the built-in scene's wide spotlight, and a narrow one whose
- * pass is drawn only over its lit box's image (a cut that must lose no lit pixel). */
+ * pixels it reaches). Three times: the built-in scene's wide spotlight; a narrow one whose
+ * pass is drawn only over its lit box's image (a cut that must lose no lit pixel); and a
+ * spotlight behind the eye, lighting the floor around it, whose lit box reaches behind
+ * the eye (no cut can be made from its corners then). */
 static void two_lights_add_up(void **state)
 {
 	(void)state;
@@ -301,9 +306,14 @@ static void two_lights_add_up(void **state)
 	narrow = wide;
 	struct lx_light *spot = &narrow.lights[1];
 	spot->position = v3(-1, 4.5, 1), spot->at = v3(-1, 0, 0), spot->fov_deg = 25, spot->range_far = 0;
+	struct lx_scene behind = wide;
+	behind.camera.eye = v3(0, 1.5, 2.5), behind.camera.at = v3(0, 0.8, -5);
+	spot = &behind.lights[1];
+	spot->position = v3(0.5, 4, 6), spot->at = v3(0, 0, 1), spot->fov_deg = 60, spot->range_far = 0;
 	for (int m = 0; m < lx_shadow_method_count(); m++) {
 		two_lights_case(&wide, lx_shadow_method_at(m)->name, dir, dist, 1.0 / 8);
 		two_lights_case(&narrow, lx_shadow_method_at(m)->name, dir, dist, 1.0 / 100);
+		two_lights_case(&behind, lx_shadow_method_at(m)->name, dir, dist, 1.0 / 8);
 	}
 	rmdir(dir);
 	free(dist);
