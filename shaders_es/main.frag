@@ -30,9 +30,14 @@ precision mediump float;
 uniform vec3 u_color;
 uniform float u_object_id;
 // Lights add up pass by pass [Segal]: the first light's pass has the ambient term, each
-// later one's adds only its own light (u_ambient 0), blended ONE, ONE.
+// later one's (LX_AMBIENT 0.0) adds only its own light, blended ONE, ONE. A light that is
+// not white (LX_LIGHT_COLOR) and a projective one scale theirs by u_light_color.
+#ifndef LX_AMBIENT
+#define LX_AMBIENT 0.22
+#endif
+#if defined(LX_LIGHT_COLOR) || defined(LX_PROJECTIVE)
 uniform vec3 u_light_color;
-uniform float u_ambient;
+#endif
 #if LX_MAPS > 0
 uniform sampler2D u_atlas;
 uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
@@ -161,10 +166,12 @@ void main()
 #endif
 #else
 	float lambert = max(dot(normalize(v_normal), normalize(v_to_light)), 0.0);
-#ifdef LX_PROJECTIVE
-	vec3 c = u_color * (u_ambient + 0.78 * lambert * (1.0 - shadowed) * projected_light());
+#if defined(LX_PROJECTIVE)
+	vec3 c = u_color * (LX_AMBIENT + 0.78 * lambert * (1.0 - shadowed) * projected_light());
+#elif defined(LX_LIGHT_COLOR)
+	vec3 c = u_color * (LX_AMBIENT + 0.78 * lambert * (1.0 - shadowed) * u_light_color);
 #else
-	vec3 c = u_color * (u_ambient + 0.78 * lambert * (1.0 - shadowed) * u_light_color);
+	vec3 c = u_color * (LX_AMBIENT + 0.78 * lambert * (1.0 - shadowed));
 #endif
 	gl_FragColor = vec4(c, 1.0);
 #endif
