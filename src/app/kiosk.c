@@ -229,6 +229,9 @@ static int kiosk_parse(int argc, char **argv, struct kiosk_args *k)
 	return 0;
 }
 
+/* The overlay's lines at most: the method, the frame rate, and the planes' figures. */
+#define KIOSK_LINES (2 + 2 * LX_MAX_PLANES)
+
 /* The running kiosk: its display, scene, one set-up run per method, the button, the
  * overlay and the figures of the last status window. */
 struct kiosk {
@@ -242,8 +245,8 @@ struct kiosk {
 	struct lx_gpio_button *gpio;
 	struct lx_button button;
 	struct lx_overlay *ov;
-	char text[2 + LX_MAX_PLANES][96];
-	const char *lines[2 + LX_MAX_PLANES];
+	char text[KIOSK_LINES][96];
+	const char *lines[KIOSK_LINES];
 	int nlines;
 	int64_t start, text_time, window_start;
 	double fps;
@@ -366,12 +369,16 @@ static void kiosk_overlay(struct kiosk *k, int64_t t)
 		char name[40];
 		snprintf(k->text[k->nlines++], sizeof k->text[0], "lixel  %s", shown(k, name, sizeof name));
 		snprintf(k->text[k->nlines++], sizeof k->text[0], "%.1f fps", k->fps);
-		for (int p = 0; p < k->scene.plane_count && k->nlines < 2 + LX_MAX_PLANES; p++) {
+		/* each light's planes, as long as the lines last (lx_method_run keeps each light's frame) */
+		for (int i = 0; i < run->light_count * k->scene.plane_count && k->nlines < KIOSK_LINES; i++) {
+			const struct lx_light_maps *lm = &run->lights[i / k->scene.plane_count];
+			int p = i % k->scene.plane_count;
 			struct lx_plane_sampling ps;
-			char name[LX_NAME_MAX]; /* a copy: the text and the scene share *k */
-			memcpy(name, k->scene.planes[p].name, sizeof name);
-			/* the first light's maps (lx_method_run keeps each light's frame) */
-			const struct lx_light_maps *lm = &run->lights[0];
+			char name[LX_NAME_MAX + 8]; /* a copy: the text and the scene share *k */
+			if (run->light_count > 1) /* "light2 floor": light 2's figures on the floor (the font has no capitals) */
+				snprintf(name, sizeof name, "light%d %s", i / k->scene.plane_count + 1, k->scene.planes[p].name);
+			else
+				snprintf(name, sizeof name, "%s", k->scene.planes[p].name);
 			if (lx_plane_sampling_sparse(&lm->frame, &lm->atlas, &lm->result, p, 16, &ps))
 				snprintf(k->text[k->nlines++], sizeof k->text[0], "%s  lpp %.2f  m %.2f  aniso %.2f", name,
 					 ps.lpp_median, ps.m_max, ps.aniso_max);
