@@ -71,16 +71,40 @@ static bool resolve(const struct lx_board *b, char *path, size_t plen, unsigned 
 	return idx >= 0;
 }
 
-/* What both APIs do first: the chip's path and the line's offset, and the button's
- * memory (size bytes, zeroed). NULL after err. */
-static void *open_prelude(const struct lx_board *board, char *path, size_t plen, unsigned *offset, size_t size,
-			  char *err, size_t errlen)
+/* The button: its chip and line, and the line as the API holds it (a v2 request and its
+ * event buffer, or a v1 line). */
+struct lx_gpio_button {
+	struct gpiod_chip *chip;
+	unsigned int offset;
+#ifdef LX_GPIOD_V2
+	struct gpiod_line_request *request;
+	struct gpiod_edge_event_buffer *buffer;
+#else
+	struct gpiod_line *line;
+#endif
+};
+
+/* What both APIs' open starts with: the board's line resolved to a chip's path and an
+ * offset, and that chip opened by its path (both APIs open chips alike). NULL after err. */
+static struct lx_gpio_button *open_prelude(const struct lx_board *board, char *path, size_t plen, char *err,
+					   size_t errlen)
 {
-	if (!resolve(board, path, plen, offset, err, errlen))
+	unsigned offset;
+	if (!resolve(board, path, plen, &offset, err, errlen))
 		return NULL;
-	void *g = calloc(1, size);
-	if (!g)
+	struct lx_gpio_button *g = calloc(1, sizeof(*g));
+	if (!g) {
 		snprintf(err, errlen, "gpio: out of memory");
+		return NULL;
+	}
+	g->offset = offset;
+	errno = 0;
+	g->chip = gpiod_chip_open(path);
+	if (!g->chip) {
+		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, errno ? strerror(errno) : "no such chip");
+		free(g);
+		return NULL;
+	}
 	return g;
 }
 
@@ -112,31 +136,15 @@ static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char
 	return true;
 }
 
-struct lx_gpio_button {
-	struct gpiod_chip *chip;
-	struct gpiod_line_request *request;
-	struct gpiod_edge_event_buffer *buffer;
-	unsigned int offset;
-};
-
 bool lx_gpio_button_kernel_debounce(void) { return true; }
 const char *lx_gpio_button_api(void) { return "libgpiod 2 (v2 API, kernel debounce)"; }
 
 struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
 {
 	char path[272];
-	unsigned offset;
-	/* v2 opens chips by path only */
-	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, &offset, sizeof(*g), err, errlen);
+	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, err, errlen);
 	if (!g)
 		return NULL;
-	g->offset = offset;
-	g->chip = gpiod_chip_open(path);
-	if (!g->chip) {
-		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, strerror(errno));
-		free(g);
-		return NULL;
-	}
 	struct gpiod_line_settings *s = gpiod_line_settings_new();
 	struct gpiod_line_config *lc = gpiod_line_config_new();
 	struct gpiod_request_config *rc = gpiod_request_config_new();
@@ -216,34 +224,22 @@ static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char
 	return true;
 }
 
-struct lx_gpio_button {
-	struct gpiod_chip *chip;
-	struct gpiod_line *line;
-};
-
 bool lx_gpio_button_kernel_debounce(void) { return false; }
 const char *lx_gpio_button_api(void) { return "libgpiod 1 (v1 API, software debounce)"; }
 
 struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
 {
 	char path[272];
-	unsigned offset;
-	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, &offset, sizeof(*g), err, errlen);
+	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, err, errlen);
 	if (!g)
 		return NULL;
-	g->chip = gpiod_chip_open(path);
-	if (!g->chip) {
-		snprintf(err, errlen, "gpio: cannot open chip %s: %s", path, errno ? strerror(errno) : "no such chip");
-		free(g);
-		return NULL;
-	}
-	g->line = gpiod_chip_get_line(g->chip, offset);
+	g->line = gpiod_chip_get_line(g->chip, g->offset);
 	static const int bias[] = {0, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
 				   GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE};
 	struct gpiod_line_request_config cfg = {.consumer = "lixel", .request_type = GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES,
 						.flags = bias[board->bias]};
 	if (!g->line || gpiod_line_request(g->line, &cfg, 0) != 0) {
-		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", offset, path, strerror(errno));
+		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(errno));
 		gpiod_chip_close(g->chip);
 		free(g);
 		return NULL;
