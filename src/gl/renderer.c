@@ -122,13 +122,11 @@ static bool main_program(struct main_program *p, int maps, int shading, unsigned
 {
 	char defines[400];
 	lx_main_defines(maps, mask, shading == SHADING_DECISION, mediump, defines, sizeof defines);
-	int s = shading - 1; /* the decision needs only the shadow test */
-	if (shading != SHADING_DECISION && s & 4)
-		strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
-	if (shading != SHADING_DECISION && s & 2)
-		strncat(defines, "#define LX_AMBIENT 0.0\n", sizeof defines - strlen(defines) - 1);
-	if (shading != SHADING_DECISION && s & 1)
-		strncat(defines, "#define LX_LIGHT_COLOR 1\n", sizeof defines - strlen(defines) - 1);
+	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
+						      "#define LX_PROJECTIVE 1\n"};
+	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
+		if ((shading - 1) >> bit & 1)
+			strncat(defines, shading_define[bit], sizeof defines - strlen(defines) - 1);
 	/* nothing for none: the text it always had */
 	strncat(defines, lx_filter_define(filter), sizeof defines - strlen(defines) - 1);
 	p->prog = lx_program_build("main.vert", "main.frag", defines, err, errlen);
@@ -371,7 +369,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	bool ok = true;
 	for (int i = 0; i < d->light_count && ok; i++)
 		ok = renderer_beam(r, i, err, errlen);
-	if (!ok || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) || !renderer_targets(r, err, errlen)) {
+	if (!ok || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) ||
+	    !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
 		return NULL;
 	}
@@ -466,13 +465,18 @@ static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const 
 static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f,
 			  const struct lx_shadow_result *const *res, int n)
 {
+	const struct lx_atlas *atlas[LX_MAX_LIGHTS * LX_MAX_MAPS];
+	const struct lx_region *region[LX_MAX_LIGHTS * LX_MAX_MAPS];
+	int nr = 0;
 	double covered = 0;
 	for (int i = 0; i < n; i++) {
 		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
 		for (int m = 0; m < res[i]->map_count; m++) {
 			const struct lx_region *g = &a->regions[res[i]->maps[m].region];
-			if (res[i]->maps[m].rendered && g->w >= 1 && g->h >= 1)
-				covered += (double)(g->w + 2 * a->guard) * (g->h + 2 * a->guard);
+			if (!res[i]->maps[m].rendered || g->w < 1 || g->h < 1)
+				continue;
+			atlas[nr] = a, region[nr++] = g;
+			covered += (double)(g->w + 2 * a->guard) * (g->h + 2 * a->guard);
 		}
 	}
 	if (r->d.caps->tiler || r->d.clear_whole_atlas || 2 * covered >= (double)r->texture_width * r->texture_height) {
@@ -485,14 +489,8 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
 	lx_gl.DepthFunc(GL_ALWAYS);
 	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
 	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
-	for (int i = 0; i < n; i++) {
-		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
-		for (int m = 0; m < res[i]->map_count; m++) {
-			const struct lx_region *g = &a->regions[res[i]->maps[m].region];
-			if (res[i]->maps[m].rendered && g->w >= 1 && g->h >= 1)
-				clear_region(r, a, g);
-		}
-	}
+	for (int k = 0; k < nr; k++)
+		clear_region(r, atlas[k], region[k]);
 }
 
 /* The casters map m of a light can see, inside its region. */
@@ -813,13 +811,12 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 			region[m][2] = region[m][3] = -1;
 			continue;
 		}
-		/* region clip space -> atlas texture space: tex = o + s * clip */
-		double sx = 0.5 * g->w / tw, ox = (g->x + 0.5 * g->w) / tw;
-		double sy = 0.5 * g->h / th, oy = (g->y + 0.5 * g->h) / th;
-		region[m][0] = (float)(ox + sx * map->bounds[0]);
-		region[m][1] = (float)(oy + sy * map->bounds[1]);
-		region[m][2] = (float)(ox + sx * map->bounds[2]);
-		region[m][3] = (float)(oy + sy * map->bounds[3]);
+		double st[4]; /* region clip space -> atlas texture space */
+		lx_region_to_texture(atlas, map->region, st);
+		region[m][0] = (float)(st[1] + st[0] * map->bounds[0]);
+		region[m][1] = (float)(st[3] + st[2] * map->bounds[1]);
+		region[m][2] = (float)(st[1] + st[0] * map->bounds[2]);
+		region[m][3] = (float)(st[3] + st[2] * map->bounds[3]);
 	}
 }
 
@@ -855,7 +852,8 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 {
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
-	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r), &r->lookup); /* also for all: the same pieces */
+	/* also for all: the same pieces */
+	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r), &r->lookup);
 	for (int k = 0; k < r->objects; k++) {
 		int id = (k + r->d.scene->plane_count) % r->objects;
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -964,7 +962,8 @@ static void use_program(const struct lx_renderer *r, const struct main_program *
 	}
 }
 
-/* The target's state for a pass: cleared for the first light and a decision; an added
+/* The target's state for a pass: cleared for the first light and a decision (the state
+ * every pass leaves: no blending, depth LESS and written, no offset); an added
  * light blended on (ONE, ONE) over the depth the first left, writing no depth, pulled 4
  * depth units nearer: its planes' pieces are cut elsewhere than the first light's, so
  * their depths differ in the last bits (with no offset 2883 of plane's 76800 pixels lost
@@ -987,10 +986,6 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 		lx_gl.PolygonOffset(0.0f, -4.0f);
 		return;
 	}
-	lx_gl.Disable(GL_BLEND);
-	lx_gl.DepthFunc(GL_LESS);
-	lx_gl.DepthMask(GL_TRUE);
-	lx_gl.Disable(GL_POLYGON_OFFSET_FILL);
 	if (kind == DECISION)
 		lx_gl.ClearColor(0, 0, 0, 1);
 	else
@@ -998,7 +993,8 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-/* After a light's pass: back to the state every other pass expects. */
+/* After a light's pass: back to the state every other pass expects (and the first
+ * light's pass and a decision take as it is). */
 static void light_pass_done(enum pass_kind kind)
 {
 	if (kind != ADDED_LIGHT)

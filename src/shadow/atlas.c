@@ -429,6 +429,14 @@ long lx_atlas_placed(const struct lx_atlas *atlas)
 	return s;
 }
 
+void lx_region_to_texture(const struct lx_atlas *atlas, int region, double m[4])
+{
+	const struct lx_region *g = &atlas->regions[region];
+	double tw = atlas->texture_width, th = atlas->texture_height; /* >= 1 once laid out */
+	m[0] = 0.5 * g->w / tw, m[1] = (g->x + 0.5 * g->w) / tw;
+	m[2] = 0.5 * g->h / th, m[3] = (g->y + 0.5 * g->h) / th;
+}
+
 double lx_atlas_fill(const struct lx_atlas *atlas)
 {
 	/* of the atlas's own area, not the shared texture: each light's use of its part */

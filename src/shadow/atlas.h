@@ -83,6 +83,10 @@ const struct lx_region *lx_atlas_find(const struct lx_atlas *atlas, const char *
 /* The total budget: the most lixels a frame's regions hold together (sum of counted). */
 long lx_atlas_lixels(const struct lx_atlas *atlas);
 long lx_atlas_placed(const struct lx_atlas *atlas);  /* lixels of this frame's regions */
-double lx_atlas_fill(const struct lx_atlas *atlas);  /* placed lixels / the atlas's own width x height */
+double lx_atlas_fill(const struct lx_atlas *atlas);  /* placed lixels / texture texels */
+/* Region clip space -> the texture's s, t: s = m[1] + m[0] x, t = m[3] + m[2] y for x, y
+ * in [-1, 1] over the region (its place is absolute in the texture every light's atlas
+ * shares). */
+void lx_region_to_texture(const struct lx_atlas *atlas, int region, double m[4]);
 
 #endif

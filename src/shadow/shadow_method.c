@@ -283,14 +283,10 @@ void lx_shadow_warn(struct lx_shadow_result *r, const char *fmt, ...)
 
 mat4 lx_shadow_texture_matrix(const struct lx_atlas *atlas, int region, const mat4 *light_clip)
 {
-	const struct lx_region *g = &atlas->regions[region];
+	double st[4];
+	lx_region_to_texture(atlas, region, st);
 	mat4 s = m4_identity();
-	/* the region's place is absolute in the texture, shared by every light's atlas (>= 1
-	 * a side once laid out) */
-	s.m[0] = 0.5 * g->w / atlas->texture_width;
-	s.m[12] = (g->x + 0.5 * g->w) / atlas->texture_width;
-	s.m[5] = 0.5 * g->h / atlas->texture_height;
-	s.m[13] = (g->y + 0.5 * g->h) / atlas->texture_height;
+	s.m[0] = st[0], s.m[12] = st[1], s.m[5] = st[2], s.m[13] = st[3];
 	s.m[10] = 0.5;
 	s.m[14] = 0.5;
 	return m4_mul(&s, light_clip);
