@@ -20,28 +20,46 @@ static int tallest_first(const struct lx_atlas *a, int *order)
 	return n;
 }
 
-/* Next-fit shelf packing of the n regions in order, shelves at most shelf_width wide, from
- * the atlas's origin; gives the extent used (guards included), relative to the origin. */
-static void pack_shelves(struct lx_atlas *a, const int *order, int n, int shelf_width, int *width, int *height)
+/* Next-fit shelves of the n rectangles w x h in order, shelves at most shelf_width wide,
+ * gap between them and around them: x[i], y[i] for each, and the extent used. The
+ * regions of an atlas (gap: its guard) and the atlases of a texture (gap 0) are both
+ * packed so. */
+static void shelves(const int *w, const int *h, const int *order, int n, int gap, long shelf_width, int *x, int *y,
+		    int *width, int *height)
 {
-	int g = a->guard, x = g, y = g, shelf_h = 0;
+	int cx = gap, cy = gap, shelf_h = 0;
 	*width = 0;
-	for (int i = 0; i < n; i++) {
-		struct lx_region *r = &a->regions[order[i]];
-		if (x + r->w + g > shelf_width && x > g) {
-			y += shelf_h + g;
-			x = g;
+	for (int k = 0; k < n; k++) {
+		int i = order[k];
+		if (cx + w[i] + gap > shelf_width && cx > gap) {
+			cy += shelf_h + gap;
+			cx = gap;
 			shelf_h = 0;
 		}
-		r->x = a->x0 + x;
-		r->y = a->y0 + y;
-		x += r->w + g;
-		if (x > *width)
-			*width = x;
-		if (r->h > shelf_h)
-			shelf_h = r->h;
+		x[i] = cx;
+		y[i] = cy;
+		cx += w[i] + gap;
+		if (cx > *width)
+			*width = cx;
+		if (h[i] > shelf_h)
+			shelf_h = h[i];
 	}
-	*height = y + shelf_h + g;
+	*height = cy + shelf_h + gap;
+}
+
+/* The n regions in order packed in shelves from the atlas's origin; gives the extent used
+ * (guards included), relative to the origin. */
+static void pack_shelves(struct lx_atlas *a, const int *order, int n, int shelf_width, int *width, int *height)
+{
+	int w[LX_ATLAS_MAX_REGIONS], h[LX_ATLAS_MAX_REGIONS], x[LX_ATLAS_MAX_REGIONS], y[LX_ATLAS_MAX_REGIONS];
+	for (int i = 0; i < a->count; i++)
+		w[i] = a->regions[i].w, h[i] = a->regions[i].h;
+	shelves(w, h, order, n, a->guard, shelf_width, x, y, width, height);
+	for (int k = 0; k < n; k++) {
+		struct lx_region *r = &a->regions[order[k]];
+		r->x = a->x0 + x[order[k]];
+		r->y = a->y0 + y[order[k]];
+	}
 }
 
 /* The fixed-size layout: every prefix sum of widths as a shelf width, smallest area wins. */
@@ -286,30 +304,6 @@ struct stack_plan {
 	int width, height;
 };
 
-/* Next-fit shelves of the parts in order, at most shelf_width wide (as pack_shelves, with
- * no guard: each part keeps its regions' guards inside its own area). */
-static void stack_shelves(const int *w, const int *h, const int *order, int n, long shelf_width, int *x, int *y,
-			  int *width, int *height)
-{
-	int cx = 0, cy = 0, shelf_h = 0;
-	*width = 0;
-	for (int k = 0; k < n; k++) {
-		int i = order[k];
-		if (cx + w[i] > shelf_width && cx > 0) {
-			cy += shelf_h;
-			cx = shelf_h = 0;
-		}
-		x[i] = cx;
-		y[i] = cy;
-		cx += w[i];
-		if (cx > *width)
-			*width = cx;
-		if (h[i] > shelf_h)
-			shelf_h = h[i];
-	}
-	*height = cy + shelf_h;
-}
-
 /* The smallest texture (then the squarest, then the first tried) of a few arrangements:
  * shelves of the parts tallest first, every shelf width from the widest part's to all in
  * one row; then the same a quarter turned (columns, widest first, up to all in one
@@ -336,9 +330,9 @@ static bool best_stack(const int *pw, const int *ph, int n, int cap, struct stac
 				continue;
 			struct stack_plan p;
 			if (turn)
-				stack_shelves(w, h, order, n, shelf_width, p.y, p.x, &p.height, &p.width);
+				shelves(w, h, order, n, 0, shelf_width, p.y, p.x, &p.height, &p.width);
 			else
-				stack_shelves(w, h, order, n, shelf_width, p.x, p.y, &p.width, &p.height);
+				shelves(w, h, order, n, 0, shelf_width, p.x, p.y, &p.width, &p.height);
 			if (p.width > cap || p.height > cap)
 				continue;
 			long area = (long)p.width * p.height;
