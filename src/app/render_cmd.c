@@ -92,13 +92,14 @@ static bool writable_path(const char *opt, const char *path)
 	return false;
 }
 
-/* A warning as printed: with several lights, prefixed by the light it is about. */
+/* A warning as printed: with several lights, prefixed by the light it is about (a frame's
+ * note about the light, "light: ...", becoming "light 2: ..."). */
 static void light_warning(const struct lx_render_report *r, int l, const char *w, char *out, size_t room)
 {
-	if (r->light_count > 1 && strncmp(w, "light ", 6))
-		snprintf(out, room, "light %d: %s", l + 1, w);
-	else
+	if (r->light_count < 2)
 		snprintf(out, room, "%s", w);
+	else
+		snprintf(out, room, "light %d: %s", l + 1, strncmp(w, "light: ", 7) ? w : w + 7);
 }
 
 /* The name of the map serving a plane's figures. */

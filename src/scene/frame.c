@@ -6,20 +6,13 @@
 #include <stdio.h>
 #include <string.h>
 
-/* A note; about a light, in a scene of several, it names which ("light 2: ..."). */
 static void note(struct lx_frame *f, const char *fmt, ...)
 {
 	if (f->note_count == LX_FRAME_NOTES)
 		return;
-	char *o = f->notes[f->note_count++];
-	size_t room = sizeof f->notes[0], n = 0;
-	if (lx_scene_light_count(f->scene) > 1 && !strncmp(fmt, "light: ", 7)) {
-		n = (size_t)snprintf(o, room, "light %d: ", f->light_index + 1);
-		fmt += 7;
-	}
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(o + n, room - n, fmt, ap);
+	vsnprintf(f->notes[f->note_count++], sizeof f->notes[0], fmt, ap);
 	va_end(ap);
 }
 
