@@ -26,8 +26,6 @@ struct lx_raycaster {
 	int depth;    /* the deepest node's depth */
 };
 
-static vec3 vmin(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
-static vec3 vmax(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 
 static vec3 centroid(const struct tri *t) { return v3_add(t->a, v3_scale(v3_add(t->e1, t->e2), 1.0 / 3)); }
 
@@ -46,11 +44,11 @@ static int build(struct lx_raycaster *rc, int first, int count, int depth)
 	for (int i = first; i < first + count; i++) {
 		const struct tri *t = &rc->tris[i];
 		vec3 b = v3_add(t->a, t->e1), c = v3_add(t->a, t->e2);
-		n->lo = vmin(n->lo, vmin(t->a, vmin(b, c)));
-		n->hi = vmax(n->hi, vmax(t->a, vmax(b, c)));
+		n->lo = v3_min(n->lo, v3_min(t->a, v3_min(b, c)));
+		n->hi = v3_max(n->hi, v3_max(t->a, v3_max(b, c)));
 		vec3 m = centroid(t);
-		clo = vmin(clo, m);
-		chi = vmax(chi, m);
+		clo = v3_min(clo, m);
+		chi = v3_max(chi, m);
 	}
 	if (count <= 4 || depth >= LX_BVH_MAX_DEPTH) {
 		n->first = first;
@@ -263,7 +261,7 @@ bool lx_raycast_near(const struct lx_raycaster *rc, vec3 a, vec3 b, double r, in
 			const struct tri *t = &rc->tris[i];
 			vec3 p1 = v3_add(t->a, t->e1), p2 = v3_add(t->a, t->e2);
 			if (t->object != skip_object &&
-			    segment_meets_box(a, inv, vmin(t->a, vmin(p1, p2)), vmax(t->a, vmax(p1, p2)), r))
+			    segment_meets_box(a, inv, v3_min(t->a, v3_min(p1, p2)), v3_max(t->a, v3_max(p1, p2)), r))
 				return true;
 		}
 	}

@@ -55,8 +55,7 @@ static unsigned long long view_box(struct lx_frame *f, double aspect)
 	for (int id = 0; id < f->object_count; id++)
 		if (box_in_view(&f->view, aspect, f->bmin[id], f->bmax[id])) {
 			in_view |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
-			lo = v3(fmin(lo.x, f->bmin[id].x), fmin(lo.y, f->bmin[id].y), fmin(lo.z, f->bmin[id].z));
-			hi = v3(fmax(hi.x, f->bmax[id].x), fmax(hi.y, f->bmax[id].y), fmax(hi.z, f->bmax[id].z));
+			lo = v3_min(lo, f->bmin[id]), hi = v3_max(hi, f->bmax[id]);
 		}
 	if (!(lo.x <= hi.x))
 		lo = f->scene_min, hi = f->scene_max;
@@ -110,8 +109,7 @@ static void lit_box(struct lx_frame *f)
 	int n = lx_frustum_box_points(fc, f->view_min, f->view_max, pts, LX_CONVEX_MAX_POINTS);
 	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
 	for (int i = 0; i < n; i++) {
-		lo = v3(fmin(lo.x, pts[i].x), fmin(lo.y, pts[i].y), fmin(lo.z, pts[i].z));
-		hi = v3(fmax(hi.x, pts[i].x), fmax(hi.y, pts[i].y), fmax(hi.z, pts[i].z));
+		lo = v3_min(lo, pts[i]), hi = v3_max(hi, pts[i]);
 	}
 	f->lit_min = lo, f->lit_max = hi; /* n == 0: an empty box, lo > hi */
 }
@@ -131,10 +129,7 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		f->offset[id] = o;
 		f->bmin[id] = v3_add(m->mesh[id].bmin, o);
 		f->bmax[id] = v3_add(m->mesh[id].bmax, o);
-		f->scene_min = v3(fmin(f->scene_min.x, f->bmin[id].x), fmin(f->scene_min.y, f->bmin[id].y),
-				  fmin(f->scene_min.z, f->bmin[id].z));
-		f->scene_max = v3(fmax(f->scene_max.x, f->bmax[id].x), fmax(f->scene_max.y, f->bmax[id].y),
-				  fmax(f->scene_max.z, f->bmax[id].z));
+		f->scene_min = v3_min(f->scene_min, f->bmin[id]), f->scene_max = v3_max(f->scene_max, f->bmax[id]);
 	}
 	struct lx_view *v = &f->view;
 	v->width = width;

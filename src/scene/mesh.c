@@ -126,8 +126,7 @@ static bool finish(struct builder *b, struct lx_mesh *m)
 	m->bmax = v3(-INFINITY, -INFINITY, -INFINITY);
 	for (int i = 0; i < b->count; i++) {
 		const float *p = m->v + (size_t)i * LX_VERTEX_FLOATS;
-		m->bmin = v3(fmin(m->bmin.x, p[0]), fmin(m->bmin.y, p[1]), fmin(m->bmin.z, p[2]));
-		m->bmax = v3(fmax(m->bmax.x, p[0]), fmax(m->bmax.y, p[1]), fmax(m->bmax.z, p[2]));
+		m->bmin = v3_min(m->bmin, v3(p[0], p[1], p[2])), m->bmax = v3_max(m->bmax, v3(p[0], p[1], p[2]));
 	}
 	return true;
 }
