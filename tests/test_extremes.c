@@ -81,33 +81,32 @@ static const char *extreme(struct lx_scene *sc, double k, uint64_t *rs)
 	double u = uniform01(rs), v = uniform01(rs);
 	switch (kind) {
 	case 0:
-		sc->light = (struct lx_light){.position = on_plane(pl, u, v), .direction = v3(0, -1, 0)};
+		sc->light = lx_light_white(on_plane(pl, u, v));
 		return "light on a plane";
 	case 1:
-		sc->light = (struct lx_light){.position = v3_add(on_plane(pl, u, v), v3_scale(n, k * pow(10, -3 - 9 * uniform01(rs)))),
-					      .direction = v3(0, -1, 0)};
+		sc->light = lx_light_white(v3_add(on_plane(pl, u, v), v3_scale(n, k * pow(10, -3 - 9 * uniform01(rs)))));
 		return "light near a plane";
 	case 2: {
 		vec3 d = v3(cos(6.283 * u), -pow(10, -1 - 7 * v), sin(6.283 * u));
 		v3_normalize(d, &d);
-		sc->light = (struct lx_light){.directional = true, .direction = d};
+		sc->light = lx_light_white(v3(0, 0, 0)), sc->light.directional = true, sc->light.direction = d;
 		return "grazing directional light";
 	}
 	case 3: {
 		vec3 d = v3(u - 0.5, 0.2 + v, uniform01(rs) - 0.5);
 		v3_normalize(d, &d);
-		sc->light = (struct lx_light){.directional = true, .direction = d};
+		sc->light = lx_light_white(v3(0, 0, 0)), sc->light.directional = true, sc->light.direction = d;
 		return "directional light from below";
 	}
 	case 4: {
 		vec3 d = v3(u - 0.5, v, uniform01(rs) - 0.5);
 		v3_normalize(d, &d);
-		sc->light = (struct lx_light){.position = v3_scale(d, k * pow(10, 3 + 11 * uniform01(rs))), .direction = v3(0, -1, 0)};
+		sc->light = lx_light_white(v3_scale(d, k * pow(10, 3 + 11 * uniform01(rs))));
 		return "far point light";
 	}
 	case 5: {
 		const struct lx_caster *c = &sc->casters[(int)(u * sc->caster_count) % sc->caster_count];
-		sc->light = (struct lx_light){.position = v3(c->x, c->low + 0.5 * c->size.y, c->z), .direction = v3(0, -1, 0)};
+		sc->light = lx_light_white(v3(c->x, c->low + 0.5 * c->size.y, c->z));
 		return "light inside a caster";
 	}
 	case 6:
@@ -119,8 +118,7 @@ static const char *extreme(struct lx_scene *sc, double k, uint64_t *rs)
 		sc->camera.at = v3_add(sc->camera.eye, pl->edge2);
 		return "eye a hair off a plane, looking along it";
 	default:
-		sc->light = (struct lx_light){.position = v3(k * (8 * u - 4), k * (6 * v - 1), k * (8 * uniform01(rs) - 4)),
-					      .direction = v3(0, -1, 0)};
+		sc->light = lx_light_white(v3(k * (8 * u - 4), k * (6 * v - 1), k * (8 * uniform01(rs) - 4)));
 		return "random point light";
 	}
 }
@@ -130,22 +128,40 @@ static const char *extreme(struct lx_scene *sc, double k, uint64_t *rs)
  * maps then cover only what the light's frustum reaches, and the pixels it does not reach
  * are not compared. Their decisions are what the frame's geometry gives; the renderer
  * needs no beam image for them. */
-static const char *as_spotlight(struct lx_scene *sc, double k, const char *kind, uint64_t *rs)
+static bool aim_spotlight(struct lx_light *light, double k, uint64_t *rs)
 {
-	static char name[96];
-	struct lx_light l = sc->light;
+	struct lx_light l = *light;
 	l.projective = LX_LIGHT_SPOT, l.aspect = 1, l.fov_deg = 2 + 146 * uniform01(rs);
 	l.at = v3(k * (8 * uniform01(rs) - 4), k * 2 * uniform01(rs), k * (8 * uniform01(rs) - 4));
-	vec3 axis;
-	l.up = v3_normalize(v3_sub(l.at, l.position), &axis) && fabs(axis.y) > 0.9999 ? v3(0, 0, -1) : v3(0, 1, 0);
+	l.up = lx_light_default_up(l.position, l.at);
 	if (uniform01(rs) < 0.3)
 		l.range_near = k * 2 * uniform01(rs), l.range_far = l.range_near + k * (0.5 + 8 * uniform01(rs));
 	mat4 m;
 	if (!m4_look_at(l.position, l.at, l.up, &m))
-		return kind; /* aimed at itself: stays a point light */
-	sc->light = l;
-	snprintf(name, sizeof name, "%s, as a spotlight (fov %.0f)", kind, l.fov_deg);
+		return false; /* aimed at itself: stays as it was */
+	*light = l;
+	return true;
+}
+
+static const char *as_spotlight(struct lx_scene *sc, double k, const char *kind, uint64_t *rs)
+{
+	static char name[96];
+	if (!aim_spotlight(&sc->light, k, rs))
+		return kind;
+	snprintf(name, sizeof name, "%s, as a spotlight (fov %.0f)", kind, sc->light.fov_deg);
 	return name;
+}
+
+/* Every method set up for the scene, one run each. */
+static void runs_init(struct lx_method_run *run, const struct lx_scene *s, const struct lx_scene_meshes *meshes)
+{
+	char err[512];
+	for (int m = 0; m < NM; m++) {
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		if (lx_method_run_init(&run[m], methods[m], s, meshes, &caps, &o, W, H, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES,
+				       false, err, sizeof err))
+			fail_msg("%s: %s", methods[m], err);
+	}
 }
 
 static bool finite_report(const struct lx_shadow_result *res, const struct lx_mismatch *mm,
@@ -187,12 +203,7 @@ static void random_extremes_warn_or_match(void **state)
 		struct lx_scene_meshes meshes = {0};
 		assert_true(lx_meshes_build(&base, &meshes));
 		struct lx_method_run run[NM_MAX];
-		for (int m = 0; m < NM; m++) {
-			struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-			if (lx_method_run_init(&run[m], methods[m], &base, &meshes, &caps, &o, W, H, LX_DEPTH_AUTO,
-					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
-				fail_msg("%s: %s", methods[m], err);
-		}
+		runs_init(run, &base, &meshes);
 		for (int c = 0; c < per_group; c++, configs++) {
 			struct lx_scene sc = base;
 			const char *kind = extreme(&sc, k, &rs);
@@ -210,7 +221,7 @@ static void random_extremes_warn_or_match(void **state)
 			assert_true(lx_reference_image(&frame, px.ref_obj, px.ref_sh, 2));
 			for (int m = 0; m < NM; m++) {
 				lx_method_run_shadows(&run[m], &frame); /* the decision needs no shaded frame */
-				lx_method_run_decision(&run[m], &frame, px.rgba, px.obj, px.sh);
+				lx_method_run_decision(&run[m], 0, px.rgba, px.obj, px.sh);
 				struct lx_mismatch mm;
 				struct lx_plane_report planes[LX_MAX_PLANES];
 				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &mm, planes);
@@ -252,8 +263,9 @@ static void random_extremes_warn_or_match(void **state)
 static bool light_warns_or_matches(struct lx_method_run *run, int l, const struct pixels *px, const uint8_t *ref_sh,
 				   const char *what)
 {
+	ref_sh += (size_t)l * W * H; /* every light's, light after light */
 	const struct lx_light_maps *lm = &run->lights[l];
-	lx_method_run_decision(run, &lm->frame, px->rgba, px->obj, px->sh);
+	lx_method_run_decision(run, l, px->rgba, px->obj, px->sh);
 	struct lx_mismatch mm;
 	struct lx_plane_report planes[LX_MAX_PLANES];
 	struct lx_shadow_result res = lm->result;
@@ -279,41 +291,33 @@ static void two_extreme_lights_warn_or_match(void **state)
 	(void)state;
 	char err[512];
 	struct pixels px = pixels_new();
-	uint8_t *ref_sh2 = malloc((size_t)W * H), *ref_rgba = malloc((size_t)W * H * 4);
-	assert_true(ref_sh2 && ref_rgba);
+	uint8_t *ref_sh = malloc((size_t)W * H * 2), *ref_rgba = malloc((size_t)W * H * 4);
+	assert_true(ref_sh && ref_rgba);
+	struct lx_scene two;
+	assert_true(lx_scene_builtin("twolights", &two));
 	uint64_t rs = 20261201;
 	long frames = 0, warned = 0, shaded = 0;
 	double worst_colour = 0;
 	static const double scales[] = {1e-4, 1e-2, 1, 1e2, 1e4};
 	for (int g = 0; g < 6; g++) { /* every scale, both scenes; each config sets up its runs */
 		struct lx_scene base;
-		assert_true(lx_scene_builtin(g % 2 ? "table" : "twolights", &base));
+		assert_true(lx_scene_builtin(g % 2 ? "table" : "default", &base));
 		double k = scales[g % 5];
-		base.lights[1] = lx_scene_light_count(&base) > 1 ? base.lights[1] : base.light;
-		base.light_count = 2;
-		(void)as_spotlight(&base, 1, "", &rs); /* the table's second light a spotlight too */
-		base.lights[1] = base.light.projective ? base.light : base.lights[1];
-		base.light = lx_light_white(v3(2.5, 6, 3));
+		base.lights[1] = two.lights[1], base.light_count = 2; /* a white light and the built-in spotlight */
 		lx_scene_scale(&base, k);
 		struct lx_scene_meshes meshes = {0};
 		assert_true(lx_meshes_build(&base, &meshes));
 		/* set up once per group: the configurations move the lights, not their kinds (the
 		 * first stays plain, the second a spotlight, whose round beam is made here) */
 		struct lx_method_run run[NM_MAX];
-		for (int m = 0; m < NM; m++) {
-			struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-			if (lx_method_run_init(&run[m], methods[m], &base, &meshes, &caps, &o, W, H, LX_DEPTH_AUTO,
-					       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
-				fail_msg("%s: %s", methods[m], err);
-		}
+		runs_init(run, &base, &meshes);
 		for (int c = 0; c < 2; c++) {
 			struct lx_scene sc = base, second = base;
 			const char *kind = extreme(&sc, k, &rs);
-			sc.light.color = v3(1, 1, 1); /* extreme() leaves it black: decisions were all it was for */
-			(void)extreme(&second, k, &rs);
-			second.light = second.light.directional ? base.lights[1] : second.light;
-			if (as_spotlight(&second, k, "", &rs)[0])
-				sc.lights[1] = second.light;
+			(void)extreme(&second, k, &rs); /* the second light where an extreme one would be */
+			struct lx_light spot = second.light.directional ? base.lights[1] : second.light;
+			if (aim_spotlight(&spot, k, &rs))
+				sc.lights[1] = spot;
 			struct lx_frame frame;
 			mat4 look;
 			if (!m4_look_at(sc.camera.eye, sc.camera.at, sc.camera.up, &look) ||
@@ -326,10 +330,7 @@ static void two_extreme_lights_warn_or_match(void **state)
 				 sc.lights[1].position.z, sc.lights[1].at.x, sc.lights[1].at.y, sc.lights[1].at.z);
 			for (int m = 0; m < NM; m++) {
 				lx_method_run_draw(&run[m], &frame);
-				const struct lx_frame *fr[2] = {&run[m].lights[0].frame, &run[m].lights[1].frame};
-				const struct lx_image *im[2] = {NULL, &run[m].lights[1].image};
-				uint8_t *sh[2] = {px.ref_sh, ref_sh2};
-				assert_true(lx_reference_lights(fr, im, 2, px.ref_obj, sh, ref_rgba, 2));
+				assert_true(lx_method_run_reference(&run[m], px.ref_obj, ref_sh, ref_rgba, 2));
 				lx_renderer_read(run[m].renderer, px.rgba);
 				double colour = lx_colour_error(px.rgba, ref_rgba, (long)W * H);
 				assert_true(isfinite(colour));
@@ -343,7 +344,7 @@ static void two_extreme_lights_warn_or_match(void **state)
 				char who[440];
 				snprintf(who, sizeof who, "%s, %s", what, methods[m]);
 				for (int l = 0; l < 2; l++, frames++)
-					warned += light_warns_or_matches(&run[m], l, &px, sh[l], who);
+					warned += light_warns_or_matches(&run[m], l, &px, ref_sh, who);
 			}
 		}
 		for (int m = 0; m < NM; m++)
@@ -353,7 +354,7 @@ static void two_extreme_lights_warn_or_match(void **state)
 	print_message("two lights: %ld light-frames, %ld with a warning; %ld shaded frames compared, worst colour_error "
 		      "%.3f levels\n", frames, warned, shaded, worst_colour);
 	assert_true(frames > 100 && shaded > 10);
-	free(ref_sh2), free(ref_rgba);
+	free(ref_sh), free(ref_rgba);
 	pixels_free(&px);
 }
 
@@ -384,7 +385,7 @@ static void scale_changes_nothing(void **state)
 			struct lx_frame frame;
 			assert_true(lx_frame_setup(&frame, &sc, &meshes, 0.4, w, h, err, sizeof err));
 			lx_method_run_shadows(&run, &frame);
-			lx_method_run_decision(&run, &frame, rgba, obj[i > 0], sh[i > 0]);
+			lx_method_run_decision(&run, 0, rgba, obj[i > 0], sh[i > 0]);
 			for (int k = 0; k < run.lights[0].result.warning_count; k++)
 				print_message("%s at scale %g: warning: %s\n", methods[m], scales[i], run.lights[0].result.warnings[k]);
 			lx_method_run_free(&run);

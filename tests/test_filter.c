@@ -37,7 +37,7 @@ static void golden_line(struct lx_method_run *run, const struct lx_frame *frame,
 	lx_method_run_frame(run, frame, &t);
 	lx_renderer_read(run->renderer, rgba);
 	uint64_t shaded = fnv1a(0xcbf29ce484222325ull, rgba, (size_t)GW * GH * 4);
-	lx_method_run_decision(run, frame, rgba, obj, sh);
+	lx_method_run_decision(run, 0, rgba, obj, sh);
 	uint64_t decision = fnv1a(0xcbf29ce484222325ull, rgba, (size_t)GW * GH * 4);
 	snprintf(line, len, "%s %016llx %016llx\n", what, (unsigned long long)shaded, (unsigned long long)decision);
 }
@@ -247,7 +247,7 @@ static double check_run(struct lx_method_run *run, const struct lx_frame *f, str
 {
 	long n = (long)f->view.width * f->view.height;
 	lx_method_run_shadows(run, f);
-	lx_method_run_decision(run, f, px->rgba, px->obj, px->sh);
+	lx_method_run_decision(run, 0, px->rgba, px->obj, px->sh);
 	lx_decision_visibility(px->rgba, n, run->filter, px->vis);
 	int reach = (int)fmin(ceil(worst_m(f, run, px)) + 2, 250);
 	edge_distance(px, f->view.width, f->view.height, reach + 1);
@@ -409,12 +409,12 @@ static void filters_stay_in_their_region(void **state)
 				assert_true(lx_frame_setup(&f, &scene, &meshes, 0.4, w, h, err, sizeof err));
 				assert_int_equal(lx_method_run_set_filter(&run, (enum lx_filter)k, err, sizeof err), 0);
 				lx_method_run_shadows(&run, &f);
-				lx_method_run_decision(&run, &f, before, obj, sh);
+				lx_method_run_decision(&run, 0, before, obj, sh);
 				for (int ring = 0; ring < 2; ring++) {
 					lx_renderer_read_atlas(run.renderer, tex);
 					long painted = paint_near(&run, tex, ring);
 					lx_renderer_write_atlas(run.renderer, tex);
-					lx_method_run_decision(&run, &f, after, obj, sh);
+					lx_method_run_decision(&run, 0, after, obj, sh);
 					long d = differ(before, after, (long)w * h);
 					if (ring)
 						control += d;
@@ -476,7 +476,7 @@ static void filters_lookup_where_shadows_fall(void **state)
 						for (int k = 0; k < 2; k++) {
 							assert_int_equal(lx_method_run_set_filter(&run[k], (enum lx_filter)fl, err, sizeof err), 0);
 							lx_method_run_shadows(&run[k], &f);
-							looked[k] += lx_method_run_decision(&run[k], &f, rgba[k], obj, sh);
+							looked[k] += lx_method_run_decision(&run[k], 0, rgba[k], obj, sh);
 						}
 						long d = differ(rgba[0], rgba[1], (long)w * h);
 						if (d)

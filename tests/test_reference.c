@@ -103,16 +103,22 @@ static void bvh_depth_cap_loses_nothing(void **state)
 	lx_meshes_free(&m);
 }
 
+/* The default scene's frame at time 0, w x h. */
+static void default_frame(struct lx_scene *s, struct lx_scene_meshes *m, struct lx_frame *f, int w, int h)
+{
+	char err[256];
+	lx_scene_default(s);
+	assert_true(lx_meshes_build(s, m));
+	assert_true(lx_frame_setup(f, s, m, 0, w, h, err, sizeof err));
+}
+
 static void reference_image_is_deterministic_across_threads(void **state)
 {
 	(void)state;
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	char err[256];
-	lx_scene_default(&s);
-	assert_true(lx_meshes_build(&s, &m));
-	assert_true(lx_frame_setup(&f, &s, &m, 0, 96, 72, err, sizeof err));
+	default_frame(&s, &m, &f, 96, 72);
 	long n = 96 * 72;
 	int16_t *o1 = malloc(n * sizeof(int16_t)), *o2 = malloc(n * sizeof(int16_t));
 	uint8_t *s1 = malloc(n), *s2 = malloc(n);
@@ -179,9 +185,7 @@ static void plane_homography_matches_projection(void **state)
 	struct lx_scene_meshes m;
 	struct lx_frame f;
 	char err[256];
-	lx_scene_default(&s);
-	assert_true(lx_meshes_build(&s, &m));
-	assert_true(lx_frame_setup(&f, &s, &m, 0, 200, 150, err, sizeof err));
+	default_frame(&s, &m, &f, 200, 150);
 	struct lx_region_request req[] = {{"m", 300, 200, 0, false}};
 	struct lx_atlas atlas;
 	assert_true(lx_atlas_layout(&atlas, req, 1, 1, 2048, err, sizeof err));
@@ -299,10 +303,7 @@ static void soft_image_is_deterministic_and_bounded(void **state)
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	char err[256];
-	lx_scene_default(&s);
-	assert_true(lx_meshes_build(&s, &m));
-	assert_true(lx_frame_setup(&f, &s, &m, 0, 96, 72, err, sizeof err));
+	default_frame(&s, &m, &f, 96, 72);
 	long n = 96 * 72, between = 0;
 	float *a = malloc(n * sizeof(float)), *b = malloc(n * sizeof(float));
 	int16_t *o = malloc(n * sizeof(int16_t));

@@ -266,7 +266,7 @@ static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_m
 	for (int l = 0; l < run->light_count; l++) {
 		const struct lx_light_maps *lm = &run->lights[l];
 		size_t o = (size_t)l * n;
-		looked += lx_method_run_decision(run, &lm->frame, px->rgba, px->obj, px->sh);
+		looked += lx_method_run_decision(run, l, px->rgba, px->obj, px->sh);
 		lx_decision_visibility(px->rgba, n, run->filter, px->vis);
 		struct lx_mismatch mm;
 		struct lx_plane_report planes[LX_MAX_PLANES];

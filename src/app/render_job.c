@@ -60,11 +60,12 @@ static void mismatch_colors(const int16_t *ref_object, const uint8_t *ref_shadow
 	}
 }
 
-/* The atlas texture as a picture, every light's part: depth codes as grey levels (far
- * white), guard bands red. atlas[l] is light l's part; they share one texture. */
-static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, int lights, const char *path, char *err,
+/* The atlas texture as a picture, every light's part (the report's, as the last frame
+ * laid them out): depth codes as grey levels (far white), guard bands red. */
+static bool write_atlas(struct lx_renderer *r, const struct lx_render_report *rep, const char *path, char *err,
 			size_t errlen)
 {
+	const struct lx_atlas *atlas = &rep->light[0].atlas; /* the parts share its texture */
 	size_t n = (size_t)atlas->texture_width * atlas->texture_height;
 	uint8_t *tex = malloc(n * 4);
 	if (!tex) {
@@ -79,9 +80,9 @@ static bool write_atlas(struct lx_renderer *r, const struct lx_atlas *atlas, int
 		/* outside every region (the guard bands): red, to show the layout */
 		int x = (int)(i % (size_t)atlas->texture_width), y = (int)(i / (size_t)atlas->texture_width);
 		bool inside = false;
-		for (int l = 0; l < lights; l++)
-			for (int k = 0; k < atlas[l].count; k++) {
-				const struct lx_region *g2 = &atlas[l].regions[k];
+		for (int l = 0; l < rep->light_count; l++)
+			for (int k = 0; k < rep->light[l].atlas.count; k++) {
+				const struct lx_region *g2 = &rep->light[l].atlas.regions[k];
 				inside |= x >= g2->x && x < g2->x + g2->w && y >= g2->y && y < g2->y + g2->h;
 			}
 		if (!inside)
@@ -147,7 +148,7 @@ static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, st
 	rep->lookup_pct = 0;
 	for (int l = lights - 1; l >= 0; l--) { /* the first light last: its image stays in rgba */
 		uint8_t *shadow = rep->shadow + (size_t)l * n, *vis = rep->visibility + (size_t)l * n;
-		rep->light[l].lookup_pct = 100.0 * lx_method_run_decision(mr, &mr->lights[l].frame, rgba, rep->object, shadow) / n;
+		rep->light[l].lookup_pct = 100.0 * lx_method_run_decision(mr, l, rgba, rep->object, shadow) / n;
 		rep->lookup_pct += rep->light[l].lookup_pct / lights;
 		lx_decision_visibility(rgba, n, mr->filter, vis);
 	}
@@ -196,16 +197,8 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 	int lights = mr->light_count;
 	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
 	rep->ref_shadow = malloc((size_t)n * lights);
-	const struct lx_frame *frames[LX_MAX_LIGHTS];
-	const struct lx_image *images[LX_MAX_LIGHTS];
-	uint8_t *ref_shadow[LX_MAX_LIGHTS];
-	for (int l = 0; l < lights; l++) {
-		frames[l] = &mr->lights[l].frame;
-		images[l] = mr->lights[l].image.rgba ? &mr->lights[l].image : NULL;
-		ref_shadow[l] = rep->ref_shadow ? rep->ref_shadow + (size_t)l * n : NULL;
-	}
 	if (!rep->ref_object || !rep->ref_shadow ||
-	    !lx_reference_lights(frames, images, lights, rep->ref_object, ref_shadow, rgba, job->reference_threads)) {
+	    !lx_method_run_reference(mr, rep->ref_object, rep->ref_shadow, rgba, job->reference_threads)) {
 		snprintf(err, errlen, "out of memory for the reference image");
 		return false;
 	}
@@ -217,8 +210,8 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 	rep->mismatch = (struct lx_mismatch){0};
 	for (int l = 0; l < lights; l++) {
 		struct lx_light_report *lr = &rep->light[l];
-		lx_measure(frames[l], &lr->atlas, &lr->result, rep->ref_object, ref_shadow[l], rep->object,
-			   rep->shadow + (size_t)l * n, &lr->mismatch, lr->planes);
+		lx_measure(&mr->lights[l].frame, &lr->atlas, &lr->result, rep->ref_object, rep->ref_shadow + (size_t)l * n,
+			   rep->object, rep->shadow + (size_t)l * n, &lr->mismatch, lr->planes);
 		lx_sampling_warnings(lr->planes, rep->plane_count, lx_atlas_lixels(&lr->atlas), &lr->result);
 		lx_mismatch_add(&rep->mismatch, &lr->mismatch);
 	}
@@ -256,10 +249,7 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 		snprintf(err, errlen, "out of memory for a %dx%d image", job->width, job->height);
 	ok = ok && time_frames(job, &mr, frame, rep, rgba, err, errlen);
 	ok = ok && (!job->out_png || lx_png_write(job->out_png, rgba, job->width, job->height, err, errlen));
-	struct lx_atlas parts[LX_MAX_LIGHTS];
-	for (int l = 0; l < mr.light_count; l++)
-		parts[l] = rep->light[l].atlas;
-	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, parts, mr.light_count, job->atlas_png, err, errlen));
+	ok = ok && (!job->atlas_png || write_atlas(mr.renderer, rep, job->atlas_png, err, errlen));
 	/* the shaded frame, kept for the colour error (the decision pass reuses rgba) */
 	uint8_t *shaded = ok && job->measure ? malloc((size_t)job->width * job->height * 4) : NULL;
 	if (ok && job->measure && !shaded) {

@@ -1,5 +1,6 @@
 #include "method_run.h"
 #include "light_image.h"
+#include "reference.h"
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -150,11 +151,9 @@ void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f)
 	main_passes(mr);
 }
 
-long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
-			    uint8_t *shadow)
+long lx_method_run_decision(struct lx_method_run *mr, int light, uint8_t *rgba, int16_t *object, uint8_t *shadow)
 {
-	int light = f->light_index >= 0 && f->light_index < mr->light_count ? f->light_index : 0;
-	const struct lx_light_maps *lm = &mr->lights[light];
+	const struct lx_light_maps *lm = &mr->lights[light >= 0 && light < mr->light_count ? light : 0];
 	long lookups = 0;
 	lx_renderer_decision_pass(mr->renderer, &lm->frame, &lm->result);
 	lx_renderer_read(mr->renderer, rgba);
@@ -165,6 +164,20 @@ long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, 
 		lookups += rgba[i * 4 + 2] > 127;
 	}
 	return lookups;
+}
+
+bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, uint8_t *shadowed, uint8_t *rgba,
+			     int threads)
+{
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_image *images[LX_MAX_LIGHTS];
+	uint8_t *out[LX_MAX_LIGHTS];
+	for (int l = 0; l < mr->light_count; l++) {
+		frames[l] = &mr->lights[l].frame;
+		images[l] = mr->lights[l].image.rgba ? &mr->lights[l].image : NULL;
+		out[l] = shadowed + (size_t)l * mr->width * mr->height;
+	}
+	return lx_reference_lights(frames, images, mr->light_count, object, out, rgba, threads);
 }
 
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -67,12 +67,15 @@ void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
 /* The light matrices and the shadow passes only: all that lx_method_run_decision needs
  * (the tests that judge decisions skip the shaded main pass). */
 void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f);
-/* The main pass's shadow decision for the last frame's matrices of light
- * f->light_index (f: that light's frame, lx_frame_for_light): per pixel the visible
- * object (or LX_NO_OBJECT) and 1 where shadowed. rgba is scratch of width*height*4.
- * Returns how many pixels ran a shadow lookup. */
-long lx_method_run_decision(struct lx_method_run *mr, const struct lx_frame *f, uint8_t *rgba, int16_t *object,
-			    uint8_t *shadow);
+/* The main pass's shadow decision for the last frame's matrices of light `light` (0 to
+ * light_count - 1): per pixel the visible object (or LX_NO_OBJECT) and 1 where shadowed.
+ * rgba is scratch of width*height*4. Returns how many pixels ran a shadow lookup. */
+long lx_method_run_decision(struct lx_method_run *mr, int light, uint8_t *rgba, int16_t *object, uint8_t *shadow);
+/* The exact reference of the last frame for every light the run draws, with their frames
+ * and images (lx_reference_lights): shadowed holds light after light, width*height each;
+ * rgba (or NULL) the lights' shading summed. False as lx_reference_lights. */
+bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, uint8_t *shadowed, uint8_t *rgba,
+			     int threads);
 /* The visibility the shading used per pixel, 0 (in shadow) to 255 (lit), from the
  * decision image rgba that lx_method_run_decision left with filter `filter`: the
  * filtered variants write it in alpha, NEAREST's is 0 or 255 by the decision. */

@@ -55,6 +55,12 @@ struct lx_light lx_light_white(vec3 position)
 				 .aspect = 1};
 }
 
+vec3 lx_light_default_up(vec3 position, vec3 at)
+{
+	vec3 axis;
+	return v3_normalize(v3_sub(at, position), &axis) && fabs(axis.y) > 0.9999 ? v3(0, 0, -1) : v3(0, 1, 0);
+}
+
 void lx_scene_default(struct lx_scene *s)
 {
 	memset(s, 0, sizeof(*s));
@@ -315,10 +321,8 @@ static bool projective_options(struct parser *p, struct lx_light *l, const char 
 		return fail(p, "expected 'light %s X Y Z at X Y Z fov DEG ...'", kind);
 	if (l->projective == LX_LIGHT_PROJECTOR && l->image != LX_IMAGE_FILE)
 		return fail(p, "expected 'slide FILE.png' in a projector light");
-	vec3 axis;
-	/* without up: +y, unless the light looks straight up or down, then -z */
-	if (!up && v3_normalize(v3_sub(l->at, l->position), &axis) && fabs(axis.y) > 0.9999)
-		l->up = v3(0, 0, -1);
+	if (!up)
+		l->up = lx_light_default_up(l->position, l->at);
 	mat4 m;
 	if (!m4_look_at(l->position, l->at, l->up, &m))
 		return fail(p, "expected a %s light whose position differs from at and whose up is not along its axis",

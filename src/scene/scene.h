@@ -95,6 +95,8 @@ const char *lx_light_kind_name(const struct lx_light *l);
 /* A point light at position, white: what every light starts from, so that its colour is
  * (1, 1, 1) unless set. */
 struct lx_light lx_light_white(vec3 position);
+/* A projective light's up when none is given: +y, or -z when it looks straight up or down. */
+vec3 lx_light_default_up(vec3 position, vec3 at);
 /* The default scene under a spotlight (lixel's round beam), and lit by a projector
  * showing lixel's own slide. */
 void lx_scene_spotlight(struct lx_scene *s);
