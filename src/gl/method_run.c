@@ -25,7 +25,7 @@ static int light_maps(struct lx_method_run *mr, const struct lx_scene *scene, in
 		if (!lx_atlas_layout(&lm->atlas, req, nreq, 1, max_texture, err, errlen))
 			return 2; /* budgets this GL cannot hold: the input asks too much */
 		const struct lx_light *l = &scene->lights[i];
-		if (l->projective != LX_LIGHT_PLAIN && !lx_light_image_load(l, &lm->image, err, errlen))
+		if (!lx_light_image_load(l, &lm->image, err, errlen))
 			return 2; /* the scene names a file that is not a usable PNG */
 		parts[i] = &lm->atlas;
 	}

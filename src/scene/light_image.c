@@ -52,14 +52,8 @@ bool lx_light_image_load(const struct lx_light *l, struct lx_image *out, char *e
 {
 	memset(out, 0, sizeof *out);
 	char why[256];
-	if (l->projective == LX_LIGHT_PLAIN) {
-		out->rgba = malloc(4);
-		if (!out->rgba)
-			return snprintf(err, errlen, "out of memory"), false;
-		memset(out->rgba, 255, 4);
-		out->width = out->height = 1;
-		return true;
-	}
+	if (l->projective == LX_LIGHT_PLAIN)
+		return true; /* nothing to sample: its light is its colour */
 	if (l->image == LX_IMAGE_ROUND_BEAM) {
 		if (!round_beam(l, out))
 			return snprintf(err, errlen, "out of memory for the spotlight's beam"), false;

@@ -13,7 +13,7 @@
 
 /* The light's image, RGBA8, rows bottom to top (as GL takes them): the PNG it names, the
  * built-in slide, or the round beam made for its fov. False with one line in err (the
- * file and what is wrong with it). A plain light gets a 1x1 white image. */
+ * file and what is wrong with it). A plain light has none: *out stays empty (rgba NULL). */
 bool lx_light_image_load(const struct lx_light *l, struct lx_image *out, char *err, size_t errlen);
 /* World -> (s q, t q, d, q): s, t in [0, 1] across the image inside the light's frustum,
  * q = d the depth along its axis (positive in front); the frustum's aspect is l->aspect.
