@@ -71,18 +71,23 @@ static void shadows_fall_where_geometry_says(void **state)
 	lx_meshes_free(&m);
 }
 
-/* Boxes at x = 1, 2, 4, ... 2^31: the BVH's midpoint splits peel one box per level, past
- * LX_BVH_MAX_DEPTH; below the cap the leaves take the rest, and every box is still found
- * by a ray (the traversal once dropped nodes silently when its stack overflowed). */
+/* Boxes and spheres at x = 1, 16, 16^2, ... 16^31, each a third of its distance wide (so
+ * float vertices keep their shape): the BVH's splits over 16 bins peel one caster per
+ * level, past LX_BVH_MAX_DEPTH; below the cap the leaves take the rest, and every caster
+ * is still found by a ray (the traversal once dropped nodes silently when its stack
+ * overflowed). */
 static void bvh_depth_cap_loses_nothing(void **state)
 {
 	(void)state;
 	struct lx_scene s = {0};
 	s.light = (struct lx_light){.position = {0, 1e10, 0}};
 	s.camera = (struct lx_camera){.eye = v3(0, 1e10, 1e9), .at = v3(0, 0, 0), .up = v3(0, 1, 0), .fovy_deg = 60};
-	for (int k = 0; k < LX_MAX_CASTERS; k++)
-		s.casters[s.caster_count++] = (struct lx_caster){.shape = k % 2 ? LX_SPHERE : LX_BOX, .size = v3(0.3, 0.3, 0.3),
-								 .x = ldexp(1, k), .period = 1, .color = v3(1, 1, 1)};
+	for (int k = 0; k < LX_MAX_CASTERS; k++) {
+		double x = ldexp(1, 4 * k);
+		s.casters[s.caster_count++] = (struct lx_caster){.shape = k % 2 ? LX_SPHERE : LX_BOX,
+								 .size = v3(0.3 * x, 0.3 * x, 0.3 * x), .x = x, .period = 1,
+								 .color = v3(1, 1, 1)};
+	}
 	struct lx_scene_meshes m;
 	struct lx_frame f;
 	char err[256];
@@ -93,11 +98,12 @@ static void bvh_depth_cap_loses_nothing(void **state)
 	assert_int_equal(lx_raycaster_depth(rc), LX_BVH_MAX_DEPTH); /* the cap was reached */
 	for (int k = 0; k < LX_MAX_CASTERS; k++) {
 		double t;
-		vec3 top = v3(ldexp(1, k), 10, 0);
-		int tri = lx_raycast_first(rc, top, v3(0, -1, 0), 0, 100, &t);
+		double x = ldexp(1, 4 * k);
+		vec3 top = v3(x, 10 * x, 0);
+		int tri = lx_raycast_first(rc, top, v3(0, -1, 0), 0, 100 * x, &t);
 		assert_true(tri >= 0);
 		assert_int_equal(lx_raycaster_object(rc, tri), k);
-		assert_true(lx_raycast_any(rc, top, v3(0, -1, 0), 0, 100, -1));
+		assert_true(lx_raycast_any(rc, top, v3(0, -1, 0), 0, 100 * x, -1));
 	}
 	lx_raycaster_destroy(rc);
 	lx_meshes_free(&m);

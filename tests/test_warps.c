@@ -345,7 +345,7 @@ static void tsm_focus_on_the_80_percent_line(void **state)
 	assert_true(v3_normalize(v3(0.2, -1, -0.1), &s.scene.light.direction));
 	assert_true(build(&s, "tsm", 320, 240, 0.3));
 	const struct lx_view *v = &s.frame.view;
-	vec3 dir;
+	vec3 dir = v3(0, 0, 0);
 	assert_true(v3_normalize(v3_sub(s.scene.camera.at, s.scene.camera.eye), &dir));
 	vec4 top = m4_mul_point(&s.res.maps[0].light_clip, v3_add(v->eye, v3_scale(dir, v->near)));
 	vec4 focus = m4_mul_point(&s.res.maps[0].light_clip, v3_add(v->eye, v3_scale(dir, v->near + 0.5 * (v->far - v->near))));

@@ -2,17 +2,6 @@
 #include <math.h>
 #include <string.h>
 
-double v3_len(vec3 a) { return sqrt(v3_dot(a, a)); }
-
-bool v3_normalize(vec3 a, vec3 *out)
-{
-	double l = v3_len(a);
-	if (!(l > 1e-300) || !isfinite(l))
-		return false;
-	*out = v3_scale(a, 1.0 / l);
-	return true;
-}
-
 bool v3_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 mat4 m4_identity(void)
@@ -34,17 +23,6 @@ mat4 m4_mul(const mat4 *a, const mat4 *b)
 		}
 	return r;
 }
-
-vec4 m4_mul_v4(const mat4 *a, vec4 v)
-{
-	const double *m = a->m;
-	return (vec4){m[0] * v.x + m[4] * v.y + m[8] * v.z + m[12] * v.w,
-		      m[1] * v.x + m[5] * v.y + m[9] * v.z + m[13] * v.w,
-		      m[2] * v.x + m[6] * v.y + m[10] * v.z + m[14] * v.w,
-		      m[3] * v.x + m[7] * v.y + m[11] * v.z + m[15] * v.w};
-}
-
-vec4 m4_mul_point(const mat4 *a, vec3 p) { return m4_mul_v4(a, (vec4){p.x, p.y, p.z, 1.0}); }
 
 bool lx_solve(int n, double *a, double *b, double eps)
 {

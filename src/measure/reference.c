@@ -29,6 +29,65 @@ struct lx_raycaster {
 
 static vec3 centroid(const struct tri *t) { return v3_add(t->a, v3_scale(v3_add(t->e1, t->e2), 1.0 / 3)); }
 
+static double half_area(vec3 lo, vec3 hi)
+{
+	vec3 e = v3_sub(hi, lo);
+	return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+/* The split plane of triangles [first, first + count) by the surface area heuristic over
+ * LX_SAH_BINS bins of their centroids on each axis: the one that minimises the children's
+ * box areas weighted by their triangle counts. An axis whose centroids coincide is skipped;
+ * when all do, the longest axis's midpoint (build() then halves the range). */
+enum { LX_SAH_BINS = 16 };
+static void sah_split(const struct lx_raycaster *rc, int first, int count, vec3 clo, vec3 chi, int *axis_out,
+		      double *split_out)
+{
+	vec3 ext = v3_sub(chi, clo);
+	*axis_out = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+	*split_out = ((&clo.x)[*axis_out] + (&chi.x)[*axis_out]) / 2;
+	double best = INFINITY;
+	for (int axis = 0; axis < 3; axis++) {
+		double lo = (&clo.x)[axis], len = (&ext.x)[axis];
+		if (!(len > 0))
+			continue;
+		vec3 blo[LX_SAH_BINS], bhi[LX_SAH_BINS];
+		int n[LX_SAH_BINS] = {0};
+		for (int b = 0; b < LX_SAH_BINS; b++)
+			blo[b] = v3(INFINITY, INFINITY, INFINITY), bhi[b] = v3(-INFINITY, -INFINITY, -INFINITY);
+		for (int i = first; i < first + count; i++) {
+			const struct tri *t = &rc->tris[i];
+			vec3 m = centroid(t), b1 = v3_add(t->a, t->e1), b2 = v3_add(t->a, t->e2);
+			int b = (int)(LX_SAH_BINS * (((&m.x)[axis] - lo) / len)); /* len > 0 */
+			b = b < 0 ? 0 : b >= LX_SAH_BINS ? LX_SAH_BINS - 1 : b;
+			n[b]++;
+			blo[b] = v3_min(blo[b], v3_min(t->a, v3_min(b1, b2)));
+			bhi[b] = v3_max(bhi[b], v3_max(t->a, v3_max(b1, b2)));
+		}
+		/* the cost of cutting after bin k: left bins' area x count + right bins' */
+		double right_cost[LX_SAH_BINS];
+		vec3 rlo = v3(INFINITY, INFINITY, INFINITY), rhi = v3(-INFINITY, -INFINITY, -INFINITY);
+		int rn = 0;
+		for (int b = LX_SAH_BINS - 1; b > 0; b--) {
+			rlo = v3_min(rlo, blo[b]), rhi = v3_max(rhi, bhi[b]), rn += n[b];
+			right_cost[b] = rn ? half_area(rlo, rhi) * rn : 0;
+		}
+		vec3 llo = v3(INFINITY, INFINITY, INFINITY), lhi = v3(-INFINITY, -INFINITY, -INFINITY);
+		int ln = 0;
+		for (int b = 0; b < LX_SAH_BINS - 1; b++) {
+			llo = v3_min(llo, blo[b]), lhi = v3_max(lhi, bhi[b]), ln += n[b];
+			if (!ln || ln == count)
+				continue;
+			double cost = half_area(llo, lhi) * ln + right_cost[b + 1];
+			if (cost < best) {
+				best = cost;
+				*axis_out = axis;
+				*split_out = lo + len * (b + 1) / LX_SAH_BINS;
+			}
+		}
+	}
+}
+
 /* Inner nodes at most this deep: a leaf takes whatever is left below it (correct, only
  * slower), so the traversal's stack of LX_BVH_MAX_DEPTH + 2 entries never overflows
  * whatever the scene (midpoint splits of casters spaced 1, 2, 4, ... go one level per
@@ -55,9 +114,9 @@ static int build(struct lx_raycaster *rc, int first, int count, int depth)
 		n->count = count;
 		return idx;
 	}
-	vec3 ext = v3_sub(chi, clo);
-	int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
-	double split = ((&clo.x)[axis] + (&chi.x)[axis]) / 2;
+	int axis;
+	double split;
+	sah_split(rc, first, count, clo, chi, &axis, &split);
 	int mid = first;
 	for (int i = first; i < first + count; i++) {
 		vec3 m = centroid(&rc->tris[i]);

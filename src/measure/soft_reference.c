@@ -71,7 +71,7 @@ double lx_soft_visibility(const struct lx_raycaster *rc, const struct lx_area_li
 	vec3 to_light = light->directional ? light->toward : v3_sub(light->centre, p);
 	if (!(v3_dot(lx_raycaster_normal(rc, tri), to_light) > 0))
 		return 0; /* faces away from the light's centre */
-	vec3 axis, e1, e2;
+	vec3 axis, e1 = v3(0, 0, 0), e2; /* across() always sets e1: the compiler cannot see it */
 	double disc, smax;
 	if (!cone(light, p, &axis, &disc, &smax))
 		return 1; /* inside the light */

@@ -74,7 +74,7 @@ static int light_frame(const struct lx_frame *f, const struct lx_light_space *ls
 		return -1;
 	}
 	lf->z_n = v3_len(v3_sub(b, lf->a)); /* the view's near distance in light space */
-	vec3 lxv = v3_cross(l, v), up;
+	vec3 lxv = v3_cross(l, v), up = v3(0, 0, 0);
 	lf->sin_gamma = v3_len(lxv);
 	if (lf->sin_gamma < LX_LISPSM_MIN_SIN_GAMMA)
 		return 0; /* view along the light: the warp would gain nothing, uniform it is */
