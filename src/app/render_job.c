@@ -19,8 +19,9 @@ void lx_render_report_free(struct lx_render_report *rep)
 	free(rep->shadow);
 	free(rep->visibility);
 	free(rep->ref_visibility);
+	free(rep->ref_rgba);
 	rep->ref_object = rep->object = NULL;
-	rep->ref_shadow = rep->shadow = rep->visibility = NULL;
+	rep->ref_shadow = rep->shadow = rep->visibility = rep->ref_rgba = NULL;
 	rep->ref_visibility = NULL;
 }
 
@@ -188,6 +189,37 @@ static bool measure_soft(const struct lx_render_job *job, const struct lx_method
 	return true;
 }
 
+/* The exact reference into the report: the job's, cast before, or cast here. False after err. */
+static bool reference(const struct lx_render_job *job, struct lx_render_report *rep, const struct lx_method_run *mr,
+		      char *err, size_t errlen)
+{
+	long n = (long)job->width * job->height;
+	int lights = mr->light_count;
+	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
+	rep->ref_shadow = malloc((size_t)n * lights);
+	rep->ref_rgba = malloc((size_t)n * 4);
+	if (!rep->ref_object || !rep->ref_shadow || !rep->ref_rgba) {
+		snprintf(err, errlen, "out of memory for the reference image");
+		return false;
+	}
+	const struct lx_reference_images *given = job->reference;
+	if (!given) {
+		if (lx_method_run_reference(mr, rep->ref_object, rep->ref_shadow, rep->ref_rgba, job->reference_threads))
+			return true;
+		snprintf(err, errlen, "out of memory for the reference image");
+		return false;
+	}
+	if (given->width != job->width || given->height != job->height || given->lights != lights) {
+		snprintf(err, errlen, "the reference given is %dx%d (lights: %d), the frame %dx%d (lights: %d)", given->width,
+			 given->height, given->lights, job->width, job->height, lights);
+		return false;
+	}
+	memcpy(rep->ref_object, given->object, (size_t)n * sizeof(int16_t));
+	memcpy(rep->ref_shadow, given->shadow, (size_t)n * lights);
+	memcpy(rep->ref_rgba, given->rgba, (size_t)n * 4);
+	return true;
+}
+
 /* The exact reference, each light's mismatch and planes' figures (and their warnings),
  * the mismatch of them all, and the first light's mismatch image. False after err. */
 static bool measure(const struct lx_render_job *job, struct lx_render_report *rep, const struct lx_method_run *mr,
@@ -195,16 +227,11 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 {
 	long n = (long)job->width * job->height;
 	int lights = mr->light_count;
-	rep->ref_object = malloc((size_t)n * sizeof(int16_t));
-	rep->ref_shadow = malloc((size_t)n * lights);
-	if (!rep->ref_object || !rep->ref_shadow ||
-	    !lx_method_run_reference(mr, rep->ref_object, rep->ref_shadow, rgba, job->reference_threads)) {
-		snprintf(err, errlen, "out of memory for the reference image");
+	if (!reference(job, rep, mr, err, errlen))
 		return false;
-	}
 	/* colour_error: the shaded frame against the reference's shading of the same view */
-	rep->colour_error = lx_colour_error(shaded, rgba, n);
-	if (job->reference_png && !lx_png_write(job->reference_png, rgba, job->width, job->height, err, errlen))
+	rep->colour_error = lx_colour_error(shaded, rep->ref_rgba, n);
+	if (job->reference_png && !lx_png_write(job->reference_png, rep->ref_rgba, job->width, job->height, err, errlen))
 		return false;
 	rep->plane_count = job->scene.plane_count;
 	rep->mismatch = (struct lx_mismatch){0};

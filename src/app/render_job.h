@@ -4,6 +4,16 @@
 #define LX_RENDER_JOB_H
 #include "method_run.h"
 
+/* An exact reference cast before for the same scene, size, time and drawn lights (a test
+ * measures many methods on one view and casts its reference once): width * height each,
+ * rows bottom to top, as lx_method_run_reference gives them. */
+struct lx_reference_images {
+	int width, height, lights;
+	const int16_t *object;
+	const uint8_t *shadow; /* light after light */
+	const uint8_t *rgba;   /* the reference's shading of every light */
+};
+
 struct lx_render_job {
 	const char *method;   /* a name lx_shadow_method_find() knows */
 	const char *platform; /* "osmesa" or "egl" */
@@ -27,6 +37,7 @@ struct lx_render_job {
 	const char *mismatch_png; /* with measure: where the first light's decision differs from the reference, or NULL */
 	const char *atlas_png;    /* the atlas's depths as grey levels (near dark, far white), or NULL */
 	const char *reference_png; /* with measure: the reference's shaded image, or NULL */
+	const struct lx_reference_images *reference; /* with measure: this frame's, cast before; NULL: cast here */
 };
 
 /* One light's maps and figures. */
@@ -63,6 +74,7 @@ struct lx_render_report {
 	 * lx_render_report_free */
 	int16_t *ref_object, *object;
 	uint8_t *ref_shadow, *shadow;
+	uint8_t *ref_rgba;     /* with measure: the reference's shading, RGBA */
 	uint8_t *visibility;   /* the shading's visibility, 0 to 255 (lx_decision_visibility) */
 	float *ref_visibility; /* with soft: the soft reference's, 0 to 1 */
 };
