@@ -188,16 +188,18 @@ double lx_median(double *v, long n)
 
 /* World point of window pixel centre (x + 0.5, y + 0.5) on plane p (equation eq); false
  * when the pixel's ray misses the parallelogram or meets it outside the view depth range. */
-static bool on_plane(const struct lx_frame *f, const struct lx_plane *p, vec4 eq, int x, int y, vec3 *out)
+static bool on_plane(const struct lx_frame *f, const struct lx_plane_gram *g, vec4 eq, int x, int y, vec3 *out)
 {
 	double t;
-	return lx_window_on_plane(&f->view, eq, x + 0.5, y + 0.5, out, &t) && t >= 0 && t <= 1 && lx_plane_contains(p, *out);
+	return lx_window_on_plane(&f->view, eq, x + 0.5, y + 0.5, out, &t) && t >= 0 && t <= 1 &&
+	       lx_plane_gram_contains(g, *out);
 }
 
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
 {
 	const struct lx_plane *p = &f->scene->planes[plane];
-	return on_plane(f, p, lx_plane_equation(p), x, y, out);
+	struct lx_plane_gram g = lx_plane_gram(p);
+	return on_plane(f, &g, lx_plane_equation(p), x, y, out);
 }
 
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
@@ -223,6 +225,7 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 	}
 	const struct lx_plane *pl = &f->scene->planes[plane];
 	vec4 eq = lx_plane_equation(pl); /* once, not per pixel: it was a sixth of the sampling */
+	struct lx_plane_gram gram = lx_plane_gram(pl); /* and the parallelogram's Gram matrix: a fifth */
 	long k = 0;
 	out->lpp_min = INFINITY;
 	for (int y = stride / 2; y < hgt; y += stride)
@@ -230,7 +233,7 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 			vec3 p;
 			if (ref_object ? ref_object[(long)y * w + x] != plane : false)
 				continue;
-			if (!on_plane(f, pl, eq, x, y, &p))
+			if (!on_plane(f, &gram, eq, x, y, &p))
 				continue;
 			int m = lx_shadow_select_map(res, plane, p);
 			if (m < 0 || !hok[m]) {
@@ -246,10 +249,11 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 			lpp[k] = smax * smin;
 			mm[k] = 1.0 / smin;
 			out->lixels_used += lpp[k] * stride * stride;
-			out->lpp_min = fmin(out->lpp_min, lpp[k]);
-			out->lpp_max = fmax(out->lpp_max, lpp[k]);
-			out->m_max = fmax(out->m_max, mm[k]);
-			out->aniso_max = fmax(out->aniso_max, smax / smin);
+			/* finite and positive here: comparisons, not fmin/fmax's library calls */
+			out->lpp_min = lpp[k] < out->lpp_min ? lpp[k] : out->lpp_min;
+			out->lpp_max = lpp[k] > out->lpp_max ? lpp[k] : out->lpp_max;
+			out->m_max = mm[k] > out->m_max ? mm[k] : out->m_max;
+			out->aniso_max = smax / smin > out->aniso_max ? smax / smin : out->aniso_max;
 			k++;
 		}
 	out->pixels = k;

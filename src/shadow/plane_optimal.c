@@ -33,15 +33,18 @@ bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double w
 
 double lx_plane_near_limit(const struct lx_plane *p) { return 1e-3 * (v3_len(p->edge1) + v3_len(p->edge2)); }
 
+/* parallelogram coordinates: solve q - corner = s e1 + u e2 in the plane (the edges are
+ * not parallel: the scene parser checks it) */
+struct lx_plane_gram lx_plane_gram(const struct lx_plane *p)
+{
+	double e11 = v3_dot(p->edge1, p->edge1), e12 = v3_dot(p->edge1, p->edge2), e22 = v3_dot(p->edge2, p->edge2);
+	return (struct lx_plane_gram){p->corner, p->edge1, p->edge2, e11, e12, e22, e11 * e22 - e12 * e12};
+}
+
 bool lx_plane_contains(const struct lx_plane *p, vec3 q)
 {
-	/* parallelogram coordinates: solve q - corner = s e1 + u e2 in the plane (the edges
-	 * are not parallel: the scene parser checks it) */
-	vec3 r = v3_sub(q, p->corner);
-	double e11 = v3_dot(p->edge1, p->edge1), e12 = v3_dot(p->edge1, p->edge2), e22 = v3_dot(p->edge2, p->edge2);
-	double det = e11 * e22 - e12 * e12, r1 = v3_dot(r, p->edge1), r2 = v3_dot(r, p->edge2);
-	double s = (r1 * e22 - r2 * e12) / det, u = (r2 * e11 - r1 * e12) / det;
-	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+	struct lx_plane_gram g = lx_plane_gram(p);
+	return lx_plane_gram_contains(&g, q);
 }
 
 static vec4 scale4(vec4 a, double s) { return (vec4){a.x * s, a.y * s, a.z * s, a.w * s}; }

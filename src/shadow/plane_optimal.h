@@ -44,6 +44,20 @@ bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double w
 /* Whether point q of the plane lies on its parallelogram (corner + s edge1 + u edge2,
  * s, u in [0, 1]). */
 bool lx_plane_contains(const struct lx_plane *p, vec3 q);
+/* The same test with the edges' Gram matrix worked out once, for a caller that tests a
+ * pixel's worth of points (the metrics): lx_plane_contains's arithmetic step for step. */
+struct lx_plane_gram {
+	vec3 corner, edge1, edge2;
+	double e11, e12, e22, det; /* det > 0: the scene parser refuses parallel edges */
+};
+struct lx_plane_gram lx_plane_gram(const struct lx_plane *p);
+static inline bool lx_plane_gram_contains(const struct lx_plane_gram *g, vec3 q)
+{
+	vec3 r = v3_sub(q, g->corner);
+	double r1 = v3_dot(r, g->edge1), r2 = v3_dot(r, g->edge2);
+	double s = (r1 * g->e22 - r2 * g->e12) / g->det, u = (r2 * g->e11 - r1 * g->e12) / g->det;
+	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+}
 
 /* The part of a plane's parallelogram inside the view frustum: window-coordinate
  * polygon (counter-clockwise) and its world vertices; false when nothing is visible. */
