@@ -467,26 +467,25 @@ static void filters_lookup_where_shadows_fall(void **state)
 		assert_true(lx_meshes_build(&base, &meshes));
 		for (int i = 0; i < lx_shadow_method_count(); i++)
 			for (int mediump = 0; mediump < 2; mediump++) {
-				struct lx_method_run run[2];
-				for (int k = 0; k < 2; k++) {
-					struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-					o.lookup_everywhere = k == 1;
-					if (lx_method_run_init(&run[k], lx_shadow_method_at(i)->name, &base, &meshes, &caps, &o, w, h,
-							       mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
-							       err, sizeof err))
-						fail_msg("%s", err);
-				}
+				/* one run: footprint then all read the same maps, drawn once a frame (a filter and
+				 * the lookup region change only how the main pass reads them) */
+				struct lx_method_run run;
+				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				if (lx_method_run_init(&run, lx_shadow_method_at(i)->name, &base, &meshes, &caps, &o, w, h,
+						       mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false, err,
+						       sizeof err))
+					fail_msg("%s", err);
 				for (int c = 0; c < lx_config_count; c++) {
 					struct lx_scene scene = base;
 					lx_config_apply(&lx_configs[c], &scene);
 					struct lx_frame f;
 					assert_true(lx_frame_setup(&f, &scene, &meshes, 0.4, w, h, err, sizeof err));
-					for (int k = 0; k < 2; k++) /* the maps: a filter changes only how the main pass reads them */
-						lx_method_run_shadows(&run[k], &f);
+					lx_method_run_shadows(&run, &f);
 					for (int fl = 1; fl < LX_FILTER_COUNT; fl++) {
+						assert_int_equal(lx_method_run_set_filter(&run, (enum lx_filter)fl, err, sizeof err), 0);
 						for (int k = 0; k < 2; k++) {
-							assert_int_equal(lx_method_run_set_filter(&run[k], (enum lx_filter)fl, err, sizeof err), 0);
-							looked[k] += lx_method_run_decision(&run[k], 0, rgba[k], obj, sh);
+							lx_method_run_set_lookup_everywhere(&run, k == 1);
+							looked[k] += lx_method_run_decision(&run, 0, rgba[k], obj, sh);
 						}
 						long d = differ(rgba[0], rgba[1], (long)w * h);
 						if (d)
@@ -496,8 +495,7 @@ static void filters_lookup_where_shadows_fall(void **state)
 						frames++;
 					}
 				}
-				lx_method_run_free(&run[0]);
-				lx_method_run_free(&run[1]);
+				lx_method_run_free(&run);
 			}
 		lx_meshes_free(&meshes);
 	}

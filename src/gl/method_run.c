@@ -74,6 +74,12 @@ int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, ch
 	return 0;
 }
 
+void lx_method_run_set_lookup_everywhere(struct lx_method_run *mr, bool everywhere)
+{
+	lx_renderer_set_lookup_everywhere(mr->renderer, everywhere);
+	mr->options.lookup_everywhere = everywhere;
+}
+
 void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter filter, uint8_t *visibility)
 {
 	for (long i = 0; i < pixels; i++)

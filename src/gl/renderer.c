@@ -183,6 +183,8 @@ bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *
 	return true;
 }
 
+void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere) { r->d.lookup_everywhere = everywhere; }
+
 struct keyed_position {
 	float p[3];
 	int vertex;

@@ -41,6 +41,9 @@ void lx_renderer_destroy(struct lx_renderer *r);
 /* The main pass's shadow filter from the next frame on; its programs are built now, so
  * false (err set, the filter as it was) when they do not build. */
 bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen);
+/* Every receiver pixel reads its maps (lookup_everywhere) or only where a shadow can
+ * fall, from the next main pass on: the draws are cut per frame, nothing else changes. */
+void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere);
 /* Shadow passes for the rendered maps of n lights: f[i] and res[i] are a light's frame
  * (its f[i]->light_index says which) and maps. */
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
