@@ -905,6 +905,21 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
  * the whole mesh). */
+/* Whether object id's faces turned away from the eye can be left out of the main pass: a
+ * caster's (a closed mesh wound counter-clockwise outwards) when its whole box lies
+ * beyond the near plane, where each of them is hidden behind one of its own faces turned
+ * towards the eye. A plane is seen from both sides, as the reference sees it; a caster
+ * the near plane cuts shows its inner faces through the cut (the horizon view's did). */
+static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
+{
+	if (id < plane_count)
+		return false;
+	for (int k = 0; k < 8; k++)
+		if (!(v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), f->view.eye), f->view.dir) > f->view.near))
+			return false;
+	return true;
+}
+
 static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const struct main_program *p,
 		       const struct draw *d)
 {
@@ -914,6 +929,10 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
+	if (culls_back_faces(f, id, s->plane_count))
+		lx_gl.Enable(GL_CULL_FACE);
+	else
+		lx_gl.Disable(GL_CULL_FACE);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -976,7 +995,8 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->target_fbo);
 	lx_gl.Viewport(0, 0, r->d.width, r->d.height);
 	lx_gl.Disable(GL_SCISSOR_TEST);
-	lx_gl.Disable(GL_CULL_FACE); /* planes are seen from both sides, as the reference sees them */
+	lx_gl.Disable(GL_CULL_FACE); /* each draw says (culls_back_faces) */
+	lx_gl.CullFace(GL_BACK);
 	lx_gl.Enable(GL_DEPTH_TEST);
 	bool added = kind == ADDED_LIGHT;
 	if (added) {
@@ -999,6 +1019,7 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
  * light's pass and a decision take as it is). */
 static void light_pass_done(enum pass_kind kind)
 {
+	lx_gl.Disable(GL_CULL_FACE);
 	if (kind != ADDED_LIGHT)
 		return;
 	lx_gl.Disable(GL_BLEND);
