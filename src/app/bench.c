@@ -602,7 +602,7 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 			return bad(a, "a shorter list", v);
 		strcpy(to, v);
 	} else if (!strcmp(a, "--platform")) {
-		if (strcmp(v, "osmesa") && strcmp(v, "egl"))
+		if (!lx_platform_known(v))
 			return bad(a, lx_platform_names(), v);
 		b->platform = v;
 	} else if (!strcmp(a, "--scene"))

@@ -383,7 +383,7 @@ static int job_option(struct lx_render_job *job, const char *a, const char *v)
 {
 	enum lx_number_error e;
 	if (!strcmp(a, "--platform")) {
-		if (strcmp(v, "osmesa") && strcmp(v, "egl"))
+		if (!lx_platform_known(v))
 			return bad(a, lx_platform_names(), v);
 		job->platform = v;
 	} else if (!strcmp(a, "--out"))

@@ -324,7 +324,7 @@ int lx_render_run(const struct lx_render_job *job, struct lx_render_report *rep,
 		if (plat)
 			status = render_frames(job, &meshes, &frame, rep, err, errlen);
 		else
-			status = strcmp(job->platform, "osmesa") && strcmp(job->platform, "egl") ? 2 : 1;
+			status = lx_platform_known(job->platform) ? 1 : 2;
 		if (plat != job->platform_in_use)
 			lx_platform_destroy(plat);
 	}

@@ -5,6 +5,8 @@
 
 const char *lx_platform_names(void) { return "osmesa|egl"; }
 
+bool lx_platform_known(const char *name) { return !strcmp(name, "osmesa") || !strcmp(name, "egl"); }
+
 /* Every platform ends the same way: its context current, the GL entry points loaded. */
 static struct lx_platform *with_gl(struct lx_platform *p, const char *name, char *err, size_t errlen)
 {

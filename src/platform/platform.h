@@ -31,6 +31,8 @@ struct lx_platform {
 struct lx_platform *lx_platform_create(const char *name, char *err, size_t errlen);
 void lx_platform_destroy(struct lx_platform *p);
 const char *lx_platform_names(void);
+/* Whether lx_platform_create knows the name (the commands check it before any GL). */
+bool lx_platform_known(const char *name);
 
 /* A display platform: "x11" (EGL on an X11 window of width x height, DISPLAY from the
  * environment) or "kms" (full screen on device, NULL for the first that can mode-set, in
