@@ -903,8 +903,6 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 }
 
-/* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
- * the whole mesh). */
 /* Whether object id's faces turned away from the eye can be left out of the main pass: a
  * caster's (a closed mesh wound counter-clockwise outwards) when its whole box lies
  * beyond the near plane, where each of them is hidden behind one of its own faces turned
@@ -920,6 +918,8 @@ static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
 	return true;
 }
 
+/* One draw: its object's uniforms, its culling and its geometry (pieces, facing-sorted
+ * indices, or the whole mesh). */
 static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const struct main_program *p,
 		       const struct draw *d)
 {

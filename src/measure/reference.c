@@ -90,8 +90,8 @@ static void sah_split(const struct lx_raycaster *rc, int first, int count, vec3 
 
 /* Inner nodes at most this deep: a leaf takes whatever is left below it (correct, only
  * slower), so the traversal's stack of LX_BVH_MAX_DEPTH + 2 entries never overflows
- * whatever the scene (midpoint splits of casters spaced 1, 2, 4, ... go one level per
- * caster). */
+ * whatever the scene (the 16-bin splits of casters spaced 1, 16, 256, ... go one level
+ * per caster). */
 static int build(struct lx_raycaster *rc, int first, int count, int depth)
 {
 	int idx = rc->nnodes++;
