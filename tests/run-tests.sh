@@ -6,9 +6,8 @@
 #   - every test program BUILD/tests/test_*;
 #   - cli (tests/cli.sh) and kiosk (tests/kiosk_x11.sh, under Xvfb);
 #   - with SOAK_SECONDS=N, a kiosk soak of N seconds (tests/kiosk_soak.sh);
-#   - with FUZZ_SECONDS=N, N seconds of each libFuzzer harness in FUZZ_DIR (default
-#     BUILD/fuzz; tools/fuzz.sh;
-#     FUZZ_NAMES lists them).
+#   - with FUZZ_SECONDS=N, N seconds of each libFuzzer harness FUZZ_NAMES lists, from
+#     FUZZ_DIR (default BUILD/fuzz), by tools/fuzz.sh.
 # Usage: tests/run-tests.sh BUILD_DIR   (from the top of the repository)
 set -u
 build=${1:-build}

@@ -918,8 +918,8 @@ static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
 	return true;
 }
 
-/* One draw: its object's uniforms, its culling and its geometry (pieces, facing-sorted
- * indices, or the whole mesh). */
+/* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
+ * the whole mesh). */
 static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const struct main_program *p,
 		       const struct draw *d)
 {
@@ -929,10 +929,6 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
-	if (culls_back_faces(f, id, s->plane_count))
-		lx_gl.Enable(GL_CULL_FACE);
-	else
-		lx_gl.Disable(GL_CULL_FACE);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1065,15 +1061,25 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	}
 	int n = frame_draws(r, f, res, lit_only);
-	/* a program set up whenever the maps read change */
+	/* a program set up whenever the maps read change, culling whenever it changes (a
+	 * caster's two draws and the planes' pieces come in runs) */
 	struct main_program *p = NULL;
 	unsigned current = 0;
+	bool culling = false; /* as pass_state left it */
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
 		if (!p || d->mask != current) {
 			current = d->mask;
 			p = variant_for(r, shading, current);
 			use_program(r, p, &u, current != 0);
+		}
+		bool cull = culls_back_faces(f, d->object, r->d.scene->plane_count);
+		if (cull != culling) {
+			if (cull)
+				lx_gl.Enable(GL_CULL_FACE);
+			else
+				lx_gl.Disable(GL_CULL_FACE);
+			culling = cull;
 		}
 		issue_draw(r, f, p, d);
 	}

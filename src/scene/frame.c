@@ -180,6 +180,7 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		return false;
 	}
 	f->view_note_count = f->note_count;
+	f->light_index = -1; /* no light's yet */
 	lx_frame_for_light(f, 0, f);
 	return true;
 }
@@ -188,6 +189,8 @@ void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *ou
 {
 	if (out != f)
 		*out = *f;
+	if (light == f->light_index)
+		return; /* made for that light already (light 0's by lx_frame_setup): a copy is all */
 	out->note_count = f->view_note_count;
 	out->light_index = light;
 	out->light = f->scene->lights[light];
