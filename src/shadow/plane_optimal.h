@@ -55,8 +55,9 @@ static inline bool lx_plane_gram_contains(const struct lx_plane_gram *g, vec3 q)
 {
 	vec3 r = v3_sub(q, g->corner);
 	double r1 = v3_dot(r, g->edge1), r2 = v3_dot(r, g->edge2);
-	double s = (r1 * g->e22 - r2 * g->e12) / g->det, u = (r2 * g->e11 - r1 * g->e12) / g->det;
-	return s >= 0 && s <= 1 && u >= 0 && u <= 1;
+	/* s = ns / det and u = nu / det in [0, 1], compared without dividing (det > 0) */
+	double ns = r1 * g->e22 - r2 * g->e12, nu = r2 * g->e11 - r1 * g->e12;
+	return g->det > 0 && ns >= 0 && ns <= g->det && nu >= 0 && nu <= g->det;
 }
 
 /* The part of a plane's parallelogram inside the view frustum: window-coordinate
