@@ -219,12 +219,14 @@ static void random_extremes_warn_or_match(void **state)
 			}
 			spots += sc.light.projective != LX_LIGHT_PLAIN;
 			assert_true(lx_reference_image(&frame, px.ref_obj, px.ref_sh, 2));
+			struct lx_plane_points pts;
+			assert_true(lx_plane_points_make(&frame, px.ref_obj, &pts));
 			for (int m = 0; m < NM; m++) {
 				lx_method_run_shadows(&run[m], &frame); /* the decision needs no shaded frame */
 				lx_method_run_decision(&run[m], 0, px.rgba, px.obj, px.sh);
 				struct lx_mismatch mm;
 				struct lx_plane_report planes[LX_MAX_PLANES];
-				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &mm, planes);
+				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &pts, &mm, planes);
 				lx_sampling_warnings(planes, sc.plane_count, lx_atlas_lixels(&run[m].lights[0].atlas), &run[m].lights[0].result);
 				frames++;
 				if (!finite_report(&run[m].lights[0].result, &mm, planes, sc.plane_count))
@@ -246,6 +248,7 @@ static void random_extremes_warn_or_match(void **state)
 						 sc.light.directional ? " directional" : "", sc.camera.eye.x, sc.camera.eye.y,
 						 sc.camera.eye.z, t, methods[m], mm.mismatch_pct);
 			}
+			lx_plane_points_free(&pts);
 		}
 		for (int m = 0; m < NM; m++)
 			lx_method_run_free(&run[m]);
@@ -269,7 +272,7 @@ static bool light_warns_or_matches(struct lx_method_run *run, int l, const struc
 	struct lx_mismatch mm;
 	struct lx_plane_report planes[LX_MAX_PLANES];
 	struct lx_shadow_result res = lm->result;
-	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, &mm, planes);
+	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, NULL, &mm, planes);
 	lx_sampling_warnings(planes, lm->frame.scene->plane_count, lx_atlas_lixels(&lm->atlas), &res);
 	if (!finite_report(&res, &mm, planes, lm->frame.scene->plane_count))
 		fail_msg("%s, light %d: a NaN or infinity in the matrices or the report", what, l + 1);

@@ -9,6 +9,7 @@
 #include "method_fixture.h"
 #include "shadow_coverage.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 
@@ -199,6 +200,57 @@ static void sweep_is_a_similarity_on_every_plane(void **state)
 	assert_true(configs >= 300 && maps >= 300 && full >= 100);
 }
 
+/* The plane points a frame's methods share (lx_plane_points_make) give each method's
+ * plane figures bit for bit as each pixel's own ray does, and are what is read: a pixel
+ * dropped from them drops from the figures. */
+static void shared_plane_points_give_the_same_figures(void **state)
+{
+	(void)state;
+	enum { w = 160, h = 120 };
+	int16_t *obj = malloc((size_t)w * h * sizeof(int16_t));
+	uint8_t *sh = malloc((size_t)w * h);
+	assert_true(obj && sh);
+	int compared = 0;
+	for (int k = 0; k < 2 * lx_config_count; k++) {
+		for (const char *const *method = (const char *const[]){"plane", "uniform", "lispsm", NULL}; *method; method++) {
+			struct setup s;
+			memset(&s, 0, sizeof s);
+			k % 2 ? lx_scene_table(&s.scene) : lx_scene_default(&s.scene);
+			lx_config_apply(&lx_configs[k / 2], &s.scene);
+			if (!build(&s, *method, w, h, 0.4))
+				continue;
+			assert_true(lx_reference_image(&s.frame, obj, sh, 1));
+			struct lx_plane_points pts;
+			assert_true(lx_plane_points_make(&s.frame, obj, &pts));
+			for (int p = 0; p < s.scene.plane_count; p++) {
+				struct lx_plane_sampling own, shared;
+				bool a = lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, &own);
+				bool b = lx_plane_sampling_at(&s.frame, &s.atlas, &s.res, p, obj, &pts, &shared);
+				assert_int_equal(a, b);
+				if (memcmp(&own, &shared, sizeof own))
+					fail_msg("%s, configuration %s, plane %d: the shared points change the figures (%ld against %ld pixels)",
+						 *method, lx_configs[k / 2].name, p, shared.pixels, own.pixels);
+				for (long i = 0; a && i < (long)w * h; i++)
+					if (obj[i] == p && pts.on[i]) { /* drop one pixel of the plane */
+						pts.on[i] = 0;
+						assert_true(lx_plane_sampling_at(&s.frame, &s.atlas, &s.res, p, obj, &pts, &shared) ||
+							    own.pixels == 1);
+						assert_true(shared.pixels + shared.unserved + shared.degenerate ==
+							    own.pixels + own.unserved + own.degenerate - 1);
+						pts.on[i] = 1;
+						break;
+					}
+				compared += a;
+			}
+			lx_plane_points_free(&pts);
+			lx_meshes_free(&s.meshes);
+		}
+	}
+	print_message("%d plane figures the same with the shared points\n", compared);
+	assert_true(compared >= 2 * lx_config_count);
+	free(obj);
+	free(sh);
+}
 
 static void every_shadow_is_covered(void **state)
 {
@@ -416,6 +468,7 @@ int main(void)
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),
+		cmocka_unit_test(shared_plane_points_give_the_same_figures),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),

@@ -257,7 +257,7 @@ static void time_rows(struct bench *b, int ci, const double *times)
  * decisions together (lx_mismatch_add), the soft error weighted by each light's compared
  * pixels, the planes' figures of its first light. */
 static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_method_run *run, const struct pixels *px,
-			   double mis[4])
+			   const struct lx_plane_points *pts, double mis[4])
 {
 	long n = (long)b->width * b->height, looked = 0;
 	struct lx_mismatch all = {0};
@@ -270,7 +270,7 @@ static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_m
 		lx_decision_visibility(px->rgba, n, run->filter, px->vis);
 		struct lx_mismatch mm;
 		struct lx_plane_report planes[LX_MAX_PLANES];
-		lx_measure(&lm->frame, &lm->atlas, &lm->result, px->ref_obj, px->ref_sh + o, px->obj, px->sh, &mm, planes);
+		lx_measure(&lm->frame, &lm->atlas, &lm->result, px->ref_obj, px->ref_sh + o, px->obj, px->sh, pts, &mm, planes);
 		soft += mm.compared * lx_soft_error(px->ref_obj, px->ref_sh + o, px->ref_vis + o, px->obj, px->vis, n);
 		lx_mismatch_add(&all, &mm);
 		for (int p = 0; l == 0 && p < lm->frame.scene->plane_count && p < LX_MAX_PLANES; p++)
@@ -315,17 +315,19 @@ static int measure_config(struct bench *b, int ci, const struct lx_scene *scene,
 	for (int sidx = 0; sidx < samples; sidx++) {
 		if (!lx_frame_setup(&frame, scene, meshes, anim ? sidx * 0.6 : 0.0, b->width, b->height, err, errlen))
 			return 2;
-		if (!references(b, &frame, px)) {
+		struct lx_plane_points pts; /* the methods' (and lights') shared view of the planes */
+		if (!references(b, &frame, px) || !lx_plane_points_make(&frame, px->ref_obj, &pts)) {
 			snprintf(err, errlen, "out of memory for the reference image");
 			return 1;
 		}
 		for (int m = 0; m < b->nm; m++) {
 			double v[4];
 			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
-			measure_method(b, ci, m, sidx, &runs[m], px, v);
+			measure_method(b, ci, m, sidx, &runs[m], px, &pts, v);
 			for (int q = 0; q < 4; q++)
 				mis[m][q][sidx] = v[q];
 		}
+		lx_plane_points_free(&pts);
 	}
 	for (int m = 0; m < b->nm; m++) {
 		struct row *r = &b->rows[m][ci];

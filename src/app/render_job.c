@@ -238,7 +238,7 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 	for (int l = 0; l < lights; l++) {
 		struct lx_light_report *lr = &rep->light[l];
 		lx_measure(&mr->lights[l].frame, &lr->atlas, &lr->result, rep->ref_object, rep->ref_shadow + (size_t)l * n,
-			   rep->object, rep->shadow + (size_t)l * n, &lr->mismatch, lr->planes);
+			   rep->object, rep->shadow + (size_t)l * n, NULL, &lr->mismatch, lr->planes);
 		lx_sampling_warnings(lr->planes, rep->plane_count, lx_atlas_lixels(&lr->atlas), &lr->result);
 		lx_mismatch_add(&rep->mismatch, &lr->mismatch);
 	}

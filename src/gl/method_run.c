@@ -188,12 +188,13 @@ bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, ui
 
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
-		struct lx_mismatch *mismatch, struct lx_plane_report *planes)
+		const struct lx_plane_points *pts, struct lx_mismatch *mismatch, struct lx_plane_report *planes)
 {
 	lx_mismatch_compare(ref_object, ref_shadow, object, shadow, (long)f->view.width * f->view.height, mismatch);
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		snprintf(planes[p].name, sizeof planes[p].name, "%s", f->scene->planes[p].name);
-		planes[p].present = lx_plane_sampling(f, atlas, res, p, ref_object, &planes[p].s);
+		planes[p].present = pts ? lx_plane_sampling_at(f, atlas, res, p, ref_object, pts, &planes[p].s)
+				        : lx_plane_sampling(f, atlas, res, p, ref_object, &planes[p].s);
 	}
 }
 

@@ -202,8 +202,40 @@ bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *
 	return on_plane(f, &g, lx_plane_equation(p), x, y, out);
 }
 
+bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, struct lx_plane_points *out)
+{
+	int w = f->view.width, h = f->view.height, planes = f->scene->plane_count;
+	out->p = malloc((size_t)w * h * sizeof(vec3));
+	out->on = calloc((size_t)w * h, 1);
+	if (!out->p || !out->on) {
+		lx_plane_points_free(out);
+		return false;
+	}
+	struct lx_plane_gram gram[LX_MAX_PLANES];
+	vec4 eq[LX_MAX_PLANES];
+	for (int k = 0; k < planes; k++)
+		gram[k] = lx_plane_gram(&f->scene->planes[k]), eq[k] = lx_plane_equation(&f->scene->planes[k]);
+	for (int y = 0; y < h; y++)
+		for (int x = 0; x < w; x++) {
+			long i = (long)y * w + x;
+			int k = ref_object[i];
+			if (k >= 0 && k < planes)
+				out->on[i] = on_plane(f, &gram[k], eq[k], x, y, &out->p[i]);
+		}
+	return true;
+}
+
+void lx_plane_points_free(struct lx_plane_points *pts)
+{
+	free(pts->p);
+	free(pts->on);
+	pts->p = NULL, pts->on = NULL;
+}
+
+/* pts: each pixel's point where ref_object names a plane (stride 1 only), else NULL. */
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		     int plane, const int16_t *ref_object, int stride, struct lx_plane_sampling *out)
+		     int plane, const int16_t *ref_object, const struct lx_plane_points *pts, int stride,
+		     struct lx_plane_sampling *out)
 {
 	memset(out, 0, sizeof(*out));
 	out->map = -1;
@@ -231,10 +263,13 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 	for (int y = stride / 2; y < hgt; y += stride)
 		for (int x = stride / 2; x < w; x += stride) {
 			vec3 p;
-			if (ref_object ? ref_object[(long)y * w + x] != plane : false)
+			long i = (long)y * w + x;
+			if (ref_object ? ref_object[i] != plane : false)
 				continue;
-			if (!on_plane(f, &gram, eq, x, y, &p))
+			if (pts ? !pts->on[i] : !on_plane(f, &gram, eq, x, y, &p))
 				continue;
+			if (pts)
+				p = pts->p[i];
 			int m = lx_shadow_select_map(res, plane, p);
 			if (m < 0 || !hok[m]) {
 				out->unserved++;
@@ -270,11 +305,18 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
 {
-	return sampling(f, atlas, res, plane, ref_object, 1, out);
+	return sampling(f, atlas, res, plane, ref_object, NULL, 1, out);
+}
+
+bool lx_plane_sampling_at(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			  int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+			  struct lx_plane_sampling *out)
+{
+	return sampling(f, atlas, res, plane, ref_object, pts, 1, out);
 }
 
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 			      int plane, int stride, struct lx_plane_sampling *out)
 {
-	return sampling(f, atlas, res, plane, NULL, stride < 1 ? 1 : stride, out);
+	return sampling(f, atlas, res, plane, NULL, NULL, stride < 1 ? 1 : stride, out);
 }

@@ -51,6 +51,19 @@ struct lx_plane_sampling {
  * with the map that serves it (lx_shadow_select_map). False when no pixel counts. */
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out);
+/* Where each pixel of ref_object that is a plane meets that plane, worked out once for a
+ * frame whose decisions several methods (or lights) are measured against. */
+struct lx_plane_points {
+	vec3 *p;     /* the pixel's point on its plane */
+	uint8_t *on; /* 1 where the pixel's ray meets the plane's parallelogram within the view's depth */
+};
+bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, struct lx_plane_points *out);
+void lx_plane_points_free(struct lx_plane_points *pts);
+/* lx_plane_sampling with the points of pts (made of the same frame's view and ref_object),
+ * its figures the same. */
+bool lx_plane_sampling_at(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+			  int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+			  struct lx_plane_sampling *out);
 /* The same figures on every stride-th pixel in x and y of the plane's parallelogram
  * (casters not hidden): cheap enough for a live overlay. */
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
