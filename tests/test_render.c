@@ -973,9 +973,56 @@ static void shader_failures_show_the_log(void **state)
 		GLuint prog = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
 		if (!prog)
 			fail_msg("%s", err);
-		lx_gl.DeleteProgram(prog);
 		lx_platform_destroy(plat);
 	}
+}
+
+/* A context keeps the programs built in it by their texts: the same texts give the same
+ * program (and its compiled variants), other defines another, a failed build none; a new
+ * context starts with none of the old one's, and renders the same as without them. */
+static void programs_are_kept_per_context(void **state)
+{
+	(void)state;
+	char err[2048];
+	for (int round = 0; round < 2; round++) {
+		struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+		if (!plat)
+			fail_msg("%s", err);
+		int kept;
+		long reused;
+		lx_programs_counts(&kept, &reused);
+		assert_int_equal(kept, 0); /* none of the context before */
+		GLuint a = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
+		GLuint b = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
+		GLuint c = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 2\n", err, sizeof err);
+		const char *vert = lx_embedded_text(lx_shader_files, "shadow_depth.vert");
+		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "broken.frag", "void main() { x; }\n", NULL, err,
+						       sizeof err), 0);
+		assert_true(a && a == b && c && c != a);
+		lx_programs_counts(&kept, &reused);
+		assert_int_equal(kept, 2);
+		assert_int_equal(reused, 1);
+		lx_platform_destroy(plat);
+	}
+	/* a run after another in one context reuses its programs, the decisions the same */
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_render_report first, again;
+	run_path("osmesa", "plane", &s, false, &first);
+	int kept;
+	long reused;
+	lx_programs_counts(&kept, &reused);
+	long before = reused;
+	run_path("osmesa", "plane", &s, false, &again);
+	lx_programs_counts(&kept, &reused);
+	print_message("programs kept %d, builds answered with a kept one %ld (the second run: %ld)\n", kept, reused,
+		      reused - before);
+	assert_true(reused - before >= 3);
+	assert_memory_equal(first.shadow, again.shadow, (size_t)W * H);
+	assert_memory_equal(first.object, again.object, (size_t)W * H * sizeof(int16_t));
+	assert_true(first.mismatch.mismatch_pct == again.mismatch.mismatch_pct);
+	lx_render_report_free(&first);
+	lx_render_report_free(&again);
 }
 
 /* The kiosk's overlay draws its text over a frame: a dark box at the top left with
@@ -1060,6 +1107,7 @@ int main(void)
 		cmocka_unit_test_teardown(unknown_platform_and_method_are_bad_input, close_shared_platform),
 		cmocka_unit_test_teardown(given_reference_is_used_and_must_fit, close_shared_platform),
 		cmocka_unit_test_teardown(shader_failures_show_the_log, close_shared_platform),
+		cmocka_unit_test_teardown(programs_are_kept_per_context, close_shared_platform),
 		cmocka_unit_test_teardown(overlay_draws_text, close_shared_platform),
 	};
 	return cmocka_run_group_tests_name("render", tests, NULL, reference_cache_clear);

@@ -130,8 +130,6 @@ static bool run(bool mediump, char *detail, size_t len)
 	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;
 	if (!write || !compare) {
 		snprintf(detail, len, "%.200s", err);
-		if (write)
-			lx_gl.DeleteProgram(write);
 		return false;
 	}
 	GLuint vbo;
@@ -149,9 +147,7 @@ static bool run(bool mediump, char *detail, size_t len)
 	if (decided.fbo)
 		free_target(&decided);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-	lx_gl.DeleteBuffers(1, &vbo);
-	lx_gl.DeleteProgram(write);
-	lx_gl.DeleteProgram(compare);
+	lx_gl.DeleteBuffers(1, &vbo); /* the programs stay the context's: the renderer's are the same texts */
 	return ok;
 }
 

@@ -1,6 +1,9 @@
 #include "gl_api.h"
 
 struct lx_gl_api lx_gl;
+static unsigned context_serial;
+
+unsigned lx_gl_context_serial(void) { return context_serial; }
 
 bool lx_gl_load(void *(*get_proc)(const char *name), const char **missing)
 {
@@ -14,5 +17,6 @@ bool lx_gl_load(void *(*get_proc)(const char *name), const char **missing)
 	LX_GL_FUNCTIONS(X)
 #undef X
 	lx_gl = api;
+	context_serial++;
 	return true;
 }

@@ -84,7 +84,10 @@ struct lx_gl_api {
 
 extern struct lx_gl_api lx_gl;
 
-/* Fills lx_gl; false with the first missing name in *missing. */
+/* Fills lx_gl for the context just made current; false with the first missing name in
+ * *missing. */
 bool lx_gl_load(void *(*get_proc)(const char *name), const char **missing);
+/* Counts the contexts lx_gl_load has served: what a GL object name belongs to. */
+unsigned lx_gl_context_serial(void);
 
 #endif

@@ -25,16 +25,12 @@ static const char *driver_log(GLuint obj, bool program, char *log, size_t n)
 	return log;
 }
 
-static GLuint compile(GLenum type, const char *name, const char *text, const char *defines, char *err, size_t errlen)
+static GLuint compile(GLenum type, const char *name, const char *src, char *err, size_t errlen)
 {
-	char *src = lx_shader_text(name, text, defines, type == GL_FRAGMENT_SHADER && lx_simulating_lima(), err, errlen);
-	if (!src)
-		return 0;
 	GLuint sh = lx_gl.CreateShader(type);
 	const char *srcs[1] = {src};
 	lx_gl.ShaderSource(sh, 1, srcs, NULL);
 	lx_gl.CompileShader(sh);
-	free(src);
 	GLint ok = 0;
 	lx_gl.GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
 	if (!ok) {
@@ -44,6 +40,107 @@ static GLuint compile(GLenum type, const char *name, const char *text, const cha
 		return 0;
 	}
 	return sh;
+}
+
+static GLuint link(const char *vert, const char *vs_src, const char *frag, const char *fs_src, char *err, size_t errlen)
+{
+	GLuint vs = compile(GL_VERTEX_SHADER, vert, vs_src, err, errlen);
+	if (!vs)
+		return 0;
+	GLuint fs = compile(GL_FRAGMENT_SHADER, frag, fs_src, err, errlen);
+	if (!fs) {
+		lx_gl.DeleteShader(vs);
+		return 0;
+	}
+	GLuint prog = lx_gl.CreateProgram();
+	lx_gl.AttachShader(prog, vs);
+	lx_gl.AttachShader(prog, fs);
+	lx_gl.BindAttribLocation(prog, LX_ATTR_POSITION, "a_position");
+	lx_gl.BindAttribLocation(prog, LX_ATTR_NORMAL, "a_normal");
+	lx_gl.BindAttribLocation(prog, LX_ATTR_FACE_NORMAL, "a_face_normal");
+	lx_gl.LinkProgram(prog);
+	lx_gl.DeleteShader(vs); /* flagged for deletion; freed with the program */
+	lx_gl.DeleteShader(fs);
+	GLint ok = 0;
+	lx_gl.GetProgramiv(prog, GL_LINK_STATUS, &ok);
+	if (!ok) {
+		char log[2048];
+		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, driver_log(prog, true, log, sizeof log));
+		lx_gl.DeleteProgram(prog);
+		return 0;
+	}
+	return prog;
+}
+
+/* The programs the current context keeps, by their two texts. A program object owns
+ * what the driver compiled for it (llvmpipe JIT-compiles each program's variants anew:
+ * most of a short run's time), so building the same texts twice in a context is waste. */
+struct kept {
+	char *texts; /* the vertex shader's text, a NUL, the fragment shader's */
+	size_t len;
+	GLuint prog;
+};
+static struct {
+	unsigned context; /* lx_gl_context_serial of the context they belong to */
+	int count, room;
+	long reused;
+	struct kept *at;
+} kept;
+
+/* The kept list, emptied first when it belongs to a context gone before (its names mean
+ * nothing in this one). */
+static void kept_for_this_context(void)
+{
+	if (kept.context == lx_gl_context_serial())
+		return;
+	for (int i = 0; i < kept.count; i++)
+		free(kept.at[i].texts);
+	kept.count = 0, kept.reused = 0;
+	kept.context = lx_gl_context_serial();
+}
+
+static GLuint kept_find(const char *texts, size_t len)
+{
+	kept_for_this_context();
+	for (int i = 0; i < kept.count; i++)
+		if (kept.at[i].len == len && !memcmp(kept.at[i].texts, texts, len)) {
+			kept.reused++;
+			return kept.at[i].prog;
+		}
+	return 0;
+}
+
+/* Keeps prog under texts (taken over); a program not kept (out of memory) is only built
+ * again next time. */
+static void kept_add(char *texts, size_t len, GLuint prog)
+{
+	if (kept.count == kept.room) {
+		int room = kept.room ? 2 * kept.room : 16;
+		struct kept *at = realloc(kept.at, (size_t)room * sizeof *at);
+		if (!at) {
+			free(texts);
+			return;
+		}
+		kept.at = at, kept.room = room;
+	}
+	kept.at[kept.count++] = (struct kept){texts, len, prog};
+}
+
+void lx_programs_forget(void)
+{
+	if (kept.context == lx_gl_context_serial())
+		for (int i = 0; i < kept.count; i++)
+			lx_gl.DeleteProgram(kept.at[i].prog);
+	kept.context = 0; /* never a context's serial: the next call empties the list */
+	kept_for_this_context();
+	free(kept.at);
+	kept.at = NULL, kept.room = 0;
+}
+
+void lx_programs_counts(int *kept_count, long *reused)
+{
+	kept_for_this_context();
+	*kept_count = kept.count, *reused = kept.reused;
 }
 
 GLuint lx_texture_rgba8(int w, int h)
@@ -72,30 +169,22 @@ GLuint lx_program_build(const char *vert, const char *frag, const char *defines,
 GLuint lx_program_build_text(const char *vert, const char *vert_text, const char *frag, const char *frag_text,
 			     const char *defines, char *err, size_t errlen)
 {
-	GLuint vs = compile(GL_VERTEX_SHADER, vert, vert_text, defines, err, errlen);
-	if (!vs)
-		return 0;
-	GLuint fs = compile(GL_FRAGMENT_SHADER, frag, frag_text, defines, err, errlen);
-	if (!fs) {
-		lx_gl.DeleteShader(vs);
-		return 0;
-	}
-	GLuint prog = lx_gl.CreateProgram();
-	lx_gl.AttachShader(prog, vs);
-	lx_gl.AttachShader(prog, fs);
-	lx_gl.BindAttribLocation(prog, LX_ATTR_POSITION, "a_position");
-	lx_gl.BindAttribLocation(prog, LX_ATTR_NORMAL, "a_normal");
-	lx_gl.BindAttribLocation(prog, LX_ATTR_FACE_NORMAL, "a_face_normal");
-	lx_gl.LinkProgram(prog);
-	lx_gl.DeleteShader(vs); /* flagged for deletion; freed with the program */
-	lx_gl.DeleteShader(fs);
-	GLint ok = 0;
-	lx_gl.GetProgramiv(prog, GL_LINK_STATUS, &ok);
-	if (!ok) {
-		char log[2048];
-		snprintf(err, errlen, "%s + %s: link error: %s", vert, frag, driver_log(prog, true, log, sizeof log));
-		lx_gl.DeleteProgram(prog);
-		return 0;
-	}
+	char *vs = lx_shader_text(vert, vert_text, defines, false, err, errlen);
+	char *fs = vs ? lx_shader_text(frag, frag_text, defines, lx_simulating_lima(), err, errlen) : NULL;
+	size_t nv = vs ? strlen(vs) : 0, len = fs ? nv + 1 + strlen(fs) + 1 : 0;
+	char *texts = fs ? malloc(len) : NULL;
+	GLuint prog = 0;
+	if (texts) {
+		memcpy(texts, vs, nv + 1);
+		memcpy(texts + nv + 1, fs, len - nv - 1);
+		if (!(prog = kept_find(texts, len)) && (prog = link(vert, vs, frag, fs, err, errlen))) {
+			kept_add(texts, len, prog);
+			texts = NULL;
+		}
+	} else if (fs)
+		snprintf(err, errlen, "out of memory for the shaders' text");
+	free(texts);
+	free(vs);
+	free(fs);
 	return prog;
 }

@@ -57,8 +57,7 @@ void lx_overlay_destroy(struct lx_overlay *o)
 {
 	if (!o)
 		return;
-	lx_gl.DeleteProgram(o->prog);
-	lx_gl.DeleteTextures(1, &o->tex);
+	lx_gl.DeleteTextures(1, &o->tex); /* the program is the context's (lx_program_build) */
 	lx_gl.DeleteBuffers(1, &o->vbo);
 	free(o);
 }

@@ -399,17 +399,9 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		lx_gl.DeleteRenderbuffers(1, &r->target_depth);
 		lx_gl.DeleteFramebuffers(1, &r->target_fbo);
 	}
-	if (r->shadow_prog)
-		lx_gl.DeleteProgram(r->shadow_prog);
-	if (r->clear_prog)
-		lx_gl.DeleteProgram(r->clear_prog);
 	if (r->clear_vbo)
 		lx_gl.DeleteBuffers(1, &r->clear_vbo);
-	for (int a = 0; a < SHADINGS; a++)
-		for (int k = 0; k < LX_FILTER_COUNT; k++)
-			for (int c = 0; c < 1 << LX_MAX_MAPS; c++)
-				if (r->variant[a][k][c].prog)
-					lx_gl.DeleteProgram(r->variant[a][k][c].prog);
+	/* the programs are the context's (lx_program_build): kept for the next renderer */
 	if (r->piece_vbo)
 		lx_gl.DeleteBuffers(1, &r->piece_vbo);
 	if (r->facing_ibo)

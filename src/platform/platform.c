@@ -1,5 +1,6 @@
 #include "platform.h"
 #include "gl_api.h"
+#include "gl_program.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -44,6 +45,8 @@ struct lx_platform *lx_platform_create_display(const char *name, int width, int 
 
 void lx_platform_destroy(struct lx_platform *p)
 {
-	if (p)
-		p->destroy(p);
+	if (!p)
+		return;
+	lx_programs_forget(); /* while its context is current */
+	p->destroy(p);
 }
