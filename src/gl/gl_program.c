@@ -73,8 +73,10 @@ static GLuint link(const char *vert, const char *vs_src, const char *frag, const
 }
 
 /* The programs the current context keeps, by their two texts. A program object owns
- * what the driver compiled for it (llvmpipe JIT-compiles each program's variants anew:
- * most of a short run's time), so building the same texts twice in a context is waste. */
+ * what the driver compiled for it (llvmpipe compiles each program's variants with LLVM,
+ * or loads them from Mesa's shader cache, when first drawn), so building the same texts
+ * twice in a context is waste: test_render, some 200 renderers in one context, took a
+ * tenth more CPU time without this. */
 struct kept {
 	char *texts; /* the vertex shader's text, a NUL, the fragment shader's */
 	size_t len;
