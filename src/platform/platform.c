@@ -16,7 +16,7 @@ static struct lx_platform *with_gl(struct lx_platform *p, const char *name, char
 	const char *missing = NULL;
 	if (!lx_gl_load(p->get_proc, &missing)) {
 		snprintf(err, errlen, "%s: the GL entry point %s is missing", name, missing);
-		lx_platform_destroy(p);
+		p->destroy(p); /* no GL of its own was loaded: no programs to forget */
 		return NULL;
 	}
 	return p;
