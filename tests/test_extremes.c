@@ -264,7 +264,7 @@ static void random_extremes_warn_or_match(void **state)
  * warning a mismatch under 1% (but for the method none, which shadows nothing). Returns
  * whether it warned. */
 static bool light_warns_or_matches(struct lx_method_run *run, int l, const struct pixels *px, const uint8_t *ref_sh,
-				   const char *what)
+				   const struct lx_plane_points *pts, const char *what)
 {
 	ref_sh += (size_t)l * W * H; /* every light's, light after light */
 	const struct lx_light_maps *lm = &run->lights[l];
@@ -272,7 +272,7 @@ static bool light_warns_or_matches(struct lx_method_run *run, int l, const struc
 	struct lx_mismatch mm;
 	struct lx_plane_report planes[LX_MAX_PLANES];
 	struct lx_shadow_result res = lm->result;
-	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, NULL, &mm, planes);
+	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, pts, &mm, planes);
 	lx_sampling_warnings(planes, lm->frame.scene->plane_count, lx_atlas_lixels(&lm->atlas), &res);
 	if (!finite_report(&res, &mm, planes, lm->frame.scene->plane_count))
 		fail_msg("%s, light %d: a NaN or infinity in the matrices or the report", what, l + 1);
@@ -331,9 +331,13 @@ static void two_extreme_lights_warn_or_match(void **state)
 				 "%.9g aimed at %.9g %.9g %.9g", k, kind, sc.camera.eye.x, sc.camera.eye.y, sc.camera.eye.z,
 				 sc.camera.at.x, sc.camera.at.y, sc.camera.at.z, sc.lights[1].position.x, sc.lights[1].position.y,
 				 sc.lights[1].position.z, sc.lights[1].at.x, sc.lights[1].at.y, sc.lights[1].at.z);
+			struct lx_plane_points pts;
 			for (int m = 0; m < NM; m++) {
 				lx_method_run_draw(&run[m], &frame);
-				assert_true(lx_method_run_reference(&run[m], px.ref_obj, ref_sh, ref_rgba, 2));
+				if (m == 0) { /* the lights' frames and images are every run's: one reference for all */
+					assert_true(lx_method_run_reference(&run[m], px.ref_obj, ref_sh, ref_rgba, 2));
+					assert_true(lx_plane_points_make(&frame, px.ref_obj, &pts));
+				}
 				lx_renderer_read(run[m].renderer, px.rgba);
 				double colour = lx_colour_error(px.rgba, ref_rgba, (long)W * H);
 				assert_true(isfinite(colour));
@@ -347,8 +351,9 @@ static void two_extreme_lights_warn_or_match(void **state)
 				char who[440];
 				snprintf(who, sizeof who, "%s, %s", what, methods[m]);
 				for (int l = 0; l < 2; l++, frames++)
-					warned += light_warns_or_matches(&run[m], l, &px, ref_sh, who);
+					warned += light_warns_or_matches(&run[m], l, &px, ref_sh, &pts, who);
 			}
+			lx_plane_points_free(&pts);
 		}
 		for (int m = 0; m < NM; m++)
 			lx_method_run_free(&run[m]);
