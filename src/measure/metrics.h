@@ -60,7 +60,7 @@ struct lx_plane_points {
 bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, struct lx_plane_points *out);
 void lx_plane_points_free(struct lx_plane_points *pts);
 /* lx_plane_sampling with the points of pts (made of the same frame's view and ref_object),
- * its figures the same. */
+ * its figures the same; with pts NULL, lx_plane_sampling. */
 bool lx_plane_sampling_at(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 			  int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
 			  struct lx_plane_sampling *out);
