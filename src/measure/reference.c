@@ -29,6 +29,14 @@ struct lx_raycaster {
 
 static vec3 centroid(const struct tri *t) { return v3_add(t->a, v3_scale(v3_add(t->e1, t->e2), 1.0 / 3)); }
 
+/* The triangle's box. */
+static void tri_box(const struct tri *t, vec3 *lo, vec3 *hi)
+{
+	vec3 b = v3_add(t->a, t->e1), c = v3_add(t->a, t->e2);
+	*lo = v3_min(t->a, v3_min(b, c));
+	*hi = v3_max(t->a, v3_max(b, c));
+}
+
 static double half_area(vec3 lo, vec3 hi)
 {
 	vec3 e = v3_sub(hi, lo);
@@ -46,36 +54,43 @@ static void sah_split(const struct lx_raycaster *rc, int first, int count, vec3 
 	vec3 ext = v3_sub(chi, clo);
 	*axis_out = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
 	*split_out = ((&clo.x)[*axis_out] + (&chi.x)[*axis_out]) / 2;
+	/* every axis's bins in one pass over the triangles: each box and centroid once */
+	vec3 blo[3][LX_SAH_BINS], bhi[3][LX_SAH_BINS];
+	int n[3][LX_SAH_BINS] = {{0}};
+	for (int axis = 0; axis < 3; axis++)
+		for (int b = 0; b < LX_SAH_BINS; b++)
+			blo[axis][b] = v3(INFINITY, INFINITY, INFINITY), bhi[axis][b] = v3(-INFINITY, -INFINITY, -INFINITY);
+	for (int i = first; i < first + count; i++) {
+		vec3 lo, hi, m = centroid(&rc->tris[i]);
+		tri_box(&rc->tris[i], &lo, &hi);
+		for (int axis = 0; axis < 3; axis++) {
+			double len = (&ext.x)[axis];
+			if (!(len > 0))
+				continue;
+			int b = (int)(LX_SAH_BINS * (((&m.x)[axis] - (&clo.x)[axis]) / len)); /* len > 0 */
+			b = b < 0 ? 0 : b >= LX_SAH_BINS ? LX_SAH_BINS - 1 : b;
+			n[axis][b]++;
+			blo[axis][b] = v3_min(blo[axis][b], lo);
+			bhi[axis][b] = v3_max(bhi[axis][b], hi);
+		}
+	}
 	double best = INFINITY;
 	for (int axis = 0; axis < 3; axis++) {
 		double lo = (&clo.x)[axis], len = (&ext.x)[axis];
 		if (!(len > 0))
-			continue;
-		vec3 blo[LX_SAH_BINS], bhi[LX_SAH_BINS];
-		int n[LX_SAH_BINS] = {0};
-		for (int b = 0; b < LX_SAH_BINS; b++)
-			blo[b] = v3(INFINITY, INFINITY, INFINITY), bhi[b] = v3(-INFINITY, -INFINITY, -INFINITY);
-		for (int i = first; i < first + count; i++) {
-			const struct tri *t = &rc->tris[i];
-			vec3 m = centroid(t), b1 = v3_add(t->a, t->e1), b2 = v3_add(t->a, t->e2);
-			int b = (int)(LX_SAH_BINS * (((&m.x)[axis] - lo) / len)); /* len > 0 */
-			b = b < 0 ? 0 : b >= LX_SAH_BINS ? LX_SAH_BINS - 1 : b;
-			n[b]++;
-			blo[b] = v3_min(blo[b], v3_min(t->a, v3_min(b1, b2)));
-			bhi[b] = v3_max(bhi[b], v3_max(t->a, v3_max(b1, b2)));
-		}
+			continue; /* the centroids coincide on it */
 		/* the cost of cutting after bin k: left bins' area x count + right bins' */
 		double right_cost[LX_SAH_BINS];
 		vec3 rlo = v3(INFINITY, INFINITY, INFINITY), rhi = v3(-INFINITY, -INFINITY, -INFINITY);
 		int rn = 0;
 		for (int b = LX_SAH_BINS - 1; b > 0; b--) {
-			rlo = v3_min(rlo, blo[b]), rhi = v3_max(rhi, bhi[b]), rn += n[b];
+			rlo = v3_min(rlo, blo[axis][b]), rhi = v3_max(rhi, bhi[axis][b]), rn += n[axis][b];
 			right_cost[b] = rn ? half_area(rlo, rhi) * rn : 0;
 		}
 		vec3 llo = v3(INFINITY, INFINITY, INFINITY), lhi = v3(-INFINITY, -INFINITY, -INFINITY);
 		int ln = 0;
 		for (int b = 0; b < LX_SAH_BINS - 1; b++) {
-			llo = v3_min(llo, blo[b]), lhi = v3_max(lhi, bhi[b]), ln += n[b];
+			llo = v3_min(llo, blo[axis][b]), lhi = v3_max(lhi, bhi[axis][b]), ln += n[axis][b];
 			if (!ln || ln == count)
 				continue;
 			double cost = half_area(llo, lhi) * ln + right_cost[b + 1];
@@ -102,9 +117,10 @@ static int build(struct lx_raycaster *rc, int first, int count, int depth)
 	vec3 clo = n->lo, chi = n->hi;
 	for (int i = first; i < first + count; i++) {
 		const struct tri *t = &rc->tris[i];
-		vec3 b = v3_add(t->a, t->e1), c = v3_add(t->a, t->e2);
-		n->lo = v3_min(n->lo, v3_min(t->a, v3_min(b, c)));
-		n->hi = v3_max(n->hi, v3_max(t->a, v3_max(b, c)));
+		vec3 lo, hi;
+		tri_box(t, &lo, &hi);
+		n->lo = v3_min(n->lo, lo);
+		n->hi = v3_max(n->hi, hi);
 		vec3 m = centroid(t);
 		clo = v3_min(clo, m);
 		chi = v3_max(chi, m);
@@ -317,10 +333,9 @@ bool lx_raycast_near(const struct lx_raycaster *rc, vec3 a, vec3 b, double r, in
 			continue;
 		}
 		for (int i = n->first; i < n->first + n->count; i++) {
-			const struct tri *t = &rc->tris[i];
-			vec3 p1 = v3_add(t->a, t->e1), p2 = v3_add(t->a, t->e2);
-			if (t->object != skip_object &&
-			    segment_meets_box(a, inv, v3_min(t->a, v3_min(p1, p2)), v3_max(t->a, v3_max(p1, p2)), r))
+			vec3 lo, hi;
+			tri_box(&rc->tris[i], &lo, &hi);
+			if (rc->tris[i].object != skip_object && segment_meets_box(a, inv, lo, hi, r))
 				return true;
 		}
 	}
