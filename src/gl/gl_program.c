@@ -130,13 +130,14 @@ static void kept_add(char *texts, size_t len, GLuint prog)
 
 void lx_programs_forget(void)
 {
-	if (kept.context == lx_gl_context_serial())
-		for (int i = 0; i < kept.count; i++)
+	bool current = kept.context == lx_gl_context_serial();
+	for (int i = 0; i < kept.count; i++) {
+		if (current)
 			lx_gl.DeleteProgram(kept.at[i].prog);
-	kept.context = 0; /* never a context's serial: the next call empties the list */
-	kept_for_this_context();
+		free(kept.at[i].texts);
+	}
 	free(kept.at);
-	kept.at = NULL, kept.room = 0;
+	kept.at = NULL, kept.count = kept.room = 0, kept.reused = 0;
 }
 
 void lx_programs_counts(int *kept_count, long *reused)

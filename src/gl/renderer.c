@@ -999,10 +999,10 @@ static void pass_state(struct lx_renderer *r, enum pass_kind kind)
 }
 
 /* After a light's pass: back to the state every other pass expects (and the first
- * light's pass and a decision take as it is). */
+ * light's pass and a decision take as it is). Culling is left as the last draw had it:
+ * each pass that draws sets its own (pass_state, the shadow pass, the atlas clear). */
 static void light_pass_done(enum pass_kind kind)
 {
-	lx_gl.Disable(GL_CULL_FACE);
 	if (kind != ADDED_LIGHT)
 		return;
 	lx_gl.Disable(GL_BLEND);
