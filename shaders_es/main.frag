@@ -1,15 +1,9 @@
 #version 100
-#ifndef LX_USE_0
-#define LX_USE_0 0
+#ifndef LX_SHADOWED
+#define LX_SHADOWED 0
 #endif
-#ifndef LX_USE_1
-#define LX_USE_1 0
-#endif
-#ifndef LX_USE_2
-#define LX_USE_2 0
-#endif
-#ifndef LX_USE_3
-#define LX_USE_3 0
+#ifndef LX_READS
+#define LX_READS 0
 #endif
 #ifndef LX_FILTER
 #define LX_FILTER 0
@@ -23,9 +17,9 @@ precision mediump float;
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255, B = 1
 // where the pixel ran a lookup (the variant reads a map). With LX_FILTER (pcf.glsl), R is
 // the filtered shadow thresholded at one half and A the visibility, 1 - the filtered shadow.
-// The loader compiles one variant per set of maps a frame uses: LX_USE_i is 1 for each
-// map i that a draw reads.
-// With no maps (method none) nothing is shadowed.
+// The loader compiles one variant per count of maps a draw reads (LX_READS), whichever
+// they are: the draw puts their matrices, regions and clamps in the first slots, in the
+// maps' order. LX_SHADOWED: the method has maps (without, method none, nothing is shadowed).
 //!include depth_rgba.glsl
 uniform vec3 u_color;
 uniform float u_object_id;
@@ -38,28 +32,30 @@ uniform float u_object_id;
 #if defined(LX_LIGHT_COLOR) || defined(LX_PROJECTIVE)
 uniform vec3 u_light_color;
 #endif
-#if LX_MAPS > 0
+#if LX_SHADOWED
+varying float v_facing; // > 0 where the face is turned towards the light
+#endif
+#if LX_READS > 0
 uniform sampler2D u_atlas;
-uniform vec4 u_region[LX_MAPS]; // the rays a map serves: texture-space bounds (x0, y0, x1, y1),
-                                // empty when not rendered
-uniform float u_bias;           // in depth codes
-varying float v_facing;         // > 0 where the face is turned towards the light
+uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bounds (x0, y0,
+                                 // x1, y1), empty when not rendered
+uniform float u_bias;            // in depth codes
 #if LX_FILTER > 0
 // --filter pcf2x2 (1) or pcf3x3 (2): several texels of the map around the point, each
 // compared, the results averaged (shaders_es/pcf.glsl)
 //!include pcf.glsl
 #endif
 #endif
-#if LX_USE_0
+#if LX_READS > 0
 varying vec4 v_shadow0;
 #endif
-#if LX_USE_1
+#if LX_READS > 1
 varying vec4 v_shadow1;
 #endif
-#if LX_USE_2
+#if LX_READS > 2
 varying vec4 v_shadow2;
 #endif
-#if LX_USE_3
+#if LX_READS > 3
 varying vec4 v_shadow3;
 #endif
 varying vec3 v_to_light; // towards the light, not normalised
@@ -82,7 +78,7 @@ vec3 projected_light()
 }
 #endif
 
-#if LX_MAPS > 0
+#if LX_READS > 0
 // 1.0 where a map serves the point (in front of its light, inside its bounds), else 0.0.
 // No branches and no && (it short-circuits): llvmpipe runs both sides of every branch
 // and small GPUs pay for each; called with constant indices only, since indexing
@@ -97,7 +93,7 @@ float served(vec3 p, float w, vec4 region)
 void main()
 {
 	float shadowed = 0.0;
-#if LX_MAPS > 0
+#if LX_SHADOWED
 	// The first map, in order, that serves the point is read: each later one only takes
 	// over where no earlier one served (GLSL ES 1.00 has no token pasting, so each is
 	// written out). Then one fetch and the compare (LX_FILTER: several, averaged); a point no
@@ -107,7 +103,7 @@ void main()
 #if LX_FILTER > 0
 	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
 #endif
-#if LX_USE_0
+#if LX_READS > 0
 	q = v_shadow0.xyz / v_shadow0.w;
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
@@ -116,7 +112,7 @@ void main()
 #endif
 	found += s;
 #endif
-#if LX_USE_1
+#if LX_READS > 1
 	q = v_shadow1.xyz / v_shadow1.w;
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
@@ -125,7 +121,7 @@ void main()
 #endif
 	found += s;
 #endif
-#if LX_USE_2
+#if LX_READS > 2
 	q = v_shadow2.xyz / v_shadow2.w;
 	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
@@ -134,7 +130,7 @@ void main()
 #endif
 	found += s;
 #endif
-#if LX_USE_3
+#if LX_READS > 3
 	q = v_shadow3.xyz / v_shadow3.w;
 	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
@@ -143,7 +139,7 @@ void main()
 #endif
 	found += s;
 #endif
-#if LX_USE_0 || LX_USE_1 || LX_USE_2 || LX_USE_3
+#if LX_READS > 0
 #if LX_FILTER > 0
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */
 #else
@@ -159,9 +155,9 @@ void main()
 	/* filtered: R the decision, shadowed where the filtered shadow exceeds one half
 	 * (where a NEAREST edge lay); A the visibility the shading uses, 1 - shadowed */
 	gl_FragColor = vec4(float(shadowed > 0.5), (u_object_id + 1.25) / 255.0,
-			    LX_USE_0 + LX_USE_1 + LX_USE_2 + LX_USE_3 > 0 ? 1.0 : 0.0, 1.0 - shadowed);
+			    LX_READS > 0 ? 1.0 : 0.0, 1.0 - shadowed);
 #else
-	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_USE_0 + LX_USE_1 + LX_USE_2 + LX_USE_3 > 0 ? 1.0 : 0.0,
+	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_READS > 0 ? 1.0 : 0.0,
 			    1.0);
 #endif
 #else

@@ -1,37 +1,35 @@
 #version 100
-#ifndef LX_USE_0
-#define LX_USE_0 0
+#ifndef LX_SHADOWED
+#define LX_SHADOWED 0
 #endif
-#ifndef LX_USE_1
-#define LX_USE_1 0
+#ifndef LX_READS
+#define LX_READS 0
 #endif
-#ifndef LX_USE_2
-#define LX_USE_2 0
-#endif
-#ifndef LX_USE_3
-#define LX_USE_3 0
-#endif
-// Main pass. LX_MAPS (0 to 4) shadow maps exist; a variant reads those with LX_USE_i = 1
-// and declares varyings for those only: every varying costs an interpolation per pixel.
+// Main pass. LX_SHADOWED: the method has shadow maps (the face test); LX_READS (0 to 4):
+// how many of them a draw reads, their matrices in the first slots in the maps' order
+// (one variant serves every set of that many maps), a varying each and no more: every
+// varying costs an interpolation per pixel.
 uniform mat4 u_view_proj;
 uniform vec3 u_offset; // object translation in world space
 uniform vec4 u_light;  // xyz: position (w = 1) or direction of travel (w = 0)
-#if LX_MAPS > 0
-uniform mat4 u_shadow_tex[LX_MAPS]; // atlas (s, t, depth, q) <- world
+#if LX_READS > 0
+uniform mat4 u_shadow_tex[LX_READS]; // atlas (s, t, depth, q) <- world, per map read
+#endif
+#if LX_SHADOWED
 // Which side of its face a point is on, as seen from the light: affine in the position,
 // so one interpolated float is exact where the face normal and the light would be three.
 varying float v_facing;
 #endif
-#if LX_USE_0
+#if LX_READS > 0
 varying vec4 v_shadow0;
 #endif
-#if LX_USE_1
+#if LX_READS > 1
 varying vec4 v_shadow1;
 #endif
-#if LX_USE_2
+#if LX_READS > 2
 varying vec4 v_shadow2;
 #endif
-#if LX_USE_3
+#if LX_READS > 3
 varying vec4 v_shadow3;
 #endif
 attribute vec3 a_position;
@@ -53,19 +51,19 @@ void main()
 #ifdef LX_PROJECTIVE
 	v_beam = u_beam * world;
 #endif
-#if LX_MAPS > 0
+#if LX_SHADOWED
 	v_facing = dot(a_face_normal, v_to_light);
 #endif
-#if LX_USE_0
+#if LX_READS > 0
 	v_shadow0 = u_shadow_tex[0] * world;
 #endif
-#if LX_USE_1
+#if LX_READS > 1
 	v_shadow1 = u_shadow_tex[1] * world;
 #endif
-#if LX_USE_2
+#if LX_READS > 2
 	v_shadow2 = u_shadow_tex[2] * world;
 #endif
-#if LX_USE_3
+#if LX_READS > 3
 	v_shadow3 = u_shadow_tex[3] * world;
 #endif
 	gl_Position = u_view_proj * world;

@@ -1,7 +1,7 @@
 // Percentage-closer filtering [Reeves] by hand on the RGBA8 depth (--filter; the
 // reasoning and the CPU side: src/shadow/shadow_filter.h). Included by main.frag when LX_FILTER is 1
 // (pcf2x2) or 2 (pcf3x3), after u_atlas and u_bias and the depth codes.
-uniform vec4 u_clamp[LX_MAPS]; // per map: the texel centres at its atlas region's edges (x0, y0, x1, y1)
+uniform vec4 u_clamp[LX_READS]; // per map read: the texel centres at its atlas region's edges (x0, y0, x1, y1)
 uniform vec4 u_texel;          // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
 
 // 1.0 where the texel at atlas point t, clamped into the map's region, holds a depth

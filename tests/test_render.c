@@ -970,7 +970,7 @@ static void shader_failures_show_the_log(void **state)
 		const char *no_main = "#version 100\nprecision mediump float;\nvoid helper() {}\n";
 		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "nomain.frag", no_main, NULL, err, sizeof err), 0);
 		assert_true(strstr(err, "nomain.frag") != NULL);
-		GLuint prog = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
+		GLuint prog = lx_program_build("main.vert", "main.frag", "#define LX_SHADOWED 1\n#define LX_READS 3\n", err, sizeof err);
 		if (!prog)
 			fail_msg("%s", err);
 		lx_platform_destroy(plat);
@@ -992,9 +992,9 @@ static void programs_are_kept_per_context(void **state)
 		long reused;
 		lx_programs_counts(&kept, &reused);
 		assert_int_equal(kept, 0); /* none of the context before */
-		GLuint a = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
-		GLuint b = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 3\n", err, sizeof err);
-		GLuint c = lx_program_build("main.vert", "main.frag", "#define LX_MAPS 2\n", err, sizeof err);
+		GLuint a = lx_program_build("main.vert", "main.frag", "#define LX_SHADOWED 1\n#define LX_READS 3\n", err, sizeof err);
+		GLuint b = lx_program_build("main.vert", "main.frag", "#define LX_SHADOWED 1\n#define LX_READS 3\n", err, sizeof err);
+		GLuint c = lx_program_build("main.vert", "main.frag", "#define LX_SHADOWED 1\n#define LX_READS 2\n", err, sizeof err);
 		const char *vert = lx_embedded_text(lx_shader_files, "shadow_depth.vert");
 		assert_int_equal(lx_program_build_text("shadow_depth.vert", vert, "broken.frag", "void main() { x; }\n", NULL, err,
 						       sizeof err), 0);

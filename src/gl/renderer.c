@@ -83,8 +83,9 @@ struct lx_renderer {
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
-	/* main-pass variants, built when first used: [shading][filter][mask of the maps a draw reads] */
-	struct main_program variant[SHADINGS][LX_FILTER_COUNT][1 << LX_MAX_MAPS];
+	/* main-pass variants, built when first used: [shading][filter][how many maps a draw
+	 * reads] (whichever they are: a draw puts theirs in the first slots, set_maps) */
+	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	bool mediump;
 	float bias_uniform;
@@ -117,11 +118,11 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, unsigned mask, bool mediump,
+static bool main_program(struct main_program *p, int maps, int shading, int reads, bool mediump,
 			 enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
-	lx_main_defines(maps, mask, shading == SHADING_DECISION, mediump, defines, sizeof defines);
+	lx_main_defines(maps, reads, shading == SHADING_DECISION, mediump, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -160,7 +161,7 @@ static bool light_coloured(const struct lx_light *l)
  * (built now, so that a shader error shows when the filter is chosen). */
 static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
 {
-	unsigned all = (1u << r->d.map_count) - 1;
+	int all = r->d.map_count;
 	for (int i = -1; i < r->d.light_count; i++) {
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
@@ -542,17 +543,27 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.Disable(GL_CULL_FACE);
 }
 
-/* The main-pass variant for a shading and a set of maps, built when first used. */
-static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned mask)
+/* How many maps a set holds. */
+static int maps_in(unsigned mask)
 {
-	struct main_program *p = &r->variant[shading][r->filter][mask];
+	int n = 0;
+	for (; mask; mask &= mask - 1)
+		n++;
+	return n;
+}
+
+/* The main-pass variant for a shading and the maps a draw reads, built when first used;
+ * *mask becomes every map when it cannot be (cannot happen once the variant reading every
+ * map, built at the start, compiled). */
+static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned *mask)
+{
+	struct main_program *p = &r->variant[shading][r->filter][maps_in(*mask)];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, mask, r->mediump, r->filter, err, sizeof err)) {
-			/* cannot happen once the full variant compiled; fall back to it */
+		if (!main_program(p, r->d.map_count, shading, maps_in(*mask), r->mediump, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
-			unsigned all = (1u << r->d.map_count) - 1;
-			p = &r->variant[shading][r->filter][all];
+			*mask = (1u << r->d.map_count) - 1;
+			p = &r->variant[shading][r->filter][r->d.map_count];
 		}
 	}
 	return p;
@@ -931,34 +942,47 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	}
 }
 
-/* A filtered variant's uniforms: each map's region to clamp to, the atlas's texel. */
-static void filter_uniforms(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u)
-{
-	double w = r->texture_width, h = r->texture_height; /* >= 1 */
-	lx_gl.Uniform4fv(p->clamp, r->d.map_count, u->clamp[0]);
-	lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
-}
 
 /* What a pass of the main pass draws: the first light's shading (the target cleared, the
  * ambient term), another light's added to it, or one light's decision. */
 enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
 
-/* A program's uniforms for a frame, set when the program changes. */
+/* The maps of a set, in their order, into a variant's first slots: matrices, regions and
+ * (filtered) clamps, and the atlas's texel. */
+static void set_maps(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
+		     unsigned mask)
+{
+	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
+	int n = 0;
+	for (int m = 0; m < r->d.map_count; m++)
+		if (mask & 1u << m) {
+			memcpy(tex[n], u->tex[m], sizeof tex[n]);
+			memcpy(region[n], u->region[m], sizeof region[n]);
+			memcpy(clamp[n], u->clamp[m], sizeof clamp[n]);
+			n++;
+		}
+	lx_gl.UniformMatrix4fv(p->shadow_tex, n, GL_FALSE, tex[0]);
+	lx_gl.Uniform4fv(p->region, n, region[0]);
+	lx_gl.Uniform1f(p->bias, r->bias_uniform);
+	lx_gl.Uniform1i(p->atlas, 0);
+	if (r->filter != LX_FILTER_NONE) {
+		double w = r->texture_width, h = r->texture_height; /* >= 1 */
+		lx_gl.Uniform4fv(p->clamp, n, clamp[0]);
+		lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
+	}
+}
+
+/* A program's uniforms for a frame and the maps a run of draws reads, set when either
+ * changes. */
 static void use_program(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
-			bool reads_maps)
+			unsigned mask)
 {
 	lx_gl.UseProgram(p->prog);
 	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u->view_proj);
 	lx_gl.Uniform4f(p->light, u->light[0], u->light[1], u->light[2], u->light[3]);
 	lx_gl.Uniform3fv(p->light_color, 1, u->light_color);
-	if (r->d.map_count > 0 && reads_maps) {
-		lx_gl.UniformMatrix4fv(p->shadow_tex, r->d.map_count, GL_FALSE, u->tex[0]);
-		lx_gl.Uniform4fv(p->region, r->d.map_count, u->region[0]);
-		lx_gl.Uniform1f(p->bias, r->bias_uniform);
-		lx_gl.Uniform1i(p->atlas, 0);
-		if (r->filter != LX_FILTER_NONE)
-			filter_uniforms(r, p, u);
-	}
+	if (mask)
+		set_maps(r, p, u, mask);
 	if (p->beam >= 0) {
 		lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u->beam);
 		lx_gl.Uniform3fv(p->range, 1, u->range);
@@ -1057,8 +1081,9 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		const struct draw *d = &r->draws[k];
 		if (!p || d->mask != current) {
 			current = d->mask;
-			p = variant_for(r, shading, current);
-			use_program(r, p, &u, current != 0);
+			unsigned reads = current;
+			p = variant_for(r, shading, &reads);
+			use_program(r, p, &u, reads);
 		}
 		bool cull = culls_back_faces(f, d->object, r->d.scene->plane_count);
 		if (cull != culling) {

@@ -108,11 +108,8 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 	return src;
 }
 
-void lx_main_defines(int maps, unsigned mask, bool decision, bool mediump, char *out, size_t len)
+void lx_main_defines(int maps, int reads, bool decision, bool mediump, char *out, size_t len)
 {
-	snprintf(out, len,
-		 "#define LX_MAPS %d\n#define LX_USE_0 %d\n"
-		 "#define LX_USE_1 %d\n#define LX_USE_2 %d\n#define LX_USE_3 %d\n%s%s",
-		 maps, (mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0, (mask & 8) != 0,
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s", maps > 0, reads,
 		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
 }

@@ -10,9 +10,10 @@
  * highp made mediump, as Mesa's lima computes fragment shaders (LIXEL_SIMULATE_LIMA). */
 char *lx_shader_text(const char *name, const char *text, const char *defines, bool simulate_lima_fragment, char *err,
 		     size_t errlen);
-/* The main pass's defines for a variant: maps the method has, the maps it reads (bit i:
- * map i), the decision output, the mediump depth path. */
-void lx_main_defines(int maps, unsigned mask, bool decision, bool mediump, char *out, size_t len);
+/* The main pass's defines for a variant: how many maps the method has (any: the face
+ * test), how many of them a draw reads (0 to maps; the draw puts them in the first slots),
+ * the decision output, the mediump depth path. */
+void lx_main_defines(int maps, int reads, bool decision, bool mediump, char *out, size_t len);
 
 /* Whether LIXEL_SIMULATE_LIMA=1 is set: fragment shaders are then compiled with every
  * highp made mediump (Mesa's lima computes fragments in fp16 while claiming highp). */
