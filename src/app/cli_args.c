@@ -1,4 +1,5 @@
 #include "cli_args.h"
+#include "platform.h"
 #include "shadow_method.h"
 #include "soft_reference.h"
 #include <stdlib.h>
@@ -94,6 +95,26 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 			return lx_arg_bad_number(cmd, opt, "degrees from 0 to 20", value, e);
 	} else
 		return -1;
+	return 0;
+}
+
+bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		if (!strcmp(opt, t[i].name)) {
+			*t[i].to = value;
+			return true;
+		}
+	return false;
+}
+
+int lx_arg_platform(const char *cmd, const char *opt, const char *value, const char **platform)
+{
+	if (strcmp(opt, "--platform"))
+		return -1;
+	if (!lx_platform_known(value))
+		return lx_arg_bad(cmd, opt, lx_platform_names(), value);
+	*platform = value;
 	return 0;
 }
 

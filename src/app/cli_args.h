@@ -18,6 +18,16 @@ enum lx_number_error lx_arg_triple(const char *s, vec3 *out);
  * next argument, *i steps over it, and 0 is returned; else one line and 2. */
 int lx_arg_value(const char *cmd, int argc, char **argv, int *i, const char *const *names, size_t n,
 		 const char **value);
+/* Options whose value is kept as given (an output path, a name looked up later): the
+ * value goes to *to of the entry named opt. Returns whether opt was one of the n. */
+struct lx_arg_text {
+	const char *name;
+	const char **to;
+};
+bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t, size_t n);
+/* --platform NAME, one of lx_platform_names() (render, bench): 0 when opt is it and the
+ * name is known, 2 (after the one line) when not, -1 for another option. */
+int lx_arg_platform(const char *cmd, const char *opt, const char *value, const char **platform);
 /* The scene of --scene: NULL for the default, a built-in name, or a file. Prints the
  * file's FILE:LINE error and returns false when it does not load. */
 bool lx_arg_scene(const char *arg, struct lx_scene *s);

@@ -382,21 +382,19 @@ static int view_option(struct render_args *r, const char *a, const char *v)
 static int job_option(struct lx_render_job *job, const char *a, const char *v)
 {
 	enum lx_number_error e;
-	if (!strcmp(a, "--platform")) {
-		if (!lx_platform_known(v))
-			return bad(a, lx_platform_names(), v);
-		job->platform = v;
-	} else if (!strcmp(a, "--out"))
-		job->out_png = v;
-	else if (!strcmp(a, "--decision-out"))
-		job->decision_png = v;
-	else if (!strcmp(a, "--mismatch-out"))
-		job->mismatch_png = v, job->measure = true;
-	else if (!strcmp(a, "--reference-out"))
-		job->reference_png = v, job->measure = true;
-	else if (!strcmp(a, "--atlas-out"))
-		job->atlas_png = v;
-	else if (!strcmp(a, "--frames")) {
+	const struct lx_arg_text outputs[] = {{"--out", &job->out_png},
+					      {"--decision-out", &job->decision_png},
+					      {"--mismatch-out", &job->mismatch_png},
+					      {"--reference-out", &job->reference_png},
+					      {"--atlas-out", &job->atlas_png}};
+	int st;
+	if (lx_arg_text(a, v, outputs, sizeof outputs / sizeof outputs[0])) {
+		job->measure |= job->mismatch_png || job->reference_png; /* those images need it */
+		return 0;
+	}
+	if ((st = lx_arg_platform("render", a, v, &job->platform)) >= 0)
+		return st;
+	if (!strcmp(a, "--frames")) {
 		if ((e = lx_number_int(v, 1, 100000, &job->timed_frames)))
 			return bad_number(a, "a whole number of frames from 1 to 100000", v, e);
 	} else if (!strcmp(a, "--uniform-lixels") || !strcmp(a, "--plane-lixels") || !strcmp(a, "--fallback-lixels")) {
