@@ -52,6 +52,7 @@ struct bench {
 	struct lx_method_options options; /* the plane maps' options (each method may add its own: plane/square) */
 	enum lx_depth_precision depth_precision;
 	struct lx_depth_choice depth; /* the path every method's run took (one driver, one choice) */
+	struct lx_gl_caps caps;
 	const char *configs[MAX_CONFIGS];
 	struct lx_scene scene;
 	struct row rows[MAX_RUNS][MAX_CONFIGS];
@@ -67,11 +68,12 @@ static void usage(FILE *f)
 		   "                   [--plane-max-lpp X] [--lookup-region R] [--depth-precision P]\n"
 		   "                   [--filters LIST] [--light-size DEG]\n"
 		   "\n"
-		   "Renders every method over every configuration: warm-up frames, then N timed frames\n"
-		   "(glFinish after the shadow passes and after the main pass; the methods interleaved\n"
-		   "frame by frame in a fresh order each frame, so that they share the machine's noise\n"
-		   "and the order of --methods does not matter), then the accuracy against the exact\n"
-		   "reference: the mismatch of the shadow decision, and the soft-edge error of the\n"
+		   "Renders every method over every configuration: N timed frames each (glFinish after\n"
+		   "the shadow passes and after the main pass), in 5 rounds: in each the methods take\n"
+		   "turns in a fresh order, each alone on GL objects made for the round, its warm-up\n"
+		   "frames first, so that they share the machine's noise, the order of --methods does\n"
+		   "not matter and no method keeps an unlucky allocation; then the accuracy against the\n"
+		   "exact reference: the mismatch of the shadow decision, and the soft-edge error of the\n"
 		   "visibility against a small area light. Prints a line per method, filter and\n"
 		   "configuration, then a summary per run: medians of the frame, its shadow passes and\n"
 		   "its main pass, with ratios to no shadows and to uniform. Run with LP_NUM_THREADS=1\n"
@@ -79,7 +81,8 @@ static void usage(FILE *f)
 		   "\n"
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
-		   "  --warmup N       warm-up frames (default 5)\n"
+		   "  --warmup N       warm-up frames per method and configuration, shared out over\n"
+		   "                   the rounds, at least one a round (default 5)\n"
 		   "  --methods LIST   comma-separated, from %s (default: all of them);\n"
 		   "                   plane takes options after slashes to compare settings in one run:\n"
 		   "                   plane/square (the paper's square maps), plane/shared (shared\n"
@@ -171,29 +174,67 @@ static void shuffled(int nm, unsigned long long *seq, int *order)
 	}
 }
 
-/* Warm-up and timed frames of every method, interleaved; times[(kind * nm + method) *
- * frames + frame]. The last frame stays in *frame. 0, or 2 when the view is degenerate. */
-static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim, struct lx_method_run *runs,
-		       const struct lx_scene_meshes *meshes, double *times, struct lx_frame *frame, char *err, size_t errlen)
+/* Rounds in which every method is timed alone, each round with GL objects made anew: on
+ * llvmpipe under a virtual machine one allocation of an atlas can read 20% slower than
+ * another for the same method, so a median over rounds outvotes an unlucky one. */
+#define TIME_ROUNDS 5
+
+/* A run made afresh for timing, as run m of the bench was made. 0, or 1 or 2 after err. */
+static int timing_run(const struct bench *b, int m, const struct lx_scene_meshes *meshes, struct lx_method_run *run,
+		      char *err, size_t errlen)
+{
+	enum lx_depth_precision path = b->depth.mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_HIGHP; /* the first run's choice */
+	int st = lx_method_run_init(run, b->methods[m], &b->scene, meshes, &b->caps, &b->options, b->width, b->height,
+				    path, LX_DEFAULT_BIAS_CODES, false, err, errlen);
+	if (!st)
+		st = lx_method_run_set_filter(run, b->filters[m], err, errlen);
+	if (st)
+		lx_method_run_free(run);
+	return st;
+}
+
+/* Frame i of a configuration into *frame: false after err (a degenerate view). */
+static bool frame_at(const struct bench *b, const struct lx_scene *scene, bool anim, const struct lx_scene_meshes *meshes,
+		     int i, struct lx_frame *frame, char *err, size_t errlen)
+{
+	return lx_frame_setup(frame, scene, meshes, anim ? i / 30.0 : 0.0, b->width, b->height, err, errlen);
+}
+
+/* Every method's timed frames, times[(kind * nm + method) * frames + frame]: in rounds
+ * (TIME_ROUNDS, fewer when there are fewer frames), each method alone in a fresh order
+ * each round, on a run of its own made for the round and freed after it, its share of
+ * the warm-up frames first (at least one when there are any: the first frame on new
+ * objects also pays for their memory). Each method renders the same frames. The last
+ * frame stays in *frame. 0; 1 or 2 after err. */
+static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim, const struct lx_scene_meshes *meshes,
+		       double *times, struct lx_frame *frame, char *err, size_t errlen)
 {
 	unsigned long long seq = 0x6c697865ull;
-	for (int i = 0; i < b->warmup + b->frames; i++) {
-		if (!lx_frame_setup(frame, scene, meshes, anim ? i / 30.0 : 0.0, b->width, b->height, err, errlen))
-			return 2;
-		int order[MAX_RUNS];
+	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
+	for (int r = 0, done = 0; r < rounds; r++) {
+		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
 		shuffled(b->nm, &seq, order);
 		for (int k = 0; k < b->nm; k++) {
-			int m = order[k];
-			struct lx_frame_times ft;
-			lx_method_run_frame(&runs[m], frame, &ft);
-			if (i < b->warmup)
-				continue;
-			double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms};
-			for (int q = 0; q < T_KINDS; q++)
-				times[((size_t)q * b->nm + m) * b->frames + i - b->warmup] = v[q];
+			int m = order[k], st;
+			struct lx_method_run run;
+			if ((st = timing_run(b, m, meshes, &run, err, errlen)))
+				return st;
+			for (int i = -warm; i < n; i++) {
+				struct lx_frame_times ft;
+				if (!frame_at(b, scene, anim, meshes, done + (i > 0 ? i : 0), frame, err, errlen)) {
+					lx_method_run_free(&run);
+					return 2;
+				}
+				lx_method_run_frame(&run, frame, &ft);
+				double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms};
+				for (int q = 0; q < T_KINDS && i >= 0; q++)
+					times[((size_t)q * b->nm + m) * b->frames + done + i] = v[q];
+			}
+			lx_method_run_free(&run);
 		}
+		done += n;
 	}
-	return 0;
+	return frame_at(b, scene, anim, meshes, b->frames - 1, frame, err, errlen) ? 0 : 2;
 }
 
 /* --strips: each method's last shaded frame side by side in DIR/CONFIG.png, panels at
@@ -356,7 +397,7 @@ static int run_config(struct bench *b, int ci, struct lx_method_run *runs, const
 		return 1;
 	}
 	struct lx_frame frame;
-	int st = time_frames(b, &scene, anim, runs, meshes, times, &frame, err, errlen);
+	int st = time_frames(b, &scene, anim, meshes, times, &frame, err, errlen);
 	if (!st && b->strips && !write_strip(b, config, runs, &frame, px->rgba, err, errlen))
 		st = 1;
 	if (!st)
@@ -753,11 +794,10 @@ static bool bench_alloc(struct bench *b, struct pixels *px)
 static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, struct lx_method_run *runs, int *ready,
 		     const struct pixels *px, char *err, size_t errlen)
 {
-	struct lx_gl_caps caps;
-	lx_gl_caps_probe(&caps);
+	lx_gl_caps_probe(&b->caps);
 	while (*ready < b->nm) {
 		struct lx_method_run *run = &runs[*ready];
-		int status = lx_method_run_init(run, b->methods[*ready], &b->scene, meshes, &caps, &b->options, b->width,
+		int status = lx_method_run_init(run, b->methods[*ready], &b->scene, meshes, &b->caps, &b->options, b->width,
 						b->height, b->depth_precision, LX_DEFAULT_BIAS_CODES, false, err, errlen);
 		if (status)
 			return status;
@@ -776,7 +816,7 @@ static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, stru
 	if (b->json)
 		print_json(b);
 	else
-		print_text(b, &caps);
+		print_text(b, &b->caps);
 	return (b->csv && !write_csv(b, err, errlen)) || (b->plot && !write_plot(b, err, errlen));
 }
 
