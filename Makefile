@@ -145,6 +145,10 @@ $(BUILD)/tests/%: tests/%.c $(CORE_LIB) $(GL_OBJ) $(BUILD)/gpio_button.o | $(BUI
 		$(PKG_CMOCKA_LIBS) $(PKG_PNG_LIBS) $(if $(filter $(GL_TESTS),$*),$(LIBS_GL) $(LIBS_GPIOD),) \
 		$(if $(filter test_gpio,$*),$(LIBS_GPIOD),) -lpthread -lm -o $@
 
+# The GL-free library needs nothing of the GL side: every one of its objects linked alone.
+$(BUILD)/core_alone: tests/core_alone.c $(CORE_LIB) | $(BUILD)
+	$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) $< -Wl,--whole-archive $(CORE_LIB) -Wl,--no-whole-archive $(PKG_PNG_LIBS) -lm -o $@
+
 # A helper of tests/kiosk_x11.sh: closes the kiosk's window from another X client.
 $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $(LDFLAGS) $< $(PKG_X11_LIBS) -o $@
@@ -162,7 +166,7 @@ $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h
 # too (clang and its runtimes).
 check: deps-check check-layers
 	@$(MAKE) --no-print-directory $(CHECK_JOBS) FUZZ_DIR=$(BUILD)/fuzz-quick FUZZ_OPT="-O0 -gline-tables-only" \
-		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o \
+		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone \
 		$(FUZZ_NAMES:%=$(BUILD)/fuzz-quick/%)
 	@FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=$(BUILD)/fuzz-quick \
 		sh tests/run-tests.sh $(BUILD)

@@ -631,7 +631,6 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 		return 0;
 	if ((st = lx_arg_depth_precision("bench", a, v, &b->depth_precision)) >= 0 ||
 	    (st = lx_arg_plane_option("bench", a, v, &b->options)) >= 0 ||
-	    (st = lx_arg_platform("bench", a, v, &b->platform)) >= 0 ||
 	    (!strcmp(a, "--light-size") && (st = lx_arg_filter("bench", a, v, &unused, &b->light_size_deg)) >= 0))
 		return st;
 	if (!strcmp(a, "--size")) {
@@ -649,6 +648,10 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 		if (strlen(v) >= room)
 			return bad(a, "a shorter list", v);
 		strcpy(to, v);
+	} else if (!strcmp(a, "--platform")) {
+		if (!lx_platform_known(v))
+			return bad(a, lx_platform_names(), v);
+		b->platform = v;
 	}
 	return 0;
 }

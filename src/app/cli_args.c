@@ -1,5 +1,4 @@
 #include "cli_args.h"
-#include "platform.h"
 #include "shadow_method.h"
 #include "soft_reference.h"
 #include <stdlib.h>
@@ -106,16 +105,6 @@ bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t
 			return true;
 		}
 	return false;
-}
-
-int lx_arg_platform(const char *cmd, const char *opt, const char *value, const char **platform)
-{
-	if (strcmp(opt, "--platform"))
-		return -1;
-	if (!lx_platform_known(value))
-		return lx_arg_bad(cmd, opt, lx_platform_names(), value);
-	*platform = value;
-	return 0;
 }
 
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o)

@@ -25,9 +25,6 @@ struct lx_arg_text {
 	const char **to;
 };
 bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t, size_t n);
-/* --platform NAME, one of lx_platform_names() (render, bench): 0 when opt is it and the
- * name is known, 2 (after the one line) when not, -1 for another option. */
-int lx_arg_platform(const char *cmd, const char *opt, const char *value, const char **platform);
 /* The scene of --scene: NULL for the default, a built-in name, or a file. Prints the
  * file's FILE:LINE error and returns false when it does not load. */
 bool lx_arg_scene(const char *arg, struct lx_scene *s);

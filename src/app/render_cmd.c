@@ -387,14 +387,15 @@ static int job_option(struct lx_render_job *job, const char *a, const char *v)
 					      {"--mismatch-out", &job->mismatch_png},
 					      {"--reference-out", &job->reference_png},
 					      {"--atlas-out", &job->atlas_png}};
-	int st;
 	if (lx_arg_text(a, v, outputs, sizeof outputs / sizeof outputs[0])) {
 		job->measure |= job->mismatch_png || job->reference_png; /* those images need it */
 		return 0;
 	}
-	if ((st = lx_arg_platform("render", a, v, &job->platform)) >= 0)
-		return st;
-	if (!strcmp(a, "--frames")) {
+	if (!strcmp(a, "--platform")) {
+		if (!lx_platform_known(v))
+			return bad(a, lx_platform_names(), v);
+		job->platform = v;
+	} else if (!strcmp(a, "--frames")) {
 		if ((e = lx_number_int(v, 1, 100000, &job->timed_frames)))
 			return bad_number(a, "a whole number of frames from 1 to 100000", v, e);
 	} else if (!strcmp(a, "--uniform-lixels") || !strcmp(a, "--plane-lixels") || !strcmp(a, "--fallback-lixels")) {
