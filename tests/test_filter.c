@@ -9,6 +9,7 @@
 #include "soft_reference.h"
 #include "test_util.h"
 #include "gl_fixture.h"
+#include "lookup_check.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -422,6 +423,24 @@ static long differ(const uint8_t *a, const uint8_t *b, long n)
 	return d;
 }
 
+/* Pixels where footprint's decision image a (R the decision, G the object, A the
+ * visibility) differs from all's b; *wrong counts those footprint may not change: any but
+ * a caster's own texels (lookup_check.h), where footprint is the lighter. */
+static long lookup_differ(const struct lx_frame *f, const uint8_t *a, const uint8_t *b, long *wrong)
+{
+	long d = 0, n = (long)f->view.width * f->view.height;
+	struct lx_raycaster *rc = NULL;
+	for (long i = 0; i < n; i++) {
+		const uint8_t *p = a + i * 4, *q = b + i * 4;
+		if (p[0] == q[0] && p[1] == q[1] && p[3] == q[3])
+			continue;
+		d++;
+		*wrong += !(p[1] == q[1] && own_texels(f, &rc, i, p[1] - 1, p[0] <= q[0] && p[3] >= q[3]));
+	}
+	lx_raycaster_destroy(rc);
+	return d;
+}
+
 /* A filter's samples stay in the map's own atlas region (clamped to its edge texels'
  * centres): with every texel outside the frame's regions made "near", every method and
  * configuration decides and shades every pixel (--lookup-region all: each one reads) as
@@ -499,7 +518,7 @@ static void filters_lookup_where_shadows_fall(void **state)
 	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
 	uint8_t *rgba[2] = {malloc((size_t)w * h * 4), malloc((size_t)w * h * 4)}, *sh = malloc((size_t)w * h);
 	int16_t *obj = malloc((size_t)w * h * sizeof(int16_t));
-	long frames = 0, looked[2] = {0, 0};
+	long frames = 0, own = 0, looked[2] = {0, 0};
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
 		struct lx_scene base;
 		assert_true(lx_scene_builtin(*sn, &base));
@@ -527,11 +546,13 @@ static void filters_lookup_where_shadows_fall(void **state)
 							lx_method_run_set_lookup_everywhere(&run, k == 1);
 							looked[k] += lx_method_run_decision(&run, 0, rgba[k], obj, sh);
 						}
-						long d = differ(rgba[0], rgba[1], (long)w * h);
-						if (d)
-							fail_msg("%s scene, %s, %s+%s, %s: %ld pixels differ between --lookup-region footprint and all",
+						long wrong = 0, d = lookup_differ(&f, rgba[0], rgba[1], &wrong);
+						if (wrong)
+							fail_msg("%s scene, %s, %s+%s, %s: %ld of %ld pixels that differ between --lookup-region "
+								 "footprint and all are not a caster's own texels",
 								 *sn, lx_configs[c].name, lx_shadow_method_at(i)->name,
-								 lx_filter_name((enum lx_filter)fl), mediump ? "mediump" : "highp", d);
+								 lx_filter_name((enum lx_filter)fl), mediump ? "mediump" : "highp", wrong, d);
+						own += d;
 						frames++;
 					}
 				}
@@ -539,8 +560,9 @@ static void filters_lookup_where_shadows_fall(void **state)
 			}
 		lx_meshes_free(&meshes);
 	}
-	print_message("%ld filtered frames identical with footprint and all; footprint looked up %.1f%% of the pixels "
-		      "all did\n", frames, looked[1] ? 100.0 * looked[0] / looked[1] : 0);
+	print_message("%ld filtered frames identical with footprint and all but for %ld pixels where all read a caster's "
+		      "own texels; footprint looked up %.1f%% of the pixels all did\n",
+		      frames, own, looked[1] ? 100.0 * looked[0] / looked[1] : 0);
 	free(rgba[0]), free(rgba[1]), free(sh), free(obj);
 	lx_platform_destroy(plat);
 }

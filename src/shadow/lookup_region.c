@@ -287,8 +287,8 @@ static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigne
 		if (!(mask & 1u << m))
 			continue;
 		for (int c = 0; c < f->object_count && n < MAX_HULLS; c++) {
-			if (v->count[m][c] < 0)
-				continue;
+			if (v->count[m][c] < 0 || c == receiver)
+				continue; /* nothing shadows itself where a lookup is drawn (lx_lookup_any) */
 			struct window_points w;
 			w.n = 0, w.everything = false;
 			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], &w);
@@ -326,11 +326,6 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
-	/* a caster lies in its own volume (whose image holds its image, beyond its nearest
-	 * depth) wherever a map draws it: the common case, found first */
-	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
-		if ((mask & 1u << m) && receiver >= v->frame->scene->plane_count && v->count[m][receiver] >= 0)
-			return true;
 	return shadow_hulls(v, receiver, mask, true, NULL) != 0;
 }
 

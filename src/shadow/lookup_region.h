@@ -9,7 +9,14 @@
  * the caster's nearest depth. For one caster that set is a convex volume in world space,
  * six half-spaces taken from the rows of the map's matrix (so it holds for every
  * method's warp); its part inside the receiver and in front of the eye, projected,
- * bounds the pixels. */
+ * bounds the pixels.
+ *
+ * A receiver's own volume is left out: a plane's holds none of it where a lookup is
+ * drawn (a plane turned away from the light is drawn without one), and a caster is a
+ * convex closed mesh, so none of its faces turned to the light lies in its own shadow (the
+ * face test shadows the others). What a lookup there would read of its own texels is the
+ * map's error at its terminator: left out, those pixels are lit, as the exact reference
+ * has them. */
 #ifndef LX_LOOKUP_REGION_H
 #define LX_LOOKUP_REGION_H
 #include "shadow_method.h"
@@ -68,7 +75,8 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
  * max < 1. */
 int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,
 		    struct lx_span *out, int max);
-/* Whether one of the maps in `mask` can shadow some point of receiver object `receiver`. */
+/* Whether one of the maps in `mask` can shadow some point of receiver object `receiver`
+ * by another object. */
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
