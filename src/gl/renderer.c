@@ -942,7 +942,6 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	}
 }
 
-
 /* What a pass of the main pass draws: the first light's shading (the target cleared, the
  * ambient term), another light's added to it, or one light's decision. */
 enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
