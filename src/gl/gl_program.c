@@ -89,8 +89,10 @@ static struct {
 	struct kept *at;
 } kept;
 
-/* The kept list, emptied first when it belongs to a context gone before (its names mean
- * nothing in this one). */
+/* The kept list, emptied first when it belongs to another context than the current one
+ * (its names mean nothing here): one gone before, or one that still lives while a second
+ * platform is made (a render job given no platform makes its own), whose programs then
+ * stay with it and go with it. */
 static void kept_for_this_context(void)
 {
 	if (kept.context == lx_gl_context_serial())
