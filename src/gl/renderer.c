@@ -947,7 +947,7 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
 
 /* The maps of a set, in their order, into a variant's first slots: matrices, regions and
- * (filtered) clamps, and the atlas's texel. */
+ * (filtered) clamps. Set whenever the set changes: variants serve many sets. */
 static void set_maps(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
 		     unsigned mask)
 {
@@ -962,26 +962,22 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 		}
 	lx_gl.UniformMatrix4fv(p->shadow_tex, n, GL_FALSE, tex[0]);
 	lx_gl.Uniform4fv(p->region, n, region[0]);
-	lx_gl.Uniform1f(p->bias, r->bias_uniform);
-	lx_gl.Uniform1i(p->atlas, 0);
-	if (r->filter != LX_FILTER_NONE) {
-		double w = r->texture_width, h = r->texture_height; /* >= 1 */
+	if (r->filter != LX_FILTER_NONE)
 		lx_gl.Uniform4fv(p->clamp, n, clamp[0]);
-		lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
-	}
 }
 
-/* A program's uniforms for a frame and the maps a run of draws reads, set when either
- * changes. */
-static void use_program(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
-			unsigned mask)
+/* A program's uniforms for a frame, set when the program changes (a uniform the variant
+ * lacks has location -1, which GL ignores). */
+static void use_program(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u)
 {
+	double w = r->texture_width, h = r->texture_height; /* >= 1 */
 	lx_gl.UseProgram(p->prog);
 	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u->view_proj);
 	lx_gl.Uniform4f(p->light, u->light[0], u->light[1], u->light[2], u->light[3]);
 	lx_gl.Uniform3fv(p->light_color, 1, u->light_color);
-	if (mask)
-		set_maps(r, p, u, mask);
+	lx_gl.Uniform1f(p->bias, r->bias_uniform);
+	lx_gl.Uniform1i(p->atlas, 0);
+	lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
 	if (p->beam >= 0) {
 		lx_gl.UniformMatrix4fv(p->beam, 1, GL_FALSE, u->beam);
 		lx_gl.Uniform3fv(p->range, 1, u->range);
@@ -1071,8 +1067,9 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	}
 	int n = frame_draws(r, f, res, lit_only);
-	/* a program set up whenever the maps read change, culling whenever it changes (a
-	 * caster's two draws and the planes' pieces come in runs) */
+	/* the maps set up whenever those read change, the program only when the variant does
+	 * (one serves every set of as many maps), culling whenever it changes (a caster's two
+	 * draws and the planes' pieces come in runs) */
 	struct main_program *p = NULL;
 	unsigned current = 0;
 	bool culling = false; /* as pass_state left it */
@@ -1081,8 +1078,12 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		if (!p || d->mask != current) {
 			current = d->mask;
 			unsigned reads = current;
-			p = variant_for(r, shading, &reads);
-			use_program(r, p, &u, reads);
+			struct main_program *v = variant_for(r, shading, &reads);
+			if (v != p)
+				use_program(r, v, &u);
+			p = v;
+			if (reads)
+				set_maps(r, p, &u, reads);
 		}
 		bool cull = culls_back_faces(f, d->object, r->d.scene->plane_count);
 		if (cull != culling) {
