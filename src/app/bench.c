@@ -179,11 +179,12 @@ static void shuffled(int nm, unsigned long long *seq, int *order)
  * another for the same method, so a median over rounds outvotes an unlucky one. */
 #define TIME_ROUNDS 5
 
-/* A run made afresh for timing, as run m of the bench was made. 0, or 1 or 2 after err. */
-static int timing_run(const struct bench *b, int m, const struct lx_scene_meshes *meshes, struct lx_method_run *run,
-		      char *err, size_t errlen)
+/* Run m of the bench (its method and filter) on the depth path `path`: the measuring
+ * runs with the one asked, each timing run with the one the first measuring run took.
+ * 0, or 1 or 2 after err, nothing left to free. */
+static int make_run(const struct bench *b, int m, enum lx_depth_precision path, const struct lx_scene_meshes *meshes,
+		    struct lx_method_run *run, char *err, size_t errlen)
 {
-	enum lx_depth_precision path = b->depth.mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_HIGHP; /* the first run's choice */
 	int st = lx_method_run_init(run, b->methods[m], &b->scene, meshes, &b->caps, &b->options, b->width, b->height,
 				    path, LX_DEFAULT_BIAS_CODES, false, err, errlen);
 	if (!st)
@@ -211,17 +212,21 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 {
 	unsigned long long seq = 0x6c697865ull;
 	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
+	enum lx_depth_precision path = b->depth.mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_HIGHP;
+	/* a still configuration's one frame, set up once; the animation's, frame by frame */
+	if (!anim && !frame_at(b, scene, false, meshes, 0, frame, err, errlen))
+		return 2;
 	for (int r = 0, done = 0; r < rounds; r++) {
 		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
 		shuffled(b->nm, &seq, order);
 		for (int k = 0; k < b->nm; k++) {
 			int m = order[k], st;
 			struct lx_method_run run;
-			if ((st = timing_run(b, m, meshes, &run, err, errlen)))
+			if ((st = make_run(b, m, path, meshes, &run, err, errlen)))
 				return st;
 			for (int i = -warm; i < n; i++) {
 				struct lx_frame_times ft;
-				if (!frame_at(b, scene, anim, meshes, done + (i > 0 ? i : 0), frame, err, errlen)) {
+				if (anim && !frame_at(b, scene, true, meshes, done + (i > 0 ? i : 0), frame, err, errlen)) {
 					lx_method_run_free(&run);
 					return 2;
 				}
@@ -234,7 +239,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 		}
 		done += n;
 	}
-	return frame_at(b, scene, anim, meshes, b->frames - 1, frame, err, errlen) ? 0 : 2;
+	return !anim || frame_at(b, scene, true, meshes, b->frames - 1, frame, err, errlen) ? 0 : 2;
 }
 
 /* --strips: each method's last shaded frame side by side in DIR/CONFIG.png, panels at
@@ -800,15 +805,12 @@ static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, stru
 	lx_gl_caps_probe(&b->caps);
 	while (*ready < b->nm) {
 		struct lx_method_run *run = &runs[*ready];
-		int status = lx_method_run_init(run, b->methods[*ready], &b->scene, meshes, &b->caps, &b->options, b->width,
-						b->height, b->depth_precision, LX_DEFAULT_BIAS_CODES, false, err, errlen);
+		int status = make_run(b, *ready, b->depth_precision, meshes, run, err, errlen);
 		if (status)
 			return status;
 		if (++*ready == 1 && run->depth.warning[0])
 			fprintf(stderr, "lixel bench: warning: %s\n", run->depth.warning);
 		b->depth = run->depth;
-		if ((status = lx_method_run_set_filter(run, b->filters[*ready - 1], err, errlen)))
-			return status;
 	}
 	for (int c = 0; c < b->nc; c++) {
 		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b->nc, b->configs[c]);
