@@ -235,16 +235,16 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 		return false;
 	rep->plane_count = job->scene.plane_count;
 	rep->mismatch = (struct lx_mismatch){0};
-	/* the lights share the view, so their planes' pixels: worked out once for several */
-	struct lx_plane_points pts = {0};
-	if (lights > 1 && !lx_plane_points_make(&mr->lights[0].frame, rep->ref_object, &pts)) {
+	/* the lights share the view, so their planes' pixels: worked out once for them all */
+	struct lx_plane_points pts;
+	if (!lx_plane_points_make(&mr->lights[0].frame, rep->ref_object, &pts)) {
 		snprintf(err, errlen, "out of memory for the planes' points");
 		return false;
 	}
 	for (int l = 0; l < lights; l++) {
 		struct lx_light_report *lr = &rep->light[l];
 		lx_measure(&mr->lights[l].frame, &lr->atlas, &lr->result, rep->ref_object, rep->ref_shadow + (size_t)l * n,
-			   rep->object, rep->shadow + (size_t)l * n, pts.p ? &pts : NULL, &lr->mismatch, lr->planes);
+			   rep->object, rep->shadow + (size_t)l * n, &pts, &lr->mismatch, lr->planes);
 		lx_sampling_warnings(lr->planes, rep->plane_count, lx_atlas_lixels(&lr->atlas), &lr->result);
 		lx_mismatch_add(&rep->mismatch, &lr->mismatch);
 	}

@@ -193,7 +193,7 @@ void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const st
 	lx_mismatch_compare(ref_object, ref_shadow, object, shadow, (long)f->view.width * f->view.height, mismatch);
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		snprintf(planes[p].name, sizeof planes[p].name, "%s", f->scene->planes[p].name);
-		planes[p].present = lx_plane_sampling_at(f, atlas, res, p, ref_object, pts, &planes[p].s);
+		planes[p].present = lx_plane_sampling(f, atlas, res, p, ref_object, pts, &planes[p].s);
 	}
 }
 

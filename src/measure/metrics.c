@@ -303,14 +303,8 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 }
 
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out)
-{
-	return sampling(f, atlas, res, plane, ref_object, NULL, 1, out);
-}
-
-bool lx_plane_sampling_at(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			  int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
-			  struct lx_plane_sampling *out)
+		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+		       struct lx_plane_sampling *out)
 {
 	return sampling(f, atlas, res, plane, ref_object, pts, 1, out);
 }

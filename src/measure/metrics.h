@@ -48,9 +48,14 @@ struct lx_plane_sampling {
  * pixels whose visible object (ref_object, or every pixel that sees the plane's
  * parallelogram when ref_object is NULL) is that plane. If a map is optimal for the
  * plane, the figures cover the pixels that map serves; otherwise each pixel counts
- * with the map that serves it (lx_shadow_select_map). False when no pixel counts. */
+ * with the map that serves it (lx_shadow_select_map). pts, when not NULL, holds those
+ * pixels' points (lx_plane_points_make of the same frame and ref_object), worked out once
+ * for every method measured; the figures are the same either way. False when no pixel
+ * counts. */
+struct lx_plane_points;
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, struct lx_plane_sampling *out);
+		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+		       struct lx_plane_sampling *out);
 /* Where each pixel of ref_object that is a plane meets that plane, worked out once for a
  * frame whose decisions several methods (or lights) are measured against. */
 struct lx_plane_points {
@@ -59,11 +64,6 @@ struct lx_plane_points {
 };
 bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, struct lx_plane_points *out);
 void lx_plane_points_free(struct lx_plane_points *pts);
-/* lx_plane_sampling with the points of pts (made of the same frame's view and ref_object),
- * its figures the same; with pts NULL, lx_plane_sampling. */
-bool lx_plane_sampling_at(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			  int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
-			  struct lx_plane_sampling *out);
 /* The same figures on every stride-th pixel in x and y of the plane's parallelogram
  * (casters not hidden): cheap enough for a live overlay. */
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
