@@ -94,6 +94,7 @@ void main()
 {
 	float shadowed = 0.0;
 #if LX_SHADOWED
+#if LX_READS > 0
 	// The first map, in order, that serves the point is read: each later one only takes
 	// over where no earlier one served (GLSL ES 1.00 has no token pasting, so each is
 	// written out). Then one fetch and the compare (LX_FILTER: several, averaged); a point no
@@ -103,7 +104,6 @@ void main()
 #if LX_FILTER > 0
 	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
 #endif
-#if LX_READS > 0
 	q = v_shadow0.xyz / v_shadow0.w;
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
@@ -111,7 +111,6 @@ void main()
 	box = s > 0.5 ? u_clamp[0] : box;
 #endif
 	found += s;
-#endif
 #if LX_READS > 1
 	q = v_shadow1.xyz / v_shadow1.w;
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
@@ -139,7 +138,6 @@ void main()
 #endif
 	found += s;
 #endif
-#if LX_READS > 0
 #if LX_FILTER > 0
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */
 #else
