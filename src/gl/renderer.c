@@ -557,10 +557,11 @@ static int maps_in(unsigned mask)
  * map, built at the start, compiled). */
 static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned *mask)
 {
-	struct main_program *p = &r->variant[shading][r->filter][maps_in(*mask)];
+	int reads = maps_in(*mask);
+	struct main_program *p = &r->variant[shading][r->filter][reads];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, maps_in(*mask), r->mediump, r->filter, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, shading, reads, r->mediump, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count];
