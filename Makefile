@@ -76,7 +76,7 @@ GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run slide check check-layers soak deps deps-check deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
+.PHONY: all run slide check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
 
 all: $(BUILD)/lixel
 
@@ -85,6 +85,9 @@ deps:
 
 deps-check:
 	@sh tools/install-deps.sh check
+
+deps-asan:
+	@sh tools/install-deps.sh asan
 
 deps-fuzz:
 	@sh tools/install-deps.sh fuzz
@@ -159,17 +162,13 @@ $(BUILD)/tests/destroy_window: tests/destroy_window.c | $(BUILD)
 $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h tests/gpiod-v2-api/gpiod.h | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) -Itests/gpiod-v2-api -DLX_GPIOD_V2 $(WARN) $(CFLAGS) -c $< -o $@
 
-# Everything built at once (gcc and clang side by side), then every test and a few
-# seconds of each fuzzer in one pool over the CPUs. The sanitizers cover the GL-free core
-# here through the fuzzers; `make asan` runs every test under them, and CI (.ci/run) runs
-# it and a 20-second `make soak` after make check. deps-check installs the fuzzers' needs
-# too (clang and its runtimes).
+# Everything built at once, then every test in one pool over the CPUs. `make asan` runs
+# every test again under ASan and UBSan, with a few seconds of each fuzzer (clang builds
+# them beside gcc's); CI (.ci/run) runs it and a 20-second `make soak` after make check.
 check: deps-check check-layers
-	@$(MAKE) --no-print-directory $(CHECK_JOBS) FUZZ_DIR=$(BUILD)/fuzz-quick FUZZ_OPT="-O0 -gline-tables-only" \
-		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone \
-		$(FUZZ_NAMES:%=$(BUILD)/fuzz-quick/%)
-	@FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=$(BUILD)/fuzz-quick \
-		sh tests/run-tests.sh $(BUILD)
+	@$(MAKE) --no-print-directory $(CHECK_JOBS) \
+		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone
+	@sh tests/run-tests.sh $(BUILD)
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
 soak: deps-check
@@ -178,7 +177,7 @@ soak: deps-check
 
 # make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
 CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
-# make check's fuzzing, in seconds (make fuzz runs longer)
+# make asan's fuzzing, in seconds (make fuzz runs longer)
 CHECK_FUZZ_SECONDS ?= 2
 
 # The include rules between the layers, the GL-free files' freedom from GL headers,
@@ -187,21 +186,27 @@ check-layers:
 	@sh tools/check-layers.sh $(CORE_SRC) && echo "layers: every include follows the rules (tools/check-layers.sh)"
 	@sh tools/check-function-length.sh 80 && echo "functions: none in src/ over 80 lines (tools/check-function-length.sh)"
 
-# The same tests under AddressSanitizer and UBSan, in their own build directory.
-asan: deps-check
+# The same tests under AddressSanitizer and UBSan, in their own build directory, and a
+# few seconds of each fuzzer (unoptimised: half the compile time, for seconds of fuzzing),
+# all in one pool.
+asan: deps-asan
 	@$(MAKE) --no-print-directory $(CHECK_JOBS) BUILD=build-asan CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer" \
-		LDFLAGS="-fsanitize=address,undefined" build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window
-	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 sh tests/run-tests.sh build-asan
+		LDFLAGS="-fsanitize=address,undefined" FUZZ_DIR=build-asan/fuzz-quick FUZZ_OPT="-O0 -gline-tables-only" \
+		build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window \
+		$(FUZZ_NAMES:%=build-asan/fuzz-quick/%)
+	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+		FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=build-asan/fuzz-quick \
+		sh tests/run-tests.sh build-asan
 
 # libFuzzer harnesses (fuzz/*.c) over the GL-free core, built with clang under ASan and
 # UBSan into $(BUILD)/fuzz/. make fuzz runs each FUZZ_SECONDS seconds from the seeds in
 # fuzz/corpus/NAME/ (tools/fuzz.sh works in a temporary folder and says where any
-# finding is); make fuzz-check, a few seconds each, is part of make check.
+# finding is); make asan runs each for a few seconds.
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_NAMES = fuzz_scene fuzz_board fuzz_methods fuzz_cli
-# make check builds them apart, unoptimised (half the compile time, for its seconds of
-# fuzzing); make fuzz at -O1, for the runs per second of long sessions
+# make asan builds them apart, unoptimised; make fuzz at -O1, for the runs per second of
+# long sessions
 FUZZ_DIR ?= $(BUILD)/fuzz
 FUZZ_OPT ?= -O1 -g
 FUZZ_BINS = $(FUZZ_NAMES:%=$(FUZZ_DIR)/%)

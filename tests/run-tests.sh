@@ -24,9 +24,9 @@ trap 'rm -rf "$logs"' EXIT
 
 # The job list, "KIND NAME" a line, longest first (as measured on two cores).
 {
-  for name in test_extremes test_render test_filter; do [ -x "$build/tests/$name" ] && echo "program $name"; done
   echo "script cli"
   echo "script kiosk"
+  for name in test_filter test_extremes test_render; do [ -x "$build/tests/$name" ] && echo "program $name"; done
   [ -n "${SOAK_SECONDS:-}" ] && echo "script soak"
   for name in ${FUZZ_SECONDS:+${FUZZ_NAMES:-}}; do echo "fuzz $name"; done
   for t in "$build"/tests/test_*; do

@@ -2,7 +2,7 @@
 # Installs what lixel needs for a make target, only what is missing. Libraries are asked
 # of pkg-config and programs of the shell (so a library installed another way counts);
 # the Mesa drivers, which have neither, of dpkg where there is one.
-# Usage: tools/install-deps.sh build|check|fuzz [--verify]
+# Usage: tools/install-deps.sh build|check|asan|fuzz [--verify]
 #   --verify: install nothing; list what is missing and fail (the Makefile's check
 #   before it compiles anything).
 # As root it runs apt-get; otherwise it prints one line naming what to install.
@@ -40,9 +40,10 @@ fuzzer clang libclang-rt-dev
 "
 case "${1:-build}" in
   build) reqs="$build_reqs" ;;
-  check) reqs="$build_reqs $check_reqs $fuzz_reqs" ;;
+  check) reqs="$build_reqs $check_reqs" ;;
+  asan) reqs="$build_reqs $check_reqs $fuzz_reqs" ;;
   fuzz) reqs="$fuzz_reqs" ;;
-  *) echo "install-deps.sh: unknown set '$1' (expected build, check or fuzz)" >&2; exit 2 ;;
+  *) echo "install-deps.sh: unknown set '$1' (expected build, check, asan or fuzz)" >&2; exit 2 ;;
 esac
 verify=false
 [ "${2:-}" = --verify ] && verify=true
