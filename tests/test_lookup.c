@@ -1,7 +1,8 @@
 /* Where the main pass looks a map up (lookup_region.c), GL-free: the spans cut a window
  * into pieces that cover it once, every point a caster shadows is inside a lookup span,
- * a plane's pieces cover it once, and the maps left to a caster are the ones its points
- * read. Over the standard configurations of both built-in scenes and some extremes. */
+ * a plane's pieces cover it once, the maps left to a caster are the ones its points
+ * read, and the shadow pass leaves a caster out of a map only where no lookup reads it.
+ * Over the standard configurations of both built-in scenes and some extremes. */
 #include "configs.h"
 #include "lookup_region.h"
 #include "plane_optimal.h"
@@ -252,6 +253,95 @@ static void casters_keep_the_maps_they_read(void **state)
 	assert_true(points > 1000 && fewer > 0);
 }
 
+/* Whether point p lies in a volume of lx_lookup_prepare (its half-spaces, a little grown). */
+static bool in_volume(const vec4 *pl, int np, vec3 p)
+{
+	for (int j = 0; j < np; j++)
+		if (pl[j].x * p.x + pl[j].y * p.y + pl[j].z * p.z + pl[j].w < -1e-9)
+			return false;
+	return true;
+}
+
+/* Points of object id: a grid over a plane's quad, a caster's mesh vertices. */
+static int object_points(const struct setup *s, int id, vec3 *out, int max)
+{
+	const struct lx_frame *f = &s->frame;
+	int n = 0;
+	if (id < s->scene.plane_count) {
+		const struct lx_plane *p = &s->scene.planes[id];
+		for (int i = 0; i <= 40; i++)
+			for (int j = 0; j <= 40 && n < max; j++)
+				out[n++] = v3_add(v3_add(v3_add(p->corner, f->offset[id]), v3_scale(p->edge1, i / 40.0)),
+						  v3_scale(p->edge2, j / 40.0));
+		return n;
+	}
+	const struct lx_mesh *m = &s->meshes.mesh[id];
+	for (int i = 0; i < m->vertex_count && n < max; i++) {
+		const float *v = m->v + (size_t)i * LX_VERTEX_FLOATS;
+		out[n++] = v3_add(v3(v[0], v[1], v[2]), f->offset[id]);
+	}
+	return n;
+}
+
+/* The shadow pass leaves a caster out of a map only where no lookup can read it there:
+ * no point of another receiver that reads the map lies in the caster's volume (and, with
+ * --lookup-region all, the caster does not read the map itself). */
+static void casters_left_out_only_where_unread(void **state)
+{
+	(void)state;
+	static vec3 pts[4096];
+	long left_out = 0, points = 0, default_left_out = 0, tris[2][2][2] = {{{0}}}; /* [scene][plane][before, after] */
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
+		FOR_METHODS(method)
+			for (int c = 0; c < lx_config_count; c++)
+				for (int everywhere = 0; everywhere < 2; everywhere++) {
+					struct setup s;
+					assert_true(lx_scene_builtin(*sn, &s.scene));
+					lx_config_apply(&lx_configs[c], &s.scene);
+					if (!build(&s, method, W, H, 0.4))
+						continue;
+					static struct lx_lookup_volumes v;
+					lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP + 2, &v);
+					for (int id = 0; id < s.frame.object_count; id++) {
+						unsigned drawn = lx_lookup_caster_maps(&v, id, everywhere), reads = lx_shadow_receiver_maps(&s.res, id);
+						/* the triangles the pass draws: before, every object a map sees */
+						int kind = !strcmp(method, "plane") ? 1 : !strcmp(method, "uniform") ? 0 : -1;
+						for (int m = 0; m < s.res.map_count && kind >= 0 && !everywhere; m++) {
+							long t = s.meshes.mesh[id].vertex_count / 3;
+							tris[strcmp(*sn, "default") != 0][kind][0] += (s.res.maps[m].rendered && lx_shadow_map_draws(&s.res.maps[m], &s.frame, id)) * t;
+							tris[strcmp(*sn, "default") != 0][kind][1] += (drawn >> m & 1) * t;
+						}
+						for (int m = 0; m < s.res.map_count; m++) {
+							if (v.count[m][id] < 0 || (drawn & 1u << m))
+								continue;
+							left_out++;
+							default_left_out += !strcmp(*sn, "default") && c == 0 && !strcmp(method, "plane");
+							if (reads & 1u << m)
+								assert_false(everywhere); /* all reads its own texels */
+							for (int r = 0; r < s.frame.object_count; r++) {
+								if (r == id || !(lx_shadow_receiver_maps(&s.res, r) & 1u << m))
+									continue;
+								int n = object_points(&s, r, pts, 4096);
+								for (int k = 0; k < n; k++, points++)
+									if (in_volume(v.plane[m][id], v.count[m][id], pts[k]))
+										fail_msg("%s scene, %s, %s: object %d left out of map %d, but a "
+											 "point of object %d lies in its volume",
+											 *sn, lx_configs[c].name, method, id, m, r);
+							}
+						}
+					}
+					lx_meshes_free(&s.meshes);
+				}
+	print_message("%ld (object, map) pairs left out of the shadow pass, %ld points of their receivers outside "
+		      "their volumes; %ld on plane's default view\n", left_out, points, default_left_out);
+	for (int sc = 0; sc < 2; sc++)
+		for (int k = 0; k < 2; k++)
+			print_message("%s scene, %s, every configuration: %ld triangles drawn into the maps, against %ld when every "
+				      "object a map sees was drawn\n", sc ? "table" : "default", k ? "plane" : "uniform", tris[sc][k][1],
+				      tris[sc][k][0]);
+	assert_true(default_left_out > 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -259,6 +349,7 @@ int main(void)
 		cmocka_unit_test(extremes_stay_conservative),
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
+		cmocka_unit_test(casters_left_out_only_where_unread),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -856,9 +856,12 @@ static void gpu_depth_encoding_and_guards(void **state)
 	for (size_t p = 0; p < 2; p++) {
 		char err[512];
 		struct lx_scene s;
+		/* the floor is there to be shadowed: the pass draws only what a lookup can read
+		 * (lx_lookup_caster_maps), and the floor, turned to the light, is not drawn */
 		const char *text = "light directional 0.3 -1 0.2\n"
 				   "camera eye 0 0.3 4 at 0 2 0 fov 60\n"
-				   "plane ceiling corner -3 2 -3 edge1 6 0 0 edge2 0 0 6\n";
+				   "plane ceiling corner -3 2 -3 edge1 6 0 0 edge2 0 0 6\n"
+				   "plane floor corner -3 0 3 edge1 6 0 0 edge2 0 0 -6\n";
 		if (!lx_scene_parse(text, "ceiling.scene", &s, err, sizeof err))
 			fail_msg("%s", err);
 		struct lx_scene_meshes m;

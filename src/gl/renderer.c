@@ -446,6 +446,22 @@ static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const 
 	}
 }
 
+/* A filtered lookup reads up to lx_filter_reach lixels farther than a NEAREST one. */
+static double lookup_margin(const struct lx_renderer *r)
+{
+	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(r->filter);
+}
+
+/* The shadow pass's margin: the widest filter's, since the main pass may change filters
+ * (lx_renderer_set_filter) and read the same maps again. */
+static double shadow_margin(const struct lx_renderer *r)
+{
+	double reach = 0;
+	for (int k = 0; k < LX_FILTER_COUNT; k++)
+		reach = fmax(reach, lx_filter_reach((enum lx_filter)k));
+	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + reach;
+}
+
 /* Every rendered region of the n lights and its guard ring "far" (a per-frame layout
  * moves the guards over what earlier frames drew): on a tiler, or when the regions cover
  * half the texture or more, the whole atlas in one clear (on llvmpipe, two lights'
@@ -483,9 +499,10 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
 		clear_region(r, atlas[k], region[k]);
 }
 
-/* The casters map m of a light can see, inside its region. */
+/* The casters of a light's map `m` that a lookup can read (drawn[object], a mask of
+ * maps: lx_lookup_caster_maps), inside its region. */
 static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const struct lx_atlas *a,
-		     const struct lx_shadow_map *map)
+		     const struct lx_shadow_map *map, int m, const unsigned *drawn)
 {
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
@@ -497,8 +514,8 @@ static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const stru
 	 * plane (a caster beside a table under a grazing light lost its shadow) */
 	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
 	for (int id = 0; id < r->objects; id++) {
-		if (!lx_shadow_map_draws(map, f, id))
-			continue; /* no fill and no vertices for what the map cannot see */
+		if (!(drawn[id] & 1u << m))
+			continue; /* no fill and no vertices for what no lookup reads */
 		mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
 		float lcf[16];
 		to_float(&lc, lcf);
@@ -537,9 +554,15 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.Enable(GL_CULL_FACE);
 	lx_gl.CullFace(GL_FRONT);
 	lx_gl.DepthFunc(GL_LESS);
-	for (int i = 0; i < n; i++)
+	for (int i = 0; i < n; i++) {
+		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
+		unsigned drawn[LX_MAX_PLANES + LX_MAX_CASTERS];
+		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
+		for (int id = 0; id < r->objects; id++)
+			drawn[id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, f[i], r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m]);
+			draw_map(r, f[i], a, &res[i]->maps[m], m, drawn);
+	}
 	lx_gl.Disable(GL_CULL_FACE);
 }
 
@@ -621,12 +644,6 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsi
 			out[n++] = (struct span){0, {x, y0, box.x1, y1}};
 	}
 	return n;
-}
-
-/* A filtered lookup reads up to lx_filter_reach lixels farther than a NEAREST one. */
-static double lookup_margin(const struct lx_renderer *r)
-{
-	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(r->filter);
 }
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per

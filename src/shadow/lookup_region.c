@@ -329,6 +329,56 @@ bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mas
 	return shadow_hulls(v, receiver, mask, true, NULL) != 0;
 }
 
+/* Whether receiver object id may meet a volume: false only when one of its half-spaces
+ * leaves every corner of the receiver's box (a plane's quad) outside. */
+static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
+{
+	vec3 q[8];
+	int n = 8;
+	if (id < f->scene->plane_count) {
+		const struct lx_plane *p = &f->scene->planes[id];
+		q[0] = v3_add(p->corner, f->offset[id]), q[1] = v3_add(q[0], p->edge1);
+		q[2] = v3_add(q[1], p->edge2), q[3] = v3_add(q[0], p->edge2);
+		n = 4;
+	} else {
+		for (int k = 0; k < 8; k++)
+			q[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	}
+	for (int j = 0; j < np; j++) {
+		int out = 0;
+		while (out < n && pl[j].x * q[out].x + pl[j].y * q[out].y + pl[j].z * q[out].z + pl[j].w < 0)
+			out++;
+		if (out == n)
+			return false;
+	}
+	return true;
+}
+
+unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool everywhere)
+{
+	const struct lx_frame *f = v->frame;
+	if (c < 0 || c >= f->object_count)
+		return 0;
+	/* --lookup-region all reads c's own texels wherever c reads its maps */
+	unsigned own = everywhere ? lx_shadow_receiver_maps(v->res, c) : 0, out = 0;
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
+		unsigned bit = 1u << m;
+		if (v->count[m][c] < 0)
+			continue; /* it shadows nothing through this map */
+		if (own & bit) {
+			out |= bit;
+			continue;
+		}
+		for (int r = 0; r < f->object_count; r++)
+			if (r != c && (lx_shadow_receiver_maps(v->res, r) & bit) &&
+			    receiver_may_meet(f, r, v->plane[m][c], v->count[m][c])) {
+				out |= bit;
+				break;
+			}
+	}
+	return out;
+}
+
 int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,
 		    struct lx_span *out, int max)
 {

@@ -85,6 +85,15 @@ bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mas
  * serves all of it, by the margin (the shader's rounding). */
 unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
+/* The maps of the frame whose shadow pass must draw object c, as a mask (v prepared with
+ * the largest margin of any filter the main pass may use on them): those where c's
+ * volume reaches a receiver other than c that reads the map, and with `everywhere`
+ * (--lookup-region all) those c reads itself. Leaving c out of the others changes no
+ * lookup of another receiver: a caster's depth shadows a point only inside its volume.
+ * Nor one of c's own (see above): c shadows none of its faces turned to the light, and
+ * what it read of its own texels there was the map's error at its terminator. */
+unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool everywhere);
+
 /* The most vertices lx_plane_in_window returns */
 #define LX_WINDOW_POLY_MAX 12
 
