@@ -446,20 +446,21 @@ static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const 
 	}
 }
 
-/* A filtered lookup reads up to lx_filter_reach lixels farther than a NEAREST one. */
-static double lookup_margin(const struct lx_renderer *r)
+/* The lookup volumes' margin for a filter: a filtered lookup reads up to lx_filter_reach
+ * lixels farther than a NEAREST one. */
+static double lookup_margin(const struct lx_renderer *r, enum lx_filter filter)
 {
-	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(r->filter);
+	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(filter);
 }
 
 /* The shadow pass's margin: the widest filter's, since the main pass may change filters
  * (lx_renderer_set_filter) and read the same maps again. */
 static double shadow_margin(const struct lx_renderer *r)
 {
-	double reach = 0;
+	double m = 0;
 	for (int k = 0; k < LX_FILTER_COUNT; k++)
-		reach = fmax(reach, lx_filter_reach((enum lx_filter)k));
-	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + reach;
+		m = fmax(m, lookup_margin(r, (enum lx_filter)k));
+	return m;
 }
 
 /* Every rendered region of the n lights and its guard ring "far" (a per-frame layout
@@ -557,6 +558,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	for (int i = 0; i < n; i++) {
 		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
 		unsigned drawn[LX_MAX_PLANES + LX_MAX_CASTERS];
+		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		for (int id = 0; id < r->objects; id++)
 			drawn[id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
@@ -755,7 +757,7 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
 static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int id,
 			struct draw *out, int n)
 {
-	unsigned mask = lx_shadow_receiver_maps(res, id);
+	unsigned mask = r->lookup.reads[id]; /* lx_shadow_receiver_maps, prepared by frame_draws */
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
 			mask = lx_lookup_maps(&r->lookup, id, mask);
@@ -871,7 +873,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	int n = 0;
 	r->piece_vertices = r->facing_count = 0;
 	/* also for all: the same pieces */
-	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r), &r->lookup);
+	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	for (int k = 0; k < r->objects; k++) {
 		int id = (k + r->d.scene->plane_count) % r->objects;
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))

@@ -188,6 +188,21 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	return n;
 }
 
+/* The corners of receiver object id, returns how many: a plane's quad in order (4), a
+ * caster's box in v3_box_corner's order (8). */
+static int receiver_corners(const struct lx_frame *f, int id, vec3 *q)
+{
+	if (id < f->scene->plane_count) {
+		const struct lx_plane *p = &f->scene->planes[id];
+		q[0] = v3_add(p->corner, f->offset[id]), q[1] = v3_add(q[0], p->edge1);
+		q[2] = v3_add(q[1], p->edge2), q[3] = v3_add(q[0], p->edge2);
+		return 4;
+	}
+	for (int k = 0; k < 8; k++)
+		q[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	return 8;
+}
+
 /* Window points of a volume, for its hull. */
 struct window_points {
 	int n;
@@ -211,22 +226,15 @@ static void add_point(const struct lx_view *v, vec3 q, struct window_points *w)
  * box. */
 static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, struct window_points *w)
 {
-	vec3 face[6][4];
-	int faces;
-	bool solid = id >= f->scene->plane_count;
-	if (!solid) {
-		const struct lx_plane *p = &f->scene->planes[id];
-		vec3 c = v3_add(p->corner, f->offset[id]);
-		face[0][0] = c, face[0][1] = v3_add(c, p->edge1);
-		face[0][2] = v3_add(face[0][1], p->edge2), face[0][3] = v3_add(c, p->edge2);
-		faces = 1;
-	} else {
-		static const int q[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-		for (int k = 0; k < 6; k++)
-			for (int i = 0; i < 4; i++)
-				face[k][i] = v3_box_corner(f->bmin[id], f->bmax[id], q[k][i]);
-		faces = 6;
-	}
+	static const int quad[1][4] = {{0, 1, 2, 3}};
+	static const int box[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+	vec3 corner[8], face[6][4];
+	bool solid = receiver_corners(f, id, corner) == 8;
+	const int(*q)[4] = solid ? box : quad;
+	int faces = solid ? 6 : 1;
+	for (int k = 0; k < faces; k++)
+		for (int i = 0; i < 4; i++)
+			face[k][i] = corner[q[k][i]];
 	for (int k = 0; k < faces; k++) {
 		vec3 a[FACE_MAX], b[FACE_MAX];
 		int n = 4;
@@ -242,12 +250,12 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 	}
 	if (!solid)
 		return;
-	vec3 corner[64];
-	int nc = lx_halfspace_vertices(pl, np, corner, 64);
+	vec3 vertex[64];
+	int nc = lx_halfspace_vertices(pl, np, vertex, 64);
 	vec3 lo = f->bmin[id], hi = f->bmax[id];
 	double tol = 1e-9 * (fabs(lo.x) + fabs(lo.y) + fabs(lo.z) + fabs(hi.x) + fabs(hi.y) + fabs(hi.z));
 	for (int i = 0; i < nc; i++) {
-		vec3 c = corner[i];
+		vec3 c = vertex[i];
 		if (c.x >= lo.x - tol && c.y >= lo.y - tol && c.z >= lo.z - tol && c.x <= hi.x + tol && c.y <= hi.y + tol &&
 		    c.z <= hi.z + tol)
 			add_point(&f->view, c, w);
@@ -258,6 +266,8 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 		       double margin_lixels, struct lx_lookup_volumes *v)
 {
 	v->frame = f, v->res = res;
+	for (int c = 0; c < f->object_count; c++)
+		v->reads[c] = lx_shadow_receiver_maps(res, c);
 	lx_view_frustum_corners(&f->view, v->frustum);
 	vec4 near = v4_lin(1, m4_row(&f->view.view_proj, 2), 1, m4_row(&f->view.view_proj, 3)); /* z + w >= 0 */
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
@@ -334,16 +344,7 @@ bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mas
 static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
 {
 	vec3 q[8];
-	int n = 8;
-	if (id < f->scene->plane_count) {
-		const struct lx_plane *p = &f->scene->planes[id];
-		q[0] = v3_add(p->corner, f->offset[id]), q[1] = v3_add(q[0], p->edge1);
-		q[2] = v3_add(q[1], p->edge2), q[3] = v3_add(q[0], p->edge2);
-		n = 4;
-	} else {
-		for (int k = 0; k < 8; k++)
-			q[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-	}
+	int n = receiver_corners(f, id, q);
 	for (int j = 0; j < np; j++) {
 		int out = 0;
 		while (out < n && pl[j].x * q[out].x + pl[j].y * q[out].y + pl[j].z * q[out].z + pl[j].w < 0)
@@ -360,7 +361,7 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 	if (c < 0 || c >= f->object_count)
 		return 0;
 	/* --lookup-region all reads c's own texels wherever c reads its maps */
-	unsigned own = everywhere ? lx_shadow_receiver_maps(v->res, c) : 0, out = 0;
+	unsigned own = everywhere ? v->reads[c] : 0, out = 0;
 	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
 		unsigned bit = 1u << m;
 		if (v->count[m][c] < 0)
@@ -370,7 +371,7 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 			continue;
 		}
 		for (int r = 0; r < f->object_count; r++)
-			if (r != c && (lx_shadow_receiver_maps(v->res, r) & bit) &&
+			if (r != c && (v->reads[r] & bit) &&
 			    receiver_may_meet(f, r, v->plane[m][c], v->count[m][c])) {
 				out |= bit;
 				break;

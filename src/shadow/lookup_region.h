@@ -53,10 +53,12 @@ bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame 
 
 /* One frame's casters seen through each map, built once (lx_lookup_prepare) and asked
  * for each receiver: per map and caster the half-spaces where it can shadow a point
- * (count -1: nowhere), each map's margin in its clip units, the view's frustum. */
+ * (count -1: nowhere), each map's margin in its clip units, the view's frustum, and the
+ * maps each object reads as a receiver (lx_shadow_receiver_maps). */
 struct lx_lookup_volumes {
 	const struct lx_frame *frame;
 	const struct lx_shadow_result *res;
+	unsigned reads[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int count[LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
 	vec4 plane[LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS][LX_LOOKUP_VOLUME_PLANES];
 	double margin[LX_MAX_MAPS][2];
