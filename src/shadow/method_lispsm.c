@@ -128,21 +128,16 @@ static bool warped_crop(const mat4 *WT, const vec3 *pts, const bool *caster, int
 	return true;
 }
 
-static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
-			 struct lx_shadow_result *out)
+static void lispsm_warp(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_uniform_fit *fit,
+		struct lx_shadow_map *map, struct lx_shadow_result *out)
 {
-	(void)opt;
-	(void)atlas;
-	struct lx_light_space ls;
-	if (!lx_uniform_map(f, &ls, out, "lispsm", NULL))
-		return;
-	struct lx_shadow_map *map = &out->maps[0];
+	(void)fit;
 	struct light_frame lf;
-	if (light_frame(f, &ls, &map->light_clip, &lf, out) <= 0)
+	if (light_frame(f, ls, &map->light_clip, &lf, out) <= 0)
 		return; /* the uniform map stands */
 	vec3 pts[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool caster[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
-	int n = body_points(f, &ls, pts, caster, (int)(sizeof pts / sizeof pts[0]));
+	int n = body_points(f, ls, pts, caster, (int)(sizeof pts / sizeof pts[0]));
 	double ylo = INFINITY, yhi = -INFINITY;
 	for (int i = 0; i < n; i++) {
 		bool ok;
@@ -162,4 +157,4 @@ static void lispsm_build(const struct lx_frame *f, const struct lx_atlas *atlas,
 
 const struct lx_shadow_method lx_method_lispsm = {.name = "lispsm",
 	.summary = "light space perspective shadow map (512x512)",
-	.build = lispsm_build};
+	.warp = lispsm_warp};

@@ -151,18 +151,13 @@ static int psm_crop(const struct lx_frame *f, const struct lx_light_space *ls, c
 	return 1;
 }
 
-static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
-			 struct lx_shadow_result *out)
+/* Where PPS cannot hold the light's view, the uniform map stands in. */
+static void psm_warp(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_uniform_fit *fit,
+		struct lx_shadow_map *map, struct lx_shadow_result *out)
 {
-	(void)opt;
-	(void)atlas;
-	/* the uniform map first: where PPS cannot hold the light's view, it stands in */
-	struct lx_light_space ls;
-	if (!lx_uniform_map(f, &ls, out, "psm", NULL))
-		return;
-	struct lx_shadow_map *map = &out->maps[0];
+	(void)fit;
 	mat4 pps;
-	if (!virtual_camera(f, &ls, &pps)) {
+	if (!virtual_camera(f, ls, &pps)) {
 		lx_shadow_warn(out, "psm: no virtual camera; uniform this frame");
 		return;
 	}
@@ -172,20 +167,20 @@ static void psm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 	vec4 c = v4_lin(1 / v4_len(C), C, 0, C); /* the light's image in PPS, a unit 4-vector */
 	out->variant = fabs(c.w) < 1e-9 ? LX_PSM_DIRECTIONAL : c.w < 0 ? LX_PSM_INVERTED : LX_PSM_POINT;
 	vec4 recp[LX_CONVEX_MAX_POINTS], w;
-	for (int i = 0; i < ls.receiver_count; i++)
-		recp[i] = m4_mul_point(&pps, ls.receiver_pts[i]);
-	if (!receivers_side(c, recp, ls.receiver_count, out->variant == LX_PSM_DIRECTIONAL, &w)) {
+	for (int i = 0; i < ls->receiver_count; i++)
+		recp[i] = m4_mul_point(&pps, ls->receiver_pts[i]);
+	if (!receivers_side(c, recp, ls->receiver_count, out->variant == LX_PSM_DIRECTIONAL, &w)) {
 		lx_shadow_warn(out, "psm: the light lies on the view's centre line in PPS; uniform this frame");
 		return;
 	}
 	mat4 light = light_camera(c, w), m0 = m4_mul(&light, &pps), crop;
-	int fit = psm_crop(f, &ls, &m0, map, &crop, out);
-	if (fit == 0)
+	int held = psm_crop(f, ls, &m0, map, &crop, out);
+	if (held == 0)
 		map->rendered = false; /* casters and receivers do not overlap from the light */
-	else if (fit > 0)
+	else if (held > 0)
 		lx_shadow_map_warp(map, f, &crop, &m0, "psm", out);
 }
 
 const struct lx_shadow_method lx_method_psm = {.name = "psm",
 	.summary = "perspective shadow map (512x512) in a slid-back camera's post-perspective space",
-	.build = psm_build};
+	.warp = psm_warp};

@@ -131,23 +131,16 @@ static mat4 trapezoid_matrix(const struct trapezoid *tz, double zmid)
 	return T;
 }
 
-static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
-			 struct lx_shadow_result *out)
+static void tsm_warp(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_uniform_fit *fit,
+		struct lx_shadow_map *map, struct lx_shadow_result *out)
 {
-	(void)opt;
-	(void)atlas;
-	struct lx_light_space ls;
-	struct lx_uniform_fit fit;
-	if (!lx_uniform_map(f, &ls, out, "tsm", &fit))
-		return;
-	struct lx_shadow_map *map = &out->maps[0];
 	mat4 u = map->light_clip;
 	vec2 pts[LX_POLY_MAX];
-	int np = wanted_points(&fit, pts);
+	int np = wanted_points(fit, pts);
 	struct trapezoid tz;
 	if (fit_trapezoid(f, &u, pts, np, &tz, out) <= 0)
 		return; /* the uniform map stands */
-	double zmid = receivers_mid_depth(&ls, &u);
+	double zmid = receivers_mid_depth(ls, &u);
 	mat4 T = trapezoid_matrix(&tz, zmid), m = m4_mul(&T, &u);
 	/* depth: (z - zmid w) / t with z / w in [-1, 1] and t / w >= eta inside the
 	 * trapezoid, so within [(-1 - zmid) / eta, (1 - zmid) / eta] */
@@ -157,4 +150,4 @@ static void tsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, co
 
 const struct lx_shadow_method lx_method_tsm = {.name = "tsm",
 	.summary = "trapezoidal shadow map (512x512), 80% rule",
-	.build = tsm_build};
+	.warp = tsm_warp};

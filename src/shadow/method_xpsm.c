@@ -174,19 +174,14 @@ static bool light_off_the_planes(const struct lx_frame *f, struct lx_shadow_resu
 	return true;
 }
 
-static void xpsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *opt,
-		       struct lx_shadow_result *out)
+static void xpsm_warp(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_uniform_fit *fit,
+		struct lx_shadow_map *map, struct lx_shadow_result *out)
 {
-	(void)opt;
-	(void)atlas;
-	struct lx_light_space ls;
-	if (!lx_uniform_map(f, &ls, out, "xpsm", NULL))
-		return; /* nothing to shadow, or no frustum: no map */
-	struct lx_shadow_map *map = &out->maps[0];
+	(void)fit;
 	struct xpsm_space xs;
 	struct xpsm_points pt;
-	if (!light_off_the_planes(f, out) || !xpsm_space(f, &ls, &map->light_clip, &xs, out) ||
-	    !xpsm_points(f, &ls, &xs.RS, &pt, out))
+	if (!light_off_the_planes(f, out) || !xpsm_space(f, ls, &map->light_clip, &xs, out) ||
+	    !xpsm_points(f, ls, &xs.RS, &pt, out))
 		return; /* the uniform map stands */
 	vec3 o;
 	double n = warp_parameter(&xs, &pt, &o);
@@ -204,4 +199,4 @@ static void xpsm_build(const struct lx_frame *f, const struct lx_atlas *atlas, c
 
 const struct lx_shadow_method lx_method_xpsm = {.name = "xpsm",
 	.summary = "extended perspective shadow map (512x512): a warp across the light, unit cube clipping after it",
-	.build = xpsm_build};
+	.warp = xpsm_warp};

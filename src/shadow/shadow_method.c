@@ -1,4 +1,5 @@
 #include "shadow_method.h"
+#include "light_space.h"
 #include "number.h"
 #include <math.h>
 #include <stdarg.h>
@@ -238,10 +239,23 @@ void lx_shadow_map_turn(struct lx_shadow_map *m)
 	m->h = w;
 }
 
+/* A warping method: the uniform map first, focused by unit cube clipping; the warp
+ * replaces its matrix where it can, and where it cannot the uniform map stands. */
+static void warped_build(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_shadow_result *out)
+{
+	struct lx_light_space ls;
+	struct lx_uniform_fit fit;
+	if (lx_uniform_map(f, &ls, out, m->name, &fit))
+		m->warp(f, &ls, &fit, &out->maps[0], out);
+}
+
 void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_atlas *atlas,
 			    const struct lx_method_options *o, struct lx_shadow_result *out)
 {
-	m->build(f, atlas, o, out);
+	if (m->warp)
+		warped_build(m, f, out);
+	else
+		m->build(f, atlas, o, out);
 	for (int i = 0; i < f->note_count; i++)
 		lx_shadow_warn(out, "%s", f->notes[i]);
 	int w[LX_ATLAS_MAX_REGIONS] = {0}, h[LX_ATLAS_MAX_REGIONS] = {0};

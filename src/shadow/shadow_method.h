@@ -11,6 +11,8 @@
 #include "frame.h"
 
 #define LX_MAX_MAPS 4
+struct lx_light_space; /* light_space.h: the warping methods' start */
+struct lx_uniform_fit;
 #define LX_MAX_WARNINGS 8
 #define LX_WARNING_MAX 160
 
@@ -82,6 +84,12 @@ struct lx_shadow_method {
 	 * map of a variable region says the lixels it wants this frame (w, h). */
 	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 		      struct lx_shadow_result *out);
+	/* Or, for a one-map method that warps the uniform map (PSM, LiSPSM, TSM, XPSM):
+	 * called once lx_uniform_map has built the uniform map (map, rendered) in light space
+	 * ls, focused on fit; it replaces the map's matrix where it can and leaves it standing,
+	 * with a warning, where it cannot. Not called when there is nothing to shadow. */
+	void (*warp)(const struct lx_frame *f, const struct lx_light_space *ls, const struct lx_uniform_fit *fit,
+		     struct lx_shadow_map *map, struct lx_shadow_result *out);
 };
 
 const struct lx_shadow_method *lx_shadow_method_find(const char *name);
