@@ -11,16 +11,22 @@ mat4 m4_identity(void)
 	return r;
 }
 
+/* r = a b for column-major n x n matrices (r apart from a and b). */
+static void square_mul(int n, const double *a, const double *b, double *r)
+{
+	for (int c = 0; c < n; c++)
+		for (int row = 0; row < n; row++) {
+			double s = 0;
+			for (int k = 0; k < n; k++)
+				s += a[k * n + row] * b[c * n + k];
+			r[c * n + row] = s;
+		}
+}
+
 mat4 m4_mul(const mat4 *a, const mat4 *b)
 {
 	mat4 r;
-	for (int c = 0; c < 4; c++)
-		for (int row = 0; row < 4; row++) {
-			double s = 0;
-			for (int k = 0; k < 4; k++)
-				s += a->m[k * 4 + row] * b->m[c * 4 + k];
-			r.m[c * 4 + row] = s;
-		}
+	square_mul(4, a->m, b->m, r.m);
 	return r;
 }
 
@@ -66,22 +72,28 @@ bool lx_solve(int n, double *a, double *b, double eps)
 	return true;
 }
 
+/* r = a^-1 for a column-major n x n matrix (n <= 4): each column of the identity solved
+ * for (lx_solve, pivots below eps fail); n small solves are plenty fast. */
+static bool square_invert(int n, const double *a, double *r, double eps)
+{
+	for (int c = 0; c < n; c++) {
+		double A[16], b[4] = {0, 0, 0, 0};
+		for (int row = 0; row < n; row++)
+			for (int k = 0; k < n; k++)
+				A[row * n + k] = a[k * n + row];
+		b[c] = 1.0;
+		if (!lx_solve(n, A, b, eps))
+			return false;
+		for (int row = 0; row < n; row++)
+			r[c * n + row] = b[row];
+	}
+	return true;
+}
+
 bool m4_invert(const mat4 *a, mat4 *out)
 {
-	/* Solve for each column of the identity; 4 small solves are plenty fast. */
 	mat4 r;
-	for (int c = 0; c < 4; c++) {
-		double A[16], b[4] = {0, 0, 0, 0};
-		for (int row = 0; row < 4; row++)
-			for (int k = 0; k < 4; k++)
-				A[row * 4 + k] = a->m[k * 4 + row];
-		b[c] = 1.0;
-		if (!lx_solve(4, A, b, 1e-300))
-			return false;
-		for (int row = 0; row < 4; row++)
-			r.m[c * 4 + row] = b[row];
-	}
-	if (!m4_finite(&r))
+	if (!square_invert(4, a->m, r.m, 1e-300) || !m4_finite(&r))
 		return false;
 	*out = r;
 	return true;
@@ -179,30 +191,15 @@ mat4 m4_crop(double x0, double x1, double y0, double y1, double z0, double z1)
 mat3 m3_mul(const mat3 *a, const mat3 *b)
 {
 	mat3 r;
-	for (int c = 0; c < 3; c++)
-		for (int row = 0; row < 3; row++) {
-			double s = 0;
-			for (int k = 0; k < 3; k++)
-				s += a->m[k * 3 + row] * b->m[c * 3 + k];
-			r.m[c * 3 + row] = s;
-		}
+	square_mul(3, a->m, b->m, r.m);
 	return r;
 }
 
 bool m3_invert(const mat3 *a, mat3 *out)
 {
 	mat3 r;
-	for (int c = 0; c < 3; c++) {
-		double A[9], b[3] = {0, 0, 0};
-		for (int row = 0; row < 3; row++)
-			for (int k = 0; k < 3; k++)
-				A[row * 3 + k] = a->m[k * 3 + row];
-		b[c] = 1.0;
-		if (!lx_solve(3, A, b, 1e-14))
-			return false;
-		for (int row = 0; row < 3; row++)
-			r.m[c * 3 + row] = b[row];
-	}
+	if (!square_invert(3, a->m, r.m, 1e-14))
+		return false;
 	*out = r;
 	return true;
 }

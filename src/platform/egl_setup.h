@@ -16,5 +16,9 @@ EGLContext lx_egl_context(EGLDisplay dpy, EGLConfig cfg);
 	{EGL_SURFACE_TYPE, surface_type, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, \
 	 EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, (depth) ? 16 : 0, EGL_NONE}
 const char *lx_egl_error_name(EGLint e);
+/* The end of every platform's EGL: nothing current, the context and the surface destroyed
+ * where there are, the display terminated, this thread's EGL state released. Nothing on
+ * EGL_NO_DISPLAY. */
+void lx_egl_release(EGLDisplay dpy, EGLContext ctx, EGLSurface surface);
 
 #endif

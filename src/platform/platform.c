@@ -2,6 +2,7 @@
 #include "gl_api.h"
 #include "gl_program.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 const char *lx_platform_names(void) { return "osmesa|egl"; }
@@ -41,6 +42,14 @@ struct lx_platform *lx_platform_create_display(const char *name, int width, int 
 		return with_gl(lx_platform_kms_create(device, mode_w, mode_h, mode_hz, err, errlen), name, err, errlen);
 	snprintf(err, errlen, "unknown display platform '%s', expected x11 or kms", name);
 	return NULL;
+}
+
+void *lx_platform_alloc(size_t size, const char *name, char *err, size_t errlen)
+{
+	void *p = calloc(1, size);
+	if (!p)
+		snprintf(err, errlen, "%s: out of memory", name);
+	return p;
 }
 
 void lx_platform_destroy(struct lx_platform *p)

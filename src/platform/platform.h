@@ -41,6 +41,8 @@ struct lx_platform *lx_platform_create_display(const char *name, int width, int 
 					       int mode_w, int mode_h, int mode_hz, char *err, size_t errlen);
 
 struct lx_platform *lx_platform_osmesa_create(char *err, size_t errlen);
+/* The platforms' own struct of size bytes, zeroed; NULL with "name: out of memory". */
+void *lx_platform_alloc(size_t size, const char *name, char *err, size_t errlen);
 struct lx_platform *lx_platform_x11_create(int width, int height, char *err, size_t errlen);
 /* Full screen through DRM/KMS and GBM: device NULL for the first that can mode-set,
  * want_w = 0 for the preferred mode. */

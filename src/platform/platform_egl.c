@@ -18,11 +18,7 @@ static void *egl_get_proc(const char *name) { return (void *)eglGetProcAddress(n
 static void egl_destroy(struct lx_platform *p)
 {
 	struct egl *e = (struct egl *)p;
-	eglMakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-	if (e->ctx != EGL_NO_CONTEXT)
-		eglDestroyContext(e->dpy, e->ctx);
-	eglTerminate(e->dpy);
-	eglReleaseThread();
+	lx_egl_release(e->dpy, e->ctx, EGL_NO_SURFACE);
 	free(e);
 }
 
@@ -34,11 +30,9 @@ struct lx_platform *lx_platform_egl_surfaceless_create(char *err, size_t errlen)
 		snprintf(err, errlen, "egl: EGL_MESA_platform_surfaceless is not available (is Mesa's libegl-mesa0 installed?)");
 		return NULL;
 	}
-	struct egl *e = calloc(1, sizeof(*e));
-	if (!e) {
-		snprintf(err, errlen, "egl: out of memory");
+	struct egl *e = lx_platform_alloc(sizeof(*e), "egl", err, errlen);
+	if (!e)
 		return NULL;
-	}
 	e->ctx = EGL_NO_CONTEXT;
 	e->dpy = lx_egl_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY);
 	if (e->dpy == EGL_NO_DISPLAY) {
@@ -88,6 +82,19 @@ EGLContext lx_egl_context(EGLDisplay dpy, EGLConfig cfg)
 	if (!eglBindAPI(EGL_OPENGL_ES_API))
 		return EGL_NO_CONTEXT;
 	return eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, ctx_attrs);
+}
+
+void lx_egl_release(EGLDisplay dpy, EGLContext ctx, EGLSurface surface)
+{
+	if (dpy == EGL_NO_DISPLAY)
+		return;
+	eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+	if (ctx != EGL_NO_CONTEXT)
+		eglDestroyContext(dpy, ctx);
+	if (surface != EGL_NO_SURFACE)
+		eglDestroySurface(dpy, surface);
+	eglTerminate(dpy);
+	eglReleaseThread();
 }
 
 const char *lx_egl_error_name(EGLint e)

@@ -174,14 +174,7 @@ static void kms_destroy(struct lx_platform *p)
 				strerror(-ret));
 		drmModeFreeCrtc(k->saved);
 	}
-	if (k->edpy != EGL_NO_DISPLAY) {
-		eglMakeCurrent(k->edpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-		if (k->ctx != EGL_NO_CONTEXT)
-			eglDestroyContext(k->edpy, k->ctx);
-		if (k->esurf != EGL_NO_SURFACE)
-			eglDestroySurface(k->edpy, k->esurf);
-		eglTerminate(k->edpy);
-	}
+	lx_egl_release(k->edpy, k->ctx, k->esurf);
 	if (k->bo)
 		gbm_surface_release_buffer(k->surface, k->bo);
 	if (k->surface)
@@ -320,10 +313,9 @@ struct lx_platform *lx_platform_kms_create(const char *device, int want_w, int w
 			close(fds[i]);
 	if (!chosen)
 		return NULL;
-	struct kms *k = calloc(1, sizeof(*k));
+	struct kms *k = lx_platform_alloc(sizeof(*k), "kms", err, errlen);
 	if (!k) {
 		close(fds[ch.device]);
-		snprintf(err, errlen, "kms: out of memory");
 		return NULL;
 	}
 	k->fd = fds[ch.device];

@@ -68,11 +68,9 @@ struct lx_platform *lx_platform_osmesa_create(char *err, size_t errlen)
 {
 	if (!osmesa_open(err, errlen))
 		return NULL;
-	struct osmesa *o = calloc(1, sizeof(*o));
-	if (!o) {
-		snprintf(err, errlen, "osmesa: out of memory");
+	struct osmesa *o = lx_platform_alloc(sizeof(*o), "osmesa", err, errlen);
+	if (!o)
 		return NULL;
-	}
 	o->ctx = osm.create(OSMESA_RGBA, 0, 0, 0, NULL);
 	if (!o->ctx) {
 		snprintf(err, errlen, "osmesa: OSMesaCreateContextExt failed");

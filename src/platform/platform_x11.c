@@ -96,14 +96,7 @@ static void x11_destroy(struct lx_platform *p)
 	struct x11 *x = (struct x11 *)p;
 	if (x->dpy && !x->conn_gone)
 		XSync(x->dpy, False); /* errors still on their way reach the handler, not exit() */
-	if (x->edpy != EGL_NO_DISPLAY) {
-		eglMakeCurrent(x->edpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-		if (x->ctx != EGL_NO_CONTEXT)
-			eglDestroyContext(x->edpy, x->ctx);
-		if (x->surface != EGL_NO_SURFACE)
-			eglDestroySurface(x->edpy, x->surface);
-		eglTerminate(x->edpy);
-	}
+	lx_egl_release(x->edpy, x->ctx, x->surface);
 	if (x->win && !x->win_gone && !x->conn_gone)
 		XDestroyWindow(x->dpy, x->win);
 	if (x->dpy && !x->conn_gone)
@@ -185,11 +178,9 @@ static int x11_poll_key(struct lx_platform *p)
 
 struct lx_platform *lx_platform_x11_create(int width, int height, char *err, size_t errlen)
 {
-	struct x11 *x = calloc(1, sizeof(*x));
-	if (!x) {
-		snprintf(err, errlen, "x11: out of memory");
+	struct x11 *x = lx_platform_alloc(sizeof(*x), "x11", err, errlen);
+	if (!x)
 		return NULL;
-	}
 	x->edpy = EGL_NO_DISPLAY;
 	x->surface = EGL_NO_SURFACE;
 	x->ctx = EGL_NO_CONTEXT;
