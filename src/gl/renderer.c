@@ -338,6 +338,38 @@ static bool renderer_beam(struct lx_renderer *r, int i, char *err, size_t errlen
 	return true;
 }
 
+void lx_renderer_destroy(struct lx_renderer *r)
+{
+	if (!r)
+		return;
+	if (r->objects) {
+		lx_gl.DeleteBuffers(r->objects, r->vbo);
+		lx_gl.DeleteBuffers(r->objects, r->shadow_vbo);
+		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
+	}
+	lx_gl.DeleteTextures(1, &r->atlas_tex);
+	for (int i = 0; i < LX_MAX_LIGHTS; i++)
+		if (r->beam_tex[i])
+			lx_gl.DeleteTextures(1, &r->beam_tex[i]);
+	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
+	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
+	if (r->target_fbo) { /* 0 is the window's */
+		lx_gl.DeleteTextures(1, &r->target_color);
+		lx_gl.DeleteRenderbuffers(1, &r->target_depth);
+		lx_gl.DeleteFramebuffers(1, &r->target_fbo);
+	}
+	if (r->clear_vbo)
+		lx_gl.DeleteBuffers(1, &r->clear_vbo);
+	/* the programs are the context's (lx_program_build): kept for the next renderer */
+	if (r->piece_vbo)
+		lx_gl.DeleteBuffers(1, &r->piece_vbo);
+	if (r->facing_ibo)
+		lx_gl.DeleteBuffers(1, &r->facing_ibo);
+	free(r->piece_v);
+	free(r->facing_index);
+	free(r);
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -378,38 +410,6 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 		return NULL;
 	}
 	return r;
-}
-
-void lx_renderer_destroy(struct lx_renderer *r)
-{
-	if (!r)
-		return;
-	if (r->objects) {
-		lx_gl.DeleteBuffers(r->objects, r->vbo);
-		lx_gl.DeleteBuffers(r->objects, r->shadow_vbo);
-		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
-	}
-	lx_gl.DeleteTextures(1, &r->atlas_tex);
-	for (int i = 0; i < LX_MAX_LIGHTS; i++)
-		if (r->beam_tex[i])
-			lx_gl.DeleteTextures(1, &r->beam_tex[i]);
-	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
-	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
-	if (r->target_fbo) { /* 0 is the window's */
-		lx_gl.DeleteTextures(1, &r->target_color);
-		lx_gl.DeleteRenderbuffers(1, &r->target_depth);
-		lx_gl.DeleteFramebuffers(1, &r->target_fbo);
-	}
-	if (r->clear_vbo)
-		lx_gl.DeleteBuffers(1, &r->clear_vbo);
-	/* the programs are the context's (lx_program_build): kept for the next renderer */
-	if (r->piece_vbo)
-		lx_gl.DeleteBuffers(1, &r->piece_vbo);
-	if (r->facing_ibo)
-		lx_gl.DeleteBuffers(1, &r->facing_ibo);
-	free(r->piece_v);
-	free(r->facing_index);
-	free(r);
 }
 
 /* The vertex attributes from the bound buffer (positions, then normals and face normals). */

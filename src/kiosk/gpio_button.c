@@ -110,6 +110,48 @@ static struct lx_gpio_button *open_prelude(const struct lx_board *board, char *p
 
 #ifdef LX_GPIOD_V2
 
+#define GPIO_KERNEL_DEBOUNCE true
+#define GPIO_API "libgpiod 2 (v2 API, kernel debounce)"
+
+/* The line asked for both edges, biased and debounced as the board says, with an event
+ * buffer; false after err (what was got is left for release_line). */
+static bool request_line(struct lx_gpio_button *g, const struct lx_board *board, const char *path, char *err,
+			 size_t errlen)
+{
+	struct gpiod_line_settings *s = gpiod_line_settings_new();
+	struct gpiod_line_config *lc = gpiod_line_config_new();
+	struct gpiod_request_config *rc = gpiod_request_config_new();
+	static const enum gpiod_line_bias bias[] = {GPIOD_LINE_BIAS_AS_IS, GPIOD_LINE_BIAS_PULL_UP,
+						    GPIOD_LINE_BIAS_PULL_DOWN, GPIOD_LINE_BIAS_DISABLED};
+	if (s && lc && rc) {
+		gpiod_line_settings_set_direction(s, GPIOD_LINE_DIRECTION_INPUT);
+		gpiod_line_settings_set_edge_detection(s, GPIOD_LINE_EDGE_BOTH);
+		gpiod_line_settings_set_bias(s, bias[board->bias]);
+		gpiod_line_settings_set_debounce_period_us(s, (unsigned long)board->debounce_ms * 1000);
+		gpiod_request_config_set_consumer(rc, "lixel");
+		if (gpiod_line_config_add_line_settings(lc, &g->offset, 1, s) == 0)
+			g->request = gpiod_chip_request_lines(g->chip, rc, lc);
+	}
+	int saved = errno;
+	gpiod_line_settings_free(s);
+	gpiod_line_config_free(lc);
+	gpiod_request_config_free(rc);
+	g->buffer = gpiod_edge_event_buffer_new(64);
+	if (!g->request || !g->buffer) {
+		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(saved));
+		return false;
+	}
+	return true;
+}
+
+static void release_line(struct lx_gpio_button *g)
+{
+	if (g->buffer)
+		gpiod_edge_event_buffer_free(g->buffer);
+	if (g->request)
+		gpiod_line_request_release(g->request);
+}
+
 static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32])
 {
 	struct gpiod_chip *chip = gpiod_chip_open(path);
@@ -136,55 +178,6 @@ static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char
 	return true;
 }
 
-bool lx_gpio_button_kernel_debounce(void) { return true; }
-const char *lx_gpio_button_api(void) { return "libgpiod 2 (v2 API, kernel debounce)"; }
-
-struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
-{
-	char path[272];
-	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, err, errlen);
-	if (!g)
-		return NULL;
-	struct gpiod_line_settings *s = gpiod_line_settings_new();
-	struct gpiod_line_config *lc = gpiod_line_config_new();
-	struct gpiod_request_config *rc = gpiod_request_config_new();
-	static const enum gpiod_line_bias bias[] = {GPIOD_LINE_BIAS_AS_IS, GPIOD_LINE_BIAS_PULL_UP,
-						    GPIOD_LINE_BIAS_PULL_DOWN, GPIOD_LINE_BIAS_DISABLED};
-	if (s && lc && rc) {
-		gpiod_line_settings_set_direction(s, GPIOD_LINE_DIRECTION_INPUT);
-		gpiod_line_settings_set_edge_detection(s, GPIOD_LINE_EDGE_BOTH);
-		gpiod_line_settings_set_bias(s, bias[board->bias]);
-		gpiod_line_settings_set_debounce_period_us(s, (unsigned long)board->debounce_ms * 1000);
-		gpiod_request_config_set_consumer(rc, "lixel");
-		if (gpiod_line_config_add_line_settings(lc, &g->offset, 1, s) == 0)
-			g->request = gpiod_chip_request_lines(g->chip, rc, lc);
-	}
-	int saved = errno;
-	gpiod_line_settings_free(s);
-	gpiod_line_config_free(lc);
-	gpiod_request_config_free(rc);
-	g->buffer = gpiod_edge_event_buffer_new(64);
-	if (!g->request || !g->buffer) {
-		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(saved));
-		lx_gpio_button_close(g);
-		return NULL;
-	}
-	return g;
-}
-
-void lx_gpio_button_close(struct lx_gpio_button *g)
-{
-	if (!g)
-		return;
-	if (g->buffer)
-		gpiod_edge_event_buffer_free(g->buffer);
-	if (g->request)
-		gpiod_line_request_release(g->request);
-	if (g->chip)
-		gpiod_chip_close(g->chip);
-	free(g);
-}
-
 int lx_gpio_button_fd(const struct lx_gpio_button *g) { return gpiod_line_request_get_fd(g->request); }
 
 bool lx_gpio_button_level(struct lx_gpio_button *g)
@@ -205,6 +198,33 @@ int lx_gpio_button_read(struct lx_gpio_button *g, struct lx_gpio_edge *edges, in
 
 #else /* the v1 API */
 
+#define GPIO_KERNEL_DEBOUNCE false
+#define GPIO_API "libgpiod 1 (v1 API, software debounce)"
+
+/* The line asked for both edges, biased as the board says (lixel debounces); false after
+ * err, with no line held. */
+static bool request_line(struct lx_gpio_button *g, const struct lx_board *board, const char *path, char *err,
+			 size_t errlen)
+{
+	g->line = gpiod_chip_get_line(g->chip, g->offset);
+	static const int bias[] = {0, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
+				   GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE};
+	struct gpiod_line_request_config cfg = {.consumer = "lixel", .request_type = GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES,
+						.flags = bias[board->bias]};
+	if (!g->line || gpiod_line_request(g->line, &cfg, 0) != 0) {
+		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(errno));
+		g->line = NULL;
+		return false;
+	}
+	return true;
+}
+
+static void release_line(struct lx_gpio_button *g)
+{
+	if (g->line)
+		gpiod_line_release(g->line);
+}
+
 static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char (**names)[32])
 {
 	struct gpiod_chip *chip = gpiod_chip_open(path);
@@ -224,38 +244,6 @@ static bool chip_describe(const char *path, struct lx_gpio_chip_info *info, char
 	return true;
 }
 
-bool lx_gpio_button_kernel_debounce(void) { return false; }
-const char *lx_gpio_button_api(void) { return "libgpiod 1 (v1 API, software debounce)"; }
-
-struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
-{
-	char path[272];
-	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, err, errlen);
-	if (!g)
-		return NULL;
-	g->line = gpiod_chip_get_line(g->chip, g->offset);
-	static const int bias[] = {0, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP, GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN,
-				   GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE};
-	struct gpiod_line_request_config cfg = {.consumer = "lixel", .request_type = GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES,
-						.flags = bias[board->bias]};
-	if (!g->line || gpiod_line_request(g->line, &cfg, 0) != 0) {
-		snprintf(err, errlen, "gpio: cannot request line %u on %s: %s", g->offset, path, strerror(errno));
-		gpiod_chip_close(g->chip);
-		free(g);
-		return NULL;
-	}
-	return g;
-}
-
-void lx_gpio_button_close(struct lx_gpio_button *g)
-{
-	if (!g)
-		return;
-	gpiod_line_release(g->line);
-	gpiod_chip_close(g->chip);
-	free(g);
-}
-
 int lx_gpio_button_fd(const struct lx_gpio_button *g) { return gpiod_line_event_get_fd(g->line); }
 
 bool lx_gpio_button_level(struct lx_gpio_button *g) { return gpiod_line_get_value(g->line) == 1; }
@@ -272,3 +260,26 @@ int lx_gpio_button_read(struct lx_gpio_button *g, struct lx_gpio_edge *edges, in
 }
 
 #endif
+
+bool lx_gpio_button_kernel_debounce(void) { return GPIO_KERNEL_DEBOUNCE; }
+const char *lx_gpio_button_api(void) { return GPIO_API; }
+
+struct lx_gpio_button *lx_gpio_button_open(const struct lx_board *board, char *err, size_t errlen)
+{
+	char path[272];
+	struct lx_gpio_button *g = open_prelude(board, path, sizeof path, err, errlen);
+	if (g && !request_line(g, board, path, err, errlen)) {
+		lx_gpio_button_close(g);
+		return NULL;
+	}
+	return g;
+}
+
+void lx_gpio_button_close(struct lx_gpio_button *g)
+{
+	if (!g)
+		return;
+	release_line(g);
+	gpiod_chip_close(g->chip); /* open_prelude leaves no button without its chip */
+	free(g);
+}
