@@ -95,15 +95,22 @@ struct at {
 };
 #define FAIL(at, ...) fail((at)->err, (at)->errlen, (at)->file, (at)->line, __VA_ARGS__)
 
+/* A key whose value is a text of at most cap - 1 characters (value, vl long) kept in
+ * dst; the word `unset` (where not NULL) keeps the empty text. 1, or 0 after the error. */
+static int text_key(char *dst, size_t cap, const char *value, size_t vl, const char *unset, const char *what,
+		    const struct at *at)
+{
+	if (vl >= cap)
+		return FAIL(at, "expected %s of at most %zu characters", what, cap - 1);
+	strcpy(dst, unset && !strcmp(value, unset) ? "" : value);
+	return 1;
+}
+
 /* The button's keys: 1 taken, 0 after the error, -1 not one of them. */
 static int button_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
 {
 	enum lx_number_error e;
-	if (!strcmp(key, "gpio-chip")) {
-		if (vl >= sizeof b->gpio_chip)
-			return FAIL(at, "expected a chip name or path of at most %zu characters", sizeof b->gpio_chip - 1);
-		strcpy(b->gpio_chip, strcmp(value, "none") ? value : "");
-	} else if (!strcmp(key, "gpio-line")) {
+	if (!strcmp(key, "gpio-line")) {
 		if ((e = lx_number_int(value, 0, 1023, &b->gpio_line)))
 			return FAIL(at, "expected a line offset from 0 to 1023, got '%s' (%s)", value, lx_number_why(e));
 		b->gpio_line_name[0] = 0; /* the last of gpio-line and gpio-line-name counts */
@@ -136,14 +143,10 @@ static int button_key(struct lx_board *b, const char *key, const char *value, si
 }
 
 /* The display and the maps' keys: 1 taken, 0 after the error, -1 not one of them. */
-static int display_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
+static int display_key(struct lx_board *b, const char *key, const char *value, const struct at *at)
 {
 	enum lx_number_error e;
-	if (!strcmp(key, "display")) {
-		if (vl >= sizeof b->display)
-			return FAIL(at, "expected a device path of at most %zu characters", sizeof b->display - 1);
-		strcpy(b->display, strcmp(value, "auto") ? value : "");
-	} else if (!strcmp(key, "mode")) {
+	if (!strcmp(key, "mode")) {
 		if (!strcmp(value, "preferred"))
 			b->mode_w = b->mode_h = b->mode_hz = 0;
 		else if (!lx_parse_mode(value, &b->mode_w, &b->mode_h, &b->mode_hz))
@@ -211,13 +214,15 @@ static bool filters_key(struct lx_board *b, const char *value, const struct at *
 static bool apply_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
 {
 	int r;
-	if (!strcmp(key, "name")) {
-		if (vl >= sizeof b->name)
-			return FAIL(at, "expected a name of at most %zu characters", sizeof b->name - 1);
-		strcpy(b->name, value);
-	} else if (!strcmp(key, "description"))
+	if (!strcmp(key, "name"))
+		return text_key(b->name, sizeof b->name, value, vl, NULL, "a name", at);
+	if (!strcmp(key, "gpio-chip"))
+		return text_key(b->gpio_chip, sizeof b->gpio_chip, value, vl, "none", "a chip name or path", at);
+	if (!strcmp(key, "display"))
+		return text_key(b->display, sizeof b->display, value, vl, "auto", "a device path", at);
+	if (!strcmp(key, "description"))
 		snprintf(b->description, sizeof b->description, "%s", value);
-	else if ((r = button_key(b, key, value, vl, at)) >= 0 || (r = display_key(b, key, value, vl, at)) >= 0)
+	else if ((r = button_key(b, key, value, vl, at)) >= 0 || (r = display_key(b, key, value, at)) >= 0)
 		return r;
 	else if (!strcmp(key, "methods"))
 		return methods_key(b, value, at);
