@@ -1,4 +1,5 @@
 #include "configs.h"
+#include "light_space.h"
 #include "shadow_method.h"
 #include "test_util.h"
 #include "method_fixture.h"
@@ -143,6 +144,48 @@ static void texture_matrix_lands_in_the_region(void **state)
 	}
 }
 
+/* Every object that casts widens the casters' hull: with 7 planes' back faces lit and
+ * 32 casters, the 39 boxes' 312 corners all count. The light space once kept the
+ * first 256 and dropped the rest in silence; the last 8 casters stand apart here, so
+ * that the hull without them would leave their corners out. */
+static void every_casting_corner_counts(void **state)
+{
+	(void)state;
+	char text[8192];
+	int n = snprintf(text, sizeof text, "camera eye 0 9 12  at 0 0 0  fov 60\nlight point 0 30 0\n"
+					  "plane floor corner -8 0 8 edge1 16 0 0 edge2 0 0 -16\n");
+	for (int i = 1; i < LX_MAX_PLANES; i++) /* facing down: their upper, back faces lit */
+		n += snprintf(text + n, sizeof text - (size_t)n, "plane shelf%d corner %g %g -3 edge1 0.5 0 0 edge2 0 0 0.5\n",
+			      i, -3.0 + 0.6 * i, 0.5 * i);
+	for (int i = 0; i < LX_MAX_CASTERS; i++)
+		n += snprintf(text + n, sizeof text - (size_t)n, "box size 0.2 0.2 0.2 at %g %g\n",
+			      i < LX_MAX_CASTERS - 8 ? -1.5 + 0.1 * i : 5.5, i < LX_MAX_CASTERS - 8 ? 0.0 : 2.0 + 0.3 * (i % 8));
+	assert_true(n < (int)sizeof text);
+	struct setup s;
+	char err[256];
+	assert_true(lx_scene_parse(text, "many.scene", &s.scene, err, sizeof err));
+	assert_true(build(&s, "uniform", 320, 240, 0));
+	struct lx_light_space ls;
+	lx_light_space_build(&s.frame, &ls);
+	assert_false(ls.empty || ls.casters_unbounded);
+	int casting = 0;
+	for (int id = 0; id < s.frame.object_count; id++) {
+		if (!(ls.casting >> id & 1))
+			continue;
+		casting++;
+		for (int c = 0; c < 8; c++) {
+			vec4 q = m4_mul_point(&ls.view, v3_box_corner(s.frame.bmin[id], s.frame.bmax[id], c));
+			vec2 g = {q.x / -q.z, q.y / -q.z}; /* in front of the light: the hull is bounded */
+			if (!lx_poly_contains(&ls.casters, g, -1e-9 * (1 + fabs(g.x) + fabs(g.y))))
+				fail_msg("corner %d of object %d at (%g, %g) lies outside the casters' hull", c, id, g.x, g.y);
+		}
+	}
+	print_message("%d of %d objects cast, every corner inside the casters' hull\n", casting, s.frame.object_count);
+	assert_int_equal(casting, LX_MAX_PLANES + LX_MAX_CASTERS - 1); /* all but the floor, lit from above */
+	assert_true(8 * casting > 256);
+	cleanup(&s);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -151,6 +194,7 @@ int main(void)
 		cmocka_unit_test(extremes_stay_finite),
 		cmocka_unit_test(none_has_no_maps),
 		cmocka_unit_test(texture_matrix_lands_in_the_region),
+		cmocka_unit_test(every_casting_corner_counts),
 	};
 	return cmocka_run_group_tests_name("uniform", tests, NULL, NULL);
 }

@@ -44,9 +44,26 @@ static bool project_view(const struct lx_light_space *ls, vec4 q, vec2 *g, doubl
 	return true;
 }
 
-static bool project(const struct lx_light_space *ls, vec3 p, vec2 *g, double *depth)
+/* Room for every point the light space projects: the receiver volume's vertices, or the
+ * corners of every object's box. */
+#define LIGHT_SPACE_POINTS \
+	(LX_CONVEX_MAX_POINTS > 8 * (LX_MAX_PLANES + LX_MAX_CASTERS) ? LX_CONVEX_MAX_POINTS : 8 * (LX_MAX_PLANES + LX_MAX_CASTERS))
+
+/* The images of view-space points q[0, n) that project (packed into g) and the depth
+ * range [*dlo, *dhi] they span (empty: +inf, -inf); returns how many project (the rest
+ * lie behind a point light). */
+static int project_points(const struct lx_light_space *ls, const vec4 *q, int n, vec2 *g, double *dlo, double *dhi)
 {
-	return project_view(ls, m4_mul_point(&ls->view, p), g, depth);
+	int m = 0;
+	*dlo = INFINITY, *dhi = -INFINITY;
+	for (int i = 0; i < n; i++) {
+		double depth;
+		if (project_view(ls, q[i], &g[m], &depth)) {
+			m++;
+			*dlo = fmin(*dlo, depth), *dhi = fmax(*dhi, depth);
+		}
+	}
+	return m;
 }
 
 /* Whether an object in the box [lo, hi] may lie between the light and a receiver: its
@@ -91,51 +108,36 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	vec3 up = fabs(dir.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
 	m4_look_at(eye, v3_add(eye, dir), up, &ls->view); /* unit dir, up not parallel: cannot fail */
 
-	vec2 pts[4 * LX_POLY_MAX];
-	int n = 0;
-	ls->zfar = -INFINITY;
 	/* the receivers' image and depth; and their cone from a point light (the widest angle
 	 * off the axis), or their bounds across a directional light's beam: what a caster
 	 * must reach to matter */
-	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY;
+	vec4 q[LIGHT_SPACE_POINTS];
+	vec2 pts[LIGHT_SPACE_POINTS];
+	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY, dlo, dhi;
 	for (int i = 0; i < nrec; i++) {
-		vec4 q = m4_mul_point(&ls->view, rec[i]);
-		cone = fmax(cone, atan2(sqrt(q.x * q.x + q.y * q.y), -q.z));
-		rx0 = fmin(rx0, q.x), rx1 = fmax(rx1, q.x), ry0 = fmin(ry0, q.y), ry1 = fmax(ry1, q.y);
-		vec2 g;
-		double depth;
-		if (project_view(ls, q, &g, &depth)) {
-			if (n < 4 * LX_POLY_MAX)
-				pts[n++] = g;
-			ls->zfar = fmax(ls->zfar, depth);
-		} else
-			ls->receivers_behind = true;
+		q[i] = m4_mul_point(&ls->view, rec[i]);
+		cone = fmax(cone, atan2(sqrt(q[i].x * q[i].x + q[i].y * q[i].y), -q[i].z));
+		rx0 = fmin(rx0, q[i].x), rx1 = fmax(rx1, q[i].x), ry0 = fmin(ry0, q[i].y), ry1 = fmax(ry1, q[i].y);
 	}
+	int n = project_points(ls, q, nrec, pts, &dlo, &dhi);
+	ls->receivers_behind = n < nrec;
+	ls->zfar = dhi;
 	lx_poly_hull(pts, n, &ls->receivers);
-	int ncasters = 0;
-	n = 0;
-	ls->znear = INFINITY;
+	/* the casters that reach them: every corner of their boxes */
+	int ncasters = 0, ncorners = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id) ||
 		    !reaches_receivers(ls, f->bmin[id], f->bmax[id], cone, (double[4]){rx0, ry0, rx1, ry1}))
 			continue;
 		ls->casting |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
 		ncasters++;
-		for (int k = 0; k < 8; k++) {
-			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
-			vec2 g;
-			double depth;
-			if (project(ls, c, &g, &depth)) {
-				if (n < 4 * LX_POLY_MAX)
-					pts[n++] = g;
-				ls->znear = fmin(ls->znear, depth);
-			} else
-				ls->casters_unbounded = true; /* a box reaching behind the light projects everywhere */
-		}
+		for (int k = 0; k < 8; k++)
+			q[ncorners++] = m4_mul_point(&ls->view, v3_box_corner(f->bmin[id], f->bmax[id], k));
 	}
+	n = project_points(ls, q, ncorners, pts, &dlo, &dhi);
+	ls->casters_unbounded = n < ncorners; /* a box reaching behind the light projects everywhere */
+	ls->znear = ls->casters_unbounded ? -INFINITY : dlo;
 	lx_poly_hull(pts, n, &ls->casters);
-	if (ls->casters_unbounded)
-		ls->znear = -INFINITY;
 	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond
 	 * every receiver: no shadow can fall in the view. */
 	ls->empty = ncasters == 0 || !(ls->zfar > -INFINITY) || ls->znear > ls->zfar;
