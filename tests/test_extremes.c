@@ -260,6 +260,59 @@ static void random_extremes_warn_or_match(void **state)
 	pixels_free(&px);
 }
 
+/* Two named extremes on the default scene at time 0, every method: the light on the
+ * floor (the pixels it grazes left out as edge-on, the rest within 1%, warning or not),
+ * and one caster 100 km from the rest (within 0.5%: the far caster must not spread the
+ * maps over the whole scene). */
+static void named_extremes_match(void **state)
+{
+	(void)state;
+	char err[512];
+	struct pixels px = pixels_new();
+	for (int e = 0; e < 2; e++) {
+		struct lx_scene sc;
+		assert_true(lx_scene_builtin("default", &sc));
+		if (e == 0)
+			sc.light = lx_light_white(v3(0, 0, 0));
+		else
+			sc.casters[sc.caster_count++] = (struct lx_caster){.shape = LX_BOX, .size = v3(1, 1, 1), .x = 1e5,
+									   .period = 2, .color = v3(0.5, 0.5, 0.5)};
+		const char *what = e == 0 ? "the light on the floor" : "one caster 100 km away";
+		double limit = e == 0 ? 1.0 : 0.5;
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&sc, &meshes));
+		struct lx_method_run run[NM_MAX];
+		runs_init(run, &sc, &meshes);
+		struct lx_frame frame;
+		if (!lx_frame_setup(&frame, &sc, &meshes, 0, W, H, err, sizeof err))
+			fail_msg("%s: %s", what, err);
+		assert_true(lx_reference_image(&frame, px.ref_obj, px.ref_sh, 2));
+		struct lx_plane_points pts;
+		assert_true(lx_plane_points_make(&frame, px.ref_obj, &pts));
+		for (int m = 0; m < NM; m++) {
+			if (!strcmp(methods[m], "none"))
+				continue;
+			lx_method_run_shadows(&run[m], &frame);
+			lx_method_run_decision(&run[m], 0, px.rgba, px.obj, px.sh);
+			struct lx_mismatch mm;
+			struct lx_plane_report planes[LX_MAX_PLANES];
+			lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj,
+				   px.sh, &pts, &mm, planes);
+			print_message("%-24s %-8s mismatch %.4f%%, edge-on pixels %ld\n", what, methods[m], mm.mismatch_pct,
+				      mm.edge_on);
+			if (!(mm.mismatch_pct < limit))
+				fail_msg("%s, %s: mismatch %.3f%%, expected under %g%%", what, methods[m], mm.mismatch_pct, limit);
+			if (e == 0 && mm.edge_on <= 1000)
+				fail_msg("%s, %s: %ld pixels edge-on, expected the floor's (over 1000)", what, methods[m], mm.edge_on);
+		}
+		lx_plane_points_free(&pts);
+		for (int m = 0; m < NM; m++)
+			lx_method_run_free(&run[m]);
+		lx_meshes_free(&meshes);
+	}
+	pixels_free(&px);
+}
+
 /* One light of a two-light frame against its reference: a NaN-free report, and without a
  * warning a mismatch under 1% (but for the method none, which shadows nothing). Returns
  * whether it warned. */
@@ -421,6 +474,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(scale_changes_nothing),
 		cmocka_unit_test(random_extremes_warn_or_match),
+		cmocka_unit_test(named_extremes_match),
 		cmocka_unit_test(two_extreme_lights_warn_or_match),
 	};
 	return cmocka_run_group_tests(tests, group_setup, group_teardown);
