@@ -1,5 +1,5 @@
 #!/bin/sh
-# Runs every test of a build directory in one pool, JOBS at a time (default: the CPUs + 1),
+# Runs every test of a build directory in one pool, JOBS at a time (default: the CPUs),
 # the long ones first, each into its own log, shown in a fixed order when all are done,
 # then prints one closing line "tests: N passed, N failed". None asserts a time, so they
 # may share the CPUs. The pool holds
@@ -14,9 +14,7 @@ build=${1:-build}
 passed=0
 failed=0
 failed_names=""
-# one job more than the CPUs: the kiosk's and cli's waits (a window to appear, a key to
-# be read) leave a CPU idle that a third job fills (2 s of make check's 34 here)
-jobs=${JOBS:-$(($(nproc 2>/dev/null || echo 1) + 1))}
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 1)}
 # The pool keeps every CPU busy: llvmpipe's own rasterizer threads would only add their
 # hand-offs (5 of the pool's 90 CPU-seconds here), so it rasterizes in the calling thread
 # unless the caller says otherwise. What the tests check does not depend on it.
