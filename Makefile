@@ -170,7 +170,7 @@ check: deps-check check-layers
 		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone
 	@sh tests/run-tests.sh $(BUILD)
 
-# The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, RSS sampled.
+# The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, its own memory sampled.
 soak: deps-check
 	@$(MAKE) --no-print-directory $(BUILD)/lixel
 	@sh tests/kiosk_soak.sh $(BUILD)/lixel
