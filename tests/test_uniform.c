@@ -123,6 +123,23 @@ static void none_has_no_maps(void **state)
 	cleanup(&s);
 }
 
+/* The registry: each method found by its name, and each either builds its maps or warps
+ * the uniform map (lx_shadow_method_frame calls one of the two, never both). */
+static void registry_methods_build_or_warp(void **state)
+{
+	(void)state;
+	int warping = 0;
+	for (int i = 0; i < lx_shadow_method_count(); i++) {
+		const struct lx_shadow_method *m = lx_shadow_method_at(i);
+		assert_ptr_equal(lx_shadow_method_find(m->name), m);
+		if (!m->build == !m->warp)
+			fail_msg("method %s gives %s", m->name, m->build ? "both build and warp" : "neither build nor warp");
+		warping += m->warp != NULL;
+	}
+	assert_null(lx_shadow_method_at(lx_shadow_method_count()));
+	assert_int_equal(warping, 4); /* psm, lispsm, xpsm, tsm */
+}
+
 /* The texture matrix sends region clip space onto the region's texels. */
 static void texture_matrix_lands_in_the_region(void **state)
 {
@@ -193,6 +210,7 @@ int main(void)
 		cmocka_unit_test(random_lights),
 		cmocka_unit_test(extremes_stay_finite),
 		cmocka_unit_test(none_has_no_maps),
+		cmocka_unit_test(registry_methods_build_or_warp),
 		cmocka_unit_test(texture_matrix_lands_in_the_region),
 		cmocka_unit_test(every_casting_corner_counts),
 	};
