@@ -284,6 +284,24 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 	}
 }
 
+/* Whether receiver object id may meet a volume: false only when one of its half-spaces
+ * leaves every corner of the receiver's box (a plane's quad) outside, so all of it. A few
+ * dot products: the test before receiver_in_volume's clipping, which costs a hundred
+ * times more, and the shadow pass's (lx_lookup_caster_maps). */
+static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
+{
+	vec3 q[8];
+	int n = receiver_corners(f, id, q);
+	for (int j = 0; j < np; j++) {
+		int out = 0;
+		while (out < n && v4_dot_point(pl[j], q[out]) < 0)
+			out++;
+		if (out == n)
+			return false;
+	}
+	return true;
+}
+
 /* Per caster and map of `mask`, the window hull of where it can shadow the receiver
  * (with first, only whether there is one); returns their count, or -1 when one has no
  * bound (the receiver reaches the eye's plane inside it). */
@@ -299,6 +317,8 @@ static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigne
 		for (int c = 0; c < f->object_count && n < MAX_HULLS; c++) {
 			if (v->count[m][c] < 0 || c == receiver)
 				continue; /* nothing shadows itself where a lookup is drawn (lx_lookup_any) */
+			if (!receiver_may_meet(f, receiver, v->plane[m][c], v->count[m][c]))
+				continue; /* wholly outside the volume: no point to clip */
 			struct window_points w;
 			w.n = 0, w.everything = false;
 			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], &w);
@@ -337,22 +357,6 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
 	return shadow_hulls(v, receiver, mask, true, NULL) != 0;
-}
-
-/* Whether receiver object id may meet a volume: false only when one of its half-spaces
- * leaves every corner of the receiver's box (a plane's quad) outside. */
-static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
-{
-	vec3 q[8];
-	int n = receiver_corners(f, id, q);
-	for (int j = 0; j < np; j++) {
-		int out = 0;
-		while (out < n && pl[j].x * q[out].x + pl[j].y * q[out].y + pl[j].z * q[out].z + pl[j].w < 0)
-			out++;
-		if (out == n)
-			return false;
-	}
-	return true;
 }
 
 unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool everywhere)
