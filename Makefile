@@ -76,7 +76,7 @@ GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run slide check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build fuzz-check
+.PHONY: all run slide check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build
 
 all: $(BUILD)/lixel
 
@@ -178,7 +178,7 @@ soak: deps-check
 # make check's builds use every CPU (its sub-makes are its own: nothing else shares them)
 CHECK_JOBS ?= -j$(shell nproc 2>/dev/null || echo 1)
 # make asan's fuzzing, in seconds (make fuzz runs longer)
-CHECK_FUZZ_SECONDS ?= 2
+ASAN_FUZZ_SECONDS ?= 2
 
 # The include rules between the layers, the GL-free files' freedom from GL headers,
 # and no function over 80 lines.
@@ -195,7 +195,7 @@ asan: deps-asan
 		build-asan/lixel $(TEST_BINS:$(BUILD)/%=build-asan/%) build-asan/tests/destroy_window \
 		$(FUZZ_NAMES:%=build-asan/fuzz-quick/%)
 	@LIXEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-		FUZZ_SECONDS=$(CHECK_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=build-asan/fuzz-quick \
+		FUZZ_SECONDS=$(ASAN_FUZZ_SECONDS) FUZZ_NAMES="$(FUZZ_NAMES)" FUZZ_DIR=build-asan/fuzz-quick \
 		sh tests/run-tests.sh build-asan
 
 # libFuzzer harnesses (fuzz/*.c) over the GL-free core, built with clang under ASan and
@@ -239,9 +239,6 @@ fuzz-build: deps-fuzz
 
 fuzz: fuzz-build
 	@sh tools/fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_NAMES)
-
-fuzz-check: fuzz-build
-	@sh tools/fuzz.sh $(FUZZ_DIR) 3 $(FUZZ_NAMES)
 
 # The binary (shaders and board profiles are built in), the man page, the profiles as
 # files to copy and edit (--board FILE), and the kiosk's systemd unit.

@@ -213,26 +213,26 @@ static bool filters_key(struct lx_board *b, const char *value, const struct at *
 /* One "KEY VALUE" line, the value trimmed. */
 static bool apply_key(struct lx_board *b, const char *key, const char *value, size_t vl, const struct at *at)
 {
-	int r;
 	if (!strcmp(key, "name"))
 		return text_key(b->name, sizeof b->name, value, vl, NULL, "a name", at);
 	if (!strcmp(key, "gpio-chip"))
 		return text_key(b->gpio_chip, sizeof b->gpio_chip, value, vl, "none", "a chip name or path", at);
 	if (!strcmp(key, "display"))
 		return text_key(b->display, sizeof b->display, value, vl, "auto", "a device path", at);
-	if (!strcmp(key, "description"))
+	if (!strcmp(key, "description")) {
 		snprintf(b->description, sizeof b->description, "%s", value);
-	else if ((r = button_key(b, key, value, vl, at)) >= 0 || (r = display_key(b, key, value, at)) >= 0)
+		return true;
+	}
+	int r;
+	if ((r = button_key(b, key, value, vl, at)) >= 0 || (r = display_key(b, key, value, at)) >= 0)
 		return r;
-	else if (!strcmp(key, "methods"))
+	if (!strcmp(key, "methods"))
 		return methods_key(b, value, at);
-	else if (!strcmp(key, "filters"))
+	if (!strcmp(key, "filters"))
 		return filters_key(b, value, at);
-	else
-		return FAIL(at, "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, "
-			    "debounce-ms, long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, "
-			    "light-budget, depth-precision, methods or filters, got '%s'", key);
-	return true;
+	return FAIL(at, "expected name, description, gpio-chip, gpio-line, gpio-line-name, gpio-active, gpio-bias, "
+		    "debounce-ms, long-press-ms, display, mode, plane-lixels, fallback-lixels, uniform-lixels, "
+		    "light-budget, depth-precision, methods or filters, got '%s'", key);
 }
 
 static bool parse_lines(const char *text, const char *file, struct lx_board *b, int *last, char *err, size_t errlen)

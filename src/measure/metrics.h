@@ -44,18 +44,6 @@ struct lx_plane_sampling {
 	double lixels_used; /* budget use: the lixels inside the footprint of these pixels (sum of lpp) */
 };
 
-/* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the
- * pixels whose visible object (ref_object, or every pixel that sees the plane's
- * parallelogram when ref_object is NULL) is that plane. If a map is optimal for the
- * plane, the figures cover the pixels that map serves; otherwise each pixel counts
- * with the map that serves it (lx_shadow_select_map). pts, when not NULL, holds those
- * pixels' points (lx_plane_points_make of the same frame and ref_object), worked out once
- * for every method measured; the figures are the same either way. False when no pixel
- * counts. */
-struct lx_plane_points;
-bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
-		       struct lx_plane_sampling *out);
 /* Where each pixel of ref_object that is a plane meets that plane, worked out once for a
  * frame whose decisions several methods (or lights) are measured against. */
 struct lx_plane_points {
@@ -64,6 +52,17 @@ struct lx_plane_points {
 };
 bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, struct lx_plane_points *out);
 void lx_plane_points_free(struct lx_plane_points *pts);
+/* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the
+ * pixels whose visible object (ref_object, or every pixel that sees the plane's
+ * parallelogram when ref_object is NULL) is that plane. If a map is optimal for the
+ * plane, the figures cover the pixels that map serves; otherwise each pixel counts
+ * with the map that serves it (lx_shadow_select_map). pts, when not NULL, holds those
+ * pixels' points (lx_plane_points_make of the same frame and ref_object), worked out once
+ * for every method measured; the figures are the same either way. False when no pixel
+ * counts. */
+bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
+		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+		       struct lx_plane_sampling *out);
 /* The same figures on every stride-th pixel in x and y of the plane's parallelogram
  * (casters not hidden): cheap enough for a live overlay. */
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

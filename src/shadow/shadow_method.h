@@ -11,8 +11,6 @@
 #include "frame.h"
 
 #define LX_MAX_MAPS 4
-struct lx_light_space; /* light_space.h: the warping methods' start */
-struct lx_uniform_fit;
 #define LX_MAX_WARNINGS 8
 #define LX_WARNING_MAX 160
 
@@ -74,6 +72,8 @@ struct lx_method_options {
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
 
+struct lx_light_space; /* light_space.h: where the warping methods start */
+struct lx_uniform_fit;
 struct lx_shadow_method {
 	const char *name;
 	const char *summary;
