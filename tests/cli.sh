@@ -171,6 +171,10 @@ if "$lixel" bench --size 64x48 --frames 1 --warmup 0 --json --csv "$tmp/b.csv" -
   [ "$nm" -ge 6 ] && [ "$(wc -l <"$tmp/b.csv")" -eq $((nm * 11 + 1)) ] && ok ||
     no "bench CSV has $(wc -l <"$tmp/b.csv") lines, expected $((nm * 11 + 1)) ($nm methods)"
   head -1 "$tmp/b.csv" | grep -q ',shadow_ms_median,main_ms_median,' && ok || no "bench CSV header: $(head -1 "$tmp/b.csv")"
+  # a result row's JSON keys are the CSV's columns, in their order (one list serves both)
+  jkeys=$(sed -n 's/.*"results": \[{\([^{]*\)"m_max".*/\1/p' "$tmp/bench.json" | grep -o '"[a-z_]*":' | tr -d '":' | paste -sd, -)
+  ckeys=$(head -1 "$tmp/b.csv" | sed 's/,m_max_.*//')
+  [ -n "$jkeys" ] && [ "$jkeys" = "$ckeys" ] && ok || no "bench JSON row keys '$jkeys' are not the CSV's '$ckeys'"
   [ "$(head -c 4 "$tmp/b.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "bench plot is not a PNG"
   [ "$(ls "$tmp/strips" | wc -l)" -eq 11 ] && ok || no "bench wrote $(ls "$tmp/strips" | wc -l) strips, expected 11"
   grep -q "configuration 11/11: animation" "$tmp/bench.err" && ok || no "bench shows no progress on stderr"

@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include <errno.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,6 +38,35 @@ struct row {
 	double m_max[LX_MAX_PLANES]; /* NAN where the plane is not measured */
 	double lpp[LX_MAX_PLANES], used[LX_MAX_PLANES]; /* median lpp and lixels used (budget use), same */
 };
+
+/* A row's figures as the CSV and the JSON name them, in their order, with the CSV's
+ * precision: one list for both outputs. */
+static const struct column {
+	const char *name;
+	size_t at; /* offsetof(struct row, ...), a double */
+	const char *csv_format;
+} row_columns[] = {
+	{"frame_ms_median", offsetof(struct row, frame_ms_median), "%.4f"},
+	{"frame_ms_min", offsetof(struct row, frame_ms_min), "%.4f"},
+	{"frame_ms_max", offsetof(struct row, frame_ms_max), "%.4f"},
+	{"shadow_ms_median", offsetof(struct row, shadow_ms), "%.4f"},
+	{"main_ms_median", offsetof(struct row, main_ms), "%.4f"},
+	{"setup_us", offsetof(struct row, setup_us), "%.2f"},
+	{"lookup_pct", offsetof(struct row, lookup_pct), "%.3f"},
+	{"mismatch_pct", offsetof(struct row, mismatch_pct), "%.5f"},
+	{"false_shadow_pct", offsetof(struct row, false_pct), "%.5f"},
+	{"missing_shadow_pct", offsetof(struct row, missing_pct), "%.5f"},
+	{"mismatch_worst", offsetof(struct row, mismatch_worst), "%.5f"},
+	{"soft_error_pct", offsetof(struct row, soft_pct), "%.5f"},
+};
+#define ROW_COLUMNS (int)(sizeof row_columns / sizeof row_columns[0])
+
+static double column_of(const struct row *r, int k)
+{
+	double v;
+	memcpy(&v, (const char *)r + row_columns[k].at, sizeof v);
+	return v;
+}
 
 struct bench {
 	int width, height, frames, warmup;
@@ -510,15 +540,8 @@ static void json_row(struct lx_json *j, const struct bench *b, int m, int c)
 	lx_json_key(j, "method"), lx_json_string(j, b->methods[m]);
 	lx_json_key(j, "filter"), lx_json_string(j, lx_filter_name(b->filters[m]));
 	lx_json_key(j, "config"), lx_json_string(j, b->configs[c]);
-	lx_json_key(j, "frame_ms_median"), lx_json_number(j, r->frame_ms_median);
-	lx_json_key(j, "frame_ms_min"), lx_json_number(j, r->frame_ms_min);
-	lx_json_key(j, "frame_ms_max"), lx_json_number(j, r->frame_ms_max);
-	lx_json_key(j, "shadow_ms_median"), lx_json_number(j, r->shadow_ms);
-	lx_json_key(j, "main_ms_median"), lx_json_number(j, r->main_ms);
-	lx_json_key(j, "setup_us"), lx_json_number(j, r->setup_us);
-	lx_json_key(j, "lookup_pct"), lx_json_number(j, r->lookup_pct);
-	lx_json_key(j, "mismatch_pct"), lx_json_number(j, r->mismatch_pct);
-	lx_json_key(j, "soft_error_pct"), lx_json_number(j, r->soft_pct);
+	for (int k = 0; k < ROW_COLUMNS; k++)
+		lx_json_key(j, row_columns[k].name), lx_json_number(j, column_of(r, k));
 	lx_json_key(j, "m_max"), lx_json_object(j);
 	for (int p = 0; p < b->scene.plane_count; p++)
 		if (!isnan(r->m_max[p]))
@@ -574,9 +597,9 @@ static void print_json(const struct bench *b)
 static bool csv_rows(FILE *f, void *ctx)
 {
 	const struct bench *b = ctx;
-	fprintf(f, "method,filter,config,frame_ms_median,frame_ms_min,frame_ms_max,shadow_ms_median,main_ms_median,setup_us,"
-		   "lookup_pct,mismatch_pct,false_shadow_pct,"
-		   "missing_shadow_pct,mismatch_worst,soft_error_pct");
+	fprintf(f, "method,filter,config");
+	for (int k = 0; k < ROW_COLUMNS; k++)
+		fprintf(f, ",%s", row_columns[k].name);
 	for (int p = 0; p < b->scene.plane_count; p++)
 		fprintf(f, ",m_max_%s,lpp_%s,lixels_used_%s", b->scene.planes[p].name, b->scene.planes[p].name,
 			b->scene.planes[p].name);
@@ -584,10 +607,11 @@ static bool csv_rows(FILE *f, void *ctx)
 	for (int c = 0; c < b->nc; c++)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
-			fprintf(f, "%s,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f", b->methods[m],
-				lx_filter_name(b->filters[m]), b->configs[c], r->frame_ms_median, r->frame_ms_min, r->frame_ms_max,
-				r->shadow_ms, r->main_ms, r->setup_us, r->lookup_pct, r->mismatch_pct, r->false_pct, r->missing_pct,
-				r->mismatch_worst, r->soft_pct);
+			fprintf(f, "%s,%s,%s", b->methods[m], lx_filter_name(b->filters[m]), b->configs[c]);
+			for (int k = 0; k < ROW_COLUMNS; k++) {
+				fputc(',', f);
+				fprintf(f, row_columns[k].csv_format, column_of(r, k));
+			}
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
 					fprintf(f, ",,,");
