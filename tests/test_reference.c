@@ -141,6 +141,57 @@ static void reference_image_is_deterministic_across_threads(void **state)
 	lx_meshes_free(&m);
 }
 
+/* lx_raycast_blocked_hint answers as lx_raycast_blocked whatever its hint (none, the one
+ * carried from ray to ray as the soft reference does, a triangle that has nothing to do
+ * with the ray, one out of range), and leaves a triangle of another object as the hint
+ * when it answers "blocked": rays from points of the default view towards spots around
+ * the light, blocked and not. */
+static void hinted_rays_answer_as_plain_ones(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	default_frame(&s, &m, &f, 64, 48);
+	struct lx_raycaster *rc = lx_raycaster_create(&f);
+	assert_non_null(rc);
+	long blocked = 0, open = 0, kept = 0;
+	for (int y = 0; y < 48; y++)
+		for (int x = 0; x < 64; x++) {
+			vec3 p;
+			int tri = lx_reference_pixel(&f, rc, x, y, &p), carried = -1;
+			if (tri < 0)
+				continue;
+			int object = lx_raycaster_object(rc, tri);
+			for (int k = 0; k < 25; k++) {
+				vec3 spot = v3_add(s.light.position, v3(0.15 * (k % 5 - 2), 0, 0.15 * (k / 5 - 2)));
+				vec3 d = v3_sub(spot, p);
+				bool want = lx_raycast_blocked(rc, p, d, 1e-9, 1 - 1e-9, object);
+				int hints[4] = {-1, carried, (x * 31 + y * 17 + k) % 200, 1 << 30};
+				for (int h = 0; h < 4; h++) {
+					int hint = hints[h], before = hint;
+					bool got = lx_raycast_blocked_hint(rc, p, d, 1e-9, 1 - 1e-9, object, &hint);
+					if (got != want)
+						fail_msg("pixel (%d, %d) ray %d hint %d: blocked %d, the plain query says %d", x, y, k,
+							 before, got, want);
+					if (got) {
+						assert_true(hint >= 0);
+						assert_int_not_equal(lx_raycaster_object(rc, hint), object);
+					} else {
+						assert_int_equal(hint, before); /* kept when nothing blocks */
+					}
+					if (h == 1)
+						kept += got && hint == before, carried = hint;
+				}
+				blocked += want, open += !want;
+			}
+		}
+	print_message("%ld rays blocked, %ld not; %ld blocked by the carried hint\n", blocked, open, kept);
+	assert_true(blocked > 1000 && open > 1000 && kept > blocked / 4);
+	lx_raycaster_destroy(rc);
+	lx_meshes_free(&m);
+}
+
 static void mismatch_counts_each_kind(void **state)
 {
 	(void)state;
@@ -540,6 +591,7 @@ int main(void)
 		cmocka_unit_test(shadows_fall_where_geometry_says),
 		cmocka_unit_test(bvh_depth_cap_loses_nothing),
 		cmocka_unit_test(reference_image_is_deterministic_across_threads),
+		cmocka_unit_test(hinted_rays_answer_as_plain_ones),
 		cmocka_unit_test(mismatch_counts_each_kind),
 		cmocka_unit_test(soft_reference_matches_a_penumbra),
 		cmocka_unit_test(soft_image_is_deterministic_and_bounded),

@@ -310,6 +310,19 @@ bool lx_raycast_blocked(const struct lx_raycaster *rc, vec3 o, vec3 d, double tm
 	return traverse(rc, o, d, tmin, tmax, true, -1, skip_object, &t) >= 0;
 }
 
+bool lx_raycast_blocked_hint(const struct lx_raycaster *rc, vec3 o, vec3 d, double tmin, double tmax, int skip_object,
+			     int *hint)
+{
+	double t;
+	int h = *hint;
+	if (h >= 0 && h < rc->ntris && rc->tris[h].object != skip_object && hit_tri(&rc->tris[h], o, d, tmin, tmax, &t))
+		return true;
+	int hit = traverse(rc, o, d, tmin, tmax, true, -1, skip_object, &t);
+	if (hit >= 0)
+		*hint = hit;
+	return hit >= 0;
+}
+
 /* Whether segment a + s (b - a), s in [0, 1], meets the box [lo - r, hi + r]. */
 static bool segment_meets_box(vec3 a, vec3 inv, vec3 lo, vec3 hi, double r)
 {

@@ -84,7 +84,7 @@ double lx_soft_visibility(const struct lx_raycaster *rc, const struct lx_area_li
 	across(unit, &e1, &e2);
 	/* directional: a ray's direction is the axis's unit plus the disc's offset scaled */
 	double scale = light->directional ? 1.0 / len : 1.0;
-	int seen = 0, side = LX_SOFT_SIDE;
+	int seen = 0, side = LX_SOFT_SIDE, hint = -1;
 	for (int k = 0; k < side * side; k++) {
 		unsigned long long h = mix64(seed * (unsigned long long)(side * side) + (unsigned long long)k + 1);
 		double u = -1 + 2 * (k % side + (h >> 11) * 0x1p-53 * 0.999999) / side;
@@ -93,7 +93,7 @@ double lx_soft_visibility(const struct lx_raycaster *rc, const struct lx_area_li
 		square_to_disc(u, v, &dx, &dy);
 		vec3 d = v3_add(v3_scale(axis, scale), v3_scale(v3_add(v3_scale(e1, dx), v3_scale(e2, dy)), disc * scale));
 		double smin = 1e-9 * lx_raycaster_scale(rc) / v3_len(d);
-		seen += !lx_raycast_blocked(rc, p, d, smin, smax, object);
+		seen += !lx_raycast_blocked_hint(rc, p, d, smin, smax, object, &hint);
 	}
 	return (double)seen / (side * side);
 }
