@@ -40,24 +40,24 @@ struct row {
 };
 
 /* A row's figures as the CSV and the JSON name them, in their order, with the CSV's
- * precision: one list for both outputs. */
+ * decimals: one list for both outputs. */
 static const struct column {
 	const char *name;
 	size_t at; /* offsetof(struct row, ...), a double */
-	const char *csv_format;
+	int csv_decimals;
 } row_columns[] = {
-	{"frame_ms_median", offsetof(struct row, frame_ms_median), "%.4f"},
-	{"frame_ms_min", offsetof(struct row, frame_ms_min), "%.4f"},
-	{"frame_ms_max", offsetof(struct row, frame_ms_max), "%.4f"},
-	{"shadow_ms_median", offsetof(struct row, shadow_ms), "%.4f"},
-	{"main_ms_median", offsetof(struct row, main_ms), "%.4f"},
-	{"setup_us", offsetof(struct row, setup_us), "%.2f"},
-	{"lookup_pct", offsetof(struct row, lookup_pct), "%.3f"},
-	{"mismatch_pct", offsetof(struct row, mismatch_pct), "%.5f"},
-	{"false_shadow_pct", offsetof(struct row, false_pct), "%.5f"},
-	{"missing_shadow_pct", offsetof(struct row, missing_pct), "%.5f"},
-	{"mismatch_worst", offsetof(struct row, mismatch_worst), "%.5f"},
-	{"soft_error_pct", offsetof(struct row, soft_pct), "%.5f"},
+	{"frame_ms_median", offsetof(struct row, frame_ms_median), 4},
+	{"frame_ms_min", offsetof(struct row, frame_ms_min), 4},
+	{"frame_ms_max", offsetof(struct row, frame_ms_max), 4},
+	{"shadow_ms_median", offsetof(struct row, shadow_ms), 4},
+	{"main_ms_median", offsetof(struct row, main_ms), 4},
+	{"setup_us", offsetof(struct row, setup_us), 2},
+	{"lookup_pct", offsetof(struct row, lookup_pct), 3},
+	{"mismatch_pct", offsetof(struct row, mismatch_pct), 5},
+	{"false_shadow_pct", offsetof(struct row, false_pct), 5},
+	{"missing_shadow_pct", offsetof(struct row, missing_pct), 5},
+	{"mismatch_worst", offsetof(struct row, mismatch_worst), 5},
+	{"soft_error_pct", offsetof(struct row, soft_pct), 5},
 };
 #define ROW_COLUMNS (int)(sizeof row_columns / sizeof row_columns[0])
 
@@ -608,10 +608,8 @@ static bool csv_rows(FILE *f, void *ctx)
 		for (int m = 0; m < b->nm; m++) {
 			const struct row *r = &b->rows[m][c];
 			fprintf(f, "%s,%s,%s", b->methods[m], lx_filter_name(b->filters[m]), b->configs[c]);
-			for (int k = 0; k < ROW_COLUMNS; k++) {
-				fputc(',', f);
-				fprintf(f, row_columns[k].csv_format, column_of(r, k));
-			}
+			for (int k = 0; k < ROW_COLUMNS; k++)
+				fprintf(f, ",%.*f", row_columns[k].csv_decimals, column_of(r, k));
 			for (int p = 0; p < b->scene.plane_count; p++)
 				if (isnan(r->m_max[p]))
 					fprintf(f, ",,,");
