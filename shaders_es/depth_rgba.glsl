@@ -9,9 +9,8 @@ float lx_depth_code(float d)
 	return min(floor(clamp(d, 0.0, 1.0) * 16777215.0), 16777215.0);
 }
 
-vec4 lx_encode_depth(float d)
+vec4 lx_encode_code(float n)
 {
-	float n = lx_depth_code(d);
 	float hi = floor(n / 65536.0);
 	float rem = n - hi * 65536.0;
 	float mid = floor(rem / 256.0);
@@ -19,11 +18,25 @@ vec4 lx_encode_depth(float d)
 	return vec4((vec3(hi, mid, lo) + 0.25) / 255.0, 1.0);
 }
 
+vec4 lx_encode_depth(float d)
+{
+	return lx_encode_code(lx_depth_code(d));
+}
+
+#ifdef LX_DEPTH_TEXTURE
+// The maps in a depth texture (GL_OES_depth_texture): the rasterizer's depth d in R, the
+// code its nearest 24-bit step. The self-test checks that the compare keeps the codes.
+float lx_decode_code(vec4 texel)
+{
+	return floor(texel.r * 16777215.0 + 0.5);
+}
+#else
 float lx_decode_code(vec4 texel)
 {
 	vec3 b = floor(texel.rgb * 255.0 + 0.5);
 	return dot(b, vec3(65536.0, 256.0, 1.0));
 }
+#endif
 #else
 // mediump (fp16, 11-bit mantissa): 2^24 is out of reach, so keep 11 bits,
 // q = floor(d * 2047), stored in the same layout (n = q * 8192) and compared as q.
@@ -32,12 +45,16 @@ float lx_depth_code(float d)
 	return min(floor(clamp(d, 0.0, 1.0) * 2047.0), 2047.0);
 }
 
-vec4 lx_encode_depth(float d)
+vec4 lx_encode_code(float q)
 {
-	float q = lx_depth_code(d);
 	float hi = floor(q / 8.0);
 	float mid = (q - hi * 8.0) * 32.0;
 	return vec4((vec3(hi, mid, 255.0) + 0.25) / 255.0, 1.0);
+}
+
+vec4 lx_encode_depth(float d)
+{
+	return lx_encode_code(lx_depth_code(d));
 }
 
 float lx_decode_code(vec4 texel)

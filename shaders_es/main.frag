@@ -36,7 +36,11 @@ uniform vec3 u_light_color;
 varying float v_facing; // > 0 where the face is turned towards the light
 #endif
 #if LX_READS > 0
+#if defined(LX_DEPTH_TEXTURE) && defined(GL_FRAGMENT_PRECISION_HIGH)
+uniform highp sampler2D u_atlas; // a depth: samplers default to lowp, which may be fp16
+#else
 uniform sampler2D u_atlas;
+#endif
 uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bounds (x0, y0,
                                  // x1, y1), empty when not rendered
 uniform float u_bias;            // in depth codes

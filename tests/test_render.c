@@ -717,6 +717,73 @@ static void lookup_region_changes_no_decision(void **state)
 	lx_platform_destroy(plat);
 }
 
+/* The depth-texture path (--depth-precision texture) keeps the same 24-bit codes in a depth
+ * texture: the rasterizer's depth, where the RGBA8 path's shader floors its own, so a code
+ * may differ by one. Every method on every standard configuration of both built-in scenes
+ * decides as the highp RGBA8 path, pixel for pixel. */
+static void depth_texture_path_decides_as_highp(void **state)
+{
+	(void)state;
+	enum { w = 256, h = 192 };
+	char err[512];
+	struct lx_gl_caps caps;
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
+	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
+	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
+	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	char names[128];
+	snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+	long frames = 0, differ = 0, shadowed = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(*sn, &base));
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		for (char *save = NULL, *m = strtok_r(names, "|", &save); m; m = strtok_r(NULL, "|", &save)) {
+			struct lx_method_run run[2];
+			for (int k = 0; k < 2; k++) {
+				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h,
+						       k ? LX_DEPTH_TEXTURE : LX_DEPTH_HIGHP, LX_DEFAULT_BIAS_CODES, false, err,
+						       sizeof err))
+					fail_msg("%s: %s", m, err);
+			}
+			assert_string_equal(run[1].depth.path, "highp24-texture");
+			assert_string_equal(run[1].depth.warning, "");
+			assert_false(lx_renderer_atlas_is_depth_texture(run[0].renderer));
+			assert_true(lx_renderer_atlas_is_depth_texture(run[1].renderer));
+			for (int c = 0; c < lx_config_count; c++) {
+				struct lx_scene scene = base;
+				lx_config_apply(&lx_configs[c], &scene);
+				struct lx_frame frame;
+				assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
+				for (int k = 0; k < 2; k++) {
+					lx_method_run_shadows(&run[k], &frame);
+					lx_method_run_decision(&run[k], 0, rgba, obj[k], sh[k]);
+				}
+				long d = 0;
+				for (long i = 0; i < (long)w * h; i++) {
+					assert_int_equal(obj[0][i], obj[1][i]);
+					d += sh[0][i] != sh[1][i], shadowed += sh[0][i] != 0;
+				}
+				if (d > 0)
+					fail_msg("%s scene, %s, %s: %ld pixels decided otherwise on the depth-texture path", *sn,
+						 lx_configs[c].name, m, d);
+				differ += d, frames++;
+			}
+			for (int k = 0; k < 2; k++)
+				lx_method_run_free(&run[k]);
+		}
+		snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+		lx_meshes_free(&meshes);
+	}
+	print_message("%ld frames: %ld pixels of %ld shadowed ones decided otherwise on the depth-texture path\n", frames,
+		      differ, shadowed);
+	assert_true(frames > 100 && shadowed > 10000);
+	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_platform_destroy(plat);
+}
+
 /* The depth path is found by trying it (depth_selftest.c): on llvmpipe the 24-bit path
  * passes; under LIXEL_SIMULATE_LIMA=1 (highp compiled as mediump, which llvmpipe computes
  * in fp16, while highp is still reported, as Mesa's lima does) it fails, auto falls back
@@ -741,6 +808,10 @@ static void depth_selftest_picks_the_path(void **state)
 		assert_true(lx_depth_choose(LX_DEPTH_MEDIUMP, &c, err, sizeof err));
 		assert_string_equal(c.path, "mediump11"), assert_string_equal(c.selftest, "forced");
 		assert_string_equal(c.warning, "");
+		assert_true(lx_depth_choose(LX_DEPTH_TEXTURE, &c, err, sizeof err));
+		assert_string_equal(c.path, "highp24-texture"), assert_string_equal(c.selftest, "forced");
+		assert_true(c.texture && !c.mediump);
+		assert_string_equal(c.warning, "");
 		struct lx_gl_caps caps;
 		lx_gl_caps_probe(&caps);
 		if (!mediump_is_fp16(&caps)) {
@@ -757,6 +828,9 @@ static void depth_selftest_picks_the_path(void **state)
 		assert_true(lx_depth_choose(LX_DEPTH_HIGHP, &c, err, sizeof err));
 		assert_string_equal(c.path, "highp24"), assert_string_equal(c.selftest, "forced");
 		assert_true(strstr(c.warning, "fails its self-test") != NULL);
+		print_message("%s, simulated lima: %s\n", platforms[p], c.warning);
+		assert_true(lx_depth_choose(LX_DEPTH_TEXTURE, &c, err, sizeof err));
+		assert_true(strstr(c.warning, "depth-texture depth path fails its self-test") != NULL);
 		print_message("%s, simulated lima: %s\n", platforms[p], c.warning);
 		unsetenv("LIXEL_SIMULATE_LIMA");
 		lx_platform_destroy(plat);
@@ -1128,6 +1202,7 @@ int main(void)
 		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),
 		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
+		cmocka_unit_test_teardown(depth_texture_path_decides_as_highp, close_shared_platform),
 		cmocka_unit_test_teardown(simulated_lima_keeps_the_shadows, close_shared_platform),
 		cmocka_unit_test_teardown(platforms_agree, close_shared_platform),
 		cmocka_unit_test_teardown(gpu_depth_encoding_and_guards, close_shared_platform),

@@ -13,7 +13,7 @@
 struct batch {
 	char dir[64];
 	int files;
-	char list[196608];
+	char list[262144];
 };
 
 static void write_variant(struct batch *b, const char *file, const char *defines, bool lima, const char *tag)
@@ -47,16 +47,16 @@ static void every_variant_is_glsl_es_100(void **state)
 	b.files = 0, b.list[0] = 0;
 	char defines[360], tag[64];
 	/* the main pass: every count of maps, every count of them read, shaded or decision,
-	 * highp or mediump, every shadow filter, and the fragment shader under the lima
-	 * simulation */
+	 * each depth path (0 highp, 1 mediump, 2 highp with the maps in a depth texture),
+	 * every shadow filter, and the fragment shader under the lima simulation */
 	for (int maps = 0; maps <= 4; maps++)
 		for (int reads = 0; reads <= maps; reads++)
 			for (int decision = 0; decision < 2; decision++)
-				for (int mediump = 0; mediump < 2; mediump++)
+				for (int path = 0; path < 3; path++)
 					for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-						lx_main_defines(maps, reads, decision, mediump, defines, sizeof defines);
+						lx_main_defines(maps, reads, decision, path == 1, path == 2, defines, sizeof defines);
 						strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
-						snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d", maps, reads, decision, mediump, filter);
+						snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d", maps, reads, decision, path, filter);
 						if (filter == 0) /* the vertex shader reads no filter */
 							write_variant(&b, "main.vert", defines, false, tag);
 						write_variant(&b, "main.frag", defines, false, tag);
@@ -65,12 +65,12 @@ static void every_variant_is_glsl_es_100(void **state)
 	/* a projective light's shaded variants (the decision reads no light image), with each
 	 * filter, every map read */
 	for (int maps = 0; maps <= 4; maps++)
-		for (int mediump = 0; mediump < 2; mediump++)
+		for (int path = 0; path < 3; path++)
 			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-				lx_main_defines(maps, maps, false, mediump, defines, sizeof defines);
+				lx_main_defines(maps, maps, false, path == 1, path == 2, defines, sizeof defines);
 				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
-				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, mediump, filter);
+				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, path, filter);
 				if (filter == 0)
 					write_variant(&b, "main.vert", defines, false, tag);
 				write_variant(&b, "main.frag", defines, false, tag);
@@ -82,8 +82,8 @@ static void every_variant_is_glsl_es_100(void **state)
 			write_variant(&b, "shadow_depth.vert", d, false, "shadow");
 			write_variant(&b, "shadow_depth.frag", d, lima, "shadow");
 		}
-	for (const char *const *f = (const char *const[]){"atlas_clear.vert", "atlas_clear.frag", "overlay.vert",
-							    "overlay.frag", NULL};
+	for (const char *const *f = (const char *const[]){"atlas_clear.vert", "atlas_clear.frag", "atlas_readback.frag",
+							    "overlay.vert", "overlay.frag", NULL};
 	     *f; f++)
 		write_variant(&b, *f, NULL, false, "plain");
 	char cmd[sizeof b.list + 400], out[300];

@@ -79,7 +79,7 @@ int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, 
 	if (strcmp(opt, "--depth-precision"))
 		return -1;
 	if (!lx_depth_precision_parse(value, out))
-		return lx_arg_bad(cmd, opt, "auto, highp or mediump", value);
+		return lx_arg_bad(cmd, opt, "auto, highp, mediump or texture", value);
 	return 0;
 }
 

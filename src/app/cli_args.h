@@ -34,14 +34,16 @@ bool lx_arg_scene(const char *arg, struct lx_scene *s);
  * Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 struct lx_method_options;
-/* --depth-precision auto|highp|mediump (render, bench, kiosk): 0 when opt is it and its
+/* --depth-precision auto|highp|mediump|texture (render, bench, kiosk): 0 when opt is it and its
  * value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 #include "depth_selftest.h"
 int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, enum lx_depth_precision *out);
 #define LX_DEPTH_OPTION_HELP \
 	"  --depth-precision P  the shaders' depth path: auto (default: the 24-bit highp one where\n" \
 	"                       a start-up self-test passes, else the 11-bit mediump one), highp\n" \
-	"                       or mediump (forced; a warning when its self-test fails)\n" \
+	"                       or mediump (forced; a warning when its self-test fails), or\n" \
+	"                       texture: the 24-bit codes in a depth texture (GL_OES_depth_texture),\n" \
+	"                       so that the shadow pass writes no colour (an error without it)\n" \
 	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
 /* --filter none|pcf2x2|pcf3x3 and --light-size DEG (render; bench takes --light-size):

@@ -58,10 +58,23 @@ static void rows_to_matrix(const float r[4][4], float m[16])
 			m[col * 4 + row] = r[row][col];
 }
 
-/* 1. The ramp written by the depth-write shader (window x -> depth a + b x) and read
- * back: a 24-bit code within a few steps (single-precision interpolation), an 11-bit
- * one within one. A shader computing in fp16 misses by thousands of 24-bit steps. */
-static bool write_ramp(GLuint write, bool mediump, uint8_t *px, char *detail, size_t len)
+/* A depth texture of w x h as the only attachment of a framebuffer (the texture path's
+ * atlas); false when this GL cannot (no GL_OES_depth_texture). */
+static bool make_depth_target(struct target *t, int w, int h)
+{
+	t->tex = lx_texture_depth(w, h);
+	lx_gl.GenFramebuffers(1, &t->fbo);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t->tex, 0);
+	lx_gl.Viewport(0, 0, w, h);
+	bool ok = lx_gl.GetError() == GL_NO_ERROR && lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+	while (lx_gl.GetError() != GL_NO_ERROR) {
+	}
+	return ok;
+}
+
+/* The ramp drawn by the depth-write shader: window x -> depth a + b x. */
+static void draw_ramp(GLuint write)
 {
 	float m[16];
 	const float r[4][4] = {{2, 0, 0, -1}, {0, 2, 0, -1}, {(float)(2 * RAMP_B), 0, 0, (float)(2 * RAMP_A - 1)}, {0, 0, 0, 1}};
@@ -69,6 +82,15 @@ static bool write_ramp(GLuint write, bool mediump, uint8_t *px, char *detail, si
 	lx_gl.UseProgram(write);
 	lx_gl.UniformMatrix4fv(lx_gl.GetUniformLocation(write, "u_light_clip"), 1, GL_FALSE, m);
 	lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+/* 1. The ramp written by the depth-write shader and read back: a 24-bit code within a
+ * few steps (single-precision interpolation), an 11-bit one within one. A shader
+ * computing in fp16 misses by thousands of 24-bit steps. (A depth texture cannot be read
+ * back under ES 2.0: the texture path is checked by step 2 alone.) */
+static bool write_ramp(GLuint write, bool mediump, uint8_t *px, char *detail, size_t len)
+{
+	draw_ramp(write);
 	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
 	lx_gl.ReadPixels(0, 0, N, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
 	for (int i = 0; i < N; i++) {
@@ -120,13 +142,32 @@ static bool compare_ramp(GLuint compare, GLuint stored, bool mediump, uint8_t *p
 	return true;
 }
 
-static bool run(bool mediump, char *detail, size_t len)
+/* The texture path's ramp: written into a depth texture by the rasterizer (the shadow
+ * pass's depth test), then step 2. */
+static bool texture_ramp(GLuint write, struct target *stored, bool *unsupported, char *detail, size_t len)
 {
+	if (!make_depth_target(stored, N, 1)) {
+		*unsupported = true;
+		snprintf(detail, len, "this GL makes no depth-texture framebuffer (GL_OES_depth_texture)");
+		return false;
+	}
+	lx_gl.Enable(GL_DEPTH_TEST);
+	lx_gl.DepthFunc(GL_ALWAYS);
+	lx_gl.Clear(GL_DEPTH_BUFFER_BIT);
+	draw_ramp(write);
+	lx_gl.DepthFunc(GL_LESS);
+	lx_gl.Disable(GL_DEPTH_TEST);
+	return true;
+}
+
+static bool run(enum lx_depth_precision path, bool *unsupported, char *detail, size_t len)
+{
+	bool mediump = path == LX_DEPTH_MEDIUMP, texture = path == LX_DEPTH_TEXTURE;
 	const char *def = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;
 	char err[1024];
 	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", def, err, sizeof err);
 	char cdef[320];
-	lx_main_defines(1, 1, true, mediump, cdef, sizeof cdef);
+	lx_main_defines(1, 1, true, mediump, texture, cdef, sizeof cdef);
 	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;
 	if (!write || !compare) {
 		snprintf(detail, len, "%.200s", err);
@@ -140,8 +181,9 @@ static bool run(bool mediump, char *detail, size_t len)
 	lx_gl.Disable(GL_SCISSOR_TEST);
 	struct target stored = {0, 0}, decided = {0, 0};
 	uint8_t px[N * 2 * 4];
-	bool ok = make_target(&stored, N, 1) && write_ramp(write, mediump, px, detail, len) && make_target(&decided, N, 2) &&
-		  compare_ramp(compare, stored.tex, mediump, px, detail, len);
+	bool ok = (texture ? texture_ramp(write, &stored, unsupported, detail, len)
+			   : make_target(&stored, N, 1) && write_ramp(write, mediump, px, detail, len)) &&
+		  make_target(&decided, N, 2) && compare_ramp(compare, stored.tex, mediump, px, detail, len);
 	if (stored.fbo)
 		free_target(&stored);
 	if (decided.fbo)
@@ -151,22 +193,29 @@ static bool run(bool mediump, char *detail, size_t len)
 	return ok;
 }
 
-bool lx_depth_selftest(bool mediump, char *detail, size_t len)
+/* One driver per process: each path is tried once (and once more under the lima
+ * simulation, which the tests switch on and off). */
+static struct selftest {
+	bool done, ok, unsupported;
+	char detail[240];
+} cache[2][4];
+
+static const struct selftest *selftest(enum lx_depth_precision path)
 {
-	/* one driver per process: each path is tried once (and once more under the lima
-	 * simulation, which the tests switch on and off) */
-	static struct {
-		bool done, ok;
-		char detail[240];
-	} cache[2][2];
-	int sim = lx_simulating_lima();
-	if (!cache[sim][mediump].done) {
-		cache[sim][mediump].detail[0] = 0;
-		cache[sim][mediump].ok = run(mediump, cache[sim][mediump].detail, sizeof cache[sim][mediump].detail);
-		cache[sim][mediump].done = true;
+	struct selftest *c = &cache[lx_simulating_lima()][path];
+	if (!c->done) {
+		c->detail[0] = 0;
+		c->ok = run(path, &c->unsupported, c->detail, sizeof c->detail);
+		c->done = true;
 	}
-	snprintf(detail, len, "%s", cache[sim][mediump].detail);
-	return cache[sim][mediump].ok;
+	return c;
+}
+
+bool lx_depth_selftest(enum lx_depth_precision path, char *detail, size_t len)
+{
+	const struct selftest *c = selftest(path == LX_DEPTH_AUTO ? LX_DEPTH_HIGHP : path);
+	snprintf(detail, len, "%s", c->detail);
+	return c->ok;
 }
 
 bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, char *err, size_t errlen)
@@ -174,15 +223,21 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 	char why[240] = "", why11[240] = "";
 	memset(out, 0, sizeof *out);
 	if (want != LX_DEPTH_AUTO) {
+		static const char *const name[] = {"", "24-bit highp", "11-bit mediump", "24-bit depth-texture"};
 		out->mediump = want == LX_DEPTH_MEDIUMP;
+		out->texture = want == LX_DEPTH_TEXTURE;
 		out->selftest = "forced";
-		if (!lx_depth_selftest(out->mediump, why, sizeof why))
+		if (out->texture && selftest(want)->unsupported) {
+			snprintf(err, errlen, "the depth-texture path cannot be taken: %s", selftest(want)->detail);
+			return false;
+		}
+		if (!lx_depth_selftest(want, why, sizeof why))
 			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%.100s)",
-				 out->mediump ? "11-bit mediump" : "24-bit highp", why);
-	} else if (lx_depth_selftest(false, why, sizeof why)) {
+				 name[want], why);
+	} else if (lx_depth_selftest(LX_DEPTH_HIGHP, why, sizeof why)) {
 		out->mediump = false;
 		out->selftest = "passed";
-	} else if (lx_depth_selftest(true, why11, sizeof why11)) {
+	} else if (lx_depth_selftest(LX_DEPTH_MEDIUMP, why11, sizeof why11)) {
 		out->mediump = true;
 		out->selftest = "fell-back";
 	} else {
@@ -190,6 +245,6 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 			 why, why11);
 		return false;
 	}
-	out->path = out->mediump ? "mediump11" : "highp24";
+	out->path = out->texture ? "highp24-texture" : out->mediump ? "mediump11" : "highp24";
 	return true;
 }

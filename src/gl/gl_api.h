@@ -47,6 +47,7 @@
 	X(void, GenRenderbuffers, (GLsizei, GLuint *))                                       \
 	X(void, GenTextures, (GLsizei, GLuint *))                                            \
 	X(GLenum, GetError, (void))                                                          \
+	X(void, GetFramebufferAttachmentParameteriv, (GLenum, GLenum, GLenum, GLint *))      \
 	X(void, GetIntegerv, (GLenum, GLint *))                                              \
 	X(void, GetProgramInfoLog, (GLuint, GLsizei, GLsizei *, GLchar *))                   \
 	X(void, GetProgramiv, (GLuint, GLenum, GLint *))                                     \

@@ -148,7 +148,7 @@ void lx_programs_counts(int *kept_count, long *reused)
 	*kept_count = kept.count, *reused = kept.reused;
 }
 
-GLuint lx_texture_rgba8(int w, int h)
+static GLuint nearest_texture(GLenum format, GLenum type, int w, int h)
 {
 	GLuint tex;
 	lx_gl.GenTextures(1, &tex);
@@ -157,9 +157,13 @@ GLuint lx_texture_rgba8(int w, int h)
 	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
 	lx_gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0, format, type, NULL);
 	return tex;
 }
+
+GLuint lx_texture_rgba8(int w, int h) { return nearest_texture(GL_RGBA, GL_UNSIGNED_BYTE, w, h); }
+
+GLuint lx_texture_depth(int w, int h) { return nearest_texture(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h); }
 
 GLuint lx_program_build(const char *vert, const char *frag, const char *defines, char *err, size_t errlen)
 {

@@ -12,6 +12,10 @@ enum { LX_ATTR_POSITION = 0, LX_ATTR_NORMAL = 1, LX_ATTR_FACE_NORMAL = 2 };
 /* An RGBA8 texture of w x h, NEAREST (depths must not be blended), CLAMP_TO_EDGE (NPOT
  * in ES 2.0), contents undefined; left bound. */
 GLuint lx_texture_rgba8(int w, int h);
+/* A depth texture of w x h (GL_OES_depth_texture: DEPTH_COMPONENT, UNSIGNED_INT), NEAREST,
+ * CLAMP_TO_EDGE, contents undefined; left bound. A GL without the extension raises an
+ * error, which the caller checks. */
+GLuint lx_texture_depth(int w, int h);
 
 /* Builds a program from two embedded files with the given "#define" lines (may be
  * NULL). On failure returns 0 and writes "FILE: compile|link error: driver log".

@@ -1,6 +1,7 @@
 #include "renderer.h"
 #include "gl_api.h"
 #include "gl_program.h"
+#include "depth_rgba.h"
 #include "light_image.h"
 #include "lookup_region.h"
 #include "shader_text.h"
@@ -118,11 +119,11 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, int reads, bool mediump,
+static bool main_program(struct main_program *p, int maps, int shading, int reads, bool mediump, bool depth_texture,
 			 enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
-	lx_main_defines(maps, reads, shading == SHADING_DECISION, mediump, defines, sizeof defines);
+	lx_main_defines(maps, reads, shading == SHADING_DECISION, mediump, depth_texture, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -166,7 +167,8 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
 		struct main_program *p = &r->variant[shading][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->mediump, filter, err, errlen))
+		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->mediump, r->d.depth_texture, filter, err,
+					      errlen))
 			return false;
 	}
 	return true;
@@ -287,13 +289,35 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
  * guard bands included (passes only ever clear and draw inside their own region, so the
  * guards keep it); and off screen, the main target (an RGBA texture: RGBA8
  * renderbuffers are an extension in ES 2.0, OES_rgb8_rgba8). */
+/* The depth-texture path's atlas: the texture is the framebuffer's depth and its only
+ * attachment, so the shadow pass writes no colour. */
+static bool depth_atlas(struct lx_renderer *r, char *err, size_t errlen)
+{
+	r->atlas_tex = lx_texture_depth(r->texture_width, r->texture_height);
+	lx_gl.GenFramebuffers(1, &r->atlas_fbo);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
+	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, r->atlas_tex, 0);
+	GLenum st = lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+	if (st != GL_FRAMEBUFFER_COMPLETE) {
+		snprintf(err, errlen, "GL: the atlas's depth-texture framebuffer (%dx%d) is incomplete (status 0x%x)",
+			 r->texture_width, r->texture_height, st);
+		return false;
+	}
+	return true;
+}
+
 static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_renderer_desc *d = &r->d;
-	r->atlas_tex = lx_texture_rgba8(r->texture_width, r->texture_height);
-	if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, r->texture_width, r->texture_height,
-			 d->caps->depth24, err, errlen, "atlas"))
-		return false;
+	if (d->depth_texture) {
+		if (!depth_atlas(r, err, errlen))
+			return false;
+	} else {
+		r->atlas_tex = lx_texture_rgba8(r->texture_width, r->texture_height);
+		if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, r->texture_width, r->texture_height,
+				 d->caps->depth24, err, errlen, "atlas"))
+			return false;
+	}
 	lx_gl.Disable(GL_SCISSOR_TEST);
 	lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
 	lx_gl.ClearColor(1, 1, 1, 1);
@@ -351,7 +375,8 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	for (int i = 0; i < LX_MAX_LIGHTS; i++)
 		if (r->beam_tex[i])
 			lx_gl.DeleteTextures(1, &r->beam_tex[i]);
-	lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
+	if (r->atlas_depth)
+		lx_gl.DeleteRenderbuffers(1, &r->atlas_depth);
 	lx_gl.DeleteFramebuffers(1, &r->atlas_fbo);
 	if (r->target_fbo) { /* 0 is the window's */
 		lx_gl.DeleteTextures(1, &r->target_color);
@@ -586,7 +611,8 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, unsi
 	struct main_program *p = &r->variant[shading][r->filter][reads];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, reads, r->mediump, r->filter, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, shading, reads, r->mediump, r->d.depth_texture, r->filter, err,
+				  sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count];
@@ -1139,8 +1165,47 @@ void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)
 	lx_gl.ReadPixels(0, 0, r->d.width, r->d.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
+/* The depth-texture path's atlas as RGBA codes: drawn into a colour target of its size by
+ * atlas_readback.frag, which is read back (ES 2.0 reads no depth). */
+static void read_depth_atlas(struct lx_renderer *r, uint8_t *rgba)
+{
+	char err[1024];
+	GLuint prog = lx_program_build("atlas_clear.vert", "atlas_readback.frag", NULL, err, sizeof err);
+	GLuint tex = lx_texture_rgba8(r->texture_width, r->texture_height), fbo;
+	lx_gl.GenFramebuffers(1, &fbo);
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+	if (!prog) /* cannot happen: the shaders are built in and checked by test_shaders */
+		fprintf(stderr, "lixel: %s\n", err);
+	lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
+	lx_gl.Disable(GL_DEPTH_TEST);
+	lx_gl.Disable(GL_CULL_FACE);
+	lx_gl.Disable(GL_SCISSOR_TEST);
+	lx_gl.UseProgram(prog);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	lx_gl.Uniform1i(lx_gl.GetUniformLocation(prog, "u_atlas"), 0);
+	lx_gl.Uniform2f(lx_gl.GetUniformLocation(prog, "u_inverse_size"), 1.0f / (float)r->texture_width,
+			1.0f / (float)r->texture_height);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
+	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+	lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
+	lx_gl.Enable(GL_DEPTH_TEST);
+	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+	lx_gl.ReadPixels(0, 0, r->texture_width, r->texture_height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	lx_gl.DeleteFramebuffers(1, &fbo);
+	lx_gl.DeleteTextures(1, &tex);
+}
+
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 {
+	if (r->d.depth_texture) {
+		read_depth_atlas(r, rgba);
+		return;
+	}
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
 	lx_gl.ReadPixels(0, 0, r->texture_width, r->texture_height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
@@ -1151,7 +1216,33 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	/* the same size and format again: the texture (and the framebuffer holding it) stays */
-	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->texture_width, r->texture_height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	if (!r->d.depth_texture) {
+		lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->texture_width, r->texture_height, 0, GL_RGBA,
+				 GL_UNSIGNED_BYTE, rgba);
+		return;
+	}
+	/* each 24-bit code n as the 32-bit depth n / (2^24 - 1), which the main pass decodes as n */
+	size_t count = (size_t)r->texture_width * r->texture_height;
+	uint32_t *depth = malloc(count * sizeof *depth);
+	if (!depth)
+		return; /* a test hook: the test then finds the old texels */
+	for (size_t i = 0; i < count; i++) {
+		uint32_t n = lx_depth_decode_code(rgba + 4 * i);
+		depth[i] = n << 8 | n >> 16;
+	}
+	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, r->texture_width, r->texture_height, 0,
+			 GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth);
+	free(depth);
+}
+
+bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r)
+{
+	GLint type = GL_NONE;
+	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
+	lx_gl.GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+						  &type);
+	return type == GL_TEXTURE;
 }
 
 void lx_renderer_finish(void) { lx_gl.Finish(); }

@@ -26,6 +26,7 @@ struct lx_renderer_desc {
 	int map_count; /* maps the method returns per frame and light */
 	int width, height;
 	bool mediump;       /* the fragment shaders' 11-bit mediump depth path (lx_depth_choose) */
+	bool depth_texture; /* the maps' depth in a depth texture, not RGBA8 (the same choice) */
 	double bias_codes;  /* depth bias in 24-bit depth codes */
 	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
 	/* clear the atlas once per frame, as on a tiler (caps->tiler), here too; also set by
@@ -61,6 +62,9 @@ void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba);
 /* The atlas texture's texels replaced (texture_width * texture_height * 4 bytes, RGBA): what the
  * next main pass reads, for tests of what a lookup may read. */
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
+/* Whether the atlas's framebuffer holds its depth in a texture (the depth-texture path),
+ * as GL reports the attachment: for tests. */
+bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r);
 void lx_renderer_finish(void);
 
 #endif

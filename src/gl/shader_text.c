@@ -108,8 +108,9 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 	return src;
 }
 
-void lx_main_defines(int maps, int reads, bool decision, bool mediump, char *out, size_t len)
+void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len)
 {
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s", maps > 0, reads,
-		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "");
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s%s", maps > 0, reads,
+		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "",
+		 depth_texture ? "#define LX_DEPTH_TEXTURE 1\n" : "");
 }

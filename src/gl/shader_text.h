@@ -12,8 +12,8 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 		     size_t errlen);
 /* The main pass's defines for a variant: how many maps the method has (any: the face
  * test), how many of them a draw reads (0 to maps; the draw puts them in the first slots),
- * the decision output, the mediump depth path. */
-void lx_main_defines(int maps, int reads, bool decision, bool mediump, char *out, size_t len);
+ * the decision output, the mediump depth path, the maps in a depth texture. */
+void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len);
 
 /* Whether LIXEL_SIMULATE_LIMA=1 is set: fragment shaders are then compiled with every
  * highp made mediump (Mesa's lima computes fragments in fp16 while claiming highp). */

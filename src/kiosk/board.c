@@ -161,7 +161,7 @@ static int display_key(struct lx_board *b, const char *key, const char *value, c
 			return FAIL(at, "expected light-budget as %s, got '%s'", LX_LIGHT_BUDGET_EXPECTED, value);
 	} else if (!strcmp(key, "depth-precision")) {
 		if (!lx_depth_precision_parse(value, &b->depth_precision))
-			return FAIL(at, "expected depth-precision auto, highp or mediump, got '%s'", value);
+			return FAIL(at, "expected depth-precision auto, highp, mediump or texture, got '%s'", value);
 	} else
 		return -1;
 	return 1;
