@@ -25,10 +25,12 @@ vec4 lx_encode_depth(float d)
 
 #ifdef LX_DEPTH_TEXTURE
 // The maps in a depth texture (GL_OES_depth_texture): the rasterizer's depth d in R, the
-// code its nearest 24-bit step. The self-test checks that the compare keeps the codes.
+// code its nearest 24-bit step (within a step or two: d comes as a float, and near 1 the
+// steps are as fine as its mantissa), far (1.0) kept at the last code. The self-test checks
+// that the compare keeps the codes.
 float lx_decode_code(vec4 texel)
 {
-	return floor(texel.r * 16777215.0 + 0.5);
+	return min(floor(texel.r * 16777215.0 + 0.5), 16777215.0);
 }
 #else
 float lx_decode_code(vec4 texel)

@@ -210,6 +210,19 @@ LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x6
   no "forced highp under the simulation: $(cat "$tmp/d.err" "$tmp/d.json")"
 "$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods uniform --configs default --json --mediump >"$tmp/d.json" 2>/dev/null &&
   grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "bench --mediump: $(cat "$tmp/d.json")"
+# the depth-texture path: its name in the JSON, no warning, the same decisions as highp's
+# and an atlas image read back through its shader
+"$lixel" render --depth-precision texture --measure --json --size 96x64 --frames 1 --out "$tmp/t.png" \
+    --atlas-out "$tmp/t-atlas.png" --decision-out "$tmp/t-dec.png" >"$tmp/t.json" 2>"$tmp/t.err" &&
+  grep -q '"depth_path": "highp24-texture", "depth_selftest": "forced"' "$tmp/t.json" &&
+  grep -q '"warnings": \[\]' "$tmp/t.json" && [ ! -s "$tmp/t.err" ] && ok || no "depth texture: $(cat "$tmp/t.err" "$tmp/t.json")"
+"$lixel" render --depth-precision highp --size 96x64 --frames 1 --out "$tmp/h.png" --atlas-out "$tmp/h-atlas.png" \
+    --decision-out "$tmp/h-dec.png" >/dev/null 2>&1 && cmp -s "$tmp/h-dec.png" "$tmp/t-dec.png" &&
+  [ "$(head -c 4 "$tmp/t-atlas.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok ||
+  no "the depth-texture path's decisions or atlas image differ from highp's"
+LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision texture --json --size 96x64 --frames 1 --out "$tmp/d.png" \
+    >"$tmp/d.json" 2>"$tmp/d.err" && grep -q 'depth-texture depth path fails its self-test' "$tmp/d.err" && ok ||
+  no "forced depth texture under the simulation: $(cat "$tmp/d.err" "$tmp/d.json")"
 expect_bad "depth precision" render --depth-precision fp16 $out
 expect_bad "bench depth precision" bench --depth-precision low
 # output files: never over a device or through a symbolic link, checked before any work,

@@ -97,7 +97,7 @@ static void malformed_profiles(void **state)
 		{"gpio-line 99999999999999999999\n", 1, "too large to hold"},
 		{"debounce-ms 5.0\n", 1, "not a decimal number"},
 		{"gpio-line-name\n", 1, "expected a value after 'gpio-line-name'"},
-		{"depth-precision fp16\n", 1, "expected depth-precision auto, highp or mediump"},
+		{"depth-precision fp16\n", 1, "expected depth-precision auto, highp, mediump or texture"},
 		{"frobnicate 3\n", 1, "got 'frobnicate'"},
 		{"gpio-chip gpiochip0\n", 2, "expected a gpio-line"},
 		{"name\n", 1, "expected a value after 'name'"},
