@@ -220,6 +220,10 @@ LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x6
     --decision-out "$tmp/h-dec.png" >/dev/null 2>&1 && cmp -s "$tmp/h-dec.png" "$tmp/t-dec.png" &&
   [ "$(head -c 4 "$tmp/t-atlas.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok ||
   no "the depth-texture path's decisions or atlas image differ from highp's"
+LIXEL_SIMULATE_NO_DEPTH_TEXTURE=1 "$lixel" render --depth-precision texture --json --size 96x64 --frames 1 \
+    --out "$tmp/d.png" >"$tmp/d.json" 2>"$tmp/d.err" && grep -q '"depth_path": "highp24", "depth_selftest": "passed"' "$tmp/d.json" &&
+  grep -q '"warnings": \["the depth-texture path cannot be taken (no GL_OES_depth_texture (simulated)): highp24 instead"' \
+    "$tmp/d.json" && [ "$(wc -l <"$tmp/d.err")" -eq 1 ] && ok || no "depth texture missing: $(cat "$tmp/d.err" "$tmp/d.json")"
 LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision texture --json --size 96x64 --frames 1 --out "$tmp/d.png" \
     >"$tmp/d.json" 2>"$tmp/d.err" && grep -q 'depth-texture depth path fails its self-test' "$tmp/d.err" && ok ||
   no "forced depth texture under the simulation: $(cat "$tmp/d.err" "$tmp/d.json")"

@@ -43,7 +43,7 @@ int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, 
 	"                       a start-up self-test passes, else the 11-bit mediump one), highp\n" \
 	"                       or mediump (forced; a warning when its self-test fails), or\n" \
 	"                       texture: the 24-bit codes in a depth texture (GL_OES_depth_texture),\n" \
-	"                       so that the shadow pass writes no colour (an error without it)\n" \
+	"                       so that the shadow pass writes no colour (without it: auto's path)\n" \
 	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
 /* --filter none|pcf2x2|pcf3x3 and --light-size DEG (render; bench takes --light-size):

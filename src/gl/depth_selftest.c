@@ -202,6 +202,11 @@ static struct selftest {
 
 static const struct selftest *selftest(enum lx_depth_precision path)
 {
+	/* LIXEL_SIMULATE_NO_DEPTH_TEXTURE=1: a GL without GL_OES_depth_texture, for the tests */
+	static const struct selftest none = {true, false, true, "no GL_OES_depth_texture (simulated)"};
+	const char *no = getenv("LIXEL_SIMULATE_NO_DEPTH_TEXTURE");
+	if (path == LX_DEPTH_TEXTURE && no && !strcmp(no, "1"))
+		return &none;
 	struct selftest *c = &cache[lx_simulating_lima()][path];
 	if (!c->done) {
 		c->detail[0] = 0;
@@ -222,15 +227,19 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 {
 	char why[240] = "", why11[240] = "";
 	memset(out, 0, sizeof *out);
+	if (want == LX_DEPTH_TEXTURE && selftest(want)->unsupported) {
+		/* a GL without depth textures (a board profile may ask for them): the path auto
+		 * takes, said in a warning */
+		bool ok = lx_depth_choose(LX_DEPTH_AUTO, out, err, errlen);
+		snprintf(out->warning, sizeof out->warning, "the depth-texture path cannot be taken (%.120s): %s instead",
+			 selftest(want)->detail, ok ? out->path : "none");
+		return ok;
+	}
 	if (want != LX_DEPTH_AUTO) {
 		static const char *const name[] = {"", "24-bit highp", "11-bit mediump", "24-bit depth-texture"};
 		out->mediump = want == LX_DEPTH_MEDIUMP;
 		out->texture = want == LX_DEPTH_TEXTURE;
 		out->selftest = "forced";
-		if (out->texture && selftest(want)->unsupported) {
-			snprintf(err, errlen, "the depth-texture path cannot be taken: %s", selftest(want)->detail);
-			return false;
-		}
 		if (!lx_depth_selftest(want, why, sizeof why))
 			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%.100s)",
 				 name[want], why);

@@ -29,9 +29,9 @@ struct lx_depth_choice {
 bool lx_depth_selftest(enum lx_depth_precision path, char *detail, size_t len);
 
 /* The path for a request: auto takes the 24-bit path where it passes, else the 11-bit
- * one; false (err says why) when auto finds neither, or when the texture path is asked
- * for on a GL without depth textures. A forced path is taken even when it fails, with a
- * warning. */
+ * one; false (err says why) when auto finds neither. A forced path is taken even when it
+ * fails, with a warning; the texture path asked for on a GL without depth textures gives
+ * auto's path, with a warning. */
 bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, char *err, size_t errlen);
 
 /* The request that takes the path a choice took (to make another run on it). */
