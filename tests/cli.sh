@@ -200,7 +200,7 @@ awk -v a="$fp" -v b="$al" 'BEGIN { exit !(a > 0 && a < b) }' && ok || no "lookup
   no "bench with /all and /footprint methods"
 # the depth path: the self-test's choice in the JSON, a forced one, bad values
 "$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
-  grep -q '"depth_path": "highp24", "depth_selftest": "passed"' "$tmp/d.json" && ok || no "depth path: $(cat "$tmp/d.json")"
+  grep -q '"depth_path": "highp24-texture", "depth_selftest": "passed"' "$tmp/d.json" && ok || no "depth path: $(cat "$tmp/d.json")"
 "$lixel" render --depth-precision mediump --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
   grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "forced mediump: $(cat "$tmp/d.json")"
 LIXEL_SIMULATE_LIMA=1 "$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&

@@ -43,9 +43,12 @@ static void golden_line(struct lx_method_run *run, const struct lx_frame *frame,
 	snprintf(line, len, "%s %016llx %016llx\n", what, (unsigned long long)shaded, (unsigned long long)decision);
 }
 
-/* Every golden line of one scene and depth path, appended to out. */
-static void golden_scene(const char *scene_name, bool mediump, const struct lx_gl_caps *caps, char *out, size_t room)
+/* Every golden line of one scene and depth path (its key word: highp, mediump, texture),
+ * appended to out. */
+static void golden_scene(const char *scene_name, enum lx_depth_precision path, const struct lx_gl_caps *caps, char *out,
+			 size_t room)
 {
+	static const char *const key[] = {"", "highp", "mediump", "texture"};
 	char err[512];
 	struct lx_scene base;
 	assert_true(lx_scene_builtin(scene_name, &base));
@@ -58,8 +61,8 @@ static void golden_scene(const char *scene_name, bool mediump, const struct lx_g
 		const char *name = lx_shadow_method_at(m)->name;
 		struct lx_method_run run;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-		if (lx_method_run_init(&run, name, &base, &meshes, caps, &o, GW, GH, mediump ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO,
-				       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+		if (lx_method_run_init(&run, name, &base, &meshes, caps, &o, GW, GH, path, LX_DEFAULT_BIAS_CODES, false, err,
+				       sizeof err))
 			fail_msg("%s: %s", name, err);
 		for (int c = 0; c < lx_config_count; c++) {
 			struct lx_scene scene = base;
@@ -67,8 +70,7 @@ static void golden_scene(const char *scene_name, bool mediump, const struct lx_g
 			struct lx_frame frame;
 			assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, GW, GH, err, sizeof err));
 			char what[96], line[160];
-			snprintf(what, sizeof what, "%s %s %s %s", scene_name, mediump ? "mediump" : "highp", name,
-				 lx_configs[c].name);
+			snprintf(what, sizeof what, "%s %s %s %s", scene_name, key[path], name, lx_configs[c].name);
 			golden_line(&run, &frame, rgba, obj, sh, what, line, sizeof line);
 			size_t used = strlen(out);
 			snprintf(out + used, room - used, "%s", line);
@@ -136,6 +138,26 @@ static void compare_golden(const char *golden, const char *now)
 	assert_true(lines > 0);
 }
 
+/* The depth-texture path draws every image the RGBA8 highp path draws, byte for byte:
+ * each of its lines (key word texture) has the hashes of the highp line of its key. */
+static void same_as_highp(const char *texture, const char *now)
+{
+	long lines = 0;
+	for (const char *t = texture; *t; t += strcspn(t, "\n") + (t[strcspn(t, "\n")] != 0), lines++) {
+		char key[128];
+		size_t n = key_length(t), len = strcspn(t, "\n");
+		const char *word = strstr(t, " texture ");
+		assert_true(word && (size_t)(word - t) < n && n < sizeof key - 8);
+		snprintf(key, sizeof key, "%.*s highp %.*s", (int)(word - t), t, (int)(n - (word - t) - 9), word + 9);
+		const char *h = find_line(now, key, strlen(key));
+		if (!h || strcspn(h, "\n") != len - 2 || memcmp(h + strlen(key), t + n, len - n))
+			fail_msg("the depth-texture path draws otherwise: %.*s (highp: %.*s)", (int)len, t,
+				 h ? (int)strcspn(h, "\n") : 4, h ? h : "none");
+	}
+	print_message("%ld image pairs of the depth-texture path: the same hashes as the highp path's\n", lines);
+	assert_true(lines > 0);
+}
+
 /* --filter none draws what lixel drew before filters: the hashes of every method's shaded
  * and decision images, on every standard configuration of both built-in scenes and both
  * depth paths, against tests/data/filter-none.golden, written by the code before the
@@ -152,9 +174,15 @@ static void filter_none_draws_as_before(void **state)
 	size_t room = 1 << 20;
 	char *now = calloc(room, 1);
 	assert_non_null(now);
-	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
-		for (int mediump = 0; mediump < 2; mediump++)
-			golden_scene(*sn, mediump, &caps, now, room);
+	char *texture = calloc(room, 1);
+	assert_non_null(texture);
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		golden_scene(*sn, LX_DEPTH_HIGHP, &caps, now, room);
+		golden_scene(*sn, LX_DEPTH_MEDIUMP, &caps, now, room);
+		golden_scene(*sn, LX_DEPTH_TEXTURE, &caps, texture, room);
+	}
+	same_as_highp(texture, now);
+	free(texture);
 	const char *write = getenv("LIXEL_GOLDEN_WRITE");
 	if (write) {
 		FILE *f = fopen(write, "wb");

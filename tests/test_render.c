@@ -838,7 +838,14 @@ static void depth_selftest_picks_the_path(void **state)
 		struct lx_depth_choice c;
 		unsetenv("LIXEL_SIMULATE_LIMA");
 		assert_true(lx_depth_choose(LX_DEPTH_AUTO, &c, err, sizeof err));
+		assert_string_equal(c.path, "highp24-texture"), assert_string_equal(c.selftest, "passed");
+		setenv("LIXEL_SIMULATE_NO_DEPTH_TEXTURE", "1", 1); /* without depth textures: the RGBA8 one */
+		assert_true(lx_depth_choose(LX_DEPTH_AUTO, &c, err, sizeof err));
 		assert_string_equal(c.path, "highp24"), assert_string_equal(c.selftest, "passed");
+		assert_true(lx_depth_choose(LX_DEPTH_TEXTURE, &c, err, sizeof err));
+		assert_string_equal(c.path, "highp24");
+		assert_true(strstr(c.warning, "cannot be taken") != NULL);
+		unsetenv("LIXEL_SIMULATE_NO_DEPTH_TEXTURE");
 		assert_true(lx_depth_choose(LX_DEPTH_MEDIUMP, &c, err, sizeof err));
 		assert_string_equal(c.path, "mediump11"), assert_string_equal(c.selftest, "forced");
 		assert_string_equal(c.warning, "");
@@ -905,7 +912,7 @@ static void simulated_lima_keeps_the_shadows(void **state)
 				fail_msg("%s", err);
 			unsetenv("LIXEL_SIMULATE_LIMA");
 		}
-		assert_string_equal(run[0].depth.path, "highp24");
+		assert_string_equal(run[0].depth.path, "highp24-texture");
 		assert_string_equal(run[1].depth.path, "mediump11");
 		for (int c = 0; c < lx_config_count; c++) {
 			struct lx_scene scene = base;

@@ -39,11 +39,12 @@ struct lx_method_options;
 #include "depth_selftest.h"
 int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, enum lx_depth_precision *out);
 #define LX_DEPTH_OPTION_HELP \
-	"  --depth-precision P  the shaders' depth path: auto (default: the 24-bit highp one where\n" \
-	"                       a start-up self-test passes, else the 11-bit mediump one), highp\n" \
-	"                       or mediump (forced; a warning when its self-test fails), or\n" \
-	"                       texture: the 24-bit codes in a depth texture (GL_OES_depth_texture),\n" \
-	"                       so that the shadow pass writes no colour (without it: auto's path)\n" \
+	"  --depth-precision P  the shaders' depth path: auto (default: the first whose start-up\n" \
+	"                       self-test passes of texture, highp and mediump), or one forced\n" \
+	"                       (a warning when its self-test fails): texture, the 24-bit codes\n" \
+	"                       in a depth texture (GL_OES_depth_texture; the shadow pass writes\n" \
+	"                       no colour; without it auto's path), highp, the 24-bit codes in\n" \
+	"                       RGBA8, or mediump, 11-bit codes in RGBA8\n" \
 	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
 /* --filter none|pcf2x2|pcf3x3 and --light-size DEG (render; bench takes --light-size):

@@ -243,6 +243,9 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 		if (!lx_depth_selftest(want, why, sizeof why))
 			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%.100s)",
 				 name[want], why);
+	} else if (lx_depth_selftest(LX_DEPTH_TEXTURE, why, sizeof why)) {
+		out->texture = true;
+		out->selftest = "passed";
 	} else if (lx_depth_selftest(LX_DEPTH_HIGHP, why, sizeof why)) {
 		out->mediump = false;
 		out->selftest = "passed";
