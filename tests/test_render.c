@@ -634,6 +634,34 @@ static long lookup_differences(const struct lx_frame *f, const int16_t *a, const
 	return differ;
 }
 
+/* What the tests comparing two runs' decisions over every method share: an OSMesa
+ * platform, two decision images of w x h and the RGBA scratch they are read through, and
+ * the registry's method names ("|"-separated, for strtok_r). */
+struct decisions {
+	struct lx_platform *plat;
+	struct lx_gl_caps caps;
+	uint8_t *rgba, *sh[2];
+	int16_t *obj[2];
+	char names[128];
+};
+
+static struct decisions decisions_alloc(int w, int h)
+{
+	size_t n = (size_t)w * h;
+	struct decisions d = {.rgba = malloc(n * 4), .sh = {malloc(n), malloc(n)},
+			      .obj = {malloc(n * sizeof(int16_t)), malloc(n * sizeof(int16_t))}};
+	assert_true(d.rgba && d.sh[0] && d.sh[1] && d.obj[0] && d.obj[1]);
+	d.plat = platform_with_caps("osmesa", &d.caps);
+	snprintf(d.names, sizeof d.names, "%s", lx_shadow_method_names());
+	return d;
+}
+
+static void decisions_free(struct decisions *d)
+{
+	free(d->rgba), free(d->sh[0]), free(d->sh[1]), free(d->obj[0]), free(d->obj[1]);
+	lx_platform_destroy(d->plat);
+}
+
 /* --lookup-region footprint (the default) draws without a lookup wherever no other
  * object's shadow can fall, and casters with only the maps that serve them: against
  * --lookup-region all, no pixel's decision or object may change but where all reads a
@@ -646,13 +674,11 @@ static void lookup_region_changes_no_decision(void **state)
 	(void)state;
 	enum { w = 256, h = 192 };
 	char err[512];
-	struct lx_gl_caps caps;
-	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
-	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
-	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
-	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
-	char names[128];
-	snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+	struct decisions dc = decisions_alloc(w, h);
+	struct lx_gl_caps caps = dc.caps;
+	uint8_t *rgba = dc.rgba, **sh = dc.sh;
+	int16_t **obj = dc.obj;
+	char *names = dc.names;
 	long compared = 0, own = 0;
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
 		struct lx_scene base;
@@ -713,8 +739,7 @@ static void lookup_region_changes_no_decision(void **state)
 	}
 	print_message("%ld frames compared: identical but for %ld pixels where all read a caster's own texels (no other "
 		      "object blocks the light there)\n", compared, own);
-	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
-	lx_platform_destroy(plat);
+	decisions_free(&dc);
 }
 
 /* The two runs' atlases (run[0] RGBA8, run[1] a depth texture) read back as codes: the
@@ -747,22 +772,16 @@ static double atlas_codes_agree(struct lx_method_run run[2])
 	return worst;
 }
 
-/* The depth-texture path (--depth-precision texture) keeps the same 24-bit codes in a depth
- * texture: the rasterizer's depth, where the RGBA8 path's shader floors its own, so a code
- * may differ by one. Every method on every standard configuration of both built-in scenes
- * decides as the highp RGBA8 path, pixel for pixel. */
+/* The depth-texture path (auto's first choice, --depth-precision texture) keeps 24-bit
+ * codes in a depth texture: the rasterizer's depth, where the RGBA8 path's shader computes
+ * its own from interpolated z and w. Every method on every standard configuration of both
+ * built-in scenes decides as the highp RGBA8 path, pixel for pixel. */
 static void depth_texture_path_decides_as_highp(void **state)
 {
 	(void)state;
 	enum { w = 256, h = 192 };
 	char err[512];
-	struct lx_gl_caps caps;
-	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
-	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
-	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
-	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
-	char names[128];
-	snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+	struct decisions dc = decisions_alloc(w, h);
 	long frames = 0, differ = 0, shadowed = 0;
 	double worst_code = 0;
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
@@ -770,11 +789,11 @@ static void depth_texture_path_decides_as_highp(void **state)
 		assert_true(lx_scene_builtin(*sn, &base));
 		struct lx_scene_meshes meshes = {0};
 		assert_true(lx_meshes_build(&base, &meshes));
-		for (char *save = NULL, *m = strtok_r(names, "|", &save); m; m = strtok_r(NULL, "|", &save)) {
+		for (char *save = NULL, *m = strtok_r(dc.names, "|", &save); m; m = strtok_r(NULL, "|", &save)) {
 			struct lx_method_run run[2];
 			for (int k = 0; k < 2; k++) {
 				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-				if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h,
+				if (lx_method_run_init(&run[k], m, &base, &meshes, &dc.caps, &o, w, h,
 						       k ? LX_DEPTH_TEXTURE : LX_DEPTH_HIGHP, LX_DEFAULT_BIAS_CODES, false, err,
 						       sizeof err))
 					fail_msg("%s: %s", m, err);
@@ -790,12 +809,12 @@ static void depth_texture_path_decides_as_highp(void **state)
 				assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
 				for (int k = 0; k < 2; k++) {
 					lx_method_run_shadows(&run[k], &frame);
-					lx_method_run_decision(&run[k], 0, rgba, obj[k], sh[k]);
+					lx_method_run_decision(&run[k], 0, dc.rgba, dc.obj[k], dc.sh[k]);
 				}
 				long d = 0;
 				for (long i = 0; i < (long)w * h; i++) {
-					assert_int_equal(obj[0][i], obj[1][i]);
-					d += sh[0][i] != sh[1][i], shadowed += sh[0][i] != 0;
+					assert_int_equal(dc.obj[0][i], dc.obj[1][i]);
+					d += dc.sh[0][i] != dc.sh[1][i], shadowed += dc.sh[0][i] != 0;
 				}
 				if (c == 0)
 					worst_code = fmax(worst_code, atlas_codes_agree(run));
@@ -807,15 +826,14 @@ static void depth_texture_path_decides_as_highp(void **state)
 			for (int k = 0; k < 2; k++)
 				lx_method_run_free(&run[k]);
 		}
-		snprintf(names, sizeof names, "%s", lx_shadow_method_names());
+		snprintf(dc.names, sizeof dc.names, "%s", lx_shadow_method_names()); /* strtok_r cut it */
 		lx_meshes_free(&meshes);
 	}
 	print_message("%ld frames: %ld pixels of %ld shadowed ones decided otherwise on the depth-texture path; its "
 		      "atlas's codes at most %.0f from the RGBA8 one's\n",
 		      frames, differ, shadowed, worst_code);
 	assert_true(frames > 100 && shadowed > 10000);
-	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
-	lx_platform_destroy(plat);
+	decisions_free(&dc);
 }
 
 /* The depth path is found by trying it (depth_selftest.c): on llvmpipe the 24-bit path

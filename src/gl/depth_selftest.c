@@ -15,14 +15,22 @@ struct target {
 	GLuint tex, fbo;
 };
 
-static bool make_target(struct target *t, int w, int h)
+/* A w x h texture as a framebuffer's only attachment: RGBA8 colour, or (depth) a depth
+ * texture, as the texture path's atlas is; false when this GL cannot make it (a depth
+ * texture without GL_OES_depth_texture raises an error, which is taken here). */
+static bool make_target(struct target *t, int w, int h, bool depth)
 {
-	t->tex = lx_texture_rgba8(w, h);
+	t->tex = depth ? lx_texture_depth(w, h) : lx_texture_rgba8(w, h);
 	lx_gl.GenFramebuffers(1, &t->fbo);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
-	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->tex, 0);
+	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+				   t->tex, 0);
 	lx_gl.Viewport(0, 0, w, h);
-	return lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+	bool ok = (!depth || lx_gl.GetError() == GL_NO_ERROR) &&
+		  lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+	while (depth && lx_gl.GetError() != GL_NO_ERROR) {
+	}
+	return ok;
 }
 
 static void free_target(struct target *t)
@@ -56,21 +64,6 @@ static void rows_to_matrix(const float r[4][4], float m[16])
 	for (int row = 0; row < 4; row++)
 		for (int col = 0; col < 4; col++)
 			m[col * 4 + row] = r[row][col];
-}
-
-/* A depth texture of w x h as the only attachment of a framebuffer (the texture path's
- * atlas); false when this GL cannot (no GL_OES_depth_texture). */
-static bool make_depth_target(struct target *t, int w, int h)
-{
-	t->tex = lx_texture_depth(w, h);
-	lx_gl.GenFramebuffers(1, &t->fbo);
-	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
-	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t->tex, 0);
-	lx_gl.Viewport(0, 0, w, h);
-	bool ok = lx_gl.GetError() == GL_NO_ERROR && lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-	while (lx_gl.GetError() != GL_NO_ERROR) {
-	}
-	return ok;
 }
 
 /* The ramp drawn by the depth-write shader: window x -> depth a + b x. */
@@ -146,7 +139,7 @@ static bool compare_ramp(GLuint compare, GLuint stored, bool mediump, uint8_t *p
  * pass's depth test), then step 2. */
 static bool texture_ramp(GLuint write, struct target *stored, bool *unsupported, char *detail, size_t len)
 {
-	if (!make_depth_target(stored, N, 1)) {
+	if (!make_target(stored, N, 1, true)) {
 		*unsupported = true;
 		snprintf(detail, len, "this GL makes no depth-texture framebuffer (GL_OES_depth_texture)");
 		return false;
@@ -182,8 +175,8 @@ static bool run(enum lx_depth_precision path, bool *unsupported, char *detail, s
 	struct target stored = {0, 0}, decided = {0, 0};
 	uint8_t px[N * 2 * 4];
 	bool ok = (texture ? texture_ramp(write, &stored, unsupported, detail, len)
-			   : make_target(&stored, N, 1) && write_ramp(write, mediump, px, detail, len)) &&
-		  make_target(&decided, N, 2) && compare_ramp(compare, stored.tex, mediump, px, detail, len);
+			   : make_target(&stored, N, 1, false) && write_ramp(write, mediump, px, detail, len)) &&
+		  make_target(&decided, N, 2, false) && compare_ramp(compare, stored.tex, mediump, px, detail, len);
 	if (stored.fbo)
 		free_target(&stored);
 	if (decided.fbo)
