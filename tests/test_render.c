@@ -1140,6 +1140,67 @@ static void shader_failures_show_the_log(void **state)
 /* A context keeps the programs built in it by their texts: the same texts give the same
  * program (and its compiled variants), other defines another, a failed build none; a new
  * context starts with none of the old one's, and renders the same as without them. */
+/* Frames over an animated show in a fresh context: the programs built, with the renderer
+ * warmed first (lx_renderer_warm, as the kiosk does) and without. Returns how many the
+ * frames built after the set-up. */
+static int programs_built_by_frames(bool warm, int *at_start)
+{
+	char err[512];
+	struct lx_platform *plat = lx_platform_create("osmesa", err, sizeof err);
+	if (!plat)
+		fail_msg("%s", err);
+	struct lx_gl_caps caps;
+	lx_gl_caps_probe(&caps);
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_scene_meshes m = {0};
+	assert_true(lx_meshes_build(&s, &m));
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	struct lx_method_run run;
+	if (lx_method_run_init(&run, "plane", &s, &m, &caps, &o, 160, 120, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false, err,
+			       sizeof err) ||
+	    lx_method_run_set_filter(&run, LX_FILTER_PCF2X2, err, sizeof err) ||
+	    lx_method_run_set_filter(&run, LX_FILTER_NONE, err, sizeof err))
+		fail_msg("%s", err);
+	if (warm)
+		lx_method_run_warm(&run);
+	int kept;
+	long reused;
+	lx_programs_counts(at_start, &reused);
+	for (int f = 0; f < 2; f++) {
+		assert_int_equal(lx_method_run_set_filter(&run, f ? LX_FILTER_PCF2X2 : LX_FILTER_NONE, err, sizeof err), 0);
+		for (int c = 0; c < lx_config_count; c++)
+			for (double t = 0; t < 30; t += 0.75) {
+				struct lx_scene scene = s;
+				lx_config_apply(&lx_configs[c], &scene);
+				struct lx_frame frame;
+				struct lx_frame_times times;
+				assert_true(lx_frame_setup(&frame, &scene, &m, t, 160, 120, err, sizeof err));
+				lx_method_run_frame(&run, &frame, &times);
+			}
+	}
+	lx_programs_counts(&kept, &reused);
+	lx_method_run_free(&run);
+	lx_meshes_free(&m);
+	lx_platform_destroy(plat);
+	return kept - *at_start;
+}
+
+/* A warmed renderer builds no program while it shows every configuration of the default
+ * scene over 30 s of its animation with both filters; unwarmed, the same frames build
+ * some (so the frames do need more than the set-up builds). */
+static void warmed_renderer_builds_nothing_later(void **state)
+{
+	(void)state;
+	int warm_start, cold_start;
+	int warm_later = programs_built_by_frames(true, &warm_start), cold_later = programs_built_by_frames(false, &cold_start);
+	print_message("programs at the start: %d warmed, %d not; built by the frames after: %d, %d\n", warm_start,
+		      cold_start, warm_later, cold_later);
+	assert_int_equal(warm_later, 0);
+	assert_true(cold_later > 0);
+	assert_true(warm_start >= cold_start + cold_later); /* all the show needed, perhaps more */
+}
+
 static void programs_are_kept_per_context(void **state)
 {
 	(void)state;
@@ -1269,6 +1330,7 @@ int main(void)
 		cmocka_unit_test_teardown(given_reference_is_used_and_must_fit, close_shared_platform),
 		cmocka_unit_test_teardown(shader_failures_show_the_log, close_shared_platform),
 		cmocka_unit_test_teardown(programs_are_kept_per_context, close_shared_platform),
+		cmocka_unit_test_teardown(warmed_renderer_builds_nothing_later, close_shared_platform),
 		cmocka_unit_test_teardown(overlay_draws_text, close_shared_platform),
 	};
 	return cmocka_run_group_tests_name("render", tests, NULL, reference_cache_clear);

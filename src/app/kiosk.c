@@ -272,7 +272,8 @@ static struct lx_platform *kiosk_display(const struct kiosk_args *a)
 }
 
 /* Each method set up with every filter of the board built (so that a shader error shows
- * at start), running with the first. 0, or the status after the line. */
+ * at start) and every variant warmed (lx_renderer_warm), running with the first. 0, or the
+ * status after the line. */
 static int kiosk_run_filters(struct kiosk *k, struct lx_method_run *run)
 {
 	char err[512];
@@ -282,6 +283,7 @@ static int kiosk_run_filters(struct kiosk *k, struct lx_method_run *run)
 			fprintf(stderr, "lixel: %s\n", err);
 			return 1;
 		}
+	lx_method_run_warm(run); /* every variant compiled now, not mid-show */
 	return 0;
 }
 

@@ -66,6 +66,8 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 	return mr->renderer ? 0 : 1;
 }
 
+void lx_method_run_warm(struct lx_method_run *mr) { lx_renderer_warm(mr->renderer); }
+
 int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, char *err, size_t errlen)
 {
 	if (!lx_renderer_set_filter(mr->renderer, filter, err, errlen))

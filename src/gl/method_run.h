@@ -57,6 +57,8 @@ void lx_method_run_free(struct lx_method_run *mr);
 /* The main pass's shadow filter from the next frame on (--filter); 1 with err set when
  * its programs do not build (the filter then stays as it was), else 0. */
 int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, char *err, size_t errlen);
+/* lx_renderer_warm on the run's renderer (the kiosk, at start). */
+void lx_method_run_warm(struct lx_method_run *mr);
 /* Where the main pass looks its maps up from the next main or decision pass on, the
  * maps drawn kept (--lookup-region: all when everywhere, else footprint). */
 void lx_method_run_set_lookup_everywhere(struct lx_method_run *mr, bool everywhere);

@@ -1144,6 +1144,55 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	light_pass_done(kind);
 }
 
+/* One light's variants of the current filter, each drawn once (a triangle of no area) in
+ * that light's pass state, with the atlas (and a projective light's image) bound as when
+ * it draws. */
+static void warm_light(struct lx_renderer *r, int l, int shading)
+{
+	enum pass_kind kind = l > 0 ? ADDED_LIGHT : FIRST_LIGHT;
+	struct main_uniforms u;
+	memset(&u, 0, sizeof u);
+	pass_state(r, kind);
+	set_attributes(true);
+	lx_gl.ActiveTexture(GL_TEXTURE1);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex[l]);
+	lx_gl.ActiveTexture(GL_TEXTURE0);
+	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
+	for (int reads = 0; reads <= r->d.map_count; reads++) {
+		unsigned mask = (1u << reads) - 1;
+		struct main_program *p = variant_for(r, shading, &mask);
+		use_program(r, p, &u);
+		if (mask)
+			set_maps(r, p, &u, mask);
+		lx_gl.DrawArrays(GL_TRIANGLES, 0, 3);
+	}
+	light_pass_done(kind);
+}
+
+void lx_renderer_warm(struct lx_renderer *r)
+{
+	float none[3 * LX_VERTEX_FLOATS] = {0}; /* three vertices at one point */
+	GLuint vbo;
+	lx_gl.GenBuffers(1, &vbo);
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
+	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof none, none, GL_STATIC_DRAW);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
+	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	enum lx_filter was = r->filter;
+	for (int f = 0; f < LX_FILTER_COUNT; f++)
+		for (int l = 0; l < r->d.light_count; l++) {
+			int shading = shading_of(r->beam_tex[l] != 0, l > 0, light_coloured(&r->d.scene->lights[l]));
+			if (!r->variant[shading][f][r->d.map_count].prog)
+				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
+			r->filter = (enum lx_filter)f;
+			warm_light(r, l, shading);
+		}
+	r->filter = was;
+	lx_gl.DeleteBuffers(1, &vbo);
+	lx_gl.Finish();
+}
+
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
 			   const struct lx_shadow_result *const *res, int n)
 {

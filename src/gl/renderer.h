@@ -65,6 +65,12 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 /* Whether the atlas's framebuffer holds its depth in a texture (the depth-texture path),
  * as GL reports the attachment: for tests. */
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r);
+/* Every main-pass variant this renderer may draw with (each count of maps read, each light's
+ * pass, each filter set up so far) built and drawn once, a triangle of no area each: a
+ * driver compiles a program for the state it is drawn with the first time, which costs a
+ * visible stall on a board and a few megabytes on llvmpipe. The kiosk pays it at start,
+ * not when a new set of maps first comes into view. Leaves the main target cleared. */
+void lx_renderer_warm(struct lx_renderer *r);
 void lx_renderer_finish(void);
 
 #endif
