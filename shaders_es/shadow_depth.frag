@@ -4,12 +4,17 @@ precision highp float;
 #else
 precision mediump float;
 #endif
-// Writes the light depth of the fragment, encoded in RGBA8.
+// Writes the light depth of the fragment, encoded in RGBA8; on the depth-texture path
+// (LX_DEPTH_TEXTURE) the rasterizer's depth is the map and there is no colour to write.
 //!include depth_rgba.glsl
 varying vec2 v_zw;
 
 void main()
 {
+#ifdef LX_DEPTH_TEXTURE
+	gl_FragColor = vec4(1.0); // no colour attachment: nothing of it is kept
+#else
 	// w > 0 for every fragment that survived clipping
 	gl_FragColor = lx_encode_depth(v_zw.x / v_zw.y * 0.5 + 0.5);
+#endif
 }

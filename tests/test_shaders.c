@@ -77,11 +77,12 @@ static void every_variant_is_glsl_es_100(void **state)
 				write_variant(&b, "main.frag", defines, true, tag);
 			}
 	for (int mediump = 0; mediump < 2; mediump++)
-		for (int lima = 0; lima < 2; lima++) {
-			const char *d = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;
-			write_variant(&b, "shadow_depth.vert", d, false, "shadow");
-			write_variant(&b, "shadow_depth.frag", d, lima, "shadow");
-		}
+		for (int texture = 0; texture < 2 - mediump; texture++)
+			for (int lima = 0; lima < 2; lima++) {
+				const char *d = lx_shadow_defines(mediump, texture);
+				write_variant(&b, "shadow_depth.vert", d, false, "shadow");
+				write_variant(&b, "shadow_depth.frag", d, lima, "shadow");
+			}
 	for (const char *const *f = (const char *const[]){"atlas_clear.vert", "atlas_clear.frag", "atlas_readback.frag",
 							    "overlay.vert", "overlay.frag", NULL};
 	     *f; f++)

@@ -156,9 +156,9 @@ static bool texture_ramp(GLuint write, struct target *stored, bool *unsupported,
 static bool run(enum lx_depth_precision path, bool *unsupported, char *detail, size_t len)
 {
 	bool mediump = path == LX_DEPTH_MEDIUMP, texture = path == LX_DEPTH_TEXTURE;
-	const char *def = mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL;
 	char err[1024];
-	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", def, err, sizeof err);
+	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", lx_shadow_defines(mediump, texture), err,
+					sizeof err);
 	char cdef[320];
 	lx_main_defines(1, 1, true, mediump, texture, cdef, sizeof cdef);
 	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;

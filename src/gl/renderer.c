@@ -239,7 +239,7 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_renderer_desc *d = &r->d;
 	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
-					  r->mediump ? "#define LX_FORCE_MEDIUMP 1\n" : NULL, err, errlen);
+					  lx_shadow_defines(r->mediump, d->depth_texture), err, errlen);
 	if (!r->shadow_prog || !lx_renderer_set_filter(r, d->filter, err, errlen))
 		return false;
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");

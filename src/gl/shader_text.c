@@ -108,6 +108,11 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 	return src;
 }
 
+const char *lx_shadow_defines(bool mediump, bool depth_texture)
+{
+	return mediump ? "#define LX_FORCE_MEDIUMP 1\n" : depth_texture ? "#define LX_DEPTH_TEXTURE 1\n" : NULL;
+}
+
 void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len)
 {
 	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s%s", maps > 0, reads,

@@ -14,6 +14,8 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
  * test), how many of them a draw reads (0 to maps; the draw puts them in the first slots),
  * the decision output, the mediump depth path, the maps in a depth texture. */
 void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len);
+/* The shadow pass's defines for a depth path (NULL: none). */
+const char *lx_shadow_defines(bool mediump, bool depth_texture);
 
 /* Whether LIXEL_SIMULATE_LIMA=1 is set: fragment shaders are then compiled with every
  * highp made mediump (Mesa's lima computes fragments in fp16 while claiming highp). */
