@@ -869,7 +869,7 @@ static void depth_selftest_picks_the_path(void **state)
 		assert_string_equal(c.warning, "");
 		assert_true(lx_depth_choose(LX_DEPTH_TEXTURE, &c, err, sizeof err));
 		assert_string_equal(c.path, "highp24-texture"), assert_string_equal(c.selftest, "forced");
-		assert_true(c.texture && !c.mediump);
+		assert_int_equal(c.taken, LX_DEPTH_TEXTURE);
 		assert_string_equal(c.warning, "");
 		struct lx_gl_caps caps;
 		lx_gl_caps_probe(&caps);

@@ -242,7 +242,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 {
 	unsigned long long seq = 0x6c697865ull;
 	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
-	enum lx_depth_precision path = lx_depth_choice_path(&b->depth);
+	enum lx_depth_precision path = b->depth.taken;
 	/* a still configuration's one frame, set up once; the animation's, frame by frame */
 	if (!anim && !frame_at(b, scene, false, meshes, 0, frame, err, errlen))
 		return 2;

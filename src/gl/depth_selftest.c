@@ -145,8 +145,7 @@ static bool texture_ramp(GLuint write, struct target *stored, bool *unsupported,
 		return false;
 	}
 	lx_gl.Enable(GL_DEPTH_TEST);
-	lx_gl.DepthFunc(GL_ALWAYS);
-	lx_gl.Clear(GL_DEPTH_BUFFER_BIT);
+	lx_gl.DepthFunc(GL_ALWAYS); /* the ramp covers the target: every texel written */
 	draw_ramp(write);
 	lx_gl.DepthFunc(GL_LESS);
 	lx_gl.Disable(GL_DEPTH_TEST);
@@ -230,26 +229,26 @@ bool lx_depth_choose(enum lx_depth_precision want, struct lx_depth_choice *out, 
 	}
 	if (want != LX_DEPTH_AUTO) {
 		static const char *const name[] = {"", "24-bit highp", "11-bit mediump", "24-bit depth-texture"};
-		out->mediump = want == LX_DEPTH_MEDIUMP;
-		out->texture = want == LX_DEPTH_TEXTURE;
+		out->taken = want;
 		out->selftest = "forced";
 		if (!lx_depth_selftest(want, why, sizeof why))
 			snprintf(out->warning, sizeof out->warning, "the forced %s depth path fails its self-test (%.100s)",
 				 name[want], why);
 	} else if (lx_depth_selftest(LX_DEPTH_TEXTURE, why, sizeof why)) {
-		out->texture = true;
+		out->taken = LX_DEPTH_TEXTURE;
 		out->selftest = "passed";
 	} else if (lx_depth_selftest(LX_DEPTH_HIGHP, why, sizeof why)) {
-		out->mediump = false;
+		out->taken = LX_DEPTH_HIGHP;
 		out->selftest = "passed";
 	} else if (lx_depth_selftest(LX_DEPTH_MEDIUMP, why11, sizeof why11)) {
-		out->mediump = true;
+		out->taken = LX_DEPTH_MEDIUMP;
 		out->selftest = "fell-back";
 	} else {
 		snprintf(err, errlen, "this GL keeps no shadow depth: the 24-bit path fails (%s) and the 11-bit one too (%s)",
 			 why, why11);
 		return false;
 	}
-	out->path = out->texture ? "highp24-texture" : out->mediump ? "mediump11" : "highp24";
+	static const char *const path[] = {"", "highp24", "mediump11", "highp24-texture"};
+	out->path = path[out->taken];
 	return true;
 }

@@ -56,7 +56,9 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 1;
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .caps = caps,
 				      .map_count = mr->lights[0].atlas.count, .width = width, .height = height,
-				      .mediump = mr->depth.mediump, .depth_texture = mr->depth.texture, .bias_codes = bias_codes, .to_window = to_window,
+				      .mediump = mr->depth.taken == LX_DEPTH_MEDIUMP,
+				      .depth_texture = mr->depth.taken == LX_DEPTH_TEXTURE, .bias_codes = bias_codes,
+				      .to_window = to_window,
 				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count};
 	for (int i = 0; i < mr->light_count; i++) {
 		rd.lights[i].atlas = &mr->lights[i].atlas;

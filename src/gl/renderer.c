@@ -98,19 +98,24 @@ static void to_float(const mat4 *m, float out[16])
 		out[i] = (float)m->m[i];
 }
 
-static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint color_rb, GLuint *depth_rb, int w, int h, bool depth24,
+/* A framebuffer of w x h: colour into color_tex (0: none), depth into depth_tex, or when
+ * that is 0 into a depth renderbuffer made here (*depth_rb). */
+static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint *depth_rb, int w, int h, bool depth24,
 			char *err, size_t errlen, const char *what)
 {
-	lx_gl.GenRenderbuffers(1, depth_rb);
-	lx_gl.BindRenderbuffer(GL_RENDERBUFFER, *depth_rb);
-	lx_gl.RenderbufferStorage(GL_RENDERBUFFER, depth24 ? GL_DEPTH_COMPONENT24_OES : GL_DEPTH_COMPONENT16, w, h);
+	if (!depth_tex) {
+		lx_gl.GenRenderbuffers(1, depth_rb);
+		lx_gl.BindRenderbuffer(GL_RENDERBUFFER, *depth_rb);
+		lx_gl.RenderbufferStorage(GL_RENDERBUFFER, depth24 ? GL_DEPTH_COMPONENT24_OES : GL_DEPTH_COMPONENT16, w, h);
+	}
 	lx_gl.GenFramebuffers(1, fbo);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, *fbo);
 	if (color_tex)
 		lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_tex, 0);
+	if (depth_tex)
+		lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_tex, 0);
 	else
-		lx_gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb);
-	lx_gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth_rb);
+		lx_gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth_rb);
 	GLenum st = lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
 	if (st != GL_FRAMEBUFFER_COMPLETE) {
 		snprintf(err, errlen, "GL: the %s framebuffer (%dx%d) is incomplete (status 0x%x)", what, w, h, st);
@@ -289,35 +294,17 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
  * guard bands included (passes only ever clear and draw inside their own region, so the
  * guards keep it); and off screen, the main target (an RGBA texture: RGBA8
  * renderbuffers are an extension in ES 2.0, OES_rgb8_rgba8). */
-/* The depth-texture path's atlas: the texture is the framebuffer's depth and its only
- * attachment, so the shadow pass writes no colour. */
-static bool depth_atlas(struct lx_renderer *r, char *err, size_t errlen)
-{
-	r->atlas_tex = lx_texture_depth(r->texture_width, r->texture_height);
-	lx_gl.GenFramebuffers(1, &r->atlas_fbo);
-	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
-	lx_gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, r->atlas_tex, 0);
-	GLenum st = lx_gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
-	if (st != GL_FRAMEBUFFER_COMPLETE) {
-		snprintf(err, errlen, "GL: the atlas's depth-texture framebuffer (%dx%d) is incomplete (status 0x%x)",
-			 r->texture_width, r->texture_height, st);
-		return false;
-	}
-	return true;
-}
-
 static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_renderer_desc *d = &r->d;
-	if (d->depth_texture) {
-		if (!depth_atlas(r, err, errlen))
-			return false;
-	} else {
-		r->atlas_tex = lx_texture_rgba8(r->texture_width, r->texture_height);
-		if (!framebuffer(&r->atlas_fbo, r->atlas_tex, 0, &r->atlas_depth, r->texture_width, r->texture_height,
-				 d->caps->depth24, err, errlen, "atlas"))
-			return false;
-	}
+	/* the depth-texture path: the texture is the atlas's depth and its only attachment, so
+	 * the shadow pass writes no colour */
+	bool dt = d->depth_texture;
+	r->atlas_tex = dt ? lx_texture_depth(r->texture_width, r->texture_height)
+			  : lx_texture_rgba8(r->texture_width, r->texture_height);
+	if (!framebuffer(&r->atlas_fbo, dt ? 0 : r->atlas_tex, dt ? r->atlas_tex : 0, &r->atlas_depth, r->texture_width,
+			 r->texture_height, d->caps->depth24, err, errlen, "atlas"))
+		return false;
 	lx_gl.Disable(GL_SCISSOR_TEST);
 	lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
 	lx_gl.ClearColor(1, 1, 1, 1);
@@ -437,6 +424,26 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	return r;
 }
 
+/* The vertex arrays a pass reads: positions, and with them normals and face normals or not. */
+static void vertex_arrays(bool normals)
+{
+	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
+	if (normals) {
+		lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
+		lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	} else {
+		lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
+		lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	}
+}
+
+/* The quad over the viewport (clear_vbo: 2D corners) as the positions. */
+static void bind_quad(const struct lx_renderer *r)
+{
+	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
+	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+}
+
 /* The vertex attributes from the bound buffer (positions, then normals and face normals). */
 static void set_attributes(bool normals)
 {
@@ -519,8 +526,7 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
 	lx_gl.UseProgram(r->clear_prog);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthFunc(GL_ALWAYS);
-	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
-	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+	bind_quad(r);
 	for (int k = 0; k < nr; k++)
 		clear_region(r, atlas[k], region[k]);
 }
@@ -566,9 +572,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	if (!any)
 		return;
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
-	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
-	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	vertex_arrays(false);
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.ClearColor(1, 1, 1, 1);
@@ -1105,9 +1109,7 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.Enable(GL_SCISSOR_TEST);
 		lx_gl.Scissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
 	}
-	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	vertex_arrays(true);
 	if (r->d.map_count > 0) {
 		lx_gl.ActiveTexture(GL_TEXTURE0);
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
@@ -1176,9 +1178,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	lx_gl.GenBuffers(1, &vbo);
 	lx_gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
 	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof none, none, GL_STATIC_DRAW);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_NORMAL);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_FACE_NORMAL);
+	vertex_arrays(true);
 	enum lx_filter was = r->filter;
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
@@ -1236,11 +1236,8 @@ static void read_depth_atlas(struct lx_renderer *r, uint8_t *rgba)
 	lx_gl.Uniform1i(lx_gl.GetUniformLocation(prog, "u_atlas"), 0);
 	lx_gl.Uniform2f(lx_gl.GetUniformLocation(prog, "u_inverse_size"), 1.0f / (float)r->texture_width,
 			1.0f / (float)r->texture_height);
-	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->clear_vbo);
-	lx_gl.EnableVertexAttribArray(LX_ATTR_POSITION);
-	lx_gl.DisableVertexAttribArray(LX_ATTR_NORMAL);
-	lx_gl.DisableVertexAttribArray(LX_ATTR_FACE_NORMAL);
-	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, 0, (const void *)0);
+	vertex_arrays(false);
+	bind_quad(r);
 	lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
