@@ -46,18 +46,16 @@ static const struct column {
 	size_t at; /* offsetof(struct row, ...), a double */
 	int csv_decimals;
 } row_columns[] = {
-	{"frame_ms_median", offsetof(struct row, frame_ms_median), 4},
-	{"frame_ms_min", offsetof(struct row, frame_ms_min), 4},
-	{"frame_ms_max", offsetof(struct row, frame_ms_max), 4},
-	{"shadow_ms_median", offsetof(struct row, shadow_ms), 4},
-	{"main_ms_median", offsetof(struct row, main_ms), 4},
-	{"setup_us", offsetof(struct row, setup_us), 2},
-	{"lookup_pct", offsetof(struct row, lookup_pct), 3},
-	{"mismatch_pct", offsetof(struct row, mismatch_pct), 5},
-	{"false_shadow_pct", offsetof(struct row, false_pct), 5},
-	{"missing_shadow_pct", offsetof(struct row, missing_pct), 5},
-	{"mismatch_worst", offsetof(struct row, mismatch_worst), 5},
-	{"soft_error_pct", offsetof(struct row, soft_pct), 5},
+#define COLUMN(name, field, decimals) {name, offsetof(struct row, field), decimals}
+	/* the frame: its median and range, its passes apart, the light matrices' set-up */
+	COLUMN("frame_ms_median", frame_ms_median, 4), COLUMN("frame_ms_min", frame_ms_min, 4),
+	COLUMN("frame_ms_max", frame_ms_max, 4), COLUMN("shadow_ms_median", shadow_ms, 4),
+	COLUMN("main_ms_median", main_ms, 4), COLUMN("setup_us", setup_us, 2),
+	/* where the main pass looked a map up; the decisions against the references */
+	COLUMN("lookup_pct", lookup_pct, 3), COLUMN("mismatch_pct", mismatch_pct, 5),
+	COLUMN("false_shadow_pct", false_pct, 5), COLUMN("missing_shadow_pct", missing_pct, 5),
+	COLUMN("mismatch_worst", mismatch_worst, 5), COLUMN("soft_error_pct", soft_pct, 5),
+#undef COLUMN
 };
 #define ROW_COLUMNS (int)(sizeof row_columns / sizeof row_columns[0])
 

@@ -224,15 +224,17 @@ static void json_planes(struct lx_json *j, const struct lx_render_report *r, int
 	lx_json_end(j);
 }
 
+/* The comparison's shares of the compared pixels, then its pixel counts. */
 static void json_mismatch(struct lx_json *j, const struct lx_mismatch *m)
 {
-	lx_json_key(j, "mismatch_pct"), lx_json_number(j, m->mismatch_pct);
-	lx_json_key(j, "false_shadow_pct"), lx_json_number(j, m->false_shadow_pct);
-	lx_json_key(j, "missing_shadow_pct"), lx_json_number(j, m->missing_shadow_pct);
-	lx_json_key(j, "compared_pixels"), lx_json_int(j, m->compared);
-	lx_json_key(j, "silhouette_pixels"), lx_json_int(j, m->silhouette);
-	lx_json_key(j, "edge_on_pixels"), lx_json_int(j, m->edge_on);
-	lx_json_key(j, "unlit_pixels"), lx_json_int(j, m->unlit);
+	static const char *const pct_key[] = {"mismatch_pct", "false_shadow_pct", "missing_shadow_pct"};
+	static const char *const count_key[] = {"compared_pixels", "silhouette_pixels", "edge_on_pixels", "unlit_pixels"};
+	const double pct[] = {m->mismatch_pct, m->false_shadow_pct, m->missing_shadow_pct};
+	const long count[] = {m->compared, m->silhouette, m->edge_on, m->unlit};
+	for (int k = 0; k < 3; k++)
+		lx_json_key(j, pct_key[k]), lx_json_number(j, pct[k]);
+	for (int k = 0; k < 4; k++)
+		lx_json_key(j, count_key[k]), lx_json_int(j, count[k]);
 }
 
 /* Every light's maps, each with the light it belongs to (1, 2, ...). */
