@@ -27,7 +27,7 @@ expect_bad() {
 "$lixel" --help >"$tmp/help" 2>&1 && grep -q "render" "$tmp/help" && ok || no "lixel --help"
 "$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
 for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json \
-    --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size; do
+    --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size --lookup-region --depth-slots; do
   grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
 done
 
@@ -161,7 +161,7 @@ if "$lixel" bench --size 64x48 --frames 1 --warmup 0 --json --csv "$tmp/b.csv" -
   ok
   for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "filter": "none", "config": "default", "frame_ms_median"' \
       '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
-      '"summary": \[{"method": "none", "filter": "none", "frame_ms_median": [0-9.e-]*, "ratio_none": 1, "ratio_uniform"' \
+      '"summary": \[{"method": "none", "filter": "none", "frame_ms_median": [0-9.e-]*, "frame_ms_mean": [0-9.e-]*, "depth_slots": 8, "ratio_none": 1, "ratio_uniform"' \
       '"mismatch_median"' '"mismatch_worst"' '"soft_error_pct"' '"soft_error_median"' '"light_size_deg": 0.5'; do
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
@@ -216,6 +216,19 @@ LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x6
     --atlas-out "$tmp/t-atlas.png" --decision-out "$tmp/t-dec.png" >"$tmp/t.json" 2>"$tmp/t.err" &&
   grep -q '"depth_path": "highp24-texture", "depth_selftest": "forced"' "$tmp/t.json" &&
   grep -q '"warnings": \[\]' "$tmp/t.json" && [ ! -s "$tmp/t.err" ] && ok || no "depth texture: $(cat "$tmp/t.err" "$tmp/t.json")"
+# depth slots: taken on the depth-texture path (llvmpipe is no tiler), said in the JSON
+# and the text; 1 on the RGBA8 paths, or when asked
+grep -q '"depth_slots": 8' "$tmp/t.json" && ok || no "depth texture's slots: $(cat "$tmp/t.json")"
+"$lixel" render --depth-precision texture --depth-slots 3 --size 96x64 --frames 1 --out "$tmp/s.png" >"$tmp/s.txt" 2>&1 &&
+  grep -q '^atlas: .*; cleared once every 3 frames (depth slots)$' "$tmp/s.txt" && ok || no "--depth-slots 3: $(cat "$tmp/s.txt")"
+for args in "--depth-precision highp" "--depth-precision texture --depth-slots 1"; do
+  "$lixel" render $args --json --size 96x64 --frames 1 --out "$tmp/s.png" >"$tmp/s.json" 2>&1 &&
+    grep -q '"depth_slots": 1' "$tmp/s.json" && ok || no "render $args: $(cat "$tmp/s.json")"
+done
+expect_bad "depth slots 0" render --depth-slots 0 $out
+expect_bad "depth slots 65" render --depth-slots 65 $out
+expect_bad "depth slots in words" render --depth-slots eight $out
+expect_bad "bench method option slots0" bench --methods plane/slots0
 "$lixel" render --depth-precision highp --size 96x64 --frames 1 --out "$tmp/h.png" --atlas-out "$tmp/h-atlas.png" \
     --decision-out "$tmp/h-dec.png" >/dev/null 2>&1 && cmp -s "$tmp/h-dec.png" "$tmp/t-dec.png" &&
   [ "$(head -c 4 "$tmp/t-atlas.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok ||

@@ -61,6 +61,7 @@ static void golden_scene(const char *scene_name, enum lx_depth_precision path, c
 		const char *name = lx_shadow_method_at(m)->name;
 		struct lx_method_run run;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		o.depth_slots = 1; /* the depth paths' codes, byte for byte; slots: test_render */
 		if (lx_method_run_init(&run, name, &base, &meshes, caps, &o, GW, GH, path, LX_DEFAULT_BIAS_CODES, false, err,
 				       sizeof err))
 			fail_msg("%s: %s", name, err);
@@ -492,6 +493,7 @@ static void filters_stay_in_their_region(void **state)
 		struct lx_method_run run;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 		o.lookup_everywhere = true;
+		o.depth_slots = 1; /* the atlas read, painted and written back: the codes over the whole range */
 		if (lx_method_run_init(&run, name, &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
 				       err, sizeof err))
 			fail_msg("%s", err);

@@ -695,6 +695,7 @@ static void lookup_region_changes_no_decision(void **state)
 				long looked[3] = {0, 0, 0};
 				for (int k = 0; k < 2; k++) {
 					struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+					o.depth_slots = 1; /* both cleared every frame (slots: their own test) */
 					if (k == 1)
 						setenv("LIXEL_CLEAR_WHOLE_ATLAS", "1", 1);
 					if (lx_method_run_init(&run[k], m, &base, &meshes, &caps, &o, w, h,
@@ -793,6 +794,7 @@ static void depth_texture_path_decides_as_highp(void **state)
 			struct lx_method_run run[2];
 			for (int k = 0; k < 2; k++) {
 				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				o.depth_slots = 1; /* the codes as the highp path has them (slots: the next test) */
 				if (lx_method_run_init(&run[k], m, &base, &meshes, &dc.caps, &o, w, h,
 						       k ? LX_DEPTH_TEXTURE : LX_DEPTH_HIGHP, LX_DEFAULT_BIAS_CODES, false, err,
 						       sizeof err))
@@ -833,6 +835,69 @@ static void depth_texture_path_decides_as_highp(void **state)
 		      "atlas's codes at most %.0f from the RGBA8 one's\n",
 		      frames, differ, shadowed, worst_code);
 	assert_true(frames > 100 && shadowed > 10000);
+	decisions_free(&dc);
+}
+
+/* Depth slots (renderer.c): the atlas cleared once every 8 frames, each frame's depths in
+ * a slot below the earlier frames', decides as clearing it every frame, but for the
+ * coarser steps of a slot (21 bits): every method, both built-in scenes, 20 frames of the
+ * casters bouncing (two and a half cycles of slots, the maps moving over the atlas as
+ * the casters do, onto texels earlier frames wrote), then every standard configuration
+ * one after another (the layouts jumping). An earlier frame's depth read as near would
+ * show as a shadow where none falls, on many pixels. */
+static void depth_slots_decide_as_clearing_every_frame(void **state)
+{
+	(void)state;
+	enum { w = 256, h = 192, frames = 20, most_per_frame = 3 };
+	char err[512];
+	struct decisions dc = decisions_alloc(w, h);
+	long views = 0, differ = 0, shadowed = 0, worst = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(*sn, &base));
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		for (int i = 0; i < lx_shadow_method_count(); i++) {
+			const char *m = lx_shadow_method_at(i)->name;
+			struct lx_method_run run[2];
+			for (int k = 0; k < 2; k++) {
+				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				o.depth_slots = k ? 8 : 1;
+				if (lx_method_run_init(&run[k], m, &base, &meshes, &dc.caps, &o, w, h, LX_DEPTH_TEXTURE,
+						       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+					fail_msg("%s: %s", m, err);
+			}
+			assert_int_equal(lx_renderer_depth_slots(run[0].renderer), 1);
+			assert_int_equal(lx_renderer_depth_slots(run[1].renderer), 8);
+			for (int n = 0; n < frames + lx_config_count; n++) {
+				struct lx_scene scene = base;
+				if (n >= frames)
+					lx_config_apply(&lx_configs[n - frames], &scene);
+				struct lx_frame frame;
+				assert_true(lx_frame_setup(&frame, &scene, &meshes, n < frames ? 0.11 * n : 0.4, w, h, err,
+							   sizeof err));
+				for (int k = 0; k < 2; k++) {
+					lx_method_run_shadows(&run[k], &frame);
+					lx_method_run_decision(&run[k], 0, dc.rgba, dc.obj[k], dc.sh[k]);
+				}
+				long d = 0;
+				for (long p = 0; p < (long)w * h; p++) {
+					assert_int_equal(dc.obj[0][p], dc.obj[1][p]);
+					d += dc.sh[0][p] != dc.sh[1][p], shadowed += dc.sh[0][p] != 0;
+				}
+				if (d > most_per_frame)
+					fail_msg("%s scene, %s, frame %d: %ld pixels decided otherwise with depth slots", *sn, m, n, d);
+				differ += d, views++, worst = d > worst ? d : worst;
+			}
+			for (int k = 0; k < 2; k++)
+				lx_method_run_free(&run[k]);
+		}
+		lx_meshes_free(&meshes);
+	}
+	print_message("%ld frames: %ld pixels of %ld shadowed ones decided otherwise with depth slots (at most %ld in "
+		      "a frame of %d)\n",
+		      views, differ, shadowed, worst, w * h);
+	assert_true(views > 300 && shadowed > 100000);
 	decisions_free(&dc);
 }
 
@@ -1323,6 +1388,7 @@ int main(void)
 		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
 		cmocka_unit_test_teardown(depth_texture_path_decides_as_highp, close_shared_platform),
+		cmocka_unit_test_teardown(depth_slots_decide_as_clearing_every_frame, close_shared_platform),
 		cmocka_unit_test_teardown(simulated_lima_keeps_the_shadows, close_shared_platform),
 		cmocka_unit_test_teardown(platforms_agree, close_shared_platform),
 		cmocka_unit_test_teardown(gpu_depth_encoding_and_guards, close_shared_platform),

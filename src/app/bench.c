@@ -10,6 +10,7 @@
 #include "png_out.h"
 #include "out_file.h"
 #include "reference.h"
+#include "renderer.h"
 #include "soft_reference.h"
 #include <sys/stat.h>
 #include <unistd.h>
@@ -74,6 +75,7 @@ struct bench {
 	const char *methods[MAX_RUNS];     /* each run's method spec */
 	enum lx_filter filters[MAX_RUNS];  /* and its shadow filter */
 	char labels[MAX_RUNS][80];         /* "uniform", "uniform+pcf2x2": the text, plot and strips */
+	int slots[MAX_RUNS];               /* each run's depth slots (lx_renderer_depth_slots) */
 	int nf;
 	enum lx_filter filter_list[LX_FILTER_COUNT]; /* --filters */
 	double light_size_deg;                      /* the soft reference's area light */
@@ -93,8 +95,8 @@ static void usage(FILE *f)
 	fprintf(f, "usage: lixel bench [--size WxH] [--frames N] [--warmup N] [--methods LIST] [--configs LIST]\n"
 		   "                   [--platform osmesa|egl] [--scene NAME|FILE] [--csv FILE] [--plot FILE.png]\n"
 		   "                   [--strips DIR] [--json] [--region-shape S] [--budget-split S]\n"
-		   "                   [--plane-max-lpp X] [--lookup-region R] [--depth-precision P]\n"
-		   "                   [--filters LIST] [--light-size DEG]\n"
+		   "                   [--plane-max-lpp X] [--lookup-region R] [--depth-slots N]\n"
+		   "                   [--depth-precision P] [--filters LIST] [--light-size DEG]\n"
 		   "\n"
 		   "Renders every method over every configuration: N timed frames each (glFinish after\n"
 		   "the shadow passes and after the main pass), in 5 rounds: in each the methods take\n"
@@ -117,11 +119,14 @@ static void usage(FILE *f)
 		   "                   budgets), plane/lpp1 (at most 1 lixel per pixel), plane/twist (the\n"
 		   "                   paper's twist, not screen-aligned), plane/onepiece (one rectangle\n"
 		   "                   per plane), plane/uncapped; combined freely (plane/shared/lpp1);\n"
-		   "                   every method takes /all or /footprint (--lookup-region) and\n"
-		   "                   /lightsN (only the scene's first N lights: uniform,uniform/lights1\n"
-		   "                   on a scene of two lights measures what the second costs)\n"
-		   "  --region-shape, --budget-split, --plane-max-lpp, --light-budget: as in lixel\n"
-		   "                   render --help, for every method of the run\n"
+		   "                   every method takes /all or /footprint (--lookup-region),\n"
+		   "                   /slotsN (--depth-slots N: plane,plane/slots1 measures what clearing\n"
+		   "                   the atlas every frame costs) and /lightsN (only the scene's first\n"
+		   "                   N lights: uniform,uniform/lights1 on a scene of two lights\n"
+		   "                   measures what the second costs)\n"
+		   "  --region-shape, --budget-split, --plane-max-lpp, --lookup-region, --depth-slots,\n"
+		   "                   --light-budget: as in lixel render --help, for every method of\n"
+		   "                   the run\n"
 		   "  --filters LIST   shadow filters each method runs with, comma-separated, from none,\n"
 		   "                   pcf2x2 and pcf3x3 (default none; see lixel render --help); a run\n"
 		   "                   is named METHOD+FILTER, or METHOD for none\n"
@@ -172,6 +177,16 @@ static double median_of(const double *v, int n)
 	double m = lx_median(t, n);
 	free(t);
 	return m;
+}
+
+/* The mean: with depth slots, one frame in that many also clears the atlas, which a
+ * median passes over. */
+static double mean_of(const double *v, int n)
+{
+	double sum = 0;
+	for (int k = 0; k < n; k++)
+		sum += v[k];
+	return n > 0 ? sum / n : NAN;
 }
 
 static void config_scene(const struct bench *b, const char *config, struct lx_scene *s)
@@ -495,8 +510,10 @@ static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 
 static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 {
-	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s, depth %s (self-test %s)\n", b->width,
-	       b->height, b->frames, b->warmup, b->platform, caps->renderer, b->depth.path, b->depth.selftest);
+	printf("lixel bench: %dx%d, %d timed frames after %d warm-up, %s on %s, depth %s (self-test %s), "
+	       "the atlas cleared once every %d frames\n",
+	       b->width, b->height, b->frames, b->warmup, b->platform, caps->renderer, b->depth.path, b->depth.selftest,
+	       b->slots[0]);
 	print_rows(b);
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
@@ -577,6 +594,8 @@ static void print_json(const struct bench *b)
 		lx_json_key(&j, "method"), lx_json_string(&j, b->methods[m]);
 		lx_json_key(&j, "filter"), lx_json_string(&j, lx_filter_name(b->filters[m]));
 		lx_json_key(&j, "frame_ms_median"), lx_json_number(&j, s.frame_ms);
+		lx_json_key(&j, "frame_ms_mean"), lx_json_number(&j, mean_of(b->all[m][T_FRAME], b->nframes[m]));
+		lx_json_key(&j, "depth_slots"), lx_json_int(&j, b->slots[m]);
 		lx_json_key(&j, "ratio_none"), lx_json_number(&j, s.frame_ms / none_ms);
 		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, s.frame_ms / uni_ms);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
@@ -831,6 +850,7 @@ static int bench_run(struct bench *b, const struct lx_scene_meshes *meshes, stru
 		if (++*ready == 1 && run->depth.warning[0])
 			fprintf(stderr, "lixel bench: warning: %s\n", run->depth.warning);
 		b->depth = run->depth;
+		b->slots[*ready - 1] = lx_renderer_depth_slots(run->renderer);
 	}
 	for (int c = 0; c < b->nc; c++) {
 		fprintf(stderr, "lixel bench: configuration %d/%d: %s\n", c + 1, b->nc, b->configs[c]);

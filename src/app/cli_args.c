@@ -121,6 +121,10 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 		if (strcmp(value, "footprint") && strcmp(value, "all"))
 			return lx_arg_bad(cmd, opt, "footprint or all", value);
 		o->lookup_everywhere = value[0] == 'a';
+	} else if (!strcmp(opt, "--depth-slots")) {
+		enum lx_number_error e = lx_number_int(value, 1, LX_DEPTH_SLOTS_MAX, &o->depth_slots);
+		if (e)
+			return lx_arg_bad_number(cmd, opt, "a whole number of frames from 1 to 64", value, e);
 	} else if (!strcmp(opt, "--light-budget")) {
 		if (!lx_light_budget_parse(value, o))
 			return lx_arg_bad(cmd, opt, LX_LIGHT_BUDGET_EXPECTED, value);

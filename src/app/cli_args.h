@@ -30,7 +30,8 @@ bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t
 bool lx_arg_scene(const char *arg, struct lx_scene *s);
 
 /* The maps' options shared by render and bench: --region-shape square|fitted,
- * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all, --light-budget S,...
+ * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all, --depth-slots N,
+ * --light-budget S,...
  * Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
 struct lx_method_options;
@@ -61,7 +62,8 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       (or, for a directional light, a disc of directions) of this\n" \
 	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
 	"                       --measure computes it when a filter is on or this is given\n"
-#define LX_PLANE_OPTION_NAMES "--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--light-budget"
+#define LX_PLANE_OPTION_NAMES \
+	"--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--depth-slots", "--light-budget"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
@@ -69,6 +71,13 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       map with nothing to serve this frame hands its budget on)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
 	"                       default none: every lixel of the budget)\n" \
+	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \
+	"                       where a caster's shadow can fall on it) or all (everywhere: the\n" \
+	"                       same shadows, more fill)\n" \
+	"  --depth-slots N      the atlas cleared once every N frames, 1 to 64 (default 8):\n" \
+	"                       each frame's maps written into their own Nth of the depth range,\n" \
+	"                       below the earlier frames' (24 - log2 N bits a frame); taken on\n" \
+	"                       the depth-texture path of a GPU that is not a tiler, else 1\n" \
 	"  --light-budget S,... a scene of several lights: each light's share of the lixels\n" \
 	"                       above, from 0.01 to 1 (default 1 each; lights past the list take\n" \
 	"                       its last share), e.g. 1,0.5 for half a budget for the second\n"

@@ -128,6 +128,8 @@ static void print_atlas(const struct lx_render_report *r)
 			       lr->result.maps[i].rendered ? "" : " (not rendered)");
 		}
 	}
+	if (r->depth_slots > 1)
+		printf("; cleared once every %d frames (depth slots)", r->depth_slots);
 	printf("\n");
 	for (int l = 0; l < r->light_count; l++)
 		for (int i = 0; i < r->light[l].result.warning_count; i++) {
@@ -327,6 +329,7 @@ static void print_json(const struct lx_render_report *r)
 	lx_json_key(&j, "fragment_highp"), lx_json_bool(&j, r->caps.fragment_highp);
 	lx_json_key(&j, "depth_path"), lx_json_string(&j, r->depth.path);
 	lx_json_key(&j, "depth_selftest"), lx_json_string(&j, r->depth.selftest);
+	lx_json_key(&j, "depth_slots"), lx_json_int(&j, r->depth_slots);
 	if (r->lookup_pct >= 0)
 		lx_json_key(&j, "lookup_pct"), lx_json_number(&j, r->lookup_pct);
 	json_warnings(&j, r);

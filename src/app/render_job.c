@@ -274,6 +274,7 @@ static int render_frames(const struct lx_render_job *job, const struct lx_scene_
 		return status;
 	}
 	rep->depth = mr.depth;
+	rep->depth_slots = lx_renderer_depth_slots(mr.renderer);
 	rep->light_count = mr.light_count;
 	for (int l = 0; l < mr.light_count; l++)
 		snprintf(rep->light[l].kind, sizeof rep->light[l].kind, "%s", lx_light_kind_name(&job->scene.lights[l]));

@@ -57,6 +57,7 @@ struct lx_render_report {
 	int light_count; /* the lights drawn */
 	struct lx_light_report light[LX_MAX_LIGHTS];
 	struct lx_depth_choice depth;
+	int depth_slots; /* the renderer's (lx_renderer_depth_slots) */
 	double frame_ms, frame_ms_min, frame_ms_max, shadow_ms, main_ms, setup_us;
 	bool measured;
 	/* with the decision (measure, keep_pixels or decision_png): the share of the image's

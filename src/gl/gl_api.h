@@ -27,6 +27,7 @@
 	X(void, CullFace, (GLenum))                                                          \
 	X(void, DepthFunc, (GLenum))                                                         \
 	X(void, DepthMask, (GLboolean))                                                      \
+	X(void, DepthRangef, (GLfloat, GLfloat))                                             \
 	X(void, DeleteBuffers, (GLsizei, const GLuint *))                                    \
 	X(void, DeleteFramebuffers, (GLsizei, const GLuint *))                               \
 	X(void, DeleteProgram, (GLuint))                                                     \

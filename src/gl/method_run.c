@@ -59,7 +59,8 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 				      .mediump = mr->depth.taken == LX_DEPTH_MEDIUMP,
 				      .depth_texture = mr->depth.taken == LX_DEPTH_TEXTURE, .bias_codes = bias_codes,
 				      .to_window = to_window,
-				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count};
+				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count,
+				      .depth_slots = mr->options.depth_slots > 0 ? mr->options.depth_slots : LX_DEPTH_SLOTS_DEFAULT};
 	for (int i = 0; i < mr->light_count; i++) {
 		rd.lights[i].atlas = &mr->lights[i].atlas;
 		rd.lights[i].image = mr->lights[i].image.rgba ? &mr->lights[i].image : NULL;

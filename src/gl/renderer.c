@@ -90,6 +90,14 @@ struct lx_renderer {
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	bool mediump;
 	float bias_uniform;
+	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
+	 * into the next one down (glDepthRange), below every depth an earlier frame left, so
+	 * that a lookup reads those as far and the atlas is cleared once every `slots` frames
+	 * (a fill like any other draw on an immediate-mode renderer) instead of every frame.
+	 * 1: every frame's regions cleared, the whole range. */
+	int slots;
+	int next_slot;          /* the next shadow pass's; 0: it clears the whole atlas first */
+	double slot_lo, slot_hi; /* the last shadow pass's range, which the main pass reads */
 };
 
 static void to_float(const mat4 *m, float out[16])
@@ -411,6 +419,10 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
+	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
+	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
+	r->slots = d->depth_texture && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
+	r->slot_hi = 1;
 	r->texture_width = d->lights[0].atlas->texture_width;
 	r->texture_height = d->lights[0].atlas->texture_height;
 	bool ok = true;
@@ -467,11 +479,18 @@ static void bind_mesh(const struct lx_renderer *r, int id, bool normals)
  * clears a scissored rectangle by a slower path than the quad's fill at every size
  * measured: plane's three regions (about 211k lixels) took 1.37-1.45 ms of shadow pass
  * with quads against 1.52-1.62 ms with the two large ones cleared scissored. */
+/* The whole atlas far, in one clear. */
+static void clear_atlas(struct lx_renderer *r)
+{
+	lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
+	lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
 static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_region *g)
 {
 	int gd = a->guard, x = g->x - gd, y = g->y - gd, w = g->w + 2 * gd, h = g->h + 2 * gd;
 	if (x <= 0 && y <= 0 && x + w >= r->texture_width && y + h >= r->texture_height) {
-		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		clear_atlas(r);
 	} else { /* the far quad: its program and state are set by the caller, once */
 		lx_gl.Viewport(x, y, w, h);
 		lx_gl.DrawArrays(GL_TRIANGLES, 0, 6);
@@ -519,8 +538,7 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
 		}
 	}
 	if (r->d.caps->tiler || r->d.clear_whole_atlas || 2 * covered >= (double)r->texture_width * r->texture_height) {
-		lx_gl.Viewport(0, 0, r->texture_width, r->texture_height);
-		lx_gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+		clear_atlas(r);
 		return;
 	}
 	lx_gl.UseProgram(r->clear_prog);
@@ -529,6 +547,30 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
 	bind_quad(r);
 	for (int k = 0; k < nr; k++)
 		clear_region(r, atlas[k], region[k]);
+}
+
+/* A slot's gap below the next one up: a depth at the far plane, rounded up, still below
+ * an earlier frame's nearest */
+#define SLOT_GAP (16.0 / 16777215.0)
+
+/* This frame's depth range, and what must be far before the casters are drawn: with
+ * slots, the whole atlas once every `slots` frames (the maps move over the atlas from
+ * frame to frame, onto texels an earlier frame of the cycle may have written), and
+ * nothing between; without, the regions (clear_regions). */
+static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *const *f,
+			      const struct lx_shadow_result *const *res, int n)
+{
+	if (r->slots <= 1) {
+		clear_regions(r, f, res, n);
+		return;
+	}
+	int k = r->next_slot;
+	r->next_slot = (k + 1) % r->slots;
+	if (k == 0)
+		clear_atlas(r);
+	r->slot_lo = (double)(r->slots - 1 - k) / r->slots;
+	r->slot_hi = r->slot_lo + 1.0 / r->slots - SLOT_GAP;
+	lx_gl.DepthRangef((float)r->slot_lo, (float)r->slot_hi);
 }
 
 /* The casters of a light's map `m` that a lookup can read (drawn[object], a mask of
@@ -576,7 +618,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
 	lx_gl.Enable(GL_DEPTH_TEST);
 	lx_gl.ClearColor(1, 1, 1, 1);
-	clear_regions(r, f, res, n);
+	begin_atlas_frame(r, f, res, n);
 	/* Regions never overlap, so the casters can then be drawn map after map with another
 	 * program. Back faces only (second-depth shadow maps): lit front faces never compare
 	 * against themselves, so there is no acne; the meshes are closed or are planes. */
@@ -595,6 +637,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 			draw_map(r, f[i], a, &res[i]->maps[m], m, drawn);
 	}
 	lx_gl.Disable(GL_CULL_FACE);
+	lx_gl.DepthRangef(0, 1);
 }
 
 /* How many maps a set holds. */
@@ -851,6 +894,9 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
+		if (map->rendered) /* depth d -> the slot's lo + (hi - lo) d, as the shadow pass wrote it */
+			for (int c = 0; c < 4; c++)
+				t.m[c * 4 + 2] = (r->slot_hi - r->slot_lo) * t.m[c * 4 + 2] + r->slot_lo * t.m[c * 4 + 3];
 		to_float(&t, tex[m]);
 		const struct lx_region *g = &atlas->regions[map->region];
 		clamp[m][0] = (float)((g->x + 0.5) / tw), clamp[m][1] = (float)((g->y + 0.5) / th);
@@ -1025,7 +1071,8 @@ static void use_program(const struct lx_renderer *r, const struct main_program *
 	lx_gl.UniformMatrix4fv(p->view_proj, 1, GL_FALSE, u->view_proj);
 	lx_gl.Uniform4f(p->light, u->light[0], u->light[1], u->light[2], u->light[3]);
 	lx_gl.Uniform3fv(p->light_color, 1, u->light_color);
-	lx_gl.Uniform1f(p->bias, r->bias_uniform);
+	/* the same depth difference as without slots: a slot's code spans `slots` codes */
+	lx_gl.Uniform1f(p->bias, r->bias_uniform * (float)(r->slot_hi - r->slot_lo));
 	lx_gl.Uniform1i(p->atlas, 0);
 	lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
 	if (p->beam >= 0) {
@@ -1246,10 +1293,28 @@ static void read_depth_atlas(struct lx_renderer *r, uint8_t *rgba)
 	lx_gl.DeleteTextures(1, &tex);
 }
 
+/* Codes of the last shadow pass's slot stretched back over the whole range (a depth
+ * above it, an earlier frame's, as far), so that an atlas reads the same with or without
+ * slots but for the coarser steps. */
+static void codes_from_slot(const struct lx_renderer *r, uint8_t *rgba)
+{
+	double lo = r->slot_lo, span = r->slot_hi - r->slot_lo; /* > 0.01: slots <= LX_DEPTH_SLOTS_MAX */
+	if (lo == 0 && span == 1)
+		return;
+	for (size_t i = 0; i < (size_t)r->texture_width * r->texture_height; i++) {
+		uint8_t *t = rgba + 4 * i;
+		double d = lx_depth_decode_code(t) / (double)LX_DEPTH_MAX_CODE;
+		uint32_t n = d > r->slot_hi ? LX_DEPTH_MAX_CODE
+					    : (uint32_t)lround(fmin(fmax((d - lo) / span, 0), 1) * LX_DEPTH_MAX_CODE);
+		t[0] = (uint8_t)(n >> 16), t[1] = (uint8_t)(n >> 8), t[2] = (uint8_t)n;
+	}
+}
+
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 {
 	if (r->d.depth_texture) {
 		read_depth_atlas(r, rgba);
+		codes_from_slot(r, rgba);
 		return;
 	}
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
@@ -1280,7 +1345,11 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 	lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, r->texture_width, r->texture_height, 0,
 			 GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth);
 	free(depth);
+	/* the codes span the whole range; the next shadow pass starts a new cycle of slots */
+	r->slot_lo = 0, r->slot_hi = 1, r->next_slot = 0;
 }
+
+int lx_renderer_depth_slots(const struct lx_renderer *r) { return r->slots; }
 
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r)
 {

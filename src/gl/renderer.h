@@ -34,6 +34,8 @@ struct lx_renderer_desc {
 	bool clear_whole_atlas;
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
+	int depth_slots; /* --depth-slots: the atlas cleared once every this many frames (renderer.c);
+			  * taken on the depth-texture path of a GPU that is not a tiler, else 1 */
 	enum lx_filter filter;  /* the main pass's shadow filter to start with (shadow_filter.h) */
 };
 
@@ -65,6 +67,8 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 /* Whether the atlas's framebuffer holds its depth in a texture (the depth-texture path),
  * as GL reports the attachment: for tests. */
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r);
+/* The depth slots taken: 1 (the regions cleared every frame) or the desc's depth_slots. */
+int lx_renderer_depth_slots(const struct lx_renderer *r);
 /* Every main-pass variant this renderer may draw with (each count of maps read, each light's
  * pass, each filter set up so far) built and drawn once, a triangle of no area each: a
  * driver compiles a program for the state it is drawn with the first time, which costs a

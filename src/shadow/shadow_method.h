@@ -60,6 +60,10 @@ struct lx_method_options {
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
+	/* The shadow pass (every method): the atlas cleared once every depth_slots frames,
+	 * each frame's depths in its own slot of the depth range (--depth-slots; 0: the
+	 * default, LX_DEPTH_SLOTS_DEFAULT; 1: cleared every frame). */
+	int depth_slots;
 	/* Several lights: light i's maps get light_share[i] of the lixels above (0: all of
 	 * them; a share of area, the sides scaled by its square root); only the first
 	 * max_lights lights are drawn (0: all). */
@@ -69,6 +73,9 @@ struct lx_method_options {
 /* Shares a light may take: a map of a hundredth of the lixels is still ten lixels a side
  * of a 1024-lixel one. */
 #define LX_LIGHT_SHARE_MIN 0.01
+#define LX_DEPTH_SLOTS_DEFAULT 8
+#define LX_DEPTH_SLOTS_MAX 64
+
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
 
