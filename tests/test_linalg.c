@@ -88,6 +88,61 @@ static void normalize_guards_zero(void **state)
 	assert_near(o.x, 0.6, 1e-15);
 }
 
+static double det4_rows(vec4 r[4])
+{
+	/* by elimination with partial pivoting, each swap turning the sign */
+	double a[4][4], d = 1;
+	for (int i = 0; i < 4; i++)
+		a[i][0] = r[i].x, a[i][1] = r[i].y, a[i][2] = r[i].z, a[i][3] = r[i].w;
+	for (int c = 0; c < 4; c++) {
+		int p = c;
+		for (int i = c + 1; i < 4; i++)
+			if (fabs(a[i][c]) > fabs(a[p][c]))
+				p = i;
+		if (p != c)
+			for (int j = 0; j < 4; j++) {
+				double t = a[c][j];
+				a[c][j] = a[p][j], a[p][j] = t;
+			}
+		d *= p != c ? -a[c][c] : a[c][c];
+		if (a[c][c] == 0)
+			return 0;
+		for (int i = c + 1; i < 4; i++)
+			for (int j = c + 1; j < 4; j++)
+				a[i][j] -= a[i][c] / a[c][c] * a[c][j];
+	}
+	return d;
+}
+
+/* v4_cross3: det[a; b; q; v] = c . v for random rows and v, c orthogonal to a, b, q; and
+ * the projected triangle's orientation it gives: a triangle's clip-space x, y, w
+ * determinant equals c(rows) . c(points), so the sign says which way it turns on the screen. */
+static void cross3_is_the_cofactor_vector(void **state)
+{
+	(void)state;
+	uint64_t s = 7;
+	for (int k = 0; k < 200; k++) {
+		vec4 r[4];
+		for (int i = 0; i < 4; i++)
+			r[i] = (vec4){test_rand(&s) * 2 - 1, test_rand(&s) * 2 - 1, test_rand(&s) * 2 - 1, test_rand(&s) * 2 - 1};
+		vec4 c = v4_cross3(r[0], r[1], r[2]);
+		assert_near(v4_dot(c, r[3]), det4_rows(r), 1e-12);
+		for (int i = 0; i < 3; i++)
+			assert_near(v4_dot(c, r[i]), 0, 1e-12);
+		mat4 m = random_matrix(&s);
+		vec4 p[3], q[3];
+		for (int i = 0; i < 3; i++) {
+			p[i] = (vec4){test_rand(&s), test_rand(&s), test_rand(&s), 1};
+			vec4 t = m4_mul_v4(&m, p[i]);
+			q[i] = (vec4){t.x, t.y, t.w, 0}; /* the x, y, w the rasterizer divides */
+		}
+		double area3 = q[0].x * (q[1].y * q[2].z - q[1].z * q[2].y) - q[0].y * (q[1].x * q[2].z - q[1].z * q[2].x) +
+			       q[0].z * (q[1].x * q[2].y - q[1].y * q[2].x);
+		vec4 center = v4_cross3(m4_row(&m, 0), m4_row(&m, 1), m4_row(&m, 3));
+		assert_near(v4_dot(center, v4_cross3(p[0], p[1], p[2])), area3, 1e-12);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -97,6 +152,7 @@ int main(void)
 		cmocka_unit_test(look_at_maps_eye_to_origin_and_view_to_minus_z),
 		cmocka_unit_test(projections_map_near_and_far_to_unit_cube),
 		cmocka_unit_test(normalize_guards_zero),
+		cmocka_unit_test(cross3_is_the_cofactor_vector),
 	};
 	return cmocka_run_group_tests_name("linalg", tests, NULL, NULL);
 }

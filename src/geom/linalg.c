@@ -205,3 +205,17 @@ bool m3_invert(const mat3 *a, mat3 *out)
 }
 
 double v4_len(vec4 a) { return sqrt(v4_dot(a, a)); /* a sum of squares: >= 0 */ }
+
+/* 3x3 determinant of the rows (a, b, q) taken at columns i, j, k */
+static double minor3(const double *a, const double *b, const double *q, int i, int j, int k)
+{
+	return a[i] * (b[j] * q[k] - b[k] * q[j]) - a[j] * (b[i] * q[k] - b[k] * q[i]) + a[k] * (b[i] * q[j] - b[j] * q[i]);
+}
+
+vec4 v4_cross3(vec4 a, vec4 b, vec4 q)
+{
+	/* the cofactors of the last row of [a; b; q; v]: (-1)^(3 + j) times the minor without column j */
+	const double pa[4] = {a.x, a.y, a.z, a.w}, pb[4] = {b.x, b.y, b.z, b.w}, pq[4] = {q.x, q.y, q.z, q.w};
+	return (vec4){-minor3(pa, pb, pq, 1, 2, 3), minor3(pa, pb, pq, 0, 2, 3), -minor3(pa, pb, pq, 0, 1, 3),
+		      minor3(pa, pb, pq, 0, 1, 2)};
+}

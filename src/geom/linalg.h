@@ -62,6 +62,11 @@ static inline double v4_dot(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z
 /* a . (p, 1): the plane a at point p */
 static inline double v4_dot_point(vec4 a, vec3 p) { return a.x * p.x + a.y * p.y + a.z * p.z + a.w; }
 double v4_len(vec4 a);
+/* The vector c with det[a; b; q; v] = c . v for every v (rows): orthogonal to a, b and q.
+ * Of three points (p, 1), the plane through them; of a matrix's x, y and w rows, its
+ * centre of projection, and then det[M p0 | M p1 | M p2] over those rows is
+ * v4_cross3(rows) . v4_cross3(points): the sign of the triangle's projected area. */
+vec4 v4_cross3(vec4 a, vec4 b, vec4 q);
 /* Inverse by Gaussian elimination with partial pivoting; false when singular
  * (pivot below 1e-300 relative to the matrix's largest element). */
 bool m4_invert(const mat4 *a, mat4 *out);

@@ -78,6 +78,19 @@ struct lx_renderer {
 	 * 482 positions) */
 	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* and on the CPU: those indices, and each triangle's plane in object space (v4_cross3
+	 * of its corners), so that a frame draws into a map only the triangles the map's
+	 * culling keeps (turned_triangles) */
+	unsigned short *shadow_index[LX_MAX_PLANES + LX_MAX_CASTERS];
+	vec4 *shadow_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* this frame's kept triangles, per light, map and object: from `first`, `count`
+	 * indices of kept_index, uploaded into kept_ibo */
+	struct {
+		int first, count;
+	} kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	unsigned short *kept_index;
+	int kept_count, kept_room;
+	GLuint kept_ibo;
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint beam_tex[LX_MAX_LIGHTS]; /* a projective light's image, 0 for other lights */
 	int texture_width, texture_height; /* the atlas texture's, which every light's part shares */
@@ -241,6 +254,20 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
 		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)n * sizeof(unsigned short), index, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
+		r->shadow_plane[id] = malloc((size_t)(n / 3 + 1) * sizeof(vec4));
+		ok = r->shadow_plane[id] != NULL;
+		for (int t = 0; ok && t < n / 3; t++) { /* the corners as the GL gets them: floats */
+			vec4 c[3];
+			for (int k = 0; k < 3; k++) {
+				const float *q = pos + 3 * index[3 * t + k];
+				c[k] = (vec4){q[0], q[1], q[2], 1};
+			}
+			vec4 pl = v4_cross3(c[0], c[1], c[2]);
+			double len = v4_len(pl); /* 0 for a triangle of no area, which is never kept */
+			r->shadow_plane[id][t] = len > 0 ? v4_lin(1 / len, pl, 0, pl) : pl;
+		}
+		r->shadow_index[id] = index;
+		index = NULL; /* kept */
 	}
 	free(key), free(pos), free(index);
 	return ok;
@@ -275,12 +302,16 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	lx_gl.GenBuffers(r->objects, r->shadow_ibo);
 	lx_gl.GenBuffers(1, &r->piece_vbo);
 	lx_gl.GenBuffers(1, &r->facing_ibo);
+	lx_gl.GenBuffers(1, &r->kept_ibo);
 	int triangles = 0;
 	for (int i = 0; i < r->objects; i++)
 		triangles += meshes->mesh[i].vertex_count;
 	r->facing_room = triangles;
 	r->facing_index = malloc((size_t)triangles * sizeof(unsigned short) + 1);
-	if (!r->facing_index) {
+	/* at most every triangle in every map of every light */
+	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
+	r->kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
+	if (!r->facing_index || !r->kept_index) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -385,8 +416,13 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		lx_gl.DeleteBuffers(1, &r->piece_vbo);
 	if (r->facing_ibo)
 		lx_gl.DeleteBuffers(1, &r->facing_ibo);
+	if (r->kept_ibo)
+		lx_gl.DeleteBuffers(1, &r->kept_ibo);
+	for (int i = 0; i < LX_MAX_PLANES + LX_MAX_CASTERS; i++)
+		free(r->shadow_index[i]), free(r->shadow_plane[i]);
 	free(r->piece_v);
 	free(r->facing_index);
+	free(r->kept_index);
 	free(r);
 }
 
@@ -573,10 +609,63 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
 	lx_gl.DepthRangef((float)r->slot_lo, (float)r->slot_hi);
 }
 
-/* The casters of a light's map `m` that a lookup can read (drawn[object], a mask of
- * maps: lx_lookup_caster_maps), inside its region. */
+/* Object id's light-clip matrix in map m: the map's, after the object's offset. */
+static mat4 object_light_clip(const struct lx_frame *f, const struct lx_shadow_map *map, int id)
+{
+	mat4 t = m4_translate(f->offset[id]);
+	return m4_mul(&map->light_clip, &t);
+}
+
+/* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
+ * whose image turns clockwise), appended to kept_index: on llvmpipe a triangle the GL
+ * culls still costs its set-up, and half of each closed caster's are culled. The sign
+ * of a triangle's projected area is that of its plane against the map's centre of
+ * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
+ * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
+ * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
+ * it would draw. */
+static void keep_back_faces(struct lx_renderer *r, const mat4 *lc, int light, int m, int id)
+{
+	vec4 centre = v4_cross3(m4_row(lc, 0), m4_row(lc, 1), m4_row(lc, 3));
+	double tolerance = 1e-2 * v4_len(centre);
+	int first = r->kept_count, n = r->shadow_indices[id] / 3;
+	const vec4 *plane = r->shadow_plane[id];
+	const unsigned short *index = r->shadow_index[id];
+	for (int t = 0; t < n && r->kept_count + 3 <= r->kept_room; t++) /* room: every triangle, map and light */
+		if (v4_dot(centre, plane[t]) < tolerance) {
+			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
+			r->kept_count += 3;
+		}
+	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
+}
+
+/* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
+ * lookup can read, lx_lookup_caster_maps) and the triangles each keeps, uploaded at once. */
+static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
+			 int n, unsigned drawn[][LX_MAX_PLANES + LX_MAX_CASTERS])
+{
+	r->kept_count = 0;
+	for (int i = 0; i < n; i++) {
+		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
+		/* with the widest margin; the main pass prepares its own, with its filter's */
+		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
+		for (int id = 0; id < r->objects; id++) {
+			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			for (int m = 0; m < res[i]->map_count; m++)
+				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
+					mat4 lc = object_light_clip(f[i], &res[i]->maps[m], id);
+					keep_back_faces(r, &lc, i, m, id);
+				}
+		}
+	}
+	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
+	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->kept_count * sizeof(unsigned short), r->kept_index,
+			 GL_STREAM_DRAW);
+}
+
+/* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its region. */
 static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const struct lx_atlas *a,
-		     const struct lx_shadow_map *map, int m, const unsigned *drawn)
+		     const struct lx_shadow_map *map, int light, int m, const unsigned *drawn)
 {
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
@@ -587,17 +676,19 @@ static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const stru
 	 * near plane would drag the depth of the triangle's visible part past the far
 	 * plane (a caster beside a table under a grazing light lost its shadow) */
 	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
+	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
 	for (int id = 0; id < r->objects; id++) {
-		if (!(drawn[id] & 1u << m))
+		int count = r->kept[light][m][id].count;
+		if (!(drawn[id] & 1u << m) || count == 0)
 			continue; /* no fill and no vertices for what no lookup reads */
-		mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t);
+		mat4 lc = object_light_clip(f, map, id);
 		float lcf[16];
 		to_float(&lc, lcf);
 		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
-		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
-		lx_gl.DrawElements(GL_TRIANGLES, r->shadow_indices[id], GL_UNSIGNED_SHORT, (const void *)0);
+		lx_gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT,
+				   (const void *)((size_t)r->kept[light][m][id].first * sizeof(unsigned short)));
 	}
 }
 
@@ -613,6 +704,8 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	}
 	if (!any)
 		return;
+	unsigned drawn[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	shadow_draws(r, f, res, n, drawn);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	vertex_arrays(false);
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
@@ -626,16 +719,9 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.Enable(GL_CULL_FACE);
 	lx_gl.CullFace(GL_FRONT);
 	lx_gl.DepthFunc(GL_LESS);
-	for (int i = 0; i < n; i++) {
-		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
-		unsigned drawn[LX_MAX_PLANES + LX_MAX_CASTERS];
-		/* with the widest margin; the main pass prepares its own, with its filter's */
-		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
-		for (int id = 0; id < r->objects; id++)
-			drawn[id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+	for (int i = 0; i < n; i++)
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, f[i], a, &res[i]->maps[m], m, drawn);
-	}
+			draw_map(r, f[i], r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], i, m, drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }
