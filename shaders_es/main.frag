@@ -89,16 +89,8 @@ vec3 projected_light()
 // uniform arrays with a variable is slow or unsupported on small GPUs.
 float served(vec3 p, float w, vec4 region)
 {
-#if defined(LX_UNCHECKED) && LX_READS == 1
-	// The draw's one map serves every pixel of it: the renderer checked the object's part
-	// in view against the map's bounds, by the rounding margin, in front of the light
-	// (lx_lookup_maps). No test: on llvmpipe its four compares cost 0.2-0.4 ms a frame
-	// at 1024x1024.
-	return 1.0;
-#else
 	bvec4 inside = bvec4(greaterThanEqual(p.xy, region.xy), lessThan(p.xy, region.zw));
 	return float(all(inside)) * float(w > 0.0);
-#endif
 }
 #endif
 

@@ -61,13 +61,6 @@ static void every_variant_is_glsl_es_100(void **state)
 							write_variant(&b, "main.vert", defines, false, tag);
 						write_variant(&b, "main.frag", defines, false, tag);
 						write_variant(&b, "main.frag", defines, true, tag);
-						if (reads != 1)
-							continue;
-						/* one map read that serves every pixel of the draw: no test */
-						strncat(defines, "#define LX_UNCHECKED 1\n", sizeof defines - strlen(defines) - 1);
-						strncat(tag, "-unchecked", sizeof tag - strlen(tag) - 1);
-						write_variant(&b, "main.frag", defines, false, tag);
-						write_variant(&b, "main.frag", defines, true, tag);
 					}
 	/* a projective light's shaded variants (the decision reads no light image), with each
 	 * filter, every map read */

@@ -49,7 +49,6 @@ struct draw {
 	unsigned mask;
 	enum draw_kind kind;
 	int first, count;
-	bool unchecked; /* its one map serves every pixel of it: the variant without the test */
 };
 
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
@@ -101,7 +100,6 @@ struct lx_renderer {
 	/* main-pass variants, built when first used: [shading][filter][how many maps a draw
 	 * reads] (whichever they are: a draw puts theirs in the first slots, set_maps) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_MAX_MAPS + 1];
-	struct main_program unchecked[SHADINGS][LX_FILTER_COUNT]; /* one map read, untested (LX_UNCHECKED) */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	bool mediump;
 	float bias_uniform;
@@ -147,13 +145,11 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, int reads, bool unchecked, bool mediump,
-			 bool depth_texture, enum lx_filter filter, char *err, size_t errlen)
+static bool main_program(struct main_program *p, int maps, int shading, int reads, bool mediump, bool depth_texture,
+			 enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
 	lx_main_defines(maps, reads, shading == SHADING_DECISION, mediump, depth_texture, defines, sizeof defines);
-	if (unchecked && reads == 1)
-		strncat(defines, "#define LX_UNCHECKED 1\n", sizeof defines - strlen(defines) - 1);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -197,8 +193,8 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
 		struct main_program *p = &r->variant[shading][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, shading, all, false, r->mediump, r->d.depth_texture, filter,
-					      err, errlen))
+		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->mediump, r->d.depth_texture, filter, err,
+					      errlen))
 			return false;
 	}
 	return true;
@@ -739,27 +735,16 @@ static int maps_in(unsigned mask)
 	return n;
 }
 
-/* The main-pass variant for a shading and the maps a draw reads (unchecked: its one map
- * serves every pixel of it), built when first used; *mask becomes every map when it
- * cannot be (cannot happen once the variant reading every map, built at the start,
- * compiled), an unchecked one the checked one. */
-static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned *mask, bool unchecked)
+/* The main-pass variant for a shading and the maps a draw reads, built when first used;
+ * *mask becomes every map when it cannot be (cannot happen once the variant reading every
+ * map, built at the start, compiled). */
+static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned *mask)
 {
 	int reads = maps_in(*mask);
-	char err[1024];
-	/* not on the mediump path: there the test's removal moves which of the shader's
-	 * steps the compiler keeps in fp16, and 18 of test_filter's 140 mediump images came
-	 * out otherwise (not worse against the reference, but not the same) */
-	if (unchecked && reads == 1 && !r->mediump) {
-		struct main_program *u = &r->unchecked[shading][r->filter];
-		if (u->prog || main_program(u, r->d.map_count, shading, 1, true, r->mediump, r->d.depth_texture, r->filter,
-					    err, sizeof err))
-			return u;
-		fprintf(stderr, "lixel: %s\n", err);
-	}
 	struct main_program *p = &r->variant[shading][r->filter][reads];
 	if (!p->prog) {
-		if (!main_program(p, r->d.map_count, shading, reads, false, r->mediump, r->d.depth_texture, r->filter, err,
+		char err[1024];
+		if (!main_program(p, r->d.map_count, shading, reads, r->mediump, r->d.depth_texture, r->filter, err,
 				  sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
@@ -929,30 +914,29 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
  * small on the screen and costly to draw twice, is one draw: with its maps where a shadow
  * can fall on it, else without. */
 static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int id,
-			struct draw *out, int n, unsigned *whole)
+			struct draw *out, int n)
 {
 	unsigned mask = r->lookup.reads[id]; /* lx_shadow_receiver_maps, prepared by frame_draws */
-	unsigned need = lx_lookup_maps(&r->lookup, id, mask, whole);
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
-			mask = need;
+			mask = lx_lookup_maps(&r->lookup, id, mask);
 		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(&r->lookup, id, mask))
 			mask = 0; /* no shadow can fall on it */
 		int first = r->facing_count, facing = mask ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, WHOLE, 0, 0, false};
+			out[n++] = (struct draw){id, mask, WHOLE, 0, 0};
 			return n;
 		}
 		/* the triangles turned away from the light are in their own shadow: the face
 		 * test decides them, without a lookup (--lookup-region all: with one) */
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, INDEXED, first, facing, false};
+			out[n++] = (struct draw){id, mask, INDEXED, first, facing};
 		if (r->facing_count - first - facing > 0)
 			out[n++] = (struct draw){id, r->d.lookup_everywhere ? mask : 0, INDEXED, first + facing,
-						 r->facing_count - first - facing, false};
+						 r->facing_count - first - facing};
 		return n;
 	}
-	need = r->d.lookup_everywhere ? mask : need;
+	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
 	/* a plane turned away from the light is all in its own shadow: the face test */
 	const struct lx_plane *pl = &r->d.scene->planes[id];
 	vec3 nrm = v3_cross(pl->edge1, pl->edge2), to_light = f->light.directional
@@ -980,7 +964,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			if (span[j].mask == m)
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
-			out[n++] = (struct draw){id, m, PIECES, first, r->piece_vertices - first, false};
+			out[n++] = (struct draw){id, m, PIECES, first, r->piece_vertices - first};
 	}
 	return n;
 }
@@ -1056,11 +1040,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 		int id = (k + r->d.scene->plane_count) % r->objects;
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
 			continue; /* the light reaches none of it */
-		unsigned whole;
-		int from = n;
-		n = object_draws(r, f, res, id, r->draws, n, &whole);
-		for (int k = from; k < n; k++) /* one map read, and it serves all of the object in view */
-			r->draws[k].unchecked = r->draws[k].mask != 0 && r->draws[k].mask == whole;
+		n = object_draws(r, f, res, id, r->draws, n);
 	}
 	if (r->piece_vertices > 0) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
@@ -1273,13 +1253,13 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	 * draws and the planes' pieces come in runs) */
 	struct main_program *p = NULL;
 	unsigned current = 0;
-	bool culling = false, unchecked = false; /* as pass_state left it */
+	bool culling = false; /* as pass_state left it */
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
-		if (!p || d->mask != current || d->unchecked != unchecked) {
-			current = d->mask, unchecked = d->unchecked;
+		if (!p || d->mask != current) {
+			current = d->mask;
 			unsigned reads = current;
-			struct main_program *v = variant_for(r, shading, &reads, unchecked);
+			struct main_program *v = variant_for(r, shading, &reads);
 			if (v != p)
 				use_program(r, v, &u);
 			p = v;
@@ -1313,10 +1293,9 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex[l]);
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
-	for (int reads = 0; reads <= r->d.map_count + (r->d.map_count > 0); reads++) {
-		bool unchecked = reads > r->d.map_count; /* and last, the one map read untested */
-		unsigned mask = unchecked ? 1 : (1u << reads) - 1;
-		struct main_program *p = variant_for(r, shading, &mask, unchecked);
+	for (int reads = 0; reads <= r->d.map_count; reads++) {
+		unsigned mask = (1u << reads) - 1;
+		struct main_program *p = variant_for(r, shading, &mask);
 		use_program(r, p, &u);
 		if (mask)
 			set_maps(r, p, &u, mask);

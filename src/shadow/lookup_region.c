@@ -474,17 +474,15 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	return n < LX_WINDOW_POLY_MAX ? n : LX_WINDOW_POLY_MAX;
 }
 
-unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask, unsigned *whole)
+unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
 	/* the receiver's part in view: its box clipped to the view frustum */
 	const struct lx_frame *f = v->frame;
 	vec3 pts[LX_CONVEX_MAX_POINTS];
 	int np = lx_frustum_box_points(v->frustum, f->bmin[receiver], f->bmax[receiver], pts, LX_CONVEX_MAX_POINTS);
-	unsigned out = 0, all = 0;
-	if (whole)
-		*whole = 0;
 	if (np == 0)
 		return 0; /* not in view */
+	unsigned out = 0;
 	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *map = &v->res->maps[m];
 		if (!(mask & 1u << m))
@@ -508,12 +506,8 @@ unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigne
 						   out_side[3] == np)))
 			continue; /* serves no point of it */
 		out |= 1u << m;
-		if (all_in == np) {
-			all = 1u << m;
+		if (all_in == np)
 			break; /* serves every point of it: the later maps are never read */
-		}
 	}
-	if (whole)
-		*whole = all;
 	return out;
 }

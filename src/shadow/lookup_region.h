@@ -84,11 +84,8 @@ bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mas
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
  * the shader reads the first map, in order, that serves a point, so a map that serves no
  * point of the receiver's part in view is dropped, and so are the maps after one that
- * serves all of it, by the margin (the shader's rounding). *whole (unless NULL): that
- * map, the last returned, which serves every point of the part by the margin, in front of
- * the light, or 0: a draw reading it alone needs no test of where it serves (the main
- * pass's unchecked variant). */
-unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask, unsigned *whole);
+ * serves all of it, by the margin (the shader's rounding). */
+unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
 /* The maps of the frame whose shadow pass must draw object c, as a mask (v prepared with
  * the largest margin of any filter the main pass may use on them): those where c's
