@@ -5,6 +5,11 @@
 #ifndef LX_READS
 #define LX_READS 0
 #endif
+// The test of where a map serves, as four edge functions of its homogeneous coordinates,
+// interpolated like them (main.frag); not on the mediump path, whose fp16 test stays as it was.
+#if LX_READS > 0 && !defined(LX_FORCE_MEDIUMP) && !defined(LX_NO_EDGES)
+#define LX_EDGES 1
+#endif
 // Main pass. LX_SHADOWED: the method has shadow maps (the face test); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order
 // (one variant serves every set of that many maps), a varying each and no more: every
@@ -14,6 +19,9 @@ uniform vec3 u_offset; // object translation in world space
 uniform vec4 u_light;  // xyz: position (w = 1) or direction of travel (w = 0)
 #if LX_READS > 0
 uniform mat4 u_shadow_tex[LX_READS]; // atlas (s, t, depth, q) <- world, per map read
+#ifdef LX_EDGES
+uniform vec4 u_region[LX_READS]; // the texture-space bounds each map serves (main.frag)
+#endif
 #endif
 #if LX_SHADOWED
 // Which side of its face a point is on, as seen from the light: affine in the position,
@@ -22,15 +30,27 @@ varying float v_facing;
 #endif
 #if LX_READS > 0
 varying vec4 v_shadow0;
+#ifdef LX_EDGES
+varying vec4 v_edges0;
+#endif
 #endif
 #if LX_READS > 1
 varying vec4 v_shadow1;
+#ifdef LX_EDGES
+varying vec4 v_edges1;
+#endif
 #endif
 #if LX_READS > 2
 varying vec4 v_shadow2;
+#ifdef LX_EDGES
+varying vec4 v_edges2;
+#endif
 #endif
 #if LX_READS > 3
 varying vec4 v_shadow3;
+#ifdef LX_EDGES
+varying vec4 v_edges3;
+#endif
 #endif
 attribute vec3 a_position;
 attribute vec3 a_normal;
@@ -41,6 +61,15 @@ varying vec3 v_normal;
 // A spotlight or projector [Segal]: world -> (s q, t q, d, q) of its image, q = d its depth.
 uniform mat4 u_beam;
 varying vec4 v_beam;
+#endif
+
+#ifdef LX_EDGES
+// (s - x0 q, t - y0 q, x1 q - s, y1 q - t): where q > 0, the first two >= 0 and the last
+// two > 0 exactly where (s, t) / q lies in [x0, x1) x [y0, y1)
+vec4 edges(vec4 c, vec4 region)
+{
+	return vec4(c.xy - region.xy * c.w, region.zw * c.w - c.xy);
+}
 #endif
 
 void main()
@@ -56,15 +85,27 @@ void main()
 #endif
 #if LX_READS > 0
 	v_shadow0 = u_shadow_tex[0] * world;
+#ifdef LX_EDGES
+	v_edges0 = edges(v_shadow0, u_region[0]);
+#endif
 #endif
 #if LX_READS > 1
 	v_shadow1 = u_shadow_tex[1] * world;
+#ifdef LX_EDGES
+	v_edges1 = edges(v_shadow1, u_region[1]);
+#endif
 #endif
 #if LX_READS > 2
 	v_shadow2 = u_shadow_tex[2] * world;
+#ifdef LX_EDGES
+	v_edges2 = edges(v_shadow2, u_region[2]);
+#endif
 #endif
 #if LX_READS > 3
 	v_shadow3 = u_shadow_tex[3] * world;
+#ifdef LX_EDGES
+	v_edges3 = edges(v_shadow3, u_region[3]);
+#endif
 #endif
 	gl_Position = u_view_proj * world;
 }
