@@ -840,15 +840,16 @@ static void depth_texture_path_decides_as_highp(void **state)
 
 /* Depth slots (renderer.c): the atlas cleared once every 8 frames, each frame's depths in
  * a slot below the earlier frames', decides as clearing it every frame, but for the
- * coarser steps of a slot (21 bits): every method, both built-in scenes, 20 frames of the
- * casters bouncing (two and a half cycles of slots, the maps moving over the atlas as
+ * coarser steps of a slot (21 bits): every method, both built-in scenes, 12 frames of the
+ * casters bouncing (a cycle of slots and half another, the maps moving over the atlas as
  * the casters do, onto texels earlier frames wrote), then every standard configuration
  * one after another (the layouts jumping). An earlier frame's depth read as near would
- * show as a shadow where none falls, on many pixels. */
+ * show as a shadow where none falls, on many pixels (675 on the frame after a wrap whose
+ * clear was left out). */
 static void depth_slots_decide_as_clearing_every_frame(void **state)
 {
 	(void)state;
-	enum { w = 256, h = 192, frames = 20, most_per_frame = 3 };
+	enum { w = 160, h = 120, frames = 12, most_per_frame = 3 };
 	char err[512];
 	struct decisions dc = decisions_alloc(w, h);
 	long views = 0, differ = 0, shadowed = 0, worst = 0;
@@ -874,7 +875,7 @@ static void depth_slots_decide_as_clearing_every_frame(void **state)
 				if (n >= frames)
 					lx_config_apply(&lx_configs[n - frames], &scene);
 				struct lx_frame frame;
-				assert_true(lx_frame_setup(&frame, &scene, &meshes, n < frames ? 0.11 * n : 0.4, w, h, err,
+				assert_true(lx_frame_setup(&frame, &scene, &meshes, n < frames ? 0.17 * n : 0.4, w, h, err,
 							   sizeof err));
 				for (int k = 0; k < 2; k++) {
 					lx_method_run_shadows(&run[k], &frame);
@@ -897,7 +898,7 @@ static void depth_slots_decide_as_clearing_every_frame(void **state)
 	print_message("%ld frames: %ld pixels of %ld shadowed ones decided otherwise with depth slots (at most %ld in "
 		      "a frame of %d)\n",
 		      views, differ, shadowed, worst, w * h);
-	assert_true(views > 300 && shadowed > 100000);
+	assert_true(views > 250 && shadowed > 100000);
 	decisions_free(&dc);
 }
 
