@@ -617,8 +617,9 @@ static mat4 object_light_clip(const struct lx_frame *f, const struct lx_shadow_m
 }
 
 /* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
- * whose image turns clockwise), appended to kept_index: on llvmpipe a triangle the GL
- * culls still costs its set-up, and half of each closed caster's are culled. The sign
+ * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
+ * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
+ * llvmpipe little, 0.015-0.06 ms a frame), and half of each closed caster's are. The sign
  * of a triangle's projected area is that of its plane against the map's centre of
  * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
  * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on

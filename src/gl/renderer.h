@@ -59,10 +59,13 @@ void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *
 void lx_renderer_decision_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res);
 /* The main target's pixels, RGBA, rows bottom to top (width * height * 4 bytes). */
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba);
-/* The atlas texture's texels, RGBA (its texture_width * texture_height * 4 bytes). */
+/* The atlas texture's texels, RGBA (its texture_width * texture_height * 4 bytes), as
+ * 24-bit codes over the whole depth range (with depth slots, the last pass's slot
+ * stretched back over it, an earlier frame's depth as far). */
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba);
-/* The atlas texture's texels replaced (texture_width * texture_height * 4 bytes, RGBA): what the
- * next main pass reads, for tests of what a lookup may read. */
+/* The atlas texture's texels replaced (texture_width * texture_height * 4 bytes, RGBA, codes
+ * over the whole range): what the next main pass reads, for tests of what a lookup may
+ * read. With depth slots, the next shadow pass starts a new cycle (a whole clear). */
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 /* Whether the atlas's framebuffer holds its depth in a texture (the depth-texture path),
  * as GL reports the attachment: for tests. */
