@@ -80,7 +80,7 @@ struct lx_renderer {
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* and on the CPU: those indices, and each triangle's plane in object space (v4_cross3
 	 * of its corners), so that a frame draws into a map only the triangles the map's
-	 * culling keeps (turned_triangles) */
+	 * culling keeps (keep_back_faces) */
 	unsigned short *shadow_index[LX_MAX_PLANES + LX_MAX_CASTERS];
 	vec4 *shadow_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* this frame's kept triangles, per light, map and object: from `first`, `count`
