@@ -84,9 +84,11 @@ struct lx_renderer {
 	unsigned short *shadow_index[LX_MAX_PLANES + LX_MAX_CASTERS];
 	vec4 *shadow_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* this frame's kept triangles, per light, map and object: from `first`, `count`
-	 * indices of kept_index, uploaded into kept_ibo */
+	 * indices of kept_index, uploaded into kept_ibo, and the object's light-clip matrix
+	 * they were chosen with, which the draw takes */
 	struct {
 		int first, count;
+		float light_clip[16];
 	} kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
 	unsigned short *kept_index;
 	int kept_count, kept_room;
@@ -109,8 +111,8 @@ struct lx_renderer {
 	 * (a fill like any other draw on an immediate-mode renderer) instead of every frame.
 	 * 1: every frame's regions cleared, the whole range. */
 	int slots;
-	int next_slot;          /* the next shadow pass's; 0: it clears the whole atlas first */
-	double slot_lo, slot_hi; /* the last shadow pass's range, which the main pass reads */
+	int slot; /* the last shadow pass's, which the main pass reads (slot_range); -1: none yet,
+		   * or the atlas written whole (lx_renderer_write_atlas), the whole range */
 };
 
 static void to_float(const mat4 *m, float out[16])
@@ -458,7 +460,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
 	r->slots = d->depth_texture && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
-	r->slot_hi = 1;
+	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
 	r->texture_height = d->lights[0].atlas->texture_height;
 	bool ok = true;
@@ -589,6 +591,18 @@ static void clear_regions(struct lx_renderer *r, const struct lx_frame *const *f
  * an earlier frame's nearest */
 #define SLOT_GAP (16.0 / 16777215.0)
 
+/* The depth range the last shadow pass wrote: slot k of `slots`, counted down from the
+ * top, or the whole range (no slots, or slot -1). */
+static void slot_range(const struct lx_renderer *r, double *lo, double *hi)
+{
+	if (r->slots <= 1 || r->slot < 0) {
+		*lo = 0, *hi = 1;
+		return;
+	}
+	*lo = (double)(r->slots - 1 - r->slot) / r->slots;
+	*hi = *lo + 1.0 / r->slots - SLOT_GAP;
+}
+
 /* This frame's depth range, and what must be far before the casters are drawn: with
  * slots, the whole atlas once every `slots` frames (the maps move over the atlas from
  * frame to frame, onto texels an earlier frame of the cycle may have written), and
@@ -600,20 +614,12 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
 		clear_regions(r, f, res, n);
 		return;
 	}
-	int k = r->next_slot;
-	r->next_slot = (k + 1) % r->slots;
-	if (k == 0)
+	r->slot = (r->slot + 1) % r->slots;
+	if (r->slot == 0)
 		clear_atlas(r);
-	r->slot_lo = (double)(r->slots - 1 - k) / r->slots;
-	r->slot_hi = r->slot_lo + 1.0 / r->slots - SLOT_GAP;
-	lx_gl.DepthRangef((float)r->slot_lo, (float)r->slot_hi);
-}
-
-/* Object id's light-clip matrix in map m: the map's, after the object's offset. */
-static mat4 object_light_clip(const struct lx_frame *f, const struct lx_shadow_map *map, int id)
-{
-	mat4 t = m4_translate(f->offset[id]);
-	return m4_mul(&map->light_clip, &t);
+	double lo, hi;
+	slot_range(r, &lo, &hi);
+	lx_gl.DepthRangef((float)lo, (float)hi);
 }
 
 /* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
@@ -625,9 +631,12 @@ static mat4 object_light_clip(const struct lx_frame *f, const struct lx_shadow_m
  * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
-static void keep_back_faces(struct lx_renderer *r, const mat4 *lc, int light, int m, int id)
+static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
+			    int m, int id)
 {
-	vec4 centre = v4_cross3(m4_row(lc, 0), m4_row(lc, 1), m4_row(lc, 3));
+	mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t); /* the object's */
+	to_float(&lc, r->kept[light][m][id].light_clip);
+	vec4 centre = v4_cross3(m4_row(&lc, 0), m4_row(&lc, 1), m4_row(&lc, 3));
 	double tolerance = 1e-2 * v4_len(centre);
 	int first = r->kept_count, n = r->shadow_indices[id] / 3;
 	const vec4 *plane = r->shadow_plane[id];
@@ -653,20 +662,19 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			for (int m = 0; m < res[i]->map_count; m++)
-				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
-					mat4 lc = object_light_clip(f[i], &res[i]->maps[m], id);
-					keep_back_faces(r, &lc, i, m, id);
-				}
+				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
+					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id);
 		}
 	}
+	/* left bound for the draws (nothing else of the pass binds an index buffer) */
 	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
 	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->kept_count * sizeof(unsigned short), r->kept_index,
 			 GL_STREAM_DRAW);
 }
 
 /* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its region. */
-static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const struct lx_atlas *a,
-		     const struct lx_shadow_map *map, int light, int m, const unsigned *drawn)
+static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_shadow_map *map, int light, int m,
+		     const unsigned *drawn)
 {
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
@@ -677,15 +685,11 @@ static void draw_map(struct lx_renderer *r, const struct lx_frame *f, const stru
 	 * near plane would drag the depth of the triangle's visible part past the far
 	 * plane (a caster beside a table under a grazing light lost its shadow) */
 	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
-	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
 	for (int id = 0; id < r->objects; id++) {
 		int count = r->kept[light][m][id].count;
 		if (!(drawn[id] & 1u << m) || count == 0)
 			continue; /* no fill and no vertices for what no lookup reads */
-		mat4 lc = object_light_clip(f, map, id);
-		float lcf[16];
-		to_float(&lc, lcf);
-		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, lcf);
+		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, r->kept[light][m][id].light_clip);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
 		lx_gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT,
@@ -722,7 +726,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.DepthFunc(GL_LESS);
 	for (int i = 0; i < n; i++)
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, f[i], r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], i, m, drawn[i]);
+			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], i, m, drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }
@@ -977,13 +981,14 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 			 float tex[][16], float region[][4], float clamp[][4])
 {
-	double tw = r->texture_width, th = r->texture_height;
+	double tw = r->texture_width, th = r->texture_height, lo, hi;
+	slot_range(r, &lo, &hi);
 	for (int m = 0; m < r->d.map_count; m++) {
 		const struct lx_shadow_map *map = &res->maps[m];
 		mat4 t = map->rendered ? lx_shadow_texture_matrix(atlas, map->region, &map->light_clip) : m4_identity();
 		if (map->rendered) /* depth d -> the slot's lo + (hi - lo) d, as the shadow pass wrote it */
 			for (int c = 0; c < 4; c++)
-				t.m[c * 4 + 2] = (r->slot_hi - r->slot_lo) * t.m[c * 4 + 2] + r->slot_lo * t.m[c * 4 + 3];
+				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
 		to_float(&t, tex[m]);
 		const struct lx_region *g = &atlas->regions[map->region];
 		clamp[m][0] = (float)((g->x + 0.5) / tw), clamp[m][1] = (float)((g->y + 0.5) / th);
@@ -1159,7 +1164,9 @@ static void use_program(const struct lx_renderer *r, const struct main_program *
 	lx_gl.Uniform4f(p->light, u->light[0], u->light[1], u->light[2], u->light[3]);
 	lx_gl.Uniform3fv(p->light_color, 1, u->light_color);
 	/* the same depth difference as without slots: a slot's code spans `slots` codes */
-	lx_gl.Uniform1f(p->bias, r->bias_uniform * (float)(r->slot_hi - r->slot_lo));
+	double lo, hi;
+	slot_range(r, &lo, &hi);
+	lx_gl.Uniform1f(p->bias, r->bias_uniform * (float)(hi - lo));
 	lx_gl.Uniform1i(p->atlas, 0);
 	lx_gl.Uniform4f(p->texel, (float)w, (float)h, (float)(1.0 / w), (float)(1.0 / h));
 	if (p->beam >= 0) {
@@ -1385,13 +1392,15 @@ static void read_depth_atlas(struct lx_renderer *r, uint8_t *rgba)
  * slots but for the coarser steps. */
 static void codes_from_slot(const struct lx_renderer *r, uint8_t *rgba)
 {
-	double lo = r->slot_lo, span = r->slot_hi - r->slot_lo; /* > 0.01: slots <= LX_DEPTH_SLOTS_MAX */
+	double lo, hi;
+	slot_range(r, &lo, &hi);
+	double span = hi - lo; /* > 0.01: slots <= LX_DEPTH_SLOTS_MAX */
 	if (lo == 0 && span == 1)
 		return;
 	for (size_t i = 0; i < (size_t)r->texture_width * r->texture_height; i++) {
 		uint8_t *t = rgba + 4 * i;
 		double d = lx_depth_decode_code(t) / (double)LX_DEPTH_MAX_CODE;
-		uint32_t n = d > r->slot_hi ? LX_DEPTH_MAX_CODE
+		uint32_t n = d > hi ? LX_DEPTH_MAX_CODE
 					    : (uint32_t)lround(fmin(fmax((d - lo) / span, 0), 1) * LX_DEPTH_MAX_CODE);
 		t[0] = (uint8_t)(n >> 16), t[1] = (uint8_t)(n >> 8), t[2] = (uint8_t)n;
 	}
@@ -1433,7 +1442,7 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 			 GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth);
 	free(depth);
 	/* the codes span the whole range; the next shadow pass starts a new cycle of slots */
-	r->slot_lo = 0, r->slot_hi = 1, r->next_slot = 0;
+	r->slot = -1;
 }
 
 int lx_renderer_depth_slots(const struct lx_renderer *r) { return r->slots; }
