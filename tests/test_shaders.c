@@ -46,6 +46,7 @@ static void every_variant_is_glsl_es_100(void **state)
 	assert_non_null(mkdtemp(b.dir));
 	b.files = 0, b.list[0] = 0;
 	char defines[360], tag[64];
+	static const enum lx_depth_precision paths[3] = {LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP, LX_DEPTH_TEXTURE};
 	/* the main pass: every count of maps, every count of them read, shaded or decision,
 	 * each depth path (0 highp, 1 mediump, 2 highp with the maps in a depth texture),
 	 * every shadow filter, and the fragment shader under the lima simulation */
@@ -54,7 +55,7 @@ static void every_variant_is_glsl_es_100(void **state)
 			for (int decision = 0; decision < 2; decision++)
 				for (int path = 0; path < 3; path++)
 					for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-						lx_main_defines(maps, reads, decision, path == 1, path == 2, defines, sizeof defines);
+						lx_main_defines(maps, reads, decision, paths[path], defines, sizeof defines);
 						strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 						snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d", maps, reads, decision, path, filter);
 						if (filter == 0) /* the vertex shader reads no filter */
@@ -67,7 +68,7 @@ static void every_variant_is_glsl_es_100(void **state)
 	for (int maps = 0; maps <= 4; maps++)
 		for (int path = 0; path < 3; path++)
 			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-				lx_main_defines(maps, maps, false, path == 1, path == 2, defines, sizeof defines);
+				lx_main_defines(maps, maps, false, paths[path], defines, sizeof defines);
 				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, path, filter);
@@ -76,13 +77,12 @@ static void every_variant_is_glsl_es_100(void **state)
 				write_variant(&b, "main.frag", defines, false, tag);
 				write_variant(&b, "main.frag", defines, true, tag);
 			}
-	for (int mediump = 0; mediump < 2; mediump++)
-		for (int texture = 0; texture < 2 - mediump; texture++)
-			for (int lima = 0; lima < 2; lima++) {
-				const char *d = lx_shadow_defines(mediump, texture);
-				write_variant(&b, "shadow_depth.vert", d, false, "shadow");
-				write_variant(&b, "shadow_depth.frag", d, lima, "shadow");
-			}
+	for (int path = 0; path < 3; path++)
+		for (int lima = 0; lima < 2; lima++) {
+			const char *d = lx_shadow_defines(paths[path]);
+			write_variant(&b, "shadow_depth.vert", d, false, "shadow");
+			write_variant(&b, "shadow_depth.frag", d, lima, "shadow");
+		}
 	for (const char *const *f = (const char *const[]){"atlas_clear.vert", "atlas_clear.frag", "atlas_readback.frag",
 							    "overlay.vert", "overlay.frag", NULL};
 	     *f; f++)

@@ -56,8 +56,7 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 1;
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .caps = caps,
 				      .map_count = mr->lights[0].atlas.count, .width = width, .height = height,
-				      .mediump = mr->depth.taken == LX_DEPTH_MEDIUMP,
-				      .depth_texture = mr->depth.taken == LX_DEPTH_TEXTURE, .bias_codes = bias_codes,
+				      .depth = mr->depth.taken, .bias_codes = bias_codes,
 				      .to_window = to_window,
 				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count,
 				      .depth_slots = mr->options.depth_slots > 0 ? mr->options.depth_slots : LX_DEPTH_SLOTS_DEFAULT};

@@ -103,7 +103,6 @@ struct lx_renderer {
 	 * reads] (whichever they are: a draw puts theirs in the first slots, set_maps) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
-	bool mediump;
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
 	 * into the next one down (glDepthRange), below every depth an earlier frame left, so
@@ -114,6 +113,10 @@ struct lx_renderer {
 	int slot; /* the last shadow pass's, which the main pass reads (slot_range); -1: none yet,
 		   * or the atlas written whole (lx_renderer_write_atlas), the whole range */
 };
+
+/* The depth path's two departures from 24-bit codes in RGBA8. */
+static bool mediump(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_MEDIUMP; }
+static bool depth_texture(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_TEXTURE; }
 
 static void to_float(const mat4 *m, float out[16])
 {
@@ -147,11 +150,11 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, int reads, bool mediump, bool depth_texture,
+static bool main_program(struct main_program *p, int maps, int shading, int reads, enum lx_depth_precision path,
 			 enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
-	lx_main_defines(maps, reads, shading == SHADING_DECISION, mediump, depth_texture, defines, sizeof defines);
+	lx_main_defines(maps, reads, shading == SHADING_DECISION, path, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -195,8 +198,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
 		struct main_program *p = &r->variant[shading][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->mediump, r->d.depth_texture, filter, err,
-					      errlen))
+		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->d.depth, filter, err, errlen))
 			return false;
 	}
 	return true;
@@ -281,7 +283,7 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_renderer_desc *d = &r->d;
 	r->shadow_prog = lx_program_build("shadow_depth.vert", "shadow_depth.frag",
-					  lx_shadow_defines(r->mediump, d->depth_texture), err, errlen);
+					  lx_shadow_defines(d->depth), err, errlen);
 	if (!r->shadow_prog || !lx_renderer_set_filter(r, d->filter, err, errlen))
 		return false;
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
@@ -340,7 +342,7 @@ static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 	const struct lx_renderer_desc *d = &r->d;
 	/* the depth-texture path: the texture is the atlas's depth and its only attachment, so
 	 * the shadow pass writes no colour */
-	bool dt = d->depth_texture;
+	bool dt = d->depth == LX_DEPTH_TEXTURE;
 	r->atlas_tex = dt ? lx_texture_depth(r->texture_width, r->texture_height)
 			  : lx_texture_rgba8(r->texture_width, r->texture_height);
 	if (!framebuffer(&r->atlas_fbo, dt ? 0 : r->atlas_tex, dt ? r->atlas_tex : 0, &r->atlas_depth, r->texture_width,
@@ -454,12 +456,11 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->objects = d->meshes->count;
 	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
-	r->mediump = d->mediump;
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
-	r->bias_uniform = (float)(r->mediump ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
+	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
-	r->slots = d->depth_texture && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
+	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
 	r->texture_height = d->lights[0].atlas->texture_height;
@@ -539,7 +540,7 @@ static void clear_region(struct lx_renderer *r, const struct lx_atlas *a, const 
  * lixels farther than a NEAREST one. */
 static double lookup_margin(const struct lx_renderer *r, enum lx_filter filter)
 {
-	return (r->mediump ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(filter);
+	return (mediump(r) ? LX_LOOKUP_MARGIN_MEDIUMP : LX_LOOKUP_MARGIN_HIGHP) + lx_filter_reach(filter);
 }
 
 /* The shadow pass's margin: the widest filter's, since the main pass may change filters
@@ -749,8 +750,7 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, unsi
 	struct main_program *p = &r->variant[shading][r->filter][reads];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, reads, r->mediump, r->d.depth_texture, r->filter, err,
-				  sizeof err)) {
+		if (!main_program(p, r->d.map_count, shading, reads, r->d.depth, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count];
@@ -1408,7 +1408,7 @@ static void codes_from_slot(const struct lx_renderer *r, uint8_t *rgba)
 
 void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 {
-	if (r->d.depth_texture) {
+	if (depth_texture(r)) {
 		read_depth_atlas(r, rgba);
 		codes_from_slot(r, rgba);
 		return;
@@ -1423,7 +1423,7 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	/* the same size and format again: the texture (and the framebuffer holding it) stays */
-	if (!r->d.depth_texture) {
+	if (!depth_texture(r)) {
 		lx_gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->texture_width, r->texture_height, 0, GL_RGBA,
 				 GL_UNSIGNED_BYTE, rgba);
 		return;

@@ -3,6 +3,7 @@
  * underneath. */
 #ifndef LX_RENDERER_H
 #define LX_RENDERER_H
+#include "depth_selftest.h"
 #include "gl_caps.h"
 #include "shadow_method.h"
 #include "shadow_filter.h"
@@ -25,9 +26,11 @@ struct lx_renderer_desc {
 	} lights[LX_MAX_LIGHTS];
 	int map_count; /* maps the method returns per frame and light */
 	int width, height;
-	bool mediump;       /* the fragment shaders' 11-bit mediump depth path (lx_depth_choose) */
-	bool depth_texture; /* the maps' depth in a depth texture, not RGBA8 (the same choice) */
-	double bias_codes;  /* depth bias in 24-bit depth codes */
+	/* the depth path lx_depth_choose took: 24-bit codes in RGBA8 (LX_DEPTH_HIGHP, and
+	 * LX_DEPTH_AUTO, a desc's zero, as that), 11-bit ones at mediump (LX_DEPTH_MEDIUMP) or
+	 * the maps in a depth texture (LX_DEPTH_TEXTURE) */
+	enum lx_depth_precision depth;
+	double bias_codes; /* depth bias in 24-bit depth codes */
 	bool to_window;     /* the main pass draws into the default framebuffer (a window) */
 	/* clear the atlas once per frame, as on a tiler (caps->tiler), here too; also set by
 	 * LIXEL_CLEAR_WHOLE_ATLAS=1 in the environment, so that the tests run that path */

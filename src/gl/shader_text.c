@@ -108,14 +108,16 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 	return src;
 }
 
-const char *lx_shadow_defines(bool mediump, bool depth_texture)
+const char *lx_shadow_defines(enum lx_depth_precision path)
 {
-	return mediump ? "#define LX_FORCE_MEDIUMP 1\n" : depth_texture ? "#define LX_DEPTH_TEXTURE 1\n" : NULL;
+	return path == LX_DEPTH_MEDIUMP ? "#define LX_FORCE_MEDIUMP 1\n"
+	       : path == LX_DEPTH_TEXTURE ? "#define LX_DEPTH_TEXTURE 1\n"
+					  : NULL;
 }
 
-void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len)
+void lx_main_defines(int maps, int reads, bool decision, enum lx_depth_precision path, char *out, size_t len)
 {
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s%s", maps > 0, reads,
-		 decision ? "#define LX_DECISION 1\n" : "", mediump ? "#define LX_FORCE_MEDIUMP 1\n" : "",
-		 depth_texture ? "#define LX_DEPTH_TEXTURE 1\n" : "");
+	const char *p = lx_shadow_defines(path);
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n%s%s", maps > 0, reads,
+		 decision ? "#define LX_DECISION 1\n" : "", p ? p : "");
 }

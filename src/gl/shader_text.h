@@ -3,6 +3,7 @@
  * line and its "//!include FILE" lines expanded. */
 #ifndef LX_SHADER_TEXT_H
 #define LX_SHADER_TEXT_H
+#include "depth_selftest.h"
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -12,10 +13,10 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
 		     size_t errlen);
 /* The main pass's defines for a variant: how many maps the method has (any: the face
  * test), how many of them a draw reads (0 to maps; the draw puts them in the first slots),
- * the decision output, the mediump depth path, the maps in a depth texture. */
-void lx_main_defines(int maps, int reads, bool decision, bool mediump, bool depth_texture, char *out, size_t len);
+ * the decision output, the depth path (LX_DEPTH_AUTO as LX_DEPTH_HIGHP). */
+void lx_main_defines(int maps, int reads, bool decision, enum lx_depth_precision path, char *out, size_t len);
 /* The shadow pass's defines for a depth path (NULL: none). */
-const char *lx_shadow_defines(bool mediump, bool depth_texture);
+const char *lx_shadow_defines(enum lx_depth_precision path);
 
 /* Whether LIXEL_SIMULATE_LIMA=1 is set: fragment shaders are then compiled with every
  * highp made mediump (Mesa's lima computes fragments in fp16 while claiming highp). */
