@@ -662,6 +662,24 @@ static void decisions_free(struct decisions *d)
 	lx_platform_destroy(d->plat);
 }
 
+/* Both runs' shadow passes and decisions of one frame (w x h): the same object at every
+ * pixel, asserted; returns how many pixels they decide otherwise, and adds the first run's
+ * shadowed pixels to *shadowed. */
+static long decide_both(struct decisions *dc, struct lx_method_run run[2], const struct lx_frame *f, int w, int h,
+			long *shadowed)
+{
+	for (int k = 0; k < 2; k++) {
+		lx_method_run_shadows(&run[k], f);
+		lx_method_run_decision(&run[k], 0, dc->rgba, dc->obj[k], dc->sh[k]);
+	}
+	long d = 0;
+	for (long i = 0; i < (long)w * h; i++) {
+		assert_int_equal(dc->obj[0][i], dc->obj[1][i]);
+		d += dc->sh[0][i] != dc->sh[1][i], *shadowed += dc->sh[0][i] != 0;
+	}
+	return d;
+}
+
 /* --lookup-region footprint (the default) draws without a lookup wherever no other
  * object's shadow can fall, and casters with only the maps that serve them: against
  * --lookup-region all, no pixel's decision or object may change but where all reads a
@@ -809,15 +827,7 @@ static void depth_texture_path_decides_as_highp(void **state)
 				lx_config_apply(&lx_configs[c], &scene);
 				struct lx_frame frame;
 				assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
-				for (int k = 0; k < 2; k++) {
-					lx_method_run_shadows(&run[k], &frame);
-					lx_method_run_decision(&run[k], 0, dc.rgba, dc.obj[k], dc.sh[k]);
-				}
-				long d = 0;
-				for (long i = 0; i < (long)w * h; i++) {
-					assert_int_equal(dc.obj[0][i], dc.obj[1][i]);
-					d += dc.sh[0][i] != dc.sh[1][i], shadowed += dc.sh[0][i] != 0;
-				}
+				long d = decide_both(&dc, run, &frame, w, h, &shadowed);
 				if (c == 0)
 					worst_code = fmax(worst_code, atlas_codes_agree(run));
 				if (d > 0)
@@ -877,15 +887,7 @@ static void depth_slots_decide_as_clearing_every_frame(void **state)
 				struct lx_frame frame;
 				assert_true(lx_frame_setup(&frame, &scene, &meshes, n < frames ? 0.17 * n : 0.4, w, h, err,
 							   sizeof err));
-				for (int k = 0; k < 2; k++) {
-					lx_method_run_shadows(&run[k], &frame);
-					lx_method_run_decision(&run[k], 0, dc.rgba, dc.obj[k], dc.sh[k]);
-				}
-				long d = 0;
-				for (long p = 0; p < (long)w * h; p++) {
-					assert_int_equal(dc.obj[0][p], dc.obj[1][p]);
-					d += dc.sh[0][p] != dc.sh[1][p], shadowed += dc.sh[0][p] != 0;
-				}
+				long d = decide_both(&dc, run, &frame, w, h, &shadowed);
 				if (d > most_per_frame)
 					fail_msg("%s scene, %s, frame %d: %ld pixels decided otherwise with depth slots", *sn, m, n, d);
 				differ += d, views++, worst = d > worst ? d : worst;
