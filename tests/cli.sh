@@ -67,6 +67,8 @@ for platform in osmesa egl; do
       grep -q "$key" "$tmp/json" && ok || no "$platform: JSON lacks $key"
     done
     grep -qiE 'nan|inf' "$tmp/json" && no "$platform: JSON holds NaN or Infinity" || ok
+    # without a filter or --light-size, --measure skips the soft reference (seconds a frame at 1024^2)
+    grep -q '"soft_error_pct"' "$tmp/json" && no "$platform: --measure computed the soft reference" || ok
     [ "$(wc -l <"$tmp/json")" -eq 1 ] && ok || no "$platform: JSON is not one line"
     # a PNG starts with \211PNG
     [ "$(head -c 4 "$tmp/out.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok || no "$platform: not a PNG"
@@ -92,6 +94,8 @@ if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png"
     [ -n "$n" ] && [ "$n" -gt 60000 ] && [ "$n" -le 122500 ] && ok || no "plane map $name holds '$n' lixels, expected its 350^2 budget mostly used"
   done
   grep -qiE 'nan|inf' "$tmp/json" && no "plane JSON holds NaN or Infinity" || ok
+  # the depth path the self-test chose (llvmpipe: the depth texture)
+  grep -q '"depth_path": "highp24-texture", "depth_selftest": "passed"' "$tmp/json" && ok || no "depth path: $(cat "$tmp/json")"
 else
   no "default render failed: $(cat "$tmp/stderr")"
 fi
@@ -181,7 +185,7 @@ if "$lixel" bench --size 64x48 --frames 1 --warmup 0 --json --csv "$tmp/b.csv" -
 else
   no "bench failed: $(cat "$tmp/bench.err")"
 fi
-"$lixel" bench --size 48x32 --frames 2 --warmup 0 --methods uniform,plane --configs low >"$tmp/bench.txt" 2>&1 &&
+"$lixel" bench --size 48x32 --frames 2 --warmup 0 --methods uniform,plane,uniform/all,tsm/footprint --configs low >"$tmp/bench.txt" 2>&1 &&
   grep -q '^\[plane\] config=low: FrameTime: ' "$tmp/bench.txt" && grep -q '^uniform ' "$tmp/bench.txt" && ok ||
   no "bench text: $(cat "$tmp/bench.txt")"
 # the shadow passes and the main pass apart, per method
@@ -196,11 +200,9 @@ done
 cmp -s "$tmp/d-footprint.png" "$tmp/d-all.png" && ok || no "--lookup-region footprint and all decide differently"
 fp=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-footprint.json"); al=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-all.json")
 awk -v a="$fp" -v b="$al" 'BEGIN { exit !(a > 0 && a < b) }' && ok || no "lookup share footprint $fp, all $al"
-"$lixel" bench --size 48x32 --frames 1 --warmup 0 --methods uniform,uniform/all,tsm/footprint --configs default >/dev/null 2>&1 && ok ||
-  no "bench with /all and /footprint methods"
-# the depth path: the self-test's choice in the JSON, a forced one, bad values
-"$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
-  grep -q '"depth_path": "highp24-texture", "depth_selftest": "passed"' "$tmp/d.json" && ok || no "depth path: $(cat "$tmp/d.json")"
+grep -q '^\[uniform/all\] config=low: ' "$tmp/bench.txt" && grep -q '^\[tsm/footprint\] config=low: ' "$tmp/bench.txt" && ok ||
+  no "bench with /all and /footprint methods: $(cat "$tmp/bench.txt")"
+# the depth path: a forced one (the self-test's choice: the default render above), bad values
 "$lixel" render --depth-precision mediump --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
   grep -q '"depth_path": "mediump11", "depth_selftest": "forced"' "$tmp/d.json" && ok || no "forced mediump: $(cat "$tmp/d.json")"
 LIXEL_SIMULATE_LIMA=1 "$lixel" render --json --size 96x64 --frames 1 --out "$tmp/d.png" >"$tmp/d.json" 2>&1 &&
@@ -221,18 +223,17 @@ LIXEL_SIMULATE_LIMA=1 "$lixel" render --depth-precision highp --json --size 96x6
 grep -q '"depth_slots": 8' "$tmp/t.json" && ok || no "depth texture's slots: $(cat "$tmp/t.json")"
 "$lixel" render --depth-precision texture --depth-slots 3 --size 96x64 --frames 1 --out "$tmp/s.png" >"$tmp/s.txt" 2>&1 &&
   grep -q '^atlas: .*; cleared once every 3 frames (depth slots)$' "$tmp/s.txt" && ok || no "--depth-slots 3: $(cat "$tmp/s.txt")"
-for args in "--depth-precision highp" "--depth-precision texture --depth-slots 1"; do
-  "$lixel" render $args --json --size 96x64 --frames 1 --out "$tmp/s.png" >"$tmp/s.json" 2>&1 &&
-    grep -q '"depth_slots": 1' "$tmp/s.json" && ok || no "render $args: $(cat "$tmp/s.json")"
-done
+"$lixel" render --depth-precision texture --depth-slots 1 --json --size 96x64 --frames 1 --out "$tmp/s.png" >"$tmp/s.json" 2>&1 &&
+  grep -q '"depth_slots": 1' "$tmp/s.json" && ok || no "render --depth-slots 1: $(cat "$tmp/s.json")"
 expect_bad "depth slots 0" render --depth-slots 0 $out
 expect_bad "depth slots 65" render --depth-slots 65 $out
 expect_bad "depth slots in words" render --depth-slots eight $out
 expect_bad "bench method option slots0" bench --methods plane/slots0
-"$lixel" render --depth-precision highp --size 96x64 --frames 1 --out "$tmp/h.png" --atlas-out "$tmp/h-atlas.png" \
-    --decision-out "$tmp/h-dec.png" >/dev/null 2>&1 && cmp -s "$tmp/h-dec.png" "$tmp/t-dec.png" &&
+"$lixel" render --depth-precision highp --json --size 96x64 --frames 1 --out "$tmp/h.png" --atlas-out "$tmp/h-atlas.png" \
+    --decision-out "$tmp/h-dec.png" >"$tmp/h.json" 2>&1 && cmp -s "$tmp/h-dec.png" "$tmp/t-dec.png" &&
   [ "$(head -c 4 "$tmp/t-atlas.png" | od -An -c | tr -d ' ')" = '211PNG' ] && ok ||
   no "the depth-texture path's decisions or atlas image differ from highp's"
+grep -q '"depth_slots": 1' "$tmp/h.json" && ok || no "highp's depth slots: $(cat "$tmp/h.json")"
 LIXEL_SIMULATE_NO_DEPTH_TEXTURE=1 "$lixel" render --depth-precision texture --json --size 96x64 --frames 1 \
     --out "$tmp/d.png" >"$tmp/d.json" 2>"$tmp/d.err" && grep -q '"depth_path": "highp24", "depth_selftest": "passed"' "$tmp/d.json" &&
   grep -q '"warnings": \["the depth-texture path cannot be taken (no GL_OES_depth_texture (simulated)): highp24 instead"' \
@@ -287,9 +288,6 @@ for f in none pcf2x2 pcf3x3; do
     grep -q '"light_size_deg": 0.5' "$tmp/f.json" && ok || no "render --filter $f: $(cat "$tmp/f.json" "$tmp/stderr")"
 done
 cmp -s "$tmp/f-none.png" "$tmp/f-pcf3x3.png" && no "--filter pcf3x3 drew the image none drew" || ok
-# without a filter or --light-size, --measure skips the soft reference (seconds a frame at 1024^2)
-"$lixel" render --method uniform --measure --json --size 96x64 --frames 1 --out "$tmp/f.png" >"$tmp/f.json" 2>"$tmp/stderr" &&
-  ! grep -q '"soft_error_pct"' "$tmp/f.json" && ok || no "render --measure computed the soft reference: $(cat "$tmp/f.json")"
 "$lixel" render --filter pcf2x2 --measure --light-size 2 --size 96x64 --frames 1 --out "$tmp/f.png" >"$tmp/f.txt" 2>&1 &&
   grep -q '^soft edge: [0-9.]*% mean visibility error (filter pcf2x2) against a 2-degree area light$' "$tmp/f.txt" && ok ||
   no "render --filter text: $(cat "$tmp/f.txt")"
