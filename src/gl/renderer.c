@@ -74,13 +74,12 @@ struct lx_renderer {
 	GLuint vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* the shadow passes' meshes: positions only, each once, and triangles as indices
-	 * (llvmpipe's draw module shades each index once; the sphere's 2976 vertices are
-	 * 482 positions) */
-	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS], shadow_ibo[LX_MAX_PLANES + LX_MAX_CASTERS];
+	 * into them (llvmpipe's draw module shades each index once; the sphere's 2976
+	 * vertices are 482 positions), kept on the CPU with each triangle's plane in object
+	 * space (v4_cross3 of its corners): a frame uploads the triangles each map's culling
+	 * keeps (keep_back_faces, into kept_ibo) */
+	GLuint shadow_vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
-	/* and on the CPU: those indices, and each triangle's plane in object space (v4_cross3
-	 * of its corners), so that a frame draws into a map only the triangles the map's
-	 * culling keeps (keep_back_faces) */
 	unsigned short *shadow_index[LX_MAX_PLANES + LX_MAX_CASTERS];
 	vec4 *shadow_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* this frame's kept triangles, per light, map and object: from `first`, `count`
@@ -255,8 +254,6 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 		}
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
-		lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->shadow_ibo[id]);
-		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)n * sizeof(unsigned short), index, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
 		r->shadow_plane[id] = malloc((size_t)(n / 3 + 1) * sizeof(vec4));
 		ok = r->shadow_plane[id] != NULL;
@@ -303,7 +300,6 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	lx_gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
 	lx_gl.GenBuffers(r->objects, r->vbo);
 	lx_gl.GenBuffers(r->objects, r->shadow_vbo);
-	lx_gl.GenBuffers(r->objects, r->shadow_ibo);
 	lx_gl.GenBuffers(1, &r->piece_vbo);
 	lx_gl.GenBuffers(1, &r->facing_ibo);
 	lx_gl.GenBuffers(1, &r->kept_ibo);
@@ -399,7 +395,6 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->objects) {
 		lx_gl.DeleteBuffers(r->objects, r->vbo);
 		lx_gl.DeleteBuffers(r->objects, r->shadow_vbo);
-		lx_gl.DeleteBuffers(r->objects, r->shadow_ibo);
 	}
 	lx_gl.DeleteTextures(1, &r->atlas_tex);
 	for (int i = 0; i < LX_MAX_LIGHTS; i++)
