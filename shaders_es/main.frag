@@ -5,9 +5,6 @@
 #ifndef LX_READS
 #define LX_READS 0
 #endif
-#if LX_READS > 0 && !defined(LX_FORCE_MEDIUMP) && !defined(LX_NO_EDGES)
-#define LX_EDGES 1
-#endif
 #ifndef LX_FILTER
 #define LX_FILTER 0
 #endif

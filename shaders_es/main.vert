@@ -5,11 +5,6 @@
 #ifndef LX_READS
 #define LX_READS 0
 #endif
-// The test of where a map serves, as four edge functions of its homogeneous coordinates,
-// interpolated like them (main.frag); not on the mediump path, whose fp16 test stays as it was.
-#if LX_READS > 0 && !defined(LX_FORCE_MEDIUMP) && !defined(LX_NO_EDGES)
-#define LX_EDGES 1
-#endif
 // Main pass. LX_SHADOWED: the method has shadow maps (the face test); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order
 // (one variant serves every set of that many maps), a varying each and no more: every
@@ -64,6 +59,8 @@ varying vec4 v_beam;
 #endif
 
 #ifdef LX_EDGES
+// LX_EDGES (lx_main_defines, both shaders): the test of where a map serves as four edge
+// functions of its homogeneous coordinates, interpolated like them (main.frag),
 // (s - x0 q, t - y0 q, x1 q - s, y1 q - t): where q > 0, the first two >= 0 and the last
 // two > 0 exactly where (s, t) / q lies in [x0, x1) x [y0, y1)
 vec4 edges(vec4 c, vec4 region)
