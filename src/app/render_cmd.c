@@ -455,7 +455,7 @@ static int render_parse(int argc, char **argv, struct render_args *r)
 	*r = (struct render_args){.job = {.method = LX_DEFAULT_METHOD, .platform = "osmesa", .width = 1024, .height = 768,
 					  .warmup_frames = 3, .timed_frames = 10, .bias_codes = LX_DEFAULT_BIAS_CODES,
 					  .reference_threads = 2, .out_png = "lixel.png",
-					  .light_size_deg = LX_DEFAULT_LIGHT_SIZE_DEG}};
+					  .light_size_deg = LX_DEFAULT_LIGHT_SIZE_DEG, .budgets = LX_METHOD_OPTIONS_DEFAULT}};
 	static const char *const with_value[] = {"--method", "--scene", "--config", "--size", "--eye", "--at", "--fov",
 						 "--light", "--light-dir", "--time", "--platform", "--out", "--decision-out",
 						 "--mismatch-out", "--reference-out", "--atlas-out", "--frames", "--bias", "--depth-precision",
@@ -482,11 +482,6 @@ static int render_parse(int argc, char **argv, struct render_args *r)
 		if (st || (st = render_option(r, a, v)))
 			return st;
 	}
-	struct lx_method_options defaults = LX_METHOD_OPTIONS_DEFAULT;
-	struct lx_method_options *b = &r->job.budgets;
-	b->uniform_lixels = b->uniform_lixels ? b->uniform_lixels : defaults.uniform_lixels;
-	b->plane_lixels = b->plane_lixels ? b->plane_lixels : defaults.plane_lixels;
-	b->fallback_lixels = b->fallback_lixels ? b->fallback_lixels : defaults.fallback_lixels;
 	/* the soft reference costs seconds a frame at 1024^2: measured where it says something,
 	 * with a filter on or a light size asked for */
 	r->job.soft = r->job.measure && (r->job.filter != LX_FILTER_NONE || r->have_light_size);

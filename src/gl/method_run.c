@@ -56,10 +56,9 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		return 1;
 	struct lx_renderer_desc rd = {.scene = scene, .meshes = meshes, .caps = caps,
 				      .map_count = mr->lights[0].atlas.count, .width = width, .height = height,
-				      .depth = mr->depth.taken, .bias_codes = bias_codes,
-				      .to_window = to_window,
+				      .depth = mr->depth.taken, .bias_codes = bias_codes, .to_window = to_window,
 				      .lookup_everywhere = mr->options.lookup_everywhere, .light_count = mr->light_count,
-				      .depth_slots = mr->options.depth_slots > 0 ? mr->options.depth_slots : LX_DEPTH_SLOTS_DEFAULT};
+				      .depth_slots = mr->options.depth_slots};
 	for (int i = 0; i < mr->light_count; i++) {
 		rd.lights[i].atlas = &mr->lights[i].atlas;
 		rd.lights[i].image = mr->lights[i].image.rgba ? &mr->lights[i].image : NULL;

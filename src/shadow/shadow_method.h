@@ -61,8 +61,8 @@ struct lx_method_options {
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
 	/* The shadow pass (every method): the atlas cleared once every depth_slots frames,
-	 * each frame's depths in its own slot of the depth range (--depth-slots; 0: the
-	 * default, LX_DEPTH_SLOTS_DEFAULT; 1: cleared every frame). */
+	 * each frame's depths in its own slot of the depth range (--depth-slots, default
+	 * LX_DEPTH_SLOTS_DEFAULT; 1: cleared every frame). */
 	int depth_slots;
 	/* Several lights: light i's maps get light_share[i] of the lixels above (0: all of
 	 * them; a share of area, the sides scaled by its square root); only the first
@@ -77,7 +77,8 @@ struct lx_method_options {
 #define LX_DEPTH_SLOTS_MAX 64
 
 #define LX_METHOD_OPTIONS_DEFAULT \
-	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128})
+	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128, \
+				    .depth_slots = LX_DEPTH_SLOTS_DEFAULT})
 
 struct lx_light_space; /* light_space.h: where the warping methods start */
 struct lx_uniform_fit;
