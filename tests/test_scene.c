@@ -343,6 +343,58 @@ static void caster_meshes_are_closed_and_outward(void **state)
 	lx_meshes_free(&m);
 }
 
+static int position_of(const int *order, int n, int id)
+{
+	for (int k = 0; k < n; k++)
+		if (order[k] == id)
+			return k;
+	return -1;
+}
+
+/* The main pass's draw order: every object once; casters before the planes they stand
+ * on; a table top before the slab and legs under it, which it hides from an eye above
+ * it, and after them, with the casters above it, when the eye is below it. */
+static void draw_order_draws_what_hides_first(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	lx_frame_draw_order(&f, order);
+	for (int k = 0; k < m.count; k++) /* the casters (2-5), then floor and wall */
+		assert_int_equal(order[k], (k + s.plane_count) % m.count);
+	lx_meshes_free(&m);
+
+	lx_scene_table(&s); /* planes: 0 table top, 1 floor; casters: 2 slab, 3-6 legs, 7 sphere, 8 cone */
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	lx_frame_draw_order(&f, order);
+	bool seen[LX_MAX_PLANES + LX_MAX_CASTERS] = {0};
+	for (int k = 0; k < m.count; k++) {
+		assert_true(order[k] >= 0 && order[k] < m.count && !seen[order[k]]);
+		seen[order[k]] = true;
+	}
+	int top = position_of(order, m.count, 0);
+	for (int id = 2; id <= 6; id++)
+		assert_true(position_of(order, m.count, id) > top);
+	assert_true(position_of(order, m.count, 7) < top && position_of(order, m.count, 8) < top);
+	assert_int_equal(order[m.count - 1], 1); /* the floor, under everything, last */
+
+	s.camera.eye = v3(0, 0.4, 4.2); /* below the top: the casters above it are hidden now */
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	lx_frame_draw_order(&f, order);
+	top = position_of(order, m.count, 0);
+	for (int id = 2; id <= 6; id++)
+		assert_true(position_of(order, m.count, id) < top);
+	assert_true(position_of(order, m.count, 7) > top && position_of(order, m.count, 8) > top);
+	lx_meshes_free(&m);
+}
+
 /* A projective light's matrix, image look-up and fall-off [Segal], against values worked
  * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
 static void projective_light_geometry(void **state)
@@ -410,6 +462,7 @@ int main(void)
 		cmocka_unit_test(lights_are_white_unless_coloured),
 		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
+		cmocka_unit_test(draw_order_draws_what_hides_first),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
 }

@@ -199,6 +199,43 @@ void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *ou
 	lit_box(out);
 }
 
+/* Whether plane p's infinite plane has every corner of object id's box on its far side
+ * from the eye (or on it); false when the eye is on the plane. */
+static bool behind_plane(const struct lx_frame *f, int p, int id)
+{
+	const struct lx_plane *pl = &f->scene->planes[p];
+	vec3 n = v3_cross(pl->edge1, pl->edge2), c0 = v3_add(pl->corner, f->offset[p]);
+	double eye = v3_dot(n, v3_sub(f->view.eye, c0));
+	if (eye == 0)
+		return false;
+	for (int k = 0; k < 8; k++)
+		if (eye * v3_dot(n, v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), c0)) > 0)
+			return false;
+	return true;
+}
+
+void lx_frame_draw_order(const struct lx_frame *f, int *order)
+{
+	int pc = f->scene->plane_count, n = 0;
+	bool front[LX_MAX_PLANES] = {0}, hidden[LX_MAX_PLANES + LX_MAX_CASTERS] = {0};
+	for (int id = pc; id < f->object_count; id++)
+		for (int p = 0; p < pc; p++)
+			if (behind_plane(f, p, id))
+				front[p] = hidden[id] = true;
+	for (int id = pc; id < f->object_count; id++) /* the casters no plane hides */
+		if (!hidden[id])
+			order[n++] = id;
+	for (int p = 0; p < pc; p++) /* the planes that hide casters */
+		if (front[p])
+			order[n++] = p;
+	for (int id = pc; id < f->object_count; id++) /* the casters they hide */
+		if (hidden[id])
+			order[n++] = id;
+	for (int p = 0; p < pc; p++) /* the other planes */
+		if (!front[p])
+			order[n++] = p;
+}
+
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
 {
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
