@@ -395,6 +395,77 @@ static void draw_order_draws_what_hides_first(void **state)
 	lx_meshes_free(&m);
 }
 
+/* lx_poly_rows_inside: every pixel it gives has its centre, and the points `inset` either
+ * side of it along the row, inside the polygon in every row of the band; the pixels just
+ * beyond either end do not, in some row. Random convex polygons and bands. */
+static void rows_inside_a_polygon(void **state)
+{
+	(void)state;
+	unsigned long long seq = 12345;
+	int checked = 0;
+	for (int t = 0; t < 300; t++) {
+		vec2 pts[8];
+		for (int k = 0; k < 8; k++) {
+			seq = seq * 6364136223846793005ull + 1442695040888963407ull;
+			pts[k] = (vec2){(double)(seq >> 40 & 255), (double)(seq >> 20 & 255)};
+		}
+		struct lx_poly p;
+		if (!lx_poly_hull(pts, 8, &p) || p.n < 3)
+			continue;
+		int y0 = (int)(seq >> 50 & 127), y1 = y0 + 1 + (int)(seq >> 58 & 31), x0, x1;
+		double inset = (t % 3) * 0.75;
+		if (!lx_poly_rows_inside(&p, y0, y1, inset, &x0, &x1))
+			continue;
+		checked++;
+		for (int y = y0; y < y1; y++)
+			for (int x = x0; x < x1; x++)
+				for (int d = -1; d <= 1; d++)
+					assert_true(lx_poly_contains(&p, (vec2){x + 0.5 + d * inset, y + 0.5}, -1e-9));
+		for (int end = 0; end < 2; end++) { /* x0 - 1, then x1: outside in some row */
+			int x = end ? x1 : x0 - 1;
+			bool out = false;
+			for (int y = y0; y < y1 && !out; y++)
+				for (int d = -1; d <= 1; d++)
+					out |= !lx_poly_contains(&p, (vec2){x + 0.5 + d * inset, y + 0.5}, 1e-9);
+			assert_true(out);
+		}
+	}
+	assert_true(checked > 50);
+}
+
+/* A table top hides the floor under it from an eye above it, not the other way round;
+ * the default scene's floor and wall, which meet, hide nothing of each other; a top that
+ * reaches behind the eye (the near plane cuts it) is not taken to hide anything. */
+static void a_plane_in_front_hides_the_one_behind(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	struct lx_poly win;
+	char err[256];
+	lx_scene_table(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	assert_true(lx_frame_plane_hides(&f, 0, 1, &win));
+	assert_int_equal(win.n, 4);
+	double x0, y0, x1, y1;
+	lx_poly_bounds(&win, &x0, &y0, &x1, &y1);
+	assert_true(x0 > 0 && x1 < 256 && y0 > 0 && y1 < 192 && x1 - x0 > 64); /* the top, well in view */
+	assert_false(lx_frame_plane_hides(&f, 1, 0, &win));
+	assert_false(lx_frame_plane_hides(&f, 0, 0, &win));
+	s.camera.eye = v3(0, 0.9, 0.3), s.camera.at = v3(0, 0.5, -3); /* over the top: part of it behind the eye */
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	assert_false(lx_frame_plane_hides(&f, 0, 1, &win));
+	lx_meshes_free(&m);
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	assert_false(lx_frame_plane_hides(&f, 0, 1, &win));
+	assert_false(lx_frame_plane_hides(&f, 1, 0, &win));
+	lx_meshes_free(&m);
+}
+
 /* A projective light's matrix, image look-up and fall-off [Segal], against values worked
  * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
 static void projective_light_geometry(void **state)
@@ -463,6 +534,8 @@ int main(void)
 		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 		cmocka_unit_test(draw_order_draws_what_hides_first),
+		cmocka_unit_test(rows_inside_a_polygon),
+		cmocka_unit_test(a_plane_in_front_hides_the_one_behind),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
 }

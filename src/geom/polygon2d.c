@@ -231,3 +231,29 @@ void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b
 	if (out->n < 3)
 		out->n = 0;
 }
+
+/* The polygon's extent along the line at height y: false when the line misses it. */
+static bool cross_section(const struct lx_poly *p, double y, double *lo, double *hi)
+{
+	*lo = INFINITY, *hi = -INFINITY;
+	for (int i = 0; i < p->n; i++) {
+		vec2 a = p->v[i], b = p->v[(i + 1) % p->n];
+		if ((a.y <= y) != (b.y <= y)) { /* a.y != b.y: the edge crosses the line */
+			double x = a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
+			*lo = fmin(*lo, x), *hi = fmax(*hi, x);
+		}
+	}
+	return *lo <= *hi;
+}
+
+bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, int *x0, int *x1)
+{
+	double la, ha, lb, hb;
+	if (y1 <= y0 || !cross_section(p, y0 + 0.5, &la, &ha) || !cross_section(p, y1 - 0.5, &lb, &hb))
+		return false;
+	double lo = fmax(la, lb) + inset, hi = fmin(ha, hb) - inset;
+	if (!(lo <= hi) || !(lo > -1e9 && hi < 1e9)) /* (the callers' windows are far smaller) */
+		return false;
+	*x0 = (int)ceil(lo - 0.5), *x1 = (int)floor(hi - 0.5) + 1; /* centres x + 0.5 in [lo, hi] */
+	return *x1 > *x0;
+}

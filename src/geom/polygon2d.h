@@ -29,6 +29,11 @@ void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b
 double lx_poly_area(const struct lx_poly *p);
 /* Strictly inside by more than eps (distance to every edge). */
 bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
+/* The pixels [*x0, *x1) whose centres, in every row of [y0, y1), lie inside p by more
+ * than inset along the row (pixel (x, y) has its centre at x + 0.5, y + 0.5); false when
+ * none. A convex polygon holds the segment between two of its points, so the first and
+ * the last row decide. */
+bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, int *x0, int *x1);
 void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1, double *y1);
 
 #endif

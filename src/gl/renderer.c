@@ -65,6 +65,7 @@ struct lx_renderer {
 	int facing_count, facing_room;
 	GLuint facing_ibo; /* a frame's main-pass draws */
 	struct span spans[PLANE_SPANS];    /* a plane's spans */
+	struct span seen[PLANE_SPANS];     /* the same without what another plane hides */
 	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
 	struct lx_lookup_volumes lookup;   /* this frame's casters seen through each map */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
@@ -881,6 +882,55 @@ static void add_piece(struct lx_renderer *r, const struct lx_frame *f, int id, s
 	}
 }
 
+/* Spans in[0..n) without the pixels plane-image win covers, by a pixel (each band of the
+ * lookup region's grid that it covers loses that part; bands it does not cover stay
+ * together), into out (room for room); returns the new count, or -1 short of room. */
+static int uncovered(const struct span *in, int n, const struct lx_poly *win, struct span *out, int room)
+{
+	int k = 0;
+	for (int i = 0; i < n; i++) {
+		struct lx_rect b = in[i].box;
+		int run = b.y0; /* rows from run on, not yet written, are whole */
+		for (int y = b.y0 - b.y0 % LX_LOOKUP_BAND; y < b.y1; y += LX_LOOKUP_BAND) {
+			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1, x0, x1;
+			if (!lx_poly_rows_inside(win, y0, y1, 1.0, &x0, &x1) || x1 <= b.x0 || x0 >= b.x1)
+				continue;
+			if (k + 3 > room)
+				return -1;
+			if (y0 > run)
+				out[k++] = (struct span){in[i].mask, {b.x0, run, b.x1, y0}};
+			if (x0 > b.x0)
+				out[k++] = (struct span){in[i].mask, {b.x0, y0, x0, y1}};
+			if (x1 < b.x1)
+				out[k++] = (struct span){in[i].mask, {x1, y0, b.x1, y1}};
+			run = y1;
+		}
+		if (run < b.y1) {
+			if (k + 1 > room)
+				return -1;
+			out[k++] = (struct span){in[i].mask, {b.x0, run, b.x1, b.y1}};
+		}
+	}
+	return k;
+}
+
+/* Plane id's spans without what the planes that hide it cover (lx_frame_plane_hides: a
+ * table top over the floor): nothing of it is drawn there, in any pass, since the plane in
+ * front is drawn whole. Returns the spans and their count (*ns). */
+static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
+{
+	for (int q = 0; q < r->d.scene->plane_count; q++) {
+		struct lx_poly win;
+		if (!lx_frame_plane_hides(f, q, id, &win))
+			continue;
+		struct span *to = span == r->seen ? r->spans : r->seen;
+		int n = uncovered(span, *ns, &win, to, PLANE_SPANS);
+		if (n >= 0) /* short of room: drawn as they were */
+			span = to, *ns = n;
+	}
+	return span;
+}
+
 /* Appends caster id's triangles to the frame's index buffer, those turned towards the
  * light (or nearly: the shader decides those) first; returns how many indices those are,
  * or -1 when its mesh cannot be indexed so. */
@@ -946,6 +996,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		need = 0;
 	struct span *span = r->spans;
 	int ns = plane_spans(r, res, id, need, span, PLANE_SPANS);
+	span = visible_spans(r, f, id, span, &ns);
 	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
 	 * only), each reading every map of the plane */
 	if (r->d.lookup_everywhere)

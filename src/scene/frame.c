@@ -236,6 +236,28 @@ void lx_frame_draw_order(const struct lx_frame *f, int *order)
 			order[n++] = p;
 }
 
+bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct lx_poly *win)
+{
+	const struct lx_plane *b = &f->scene->planes[back], *q = &f->scene->planes[front];
+	vec3 n = v3_cross(b->edge1, b->edge2), c0 = v3_add(b->corner, f->offset[back]);
+	double eye = v3_dot(n, v3_sub(f->view.eye, c0));
+	vec3 corner[4];
+	corner[0] = v3_add(q->corner, f->offset[front]);
+	corner[1] = v3_add(corner[0], q->edge1), corner[2] = v3_add(corner[1], q->edge2);
+	corner[3] = v3_add(corner[0], q->edge2);
+	win->n = 0;
+	if (front == back || eye == 0)
+		return false;
+	for (int k = 0; k < 4; k++) {
+		vec4 c = m4_mul_point(&f->view.view_proj, corner[k]);
+		if (!(eye * v3_dot(n, v3_sub(corner[k], c0)) > 0) || !(c.w > 0) || !(c.z > -c.w))
+			return false; /* on back's far side, or reaching the near plane, which clips it */
+		win->v[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+	}
+	win->n = 4;
+	return true;
+}
+
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
 {
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};

@@ -3,6 +3,7 @@
 #ifndef LX_FRAME_H
 #define LX_FRAME_H
 #include "mesh.h"
+#include "polygon2d.h"
 
 struct lx_view {
 	int width, height;
@@ -60,6 +61,10 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
  * those wholly behind a plane seen from the eye (a table's own slab and legs under its
  * top), which follow that plane. Writes f->object_count ids to order. */
 void lx_frame_draw_order(const struct lx_frame *f, int *order);
+/* Whether plane `front` hides plane `back` wherever its image covers it: its quad lies
+ * wholly on the eye's side of back's plane (strictly), and beyond the near plane, so that
+ * it is drawn whole. *win: that image in the window (pixels, GL's origin), convex. */
+bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct lx_poly *win);
 void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *out);
 
 #endif
