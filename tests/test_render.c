@@ -204,9 +204,32 @@ static double worst_m(const struct lx_render_report *r, int l)
 	return worst;
 }
 
+/* The pixels whose visible object differs from the exact reference's away from the
+ * reference's own object edges (no pixel within two of it shows another object there):
+ * none may, since what the main pass leaves out (a plane's part another plane in front
+ * hides, lx_frame_plane_hides) must be hidden indeed. */
+static long objects_off_edges(const struct lx_render_report *r)
+{
+	long off = 0;
+	for (int y = 0; y < H; y++)
+		for (int x = 0; x < W; x++) {
+			long i = (long)y * W + x;
+			if (r->ref_object[i] == r->object[i])
+				continue;
+			bool edge = false;
+			for (int dy = -2; dy <= 2 && !edge; dy++)
+				for (int dx = -2; dx <= 2 && !edge; dx++) {
+					int u = x + dx, v = y + dy;
+					edge = u < 0 || v < 0 || u >= W || v >= H || r->ref_object[(long)v * W + u] != r->ref_object[i];
+				}
+			off += !edge;
+		}
+	return off;
+}
+
 /* Light l's mismatches of a report: each within the edge bound, their count the
  * report's, under max_pct of the compared pixels, which are at least min_share of the
- * view. Returns the mismatch. */
+ * view; the visible objects the reference's but along its edges. Returns the mismatch. */
 static double check_light(const struct lx_render_report *r, int l, const char *what,
 			  uint8_t *dist, double max_pct, double min_share)
 {
@@ -233,6 +256,9 @@ static double check_light(const struct lx_render_report *r, int l, const char *w
 		      what, l + 1, mm->mismatch_pct, mm->false_shadow_pct, mm->missing_shadow_pct, mm->compared, m_max, worst,
 		      reach, far);
 	assert_int_equal(n, mm->false_shadow + mm->missing_shadow);
+	long off = objects_off_edges(r);
+	if (off)
+		fail_msg("%s: %ld pixels show another object than the reference's away from its edges", what, off);
 	assert_true(mm->compared > min_share * W * H);
 	assert_int_equal(far, 0);
 	assert_true(mm->mismatch_pct < max_pct);
