@@ -339,7 +339,7 @@ static bool renderer_targets(struct lx_renderer *r, char *err, size_t errlen)
 	const struct lx_renderer_desc *d = &r->d;
 	/* the depth-texture path: the texture is the atlas's depth and its only attachment, so
 	 * the shadow pass writes no colour */
-	bool dt = d->depth == LX_DEPTH_TEXTURE;
+	bool dt = depth_texture(r);
 	r->atlas_tex = dt ? lx_texture_depth(r->texture_width, r->texture_height)
 			  : lx_texture_rgba8(r->texture_width, r->texture_height);
 	if (!framebuffer(&r->atlas_fbo, dt ? 0 : r->atlas_tex, dt ? r->atlas_tex : 0, &r->atlas_depth, r->texture_width,

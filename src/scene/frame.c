@@ -199,17 +199,39 @@ void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *ou
 	lit_box(out);
 }
 
+void lx_frame_plane_corners(const struct lx_frame *f, int id, vec3 out[4])
+{
+	const struct lx_plane *p = &f->scene->planes[id];
+	out[0] = v3_add(p->corner, f->offset[id]);
+	out[1] = v3_add(out[0], p->edge1), out[2] = v3_add(out[1], p->edge2), out[3] = v3_add(out[0], p->edge2);
+}
+
+/* Plane p's infinite plane as seen from the eye: side(x) > 0 on the eye's side, < 0
+ * beyond it. False when the eye lies on it (every side is then 0). */
+struct eye_side {
+	vec3 n, c0;
+	double eye; /* n . (eye - c0) */
+};
+
+static bool eye_side(const struct lx_frame *f, int p, struct eye_side *s)
+{
+	const struct lx_plane *pl = &f->scene->planes[p];
+	s->n = v3_cross(pl->edge1, pl->edge2), s->c0 = v3_add(pl->corner, f->offset[p]);
+	s->eye = v3_dot(s->n, v3_sub(f->view.eye, s->c0));
+	return s->eye != 0;
+}
+
+static double side(const struct eye_side *s, vec3 x) { return s->eye * v3_dot(s->n, v3_sub(x, s->c0)); }
+
 /* Whether plane p's infinite plane has every corner of object id's box on its far side
  * from the eye (or on it); false when the eye is on the plane. */
 static bool behind_plane(const struct lx_frame *f, int p, int id)
 {
-	const struct lx_plane *pl = &f->scene->planes[p];
-	vec3 n = v3_cross(pl->edge1, pl->edge2), c0 = v3_add(pl->corner, f->offset[p]);
-	double eye = v3_dot(n, v3_sub(f->view.eye, c0));
-	if (eye == 0)
+	struct eye_side s;
+	if (!eye_side(f, p, &s))
 		return false;
 	for (int k = 0; k < 8; k++)
-		if (eye * v3_dot(n, v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), c0)) > 0)
+		if (side(&s, v3_box_corner(f->bmin[id], f->bmax[id], k)) > 0)
 			return false;
 	return true;
 }
@@ -238,19 +260,15 @@ void lx_frame_draw_order(const struct lx_frame *f, int *order)
 
 bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct lx_poly *win)
 {
-	const struct lx_plane *b = &f->scene->planes[back], *q = &f->scene->planes[front];
-	vec3 n = v3_cross(b->edge1, b->edge2), c0 = v3_add(b->corner, f->offset[back]);
-	double eye = v3_dot(n, v3_sub(f->view.eye, c0));
+	struct eye_side s;
 	vec3 corner[4];
-	corner[0] = v3_add(q->corner, f->offset[front]);
-	corner[1] = v3_add(corner[0], q->edge1), corner[2] = v3_add(corner[1], q->edge2);
-	corner[3] = v3_add(corner[0], q->edge2);
 	win->n = 0;
-	if (front == back || eye == 0)
+	if (front == back || !eye_side(f, back, &s))
 		return false;
+	lx_frame_plane_corners(f, front, corner);
 	for (int k = 0; k < 4; k++) {
 		vec4 c = m4_mul_point(&f->view.view_proj, corner[k]);
-		if (!(eye * v3_dot(n, v3_sub(corner[k], c0)) > 0) || !(c.w > 0) || !(c.z > -c.w))
+		if (!(side(&s, corner[k]) > 0) || !(c.w > 0) || !(c.z > -c.w))
 			return false; /* on back's far side, or reaching the near plane, which clips it */
 		win->v[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
 	}

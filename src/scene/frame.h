@@ -55,16 +55,21 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 		    int width, int height, char *err, size_t errlen);
 /* *out: frame f (set up for any light) for the scene's light `light` (0 to
  * lx_scene_light_count - 1) instead; out may be f. lx_frame_setup gives light 0. */
+void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *out);
+
+/* Plane of interest id's quad in world space at the frame's time: corner, +edge1,
+ * +edge1+edge2, +edge2. */
+void lx_frame_plane_corners(const struct lx_frame *f, int id, vec3 out[4]);
 /* The objects in the order the main pass draws them, so that fewer pixels are shaded and
- * then covered (a fragment behind one drawn already fails the depth test before its
- * shading): casters first, since they stand in front of the planes they shadow, except
- * those wholly behind a plane seen from the eye (a table's own slab and legs under its
- * top), which follow that plane. Writes f->object_count ids to order. */
+ * then covered (a fragment behind one drawn already fails the depth test, which on
+ * llvmpipe still costs about half of its shading): casters first, since they stand in
+ * front of the planes they shadow, except those wholly behind a plane seen from the eye
+ * (a table's own slab and legs under its top), which follow that plane. Writes
+ * f->object_count ids to order. */
 void lx_frame_draw_order(const struct lx_frame *f, int *order);
 /* Whether plane `front` hides plane `back` wherever its image covers it: its quad lies
  * wholly on the eye's side of back's plane (strictly), and beyond the near plane, so that
  * it is drawn whole. *win: that image in the window (pixels, GL's origin), convex. */
 bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct lx_poly *win);
-void lx_frame_for_light(const struct lx_frame *f, int light, struct lx_frame *out);
 
 #endif

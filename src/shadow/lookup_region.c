@@ -451,12 +451,10 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 
 int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec3 *out)
 {
-	const struct lx_plane *p = &f->scene->planes[id];
 	const struct lx_view *v = &f->view;
 	vec3 a[FACE_MAX], b[FACE_MAX];
 	int n = 4;
-	a[0] = v3_add(p->corner, f->offset[id]);
-	a[1] = v3_add(a[0], p->edge1), a[2] = v3_add(a[1], p->edge2), a[3] = v3_add(a[0], p->edge2);
+	lx_frame_plane_corners(f, id, a);
 	/* window x >= x0: ndc x >= 2 x0 / width - 1, i.e. x - (that) w >= 0; and so on */
 	vec4 r0 = m4_row(&v->view_proj, 0), r1 = m4_row(&v->view_proj, 1), r2 = m4_row(&v->view_proj, 2),
 	     r3 = m4_row(&v->view_proj, 3);
