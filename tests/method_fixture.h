@@ -12,9 +12,10 @@ struct setup {
 	struct lx_shadow_result res;
 };
 
-/* Builds s->scene's meshes and frame at time t and runs the method's build; false (and
- * nothing to free) when the camera is degenerate. Free with lx_meshes_free(&s->meshes). */
-static bool build(struct setup *s, const char *method, int w, int h, double t)
+/* Builds s->scene's meshes and frame at time t and runs the method's build with options
+ * o; false (and nothing to free) when the camera is degenerate. Free with
+ * lx_meshes_free(&s->meshes). */
+static bool build_with(struct setup *s, const char *method, int w, int h, double t, const struct lx_method_options *o)
 {
 	struct lx_region_request req[LX_MAX_MAPS];
 	const struct lx_shadow_method *m = lx_shadow_method_find(method);
@@ -25,10 +26,16 @@ static bool build(struct setup *s, const char *method, int w, int h, double t)
 		lx_meshes_free(&s->meshes);
 		return false;
 	}
-	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	assert_true(lx_atlas_layout(&s->atlas, req, lx_shadow_method_regions(m, &s->scene, &o, req), 1, 2048, err, sizeof err));
-	lx_shadow_method_frame(m, &s->frame, &s->atlas, &o, &s->res);
+	assert_true(lx_atlas_layout(&s->atlas, req, lx_shadow_method_regions(m, &s->scene, o, req), 1, 2048, err, sizeof err));
+	lx_shadow_method_frame(m, &s->frame, &s->atlas, o, &s->res);
 	return true;
+}
+
+/* The same with the default options. */
+static bool build(struct setup *s, const char *method, int w, int h, double t)
+{
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	return build_with(s, method, w, h, t, &o);
 }
 
 #endif

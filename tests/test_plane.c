@@ -200,6 +200,61 @@ static void sweep_is_a_similarity_on_every_plane(void **state)
 	assert_true(configs >= 300 && maps >= 300 && full >= 100);
 }
 
+/* Shared budgets: a map keeps the scale its own budget gives when that covers what it
+ * needs, and hands on the rest, which a map short of lpp 1 takes; the total stays within
+ * the two plane budgets. Every standard configuration of both scenes at two sizes, against
+ * fixed budgets. The table's default view is the case the rest decides: there the table
+ * top takes 71,208 of its lixels at lpp 1 and the floor, short at 0.77 with its own
+ * budget, reaches 1 with the rest. */
+static void shared_budgets_hand_on_the_rest(void **state)
+{
+	(void)state;
+	static const int sizes[2][2] = {{1024, 1024}, {1920, 1080}};
+	int compared = 0, raised = 0;
+	bool table_default_whole = false;
+	for (int k = 0; k < 4 * lx_config_count; k++) {
+		struct setup fx, sh;
+		struct lx_method_options of = LX_METHOD_OPTIONS_DEFAULT, os = LX_METHOD_OPTIONS_DEFAULT;
+		os.shared_budget = true;
+		int c = k / 4, table = k % 2, z = k / 2 % 2;
+		memset(&fx, 0, sizeof fx);
+		table ? lx_scene_table(&fx.scene) : lx_scene_default(&fx.scene);
+		lx_config_apply(&lx_configs[c], &fx.scene);
+		memset(&sh, 0, sizeof sh);
+		sh.scene = fx.scene;
+		assert_true(build_with(&fx, "plane", sizes[z][0], sizes[z][1], 0, &of));
+		assert_true(build_with(&sh, "plane", sizes[z][0], sizes[z][1], 0, &os));
+		char what[96];
+		snprintf(what, sizeof what, "%s scene, %s, %dx%d, shared", table ? "table" : "default", lx_configs[c].name,
+			 sizes[z][0], sizes[z][1]);
+		long total = 0;
+		for (int m = 0; m < sh.res.map_count; m++) {
+			const struct lx_shadow_map *a = &fx.res.maps[m], *b = &sh.res.maps[m];
+			if (b->rendered && b->plane >= 0)
+				total += (long)b->w * b->h;
+			if (!a->rendered || a->plane < 0 || m >= 2)
+				continue; /* the second piece follows its plane's scale */
+			if (!b->rendered || b->lixel_scale < a->lixel_scale)
+				fail_msg("%s: plane map %d lost lixels: scale %.4f against %.4f with fixed budgets", what, m,
+					 b->rendered ? b->lixel_scale : 0.0, a->lixel_scale);
+			raised += b->lixel_scale > a->lixel_scale;
+			compared++;
+		}
+		if (total > 2L * 350 * 350)
+			fail_msg("%s: the plane maps hold %ld lixels, more than the two budgets", what, total);
+		check_sampling(&sh, what);
+		if (table && c == 0 && z == 0) {
+			assert_true(fx.res.maps[1].lixel_scale < 1);
+			table_default_whole = sh.res.maps[1].lixel_scale == 1.0;
+		}
+		lx_meshes_free(&fx.meshes);
+		lx_meshes_free(&sh.meshes);
+	}
+	print_message("%d plane maps compared, %d denser with shared budgets\n", compared, raised);
+	assert_true(table_default_whole);
+	assert_true(compared >= 3 * lx_config_count && raised >= lx_config_count);
+}
+
 /* The plane points a frame's methods share (lx_plane_points_make) give each method's
  * plane figures bit for bit as each pixel's own ray does, and are what is read: a pixel
  * dropped from them drops from the figures. */
@@ -469,6 +524,7 @@ int main(void)
 		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),
 		cmocka_unit_test(shared_plane_points_give_the_same_figures),
+		cmocka_unit_test(shared_budgets_hand_on_the_rest),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),

@@ -552,10 +552,13 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 	}
 }
 
-/* Each plane map's lixels this frame: its own budget, and with shared budgets the
- * budgets of the maps that serve nothing this frame. */
+/* Each plane map's lixels this frame: its own budget, and with shared budgets what the
+ * others leave: the budgets of the maps that serve nothing this frame, and the rest of
+ * each map whose whole-number scale (or the cap, or the texture's side) stops it short
+ * of its budget. */
 static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
-			  const struct plane_pieces *pc, const bool *ok, int np, long *budget)
+			  const struct plane_chart *ch, const struct plane_pieces *pc, const bool *ok, int np,
+			  long *budget)
 {
 	long own = (long)o->plane_lixels * o->plane_lixels, need[PLANE_MAPS];
 	for (int i = 0; i < np; i++)
@@ -565,20 +568,35 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
 	for (int i = 0; i < np; i++) {
 		double area = 0;
-		for (int k = 0; ok[i] && k < pc[i].n; k++)
-			area += rect_area(pc[i].r[k]);
+		/* the lixels of a scale-1 fit (fit_plane: whole pixels from a floored corner,
+		 * rounded up), a row and a column more for the margin: short of that the fit
+		 * takes a scale just off 1, whose lixel centres sit off the pixel centres */
+		for (int k = 0; ok[i] && k < pc[i].n; k++) {
+			const double *r = pc[i].r[k];
+			area += (ceil(r[2] - floor(r[0])) + 1) * (ceil(r[3] - floor(r[1])) + 1);
+		}
 		need[i] = (long)ceil(density * area);
 	}
-	/* The budget of a map with nothing to serve this frame goes to the maps that need
-	 * more than their own (for lpp 1, or the cap), in proportion to their shortfall. A
-	 * map that needs less keeps its budget: beyond lpp 1 its lixels still serve the
-	 * casters that read it (measured: handing them over cost accuracy on every view). */
+	/* The budget of a map with nothing to serve this frame, and the lixels a map's fit
+	 * leaves unused, go to the maps that need more than their own (for lpp 1, or the
+	 * cap), in proportion to their shortfall. A map that needs less keeps the scale its
+	 * own budget gives: beyond lpp 1 its lixels still serve the casters that read it
+	 * (measured: handing those over cost accuracy on every view); only its rest moves. */
 	long spare = 0, short_by = 0;
 	for (int i = 0; i < np; i++) {
-		if (!ok[i])
+		if (!ok[i]) {
 			spare += budget[i], budget[i] = 0;
-		else if (need[i] > budget[i])
+		} else if (need[i] > budget[i]) {
 			short_by += need[i] - budget[i];
+		} else {
+			struct plane_fit fit[PIECES_MAX];
+			long used = 0;
+			fit_plane(&ch[i], &pc[i], &atlas->regions[i], atlas, budget[i], o->plane_max_lpp, fit);
+			for (int k = 0; k < pc[i].n; k++)
+				used += (long)fit[k].w * fit[k].h;
+			if (used < budget[i])
+				spare += budget[i] - used, budget[i] = used;
+		}
 	}
 	if (short_by <= 0 || spare <= 0)
 		return;
@@ -776,7 +794,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		if (ok[i] && pc[i].n > 1)
 			piece_free = false, piece_of = i;
 	}
-	plane_budgets(atlas, o, pc, ok, np, budget);
+	plane_budgets(atlas, o, ch, pc, ok, np, budget);
 	for (int i = 0; i < np; i++)
 		if (ok[i])
 			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i],
