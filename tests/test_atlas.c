@@ -171,12 +171,14 @@ static void plane_budgets_fit_every_aspect(void **state)
 	print_message("%d frames of aspects packed\n", frames);
 }
 
-/* Shared budgets: one map may take both plane budgets, in any aspect. */
+/* Shared budgets: one map may take both plane budgets, in any aspect, and the fallback,
+ * a square, what the plane maps leave (method_plane.c's requests). */
 static void shared_budgets_fit(void **state)
 {
 	(void)state;
 	long pool = 2L * 350 * 350;
-	struct lx_region_request req[] = {{"floor", 350, 350, pool, false}, {"wall", 350, 350, pool, false}, {"fallback", 128, 128, 0, false}};
+	struct lx_region_request req[] = {{"floor", 350, 350, pool, false}, {"wall", 350, 350, pool, false},
+					  {"fallback", 128, 128, pool + 128 * 128, false}};
 	struct lx_atlas start;
 	char err[256];
 	assert_true(lx_atlas_layout(&start, req, 3, 1, 2048, err, sizeof err));
@@ -185,9 +187,10 @@ static void shared_budgets_fit(void **state)
 		struct lx_atlas at = start;
 		double share = test_rand(&s);
 		int w[3], h[3];
-		shape((long)(pool * share), pow(32, 2 * test_rand(&s) - 1), &w[0], &h[0]);
-		shape(pool - (long)(pool * share), pow(32, 2 * test_rand(&s) - 1), &w[1], &h[1]);
-		w[2] = h[2] = 128;
+		double used = test_rand(&s); /* what the plane maps take of the pool; the fallback the rest */
+		shape((long)(pool * share * used), pow(32, 2 * test_rand(&s) - 1), &w[0], &h[0]);
+		shape((long)(pool * (1 - share) * used), pow(32, 2 * test_rand(&s) - 1), &w[1], &h[1]);
+		w[2] = h[2] = (int)floor(sqrt(128.0 * 128 + pool * (1 - used)));
 		for (int i = 0; i < 2; i++) /* the texture's longest side bounds the most elongated */
 			if (w[i] > start.max_side || h[i] > start.max_side)
 				w[i] = h[i] = 0;

@@ -30,7 +30,10 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 	long most = o->square_regions ? 0 : o->shared_budget ? budget * planes : budget;
 	for (int i = 0; i < planes; i++)
 		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most, false};
-	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, 0, false};
+	/* with shared budgets the fallback grows by what the plane maps leave (fallback_side) */
+	long fb = (long)o->fallback_lixels * o->fallback_lixels;
+	long fb_most = !o->square_regions && o->shared_budget && planes > 0 ? budget * planes + fb : 0;
+	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, fb_most, false};
 	if (!o->square_regions && planes > 0) {
 		/* a name no plane has: the regions' names must differ */
 		static const char *const names[] = {"piece", "second-piece", "piece-2", "plane-piece"};
@@ -605,6 +608,20 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 			budget[i] += (long)fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
+/* The fallback's side with shared budgets: its own lixels and what the plane maps leave
+ * unused this frame (a map at a whole-number scale, or none), square. */
+static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_options *o, const struct lx_shadow_result *out,
+			 int np)
+{
+	long own = (long)o->fallback_lixels * o->fallback_lixels, left = (long)np * o->plane_lixels * o->plane_lixels;
+	for (int m = 0; m < out->map_count; m++)
+		if (m != np && out->maps[m].rendered && out->maps[m].plane >= 0)
+			left -= (long)out->maps[m].w * out->maps[m].h;
+	long side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
+	side = side < o->fallback_lixels ? o->fallback_lixels : side;
+	return (int)(side < atlas->max_side ? side : atlas->max_side);
+}
+
 /* Whether a world box is outside the view frustum (all corners beyond one clip plane). */
 static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 {
@@ -738,7 +755,10 @@ static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *
 	const struct lx_shadow_map *fb = &out->maps[np];
 	if (!fb->rendered)
 		return;
+	/* the fallback's size this frame: its own with shared budgets (the atlas's region
+	 * still has the last frame's until the frame is packed) */
 	const struct lx_region *fr = &atlas->regions[fb->region];
+	int fw = fb->w > 0 ? fb->w : fr->w, fh = fb->h > 0 ? fb->h : fr->h;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		if (!in_view[id])
 			continue;
@@ -750,7 +770,7 @@ static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *
 		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
 		int nf = box_faces(f, c, faces);
-		double dfb = box_density(fb, fr->w, fr->h, c, pix, faces, nf);
+		double dfb = box_density(fb, fw, fh, c, pix, faces, nf);
 		if (!(dfb > 0))
 			continue;
 		unsigned mask = 1u << np;
@@ -819,6 +839,8 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+	if (atlas->regions[np].variable)
+		fb->w = fb->h = fallback_side(atlas, o, out, np);
 	choose_caster_maps(f, atlas, np, in_view, out);
 }
 
