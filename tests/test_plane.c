@@ -252,6 +252,25 @@ static void shared_budgets_hand_on_the_rest(void **state)
 	}
 	print_message("%d plane maps compared, %d denser with shared budgets\n", compared, raised);
 	assert_true(table_default_whole);
+	/* the rest goes to the fallback (the table seen from close to the floor), but not under
+	 * a density cap, which is there to spend less fill */
+	for (int capped = 0; capped < 2; capped++) {
+		struct setup t;
+		struct lx_method_options os = LX_METHOD_OPTIONS_DEFAULT;
+		os.shared_budget = true;
+		os.plane_max_lpp = capped ? 1 : 0;
+		memset(&t, 0, sizeof t);
+		lx_scene_table(&t.scene);
+		lx_config_apply(lx_config_find("floor-close"), &t.scene);
+		assert_true(build_with(&t, "plane", 1024, 1024, 0, &os));
+		const struct lx_shadow_map *fb = &t.res.maps[2];
+		assert_true(fb->rendered && fb->plane < 0);
+		if (capped)
+			assert_int_equal(fb->w, 128);
+		else
+			assert_true(fb->w > 256 && fb->w == fb->h);
+		lx_meshes_free(&t.meshes);
+	}
 	assert_true(compared >= 3 * lx_config_count && raised >= lx_config_count);
 }
 

@@ -69,7 +69,8 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
 	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (a\n" \
 	"                       map hands on what it leaves unused this frame, all of it\n" \
-	"                       when it serves nothing, to a map short of a lixel per pixel)\n" \
+	"                       when it serves nothing, to a map short of a lixel per pixel,\n" \
+	"                       the rest to the fallback unless --plane-max-lpp caps them)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
 	"                       default none: every lixel of the budget)\n" \
 	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \

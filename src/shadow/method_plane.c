@@ -609,10 +609,13 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 }
 
 /* The fallback's side with shared budgets: its own lixels and what the plane maps leave
- * unused this frame (a map at a whole-number scale, or none), square. */
+ * unused this frame (a map at a whole-number scale, or none), square. Under a density
+ * cap it keeps its own: the cap is there to spend less fill. */
 static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_options *o, const struct lx_shadow_result *out,
 			 int np)
 {
+	if (o->plane_max_lpp > 0)
+		return o->fallback_lixels;
 	long own = (long)o->fallback_lixels * o->fallback_lixels, left = (long)np * o->plane_lixels * o->plane_lixels;
 	for (int m = 0; m < out->map_count; m++)
 		if (m != np && out->maps[m].rendered && out->maps[m].plane >= 0)
