@@ -752,16 +752,12 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
  * its faces at least the fallback's lixels per pixel in their worst direction, then the
  * fallback (which covers every caster in view). */
-static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *atlas, int np, const bool *in_view,
+static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_view,
 			       struct lx_shadow_result *out)
 {
 	const struct lx_shadow_map *fb = &out->maps[np];
 	if (!fb->rendered)
 		return;
-	/* the fallback's size this frame: its own with shared budgets (the atlas's region
-	 * still has the last frame's until the frame is packed) */
-	const struct lx_region *fr = &atlas->regions[fb->region];
-	int fw = fb->w > 0 ? fb->w : fr->w, fh = fb->h > 0 ? fb->h : fr->h;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		if (!in_view[id])
 			continue;
@@ -773,7 +769,7 @@ static void choose_caster_maps(const struct lx_frame *f, const struct lx_atlas *
 		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
 		int nf = box_faces(f, c, faces);
-		double dfb = box_density(fb, fw, fh, c, pix, faces, nf);
+		double dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
 		if (!(dfb > 0))
 			continue;
 		unsigned mask = 1u << np;
@@ -842,9 +838,12 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+	/* its size this frame, before the atlas is packed (whose region still has the last
+	 * frame's): a fixed region's, or with shared budgets what the planes leave */
+	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np);
-	choose_caster_maps(f, atlas, np, in_view, out);
+	choose_caster_maps(f, np, in_view, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",
