@@ -5,7 +5,13 @@
 #ifndef LX_READS
 #define LX_READS 0
 #endif
-// Main pass. LX_SHADOWED: the method has shadow maps (the face test); LX_READS (0 to 4):
+#if LX_SHADOWED && !defined(LX_NO_FACE_TEST)
+#define LX_FACE_TEST 1 // main.frag's face test
+#else
+#define LX_FACE_TEST 0
+#endif
+// Main pass. LX_SHADOWED: the method has shadow maps (the face test,
+// but for LX_NO_FACE_TEST: main.frag); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order
 // (one variant serves every set of that many maps), a varying each and no more: every
 // varying costs an interpolation per pixel.
@@ -18,7 +24,7 @@ uniform mat4 u_shadow_tex[LX_READS]; // atlas (s, t, depth, q) <- world, per map
 uniform vec4 u_region[LX_READS]; // the texture-space bounds each map serves (main.frag)
 #endif
 #endif
-#if LX_SHADOWED
+#if LX_FACE_TEST
 // Which side of its face a point is on, as seen from the light: affine in the position,
 // so one interpolated float is exact where the face normal and the light would be three.
 varying float v_facing;
@@ -77,7 +83,7 @@ void main()
 #ifdef LX_PROJECTIVE
 	v_beam = u_beam * world;
 #endif
-#if LX_SHADOWED
+#if LX_FACE_TEST
 	v_facing = dot(a_face_normal, v_to_light);
 #endif
 #if LX_READS > 0

@@ -99,9 +99,10 @@ struct lx_renderer {
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
-	/* main-pass variants, built when first used: [shading][filter][how many maps a draw
-	 * reads] (whichever they are: a draw puts theirs in the first slots, set_maps) */
-	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_MAX_MAPS + 1];
+	/* main-pass variants, built when first used: [shading][filter][face test][how many
+	 * maps a draw reads] (whichever they are: a draw puts theirs in the first slots,
+	 * set_maps; the face test: face_test) */
+	struct main_program variant[SHADINGS][LX_FILTER_COUNT][2][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -150,11 +151,13 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, int reads, enum lx_depth_precision path,
-			 enum lx_filter filter, char *err, size_t errlen)
+static bool main_program(struct main_program *p, int maps, int shading, bool face, int reads,
+			 enum lx_depth_precision path, enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
 	lx_main_defines(maps, reads, shading == SHADING_DECISION, path, defines, sizeof defines);
+	if (!face)
+		strncat(defines, "#define LX_NO_FACE_TEST 1\n", sizeof defines - strlen(defines) - 1);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -189,17 +192,21 @@ static bool light_coloured(const struct lx_light *l)
 	return !(l->color.x == 1 && l->color.y == 1 && l->color.z == 1);
 }
 
-/* The decision variant and each light's shaded variant of a filter that read every map
- * (built now, so that a shader error shows when the filter is chosen). */
+/* The decision variant and each light's shaded variants of a filter that read every map,
+ * with and without the face test (built now, so that a shader error shows when the
+ * filter is chosen). */
 static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
 {
 	int all = r->d.map_count;
 	for (int i = -1; i < r->d.light_count; i++) {
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
-		struct main_program *p = &r->variant[shading][filter][all];
-		if (!p->prog && !main_program(p, r->d.map_count, shading, all, r->d.depth, filter, err, errlen))
-			return false;
+		for (int face = 1; face >= (shading == SHADING_DECISION); face--) {
+			struct main_program *p = &r->variant[shading][filter][face][all];
+			if (!p->prog &&
+			    !main_program(p, r->d.map_count, shading, face, all, r->d.depth, filter, err, errlen))
+				return false;
+		}
 	}
 	return true;
 }
@@ -737,19 +744,29 @@ static int maps_in(unsigned mask)
 	return n;
 }
 
-/* The main-pass variant for a shading and the maps a draw reads, built when first used;
- * *mask becomes every map when it cannot be (cannot happen once the variant reading every
- * map, built at the start, compiled). */
-static struct main_program *variant_for(struct lx_renderer *r, int shading, unsigned *mask)
+/* Whether an object's draws in a pass need the face test (a face turned away from the
+ * light is in its own shadow): a caster's do, its smooth normals light faces turned
+ * away; a plane's shaded draws do not, its Lambert term is 0 wherever the test would
+ * shadow it (a plane's normal is its face's, and which side of a plane a light is on is
+ * one answer over the whole plane). The decision says shadowed, so it keeps the test. */
+static bool face_test(const struct lx_renderer *r, int shading, int object)
+{
+	return shading == SHADING_DECISION || object >= r->d.scene->plane_count;
+}
+
+/* The main-pass variant for a shading, the face test and the maps a draw reads, built
+ * when first used; *mask becomes every map when it cannot be (cannot happen once the
+ * variants reading every map, built at the start, compiled). */
+static struct main_program *variant_for(struct lx_renderer *r, int shading, bool face, unsigned *mask)
 {
 	int reads = maps_in(*mask);
-	struct main_program *p = &r->variant[shading][r->filter][reads];
+	struct main_program *p = &r->variant[shading][r->filter][face][reads];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, reads, r->d.depth, r->filter, err, sizeof err)) {
+		if (!main_program(p, r->d.map_count, shading, face, reads, r->d.depth, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
-			p = &r->variant[shading][r->filter][r->d.map_count];
+			p = &r->variant[shading][r->filter][face][r->d.map_count];
 		}
 	}
 	return p;
@@ -1312,13 +1329,14 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	 * draws and the planes' pieces come in runs) */
 	struct main_program *p = NULL;
 	unsigned current = 0;
-	bool culling = false; /* as pass_state left it */
+	bool face = false, culling = false; /* culling as pass_state left it */
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
-		if (!p || d->mask != current) {
-			current = d->mask;
+		bool f_test = face_test(r, shading, d->object);
+		if (!p || d->mask != current || f_test != face) {
+			current = d->mask, face = f_test;
 			unsigned reads = current;
-			struct main_program *v = variant_for(r, shading, &reads);
+			struct main_program *v = variant_for(r, shading, face, &reads);
 			if (v != p)
 				use_program(r, v, &u);
 			p = v;
@@ -1352,14 +1370,15 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex[l]);
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
-	for (int reads = 0; reads <= r->d.map_count; reads++) {
-		unsigned mask = (1u << reads) - 1;
-		struct main_program *p = variant_for(r, shading, &mask);
-		use_program(r, p, &u);
-		if (mask)
-			set_maps(r, p, &u, mask);
-		lx_gl.DrawArrays(GL_TRIANGLES, 0, 3);
-	}
+	for (int face = 0; face < 2; face++)
+		for (int reads = 0; reads <= r->d.map_count; reads++) {
+			unsigned mask = (1u << reads) - 1;
+			struct main_program *p = variant_for(r, shading, face, &mask);
+			use_program(r, p, &u);
+			if (mask)
+				set_maps(r, p, &u, mask);
+			lx_gl.DrawArrays(GL_TRIANGLES, 0, 3);
+		}
 	light_pass_done(kind);
 }
 
@@ -1375,7 +1394,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
 			int shading = shading_of(r->beam_tex[l] != 0, l > 0, light_coloured(&r->d.scene->lights[l]));
-			if (!r->variant[shading][f][r->d.map_count].prog)
+			if (!r->variant[shading][f][1][r->d.map_count].prog)
 				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
 			r->filter = (enum lx_filter)f;
 			warm_light(r, l, shading);
