@@ -135,9 +135,11 @@ static void m33_zero_is_solved(void **state)
 	lx_meshes_free(&me);
 }
 
-/* Sampling of one setup's plane maps: aniso and lpp spread within 1.001 on the pixels
- * each serves, lpp = scale^2 (1 where the budget suffices). Returns maps checked. */
-static int check_sampling(const struct setup *s, const char *what)
+/* Sampling of one setup's plane maps: one affine image of the screen on every pixel each
+ * serves (lpp and lixel span each within 1.001 over them), lpp = scale^2 (1 where the
+ * budget suffices), and aniso = stretch^2: a similarity unless stretched, which only a
+ * map short of a lixel per pixel is. Returns maps checked; *stretched counts those. */
+static int check_sampling(const struct setup *s, const char *what, int *stretched)
 {
 	int checked = 0;
 	for (int m = 0; m < s->res.map_count; m++) {
@@ -149,22 +151,29 @@ static int check_sampling(const struct setup *s, const char *what)
 		struct lx_plane_sampling ps;
 		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, &ps))
 			continue;
-		double k2 = map->lixel_scale * map->lixel_scale;
-		if (!(ps.aniso_max <= 1.001 && ps.lpp_max / ps.lpp_min <= 1.001 && fabs(ps.lpp_median - k2) <= 1e-3 * k2))
-			fail_msg("%s: plane %s: %ld px, aniso_max %.6f, lpp %.6f..%.6f, scale^2 %.6f", what,
-				 s->scene.planes[map->plane].name, ps.pixels, ps.aniso_max, ps.lpp_min, ps.lpp_max, k2);
+		double k2 = map->lixel_scale * map->lixel_scale, st = map->lixel_stretch;
+		double aniso = fmax(st * st, 1 / (st * st));
+		if (!(fabs(ps.aniso_max - aniso) <= 1e-3 * aniso && ps.lpp_max / ps.lpp_min <= 1.001 &&
+		      ps.m_max / ps.m_median <= 1.001 && fabs(ps.lpp_median - k2) <= 1e-3 * k2))
+			fail_msg("%s: plane %s: %ld px, aniso_max %.6f (stretch %.4f), lpp %.6f..%.6f, m %.4f..%.4f, scale^2 %.6f",
+				 what, s->scene.planes[map->plane].name, ps.pixels, ps.aniso_max, st, ps.lpp_min, ps.lpp_max,
+				 ps.m_median, ps.m_max, k2);
 		if (map->lixel_scale == 1.0)
 			assert_true(ps.lpp_min >= 0.999 && ps.lpp_max <= 1.001);
+		if (st != 1) {
+			assert_true(map->lixel_scale < 1 && st >= 1 / 3.0 && st <= 3.0);
+			++*stretched;
+		}
 		checked++;
 	}
 	return checked;
 }
 
-static void sweep_is_a_similarity_on_every_plane(void **state)
+static void sweep_is_one_affine_map_on_every_plane(void **state)
 {
 	(void)state;
 	uint64_t seed = 2024;
-	int configs = 0, maps = 0, full = 0;
+	int configs = 0, maps = 0, full = 0, stretched = 0;
 	for (int k = 0; k < 320; k++) {
 		struct setup s;
 		memset(&s, 0, sizeof s);
@@ -189,15 +198,16 @@ static void sweep_is_a_similarity_on_every_plane(void **state)
 			continue;
 		char what[64];
 		snprintf(what, sizeof what, "configuration %d", k);
-		int n = check_sampling(&s, what);
+		int n = check_sampling(&s, what, &stretched);
 		maps += n;
 		for (int m = 0; m < s.res.map_count; m++)
 			full += s.res.maps[m].rendered && s.res.maps[m].plane >= 0 && s.res.maps[m].lixel_scale >= 1.0;
 		configs++;
 		lx_meshes_free(&s.meshes);
 	}
-	print_message("%d configurations, %d plane maps checked (%d with a lixel or more for every pixel)\n", configs, maps, full);
-	assert_true(configs >= 300 && maps >= 300 && full >= 100);
+	print_message("%d configurations, %d plane maps checked (%d with a lixel or more for every pixel, %d stretched)\n",
+		      configs, maps, full, stretched);
+	assert_true(configs >= 300 && maps >= 300 && full >= 100 && stretched >= 10);
 }
 
 /* Shared budgets: a map keeps the scale its own budget gives when that covers what it
@@ -210,7 +220,7 @@ static void shared_budgets_hand_on_the_rest(void **state)
 {
 	(void)state;
 	static const int sizes[2][2] = {{1024, 1024}, {1920, 1080}};
-	int compared = 0, raised = 0;
+	int compared = 0, raised = 0, stretched = 0;
 	bool table_default_whole = false;
 	for (int k = 0; k < 4 * lx_config_count; k++) {
 		struct setup fx, sh;
@@ -242,7 +252,7 @@ static void shared_budgets_hand_on_the_rest(void **state)
 		}
 		if (total > 2L * 350 * 350)
 			fail_msg("%s: the plane maps hold %ld lixels, more than the two budgets", what, total);
-		check_sampling(&sh, what);
+		check_sampling(&sh, what, &stretched);
 		if (table && c == 0 && z == 0) {
 			assert_true(fx.res.maps[1].lixel_scale < 1);
 			table_default_whole = sh.res.maps[1].lixel_scale == 1.0;
@@ -452,6 +462,7 @@ static void degenerate_configurations(void **state)
 		{"camera 2 cm above the floor", {0.3, 0.02, 2}, {0, 0.01, -3}, 0, {2.5, 6, 3}, NULL},
 		{"camera 1 cm from the wall", {0.2, 1.5, -4.99}, {0.2, 1.4, -5}, 0, {2.5, 6, 3}, NULL},
 	};
+	int stretched = 0; /* counted, not required */
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct setup s;
 		memset(&s, 0, sizeof s);
@@ -464,7 +475,7 @@ static void degenerate_configurations(void **state)
 		} else
 			s.scene.light.position = cases[i].light == 2 ? cases[i].eye : cases[i].pos;
 		assert_true(build(&s, "plane", 320, 240, 0.4));
-		check_sampling(&s, cases[i].what);
+		check_sampling(&s, cases[i].what, &stretched);
 		char ws[512] = "";
 		for (int k = 0; k < s.res.warning_count; k++)
 			snprintf(ws + strlen(ws), sizeof ws - strlen(ws), "%s%s", k ? "; " : "", s.res.warnings[k]);
@@ -552,6 +563,31 @@ static bool holds_all(const struct lx_poly *p, const vec2 *pts, int n)
 /* No silent cap: a hull of more than LX_POLY_MAX vertices, or a cut that would add the
  * 65th, becomes a polygon around all of it (before, the extra vertices were dropped and
  * the region shrank). */
+/* An outline's extents along x and y inside a convex polygon of either winding, which
+ * set a stretched plane map's aspect (method_plane.c, chart_stretch). */
+static void polygon_edges_inside(void **state)
+{
+	(void)state;
+	struct lx_poly big = {4, {{-1, -1}, {3, -1}, {3, 3}, {-1, 3}}}, square = {4, {{0, 0}, {2, 0}, {2, 2}, {0, 2}}};
+	struct lx_poly strip = {4, {{0, 0}, {10, 0}, {10, 1}, {0, 1}}}, right = {4, {{5, -5}, {20, -5}, {20, 5}, {5, 5}}};
+	struct lx_poly cw = {4, {{5, -5}, {5, 5}, {20, 5}, {20, -5}}}, far = {3, {{30, 0}, {40, 0}, {30, 9}}};
+	struct lx_poly diamond = {4, {{0, -1}, {1, 0}, {0, 1}, {-1, 0}}};
+	double dx, dy;
+	lx_poly_edges_inside(&square, &big, &dx, &dy); /* all inside */
+	assert_true(fabs(dx - 4) < 1e-12 && fabs(dy - 4) < 1e-12);
+	lx_poly_edges_inside(&strip, &right, &dx, &dy); /* the long edges from x = 5 on, the right end */
+	assert_true(fabs(dx - 10) < 1e-12 && fabs(dy - 1) < 1e-12);
+	lx_poly_edges_inside(&strip, &cw, &dx, &dy); /* the same, clockwise */
+	assert_true(fabs(dx - 10) < 1e-12 && fabs(dy - 1) < 1e-12);
+	lx_poly_edges_inside(&strip, &far, &dx, &dy); /* apart */
+	assert_true(dx == 0 && dy == 0);
+	lx_poly_edges_inside(&diamond, &big, &dx, &dy); /* diagonal edges count along both */
+	assert_true(fabs(dx - 4) < 1e-12 && fabs(dy - 4) < 1e-12);
+	struct lx_poly empty = {0};
+	lx_poly_edges_inside(&square, &empty, &dx, &dy);
+	assert_true(dx == 0 && dy == 0);
+}
+
 static void polygon_caps_keep_a_superset(void **state)
 {
 	(void)state;
@@ -588,10 +624,11 @@ static void polygon_caps_keep_a_superset(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(polygon_edges_inside),
 		cmocka_unit_test(polygon_caps_keep_a_superset),
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
-		cmocka_unit_test(sweep_is_a_similarity_on_every_plane),
+		cmocka_unit_test(sweep_is_one_affine_map_on_every_plane),
 		cmocka_unit_test(shared_plane_points_give_the_same_figures),
 		cmocka_unit_test(shared_budgets_hand_on_the_rest),
 		cmocka_unit_test(maps_do_not_depend_on_the_frame_before),

@@ -590,6 +590,40 @@ static void plane_keeps_every_shadow(void **state)
 		fail_msg("eye a millimetre above the floor: plane-optimal %.4f%% against uniform's %.4f%%", pct[1], pct[0]);
 }
 
+/* Short of a lixel per pixel a plane map stretches its lixels along the shadows' edges
+ * (method_plane.c, chart_stretch). The table under the low light, whose long shadows
+ * cover the floor, at 800x600 with fixed and with shared budgets: the floor map is
+ * stretched, and fewer pixels are wrong than with square lixels (plane/similar). */
+static void stretched_maps_follow_long_shadows(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_table(&s);
+	lx_config_apply(lx_config_find("low"), &s);
+	static const char *const methods[2][2] = {{"plane", "plane/similar"}, {"plane/shared", "plane/shared/similar"}};
+	for (int b = 0; b < 2; b++) {
+		double pct[2], stretch[2];
+		for (int k = 0; k < 2; k++) {
+			struct lx_render_job job = {.method = methods[b][k], .platform = "osmesa", .scene = s, .width = 800,
+						    .height = 600, .timed_frames = 1, .measure = true, .keep_pixels = true,
+						    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
+			struct lx_render_report r;
+			char err[512];
+			if (render_run_cached(&job, &r, err, sizeof err))
+				fail_msg("%s", err);
+			pct[k] = r.mismatch.mismatch_pct;
+			const struct lx_shadow_map *floor_map = &r.light[0].result.maps[1]; /* the table, the floor */
+			assert_true(floor_map->rendered && floor_map->plane == 1);
+			stretch[k] = floor_map->lixel_stretch;
+			lx_render_report_free(&r);
+		}
+		print_message("table, low light, %-13s stretched by %.3f: %.4f%%; square lixels: %.4f%%\n", methods[b][0],
+			      stretch[0], pct[0], pct[1]);
+		assert_true(stretch[0] > 1.5 && stretch[1] == 1);
+		assert_true(pct[0] < 0.8 * pct[1]);
+	}
+}
+
 /* PSM, LiSPSM, XPSM and TSM under the same edge bound on every configuration. */
 static void warps_match_reference(void **state)
 {
@@ -1419,6 +1453,7 @@ int main(void)
 		cmocka_unit_test_teardown(two_lights_add_up, close_shared_platform),
 		cmocka_unit_test_teardown(paper_bad_case_is_measured, close_shared_platform),
 		cmocka_unit_test_teardown(plane_keeps_every_shadow, close_shared_platform),
+		cmocka_unit_test_teardown(stretched_maps_follow_long_shadows, close_shared_platform),
 		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),
 		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),

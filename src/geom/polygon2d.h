@@ -27,6 +27,10 @@ void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, doubl
 void lx_poly_hull_of_difference(const struct lx_poly *a, const struct lx_poly *b, const struct lx_poly *c,
 				struct lx_poly *out);
 double lx_poly_area(const struct lx_poly *p);
+/* The parts of a's edges inside convex b (either winding): the sums of their extents
+ * along x (*dx) and along y (*dy). An edge's length times its normal's x component is
+ * its extent along y: these weigh how much of a's outline runs along each axis. */
+void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, double *dx, double *dy);
 /* Strictly inside by more than eps (distance to every edge). */
 bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
 /* The pixels [*x0, *x1) whose centres, in every row of [y0, y1), lie inside p by more

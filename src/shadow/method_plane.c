@@ -132,6 +132,7 @@ struct plane_chart {
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
+	double stretch; /* the lixels' aspect when the budget cannot give every pixel one (chart_stretch) */
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
@@ -179,22 +180,26 @@ static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *
 	return true;
 }
 
-/* The casters' box corners in the light image (8 each, in object order), or false when
- * one reaches behind the light image (then the casters bound nothing). */
-static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, int *np)
+/* The casters' box corners in the light image (8 each, in object order; whole[c] false
+ * for one that reaches behind the light image, its corners then meaningless), and false
+ * when one does (then the casters bound nothing). */
+static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *np)
 {
+	bool all = true;
 	*np = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
+		bool in_front = true;
 		for (int k = 0; k < 8; k++) {
 			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
-			if (!(h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z))))
-				return false;
-			pts[(*np)++] = (vec2){h.x / h.w, h.y / h.w}; /* room for every object's 8 corners */
+			in_front &= h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
+			pts[(*np)++] = in_front ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0}; /* room: every object's 8 */
 		}
+		whole[*np / 8 - 1] = in_front;
+		all &= in_front;
 	}
-	return true;
+	return all;
 }
 
 /* A_l's twist and mirror: a twist by a multiple of 90 degrees (a level camera facing the
@@ -219,6 +224,25 @@ static void chart_orientation(const struct lx_frame *f, int i, int next, bool tw
 	ch->mx = v4_dot_point(lx_plane_equation(P), f->view.eye) < 0 ? -1 : 1;
 }
 
+/* The lixels' aspect on a plane whose budget cannot give every pixel a lixel. A shadow's
+ * edges are where NEAREST lookups err, in a band as wide as a lixel across the edge; the
+ * casters' footprint outlines stand for those edges (a box's shadow is the hull of its
+ * corners' shadows). With lixels 1 / sx pixels wide and 1 / sy tall, an outline that runs
+ * X pixels along x and Y along y (lx_poly_edges_inside) errs over about X / sy + Y / sx
+ * pixels; for a given count of lixels, sx sy, that is least at sy / sx = X / Y: a
+ * stretch of sqrt(X / Y), the map's y scaled up by it and its x down. A long shadow from
+ * a low light runs mostly one way (the table under the low light at 1024x1024, shared
+ * budgets: 0.202% of the pixels wrong with square lixels, 0.115% stretched by 2.4).
+ * Kept within STRETCH_MAX either way (caps of 1.5 to 5 measured alike over 200 random
+ * views), so that a thin shadow across the long side cannot fall between lixels. */
+#define STRETCH_MAX 3.0
+static double chart_stretch(double along_x, double along_y)
+{
+	if (!(along_x > 0 && along_y > 0))
+		return along_x > 0 ? STRETCH_MAX : along_y > 0 ? 1 / STRETCH_MAX : 1;
+	return fmin(STRETCH_MAX, fmax(1 / STRETCH_MAX, sqrt(along_x / along_y)));
+}
+
 /* A polygon in the chart's frame: twisted and mirrored. */
 static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
 {
@@ -227,7 +251,7 @@ static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
 }
 
 static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next, bool twist,
-			struct lx_shadow_result *out, struct plane_chart *ch)
+			bool similar, struct lx_shadow_result *out, struct plane_chart *ch)
 {
 	ch->needs_fallback = false;
 	if (!chart_usable(f, ls, i, out, ch))
@@ -236,8 +260,9 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	 * plane, within what the casters can cover. */
 	struct lx_poly wanted = ch->win, cast;
 	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	bool whole[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int np;
-	bool bounded = caster_corners(f, ch, pts, &np);
+	bool bounded = caster_corners(f, ch, pts, whole, &np);
 	if (bounded) {
 		lx_poly_hull(pts, np, &cast);
 		lx_poly_intersect(&ch->win, &cast, &wanted);
@@ -249,18 +274,32 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	struct lx_poly rot = wanted;
 	to_chart(ch, &rot);
 	lx_poly_bounds(&rot, &ch->x0, &ch->y0, &ch->x1, &ch->y1);
-	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces) */
+	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces,
+	 * when every caster has one); its outline inside the visible plane, for the lixels'
+	 * aspect (chart_stretch: from those that have one) */
 	ch->feet = 0;
-	for (int c = 0; bounded && c < np / 8; c++) {
+	double along_x = 0, along_y = 0;
+	struct lx_poly win = ch->win;
+	to_chart(ch, &win);
+	for (int c = 0; c < np / 8; c++) {
 		struct lx_poly one, on;
+		if (!whole[c])
+			continue;
 		lx_poly_hull(pts + 8 * c, 8, &one);
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
 		to_chart(ch, &on);
-		double *b = ch->foot[ch->feet++];
-		lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+		if (bounded) {
+			double *b = ch->foot[ch->feet++];
+			lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+		}
+		double dx, dy;
+		to_chart(ch, &one);
+		lx_poly_edges_inside(&one, &win, &dx, &dy);
+		along_x += dx, along_y += dy;
 	}
+	ch->stretch = similar ? 1 : chart_stretch(along_x, along_y);
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
@@ -312,10 +351,12 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct pl
 }
 
 /* A_l's scale and translation for one piece: u = scale (R p - (x0, y0)) + offset, in a
- * map of w x h lixels whose used part is [offset, uw] x [offset, vh]. */
+ * map of w x h lixels whose used part is [offset, uw] x [offset, vh]; stretched, the
+ * scale is scale / stretch along x and scale * stretch along y. */
 struct plane_fit {
 	double scale, x0, y0, offset, uw, vh;
 	int w, h;
+	double stretch;
 };
 
 /* Sizes the pieces' maps, one scale for all. A fixed (square) region: the paper's
@@ -328,7 +369,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 {
 	if (!g->variable) { /* one piece (plane_build) */
 		double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
-		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0};
+		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0, .stretch = 1};
 		fit->scale = fmin(1.0, fmin(g->w / rw, g->h / rh));
 		fit->w = g->w, fit->h = g->h;
 		if (fit->scale == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
@@ -343,16 +384,20 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 		return;
 	}
 	int side = atlas->max_side > 1 ? atlas->max_side : 1;
-	double area = 0, longest = 0;
+	double area = 0, wide = 0, tall = 0;
 	for (int k = 0; k < pc->n; k++) {
 		area += (pc->r[k][2] - pc->r[k][0]) * (pc->r[k][3] - pc->r[k][1]); /* > 0: inside the chart's bounds */
-		longest = fmax(longest, fmax(pc->r[k][2] - pc->r[k][0], pc->r[k][3] - pc->r[k][1]));
+		wide = fmax(wide, pc->r[k][2] - pc->r[k][0]), tall = fmax(tall, pc->r[k][3] - pc->r[k][1]);
 	}
 	double s = sqrt((double)budget / fmax(area, 1e-300));
 	if (max_lpp > 0)
 		s = fmin(s, sqrt(max_lpp));
-	s = fmin(s, (side - 1) / longest); /* the long side within the texture */
-	if (ch->on_grid && s >= 1) {
+	/* stretched only short of a lixel per pixel (chart_stretch): from there on a
+	 * similarity keeps lixel centres on pixel centres */
+	double a = s < 1 ? ch->stretch : 1; /* in [1/3, 3] */
+	/* the long sides within the texture (both > 0: inside the chart's bounds) */
+	s = fmin(s, fmin((side - 1) * a / fmax(wide, 1e-9), (side - 1) / (a * fmax(tall, 1e-9))));
+	if (ch->on_grid && s >= 1 && a == 1) {
 		/* whole lixels per pixel, the translation in whole pixels: pixel centres land on
 		 * lixel centres (an even scale puts them on corners, half a lixel off) */
 		for (double k = floor(s); k >= 1; k--) {
@@ -362,7 +407,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 				double x0 = floor(pc->r[p][0]), y0 = floor(pc->r[p][1]), off = fmod(k, 2) == 0 ? 0.5 : 0;
 				double uw = k * (pc->r[p][2] - x0) + off, vh = k * (pc->r[p][3] - y0) + off;
 				int w = (int)ceil(uw), h = (int)ceil(vh);
-				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h};
+				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h, 1};
 				total += (long)w * h;
 				fits &= w <= side && h <= side;
 			}
@@ -374,10 +419,10 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 		long total = 0;
 		int worst = 0;
 		for (int p = 0; p < pc->n; p++) {
-			double rw = pc->r[p][2] - pc->r[p][0], rh = pc->r[p][3] - pc->r[p][1];
+			double rw = (pc->r[p][2] - pc->r[p][0]) / a, rh = (pc->r[p][3] - pc->r[p][1]) * a;
 			int w = (int)ceil(s * rw), h = (int)ceil(s * rh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-			fit[p] = (struct plane_fit){s, pc->r[p][0], pc->r[p][1], 0, fmin(w, s * rw), fmin(h, s * rh), w, h};
+			fit[p] = (struct plane_fit){s, pc->r[p][0], pc->r[p][1], 0, fmin(w, s * rw), fmin(h, s * rh), w, h, a};
 			total += (long)w * h;
 			worst = w > worst ? w : h > worst ? h : worst;
 		}
@@ -493,9 +538,9 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *ft)
 {
 	mat4 a = m4_identity();
-	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sc = ft->scale;
-	a.m[0] = kx * sc * ch->cs * ch->mx, a.m[4] = -kx * sc * ch->sn * ch->mx, a.m[12] = kx * (ft->offset - sc * ft->x0) - 1;
-	a.m[1] = ky * sc * ch->sn, a.m[5] = ky * sc * ch->cs, a.m[13] = ky * (ft->offset - sc * ft->y0) - 1;
+	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sx = ft->scale / ft->stretch, sy = ft->scale * ft->stretch;
+	a.m[0] = kx * sx * ch->cs * ch->mx, a.m[4] = -kx * sx * ch->sn * ch->mx, a.m[12] = kx * (ft->offset - sx * ft->x0) - 1;
+	a.m[1] = ky * sy * ch->sn, a.m[5] = ky * sy * ch->cs, a.m[13] = ky * (ft->offset - sy * ft->y0) - 1;
 	return a;
 }
 
@@ -510,7 +555,7 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	for (int k = 0; k < pc->n; k++)
 		r[0] = fmin(r[0], pc->r[k][0]), r[1] = fmin(r[1], pc->r[k][1]), r[2] = fmax(r[2], pc->r[k][2]),
 		r[3] = fmax(r[3], pc->r[k][3]);
-	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1])};
+	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1]), 1};
 	ft.w = ft.w < 1 ? 1 : ft.w, ft.h = ft.h < 1 ? 1 : ft.h;
 	mat4 a = piece_matrix(ch, &ft);
 	*depth = m4_mul(&a, &ch->cam.m);
@@ -539,6 +584,7 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		mp->light_clip = mk;
 		memcpy(mp->bounds, b, sizeof b);
 		mp->lixel_scale = ft->scale;
+		mp->lixel_stretch = ft->stretch;
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
@@ -805,7 +851,8 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	for (int i = 0; i < np; i++) {
-		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o->plane_twist || o->square_regions, out, &ch[i]);
+		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o->plane_twist || o->square_regions,
+				    o->plane_similar, out, &ch[i]);
 		if (!ok[i])
 			continue;
 		plane_pieces(&ch[i], piece_free, &pc[i]);

@@ -19,7 +19,10 @@ struct lx_shadow_map {
 	bool rendered;
 	mat4 light_clip; /* world -> region clip space */
 	int plane;       /* the plane of interest this map is optimal for, or -1 */
-	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel) */
+	double lixel_scale; /* plane maps: lixels per pixel along each axis (1: a lixel for every pixel),
+			     * their geometric mean when stretched */
+	double lixel_stretch; /* plane maps: along the map's x lixel_scale / this, along its y
+			       * lixel_scale * this (1: a similarity; method_plane.c) */
 	int w, h;           /* the lixels it takes this frame in its own axes; 0: its region's fixed size */
 	bool pancake;       /* casters may lie nearer than the near plane: the shadow pass flattens them onto it */
 	/* Which rays the map serves, in region clip x, y (after the divide): the rectangle
@@ -57,6 +60,8 @@ struct lx_method_options {
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
 	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
+	bool plane_similar;   /* plane maps: square lixels (an exact similarity) even short of a
+			       * lixel per pixel, never stretched along a plane's shadow edges */
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
