@@ -160,8 +160,10 @@ static int check_sampling(const struct setup *s, const char *what, int *stretche
 				 ps.m_median, ps.m_max, k2);
 		if (map->lixel_scale == 1.0)
 			assert_true(ps.lpp_min >= 0.999 && ps.lpp_max <= 1.001);
-		if (st != 1) {
+		if (st != 1) { /* short of lpp 1, within 3, the finer axis whole where it reaches 1 */
+			double fine = map->lixel_scale * fmax(st, 1 / st);
 			assert_true(map->lixel_scale < 1 && st >= 1 / 3.0 && st <= 3.0);
+			assert_true(fine < 1 || fabs(fine - round(fine)) < 1e-9 * fine);
 			++*stretched;
 		}
 		checked++;

@@ -591,9 +591,10 @@ static void plane_keeps_every_shadow(void **state)
 }
 
 /* Short of a lixel per pixel a plane map stretches its lixels along the shadows' edges
- * (method_plane.c, chart_stretch). The table under the low light, whose long shadows
- * cover the floor, at 800x600 with fixed and with shared budgets: the floor map is
- * stretched, and fewer pixels are wrong than with square lixels (plane/similar). */
+ * (method_plane.c, chart_stretch, and fit_plane's snapping of the finer axis). The table
+ * under the low light, whose long shadows cover the floor, at 800x600 with fixed and
+ * with shared budgets: the floor map is stretched, and fewer pixels are wrong than with
+ * square lixels (plane/similar): measured 0.076% against 0.287%, 0.069% against 0.184%. */
 static void stretched_maps_follow_long_shadows(void **state)
 {
 	(void)state;

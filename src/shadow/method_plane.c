@@ -230,9 +230,10 @@ static void chart_orientation(const struct lx_frame *f, int i, int next, bool tw
  * corners' shadows). With lixels 1 / sx pixels wide and 1 / sy tall, an outline that runs
  * X pixels along x and Y along y (lx_poly_edges_inside) errs over about X / sy + Y / sx
  * pixels; for a given count of lixels, sx sy, that is least at sy / sx = X / Y: a
- * stretch of sqrt(X / Y), the map's y scaled up by it and its x down. A long shadow from
- * a low light runs mostly one way (the table under the low light at 1024x1024, shared
- * budgets: 0.202% of the pixels wrong with square lixels, 0.115% stretched by 2.4).
+ * stretch of sqrt(X / Y), the map's y scaled up by it and its x down (then snapped:
+ * fit_plane). A long shadow from a low light runs mostly one way (the table under the
+ * low light at 1024x1024, shared budgets: 0.202% of the pixels wrong with square lixels,
+ * 0.065% stretched and snapped to a lixel per pixel row; uniform 0.114%).
  * Kept within STRETCH_MAX either way (caps of 1.5 to 5 measured alike over 200 random
  * views), so that a thin shadow across the long side cannot fall between lixels. */
 #define STRETCH_MAX 3.0
@@ -350,13 +351,14 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct pl
 	}
 }
 
-/* A_l's scale and translation for one piece: u = scale (R p - (x0, y0)) + offset, in a
- * map of w x h lixels whose used part is [offset, uw] x [offset, vh]; stretched, the
- * scale is scale / stretch along x and scale * stretch along y. */
+/* A_l's scale and translation for one piece: u = scale (R p - (x0, y0)) + (offset,
+ * offset_y), in a map of w x h lixels whose used part is [offset, uw] x [offset_y, vh];
+ * stretched, the scale is scale / stretch along x and scale * stretch along y. */
 struct plane_fit {
 	double scale, x0, y0, offset, uw, vh;
 	int w, h;
 	double stretch;
+	double offset_y; /* the translation along y (offset: along x; they differ when one axis is snapped) */
 };
 
 /* Sizes the pieces' maps, one scale for all. A fixed (square) region: the paper's
@@ -369,7 +371,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 {
 	if (!g->variable) { /* one piece (plane_build) */
 		double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
-		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0, .stretch = 1};
+		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0, .stretch = 1, .offset_y = 0};
 		fit->scale = fmin(1.0, fmin(g->w / rw, g->h / rh));
 		fit->w = g->w, fit->h = g->h;
 		if (fit->scale == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
@@ -407,7 +409,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 				double x0 = floor(pc->r[p][0]), y0 = floor(pc->r[p][1]), off = fmod(k, 2) == 0 ? 0.5 : 0;
 				double uw = k * (pc->r[p][2] - x0) + off, vh = k * (pc->r[p][3] - y0) + off;
 				int w = (int)ceil(uw), h = (int)ceil(vh);
-				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h, 1};
+				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h, 1, off};
 				total += (long)w * h;
 				fits &= w <= side && h <= side;
 			}
@@ -415,14 +417,32 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 				return;
 		}
 	}
+	/* Stretched, the finer axis may give a lixel per pixel or more along it: then it takes
+	 * a whole number (rounded down; the other axis takes the rest of the lixels) and whole
+	 * pixels of translation, so that along it lixel centres fall on pixel centres, as at
+	 * lpp 1: a shadow edge along the pixel rows (columns) is then decided exactly, instead
+	 * of a whole row of pixels reading a lixel whose centre lies across it. Over 200 random
+	 * views at 640x480 the mean mismatch fell from 0.0359% to 0.0286% (default scene) and
+	 * 0.0901% to 0.0756% (table) with fixed budgets, 0.0130% to 0.0109% and 0.0617% to
+	 * 0.0560% with shared ones (snapping rounded up from 0.8 or 0.6 measured alike). */
+	double snap_x = 0, snap_y = 0;
+	if (ch->on_grid && a != 1) {
+		if (s * a >= 1)
+			snap_y = floor(s * a);
+		else if (s / a >= 1)
+			snap_x = floor(s / a);
+	}
 	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
 		long total = 0;
 		int worst = 0;
+		double sx = snap_x ? snap_x : snap_y ? s * s / snap_y : s / a, sy = snap_y ? snap_y : snap_x ? s * s / snap_x : s * a;
 		for (int p = 0; p < pc->n; p++) {
-			double rw = (pc->r[p][2] - pc->r[p][0]) / a, rh = (pc->r[p][3] - pc->r[p][1]) * a;
-			int w = (int)ceil(s * rw), h = (int)ceil(s * rh);
+			double x0 = snap_x ? floor(pc->r[p][0]) : pc->r[p][0], y0 = snap_y ? floor(pc->r[p][1]) : pc->r[p][1];
+			double ox = snap_x && fmod(snap_x, 2) == 0 ? 0.5 : 0, oy = snap_y && fmod(snap_y, 2) == 0 ? 0.5 : 0;
+			double uw = sx * (pc->r[p][2] - x0) + ox, vh = sy * (pc->r[p][3] - y0) + oy;
+			int w = (int)ceil(uw), h = (int)ceil(vh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-			fit[p] = (struct plane_fit){s, pc->r[p][0], pc->r[p][1], 0, fmin(w, s * rw), fmin(h, s * rh), w, h, a};
+			fit[p] = (struct plane_fit){sqrt(sx * sy), x0, y0, ox, fmin(w, uw), fmin(h, vh), w, h, sqrt(sy / sx), oy};
 			total += (long)w * h;
 			worst = w > worst ? w : h > worst ? h : worst;
 		}
@@ -540,7 +560,7 @@ static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *f
 	mat4 a = m4_identity();
 	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sx = ft->scale / ft->stretch, sy = ft->scale * ft->stretch;
 	a.m[0] = kx * sx * ch->cs * ch->mx, a.m[4] = -kx * sx * ch->sn * ch->mx, a.m[12] = kx * (ft->offset - sx * ft->x0) - 1;
-	a.m[1] = ky * sy * ch->sn, a.m[5] = ky * sy * ch->cs, a.m[13] = ky * (ft->offset - sy * ft->y0) - 1;
+	a.m[1] = ky * sy * ch->sn, a.m[5] = ky * sy * ch->cs, a.m[13] = ky * (ft->offset_y - sy * ft->y0) - 1;
 	return a;
 }
 
@@ -555,7 +575,7 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	for (int k = 0; k < pc->n; k++)
 		r[0] = fmin(r[0], pc->r[k][0]), r[1] = fmin(r[1], pc->r[k][1]), r[2] = fmax(r[2], pc->r[k][2]),
 		r[3] = fmax(r[3], pc->r[k][3]);
-	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1]), 1};
+	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1]), 1, 0};
 	ft.w = ft.w < 1 ? 1 : ft.w, ft.h = ft.h < 1 ? 1 : ft.h;
 	mat4 a = piece_matrix(ch, &ft);
 	*depth = m4_mul(&a, &ch->cam.m);
@@ -579,7 +599,7 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 			mk.m[c * 4 + 2] = depth->m[c * 4 + 2];
 		if (!m4_finite(&mk))
 			continue;
-		double b[4] = {2.0 * ft->offset / ft->w - 1, 2.0 * ft->offset / ft->h - 1, 2.0 * ft->uw / ft->w - 1,
+		double b[4] = {2.0 * ft->offset / ft->w - 1, 2.0 * ft->offset_y / ft->h - 1, 2.0 * ft->uw / ft->w - 1,
 			       2.0 * ft->vh / ft->h - 1};
 		mp->light_clip = mk;
 		memcpy(mp->bounds, b, sizeof b);
