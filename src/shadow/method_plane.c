@@ -361,6 +361,46 @@ struct plane_fit {
 	double offset_y; /* the translation along y (offset: along x; they differ when one axis is snapped) */
 };
 
+/* fit_plane below a whole-number scale: scale s, stretched by a, shrunk until the pieces
+ * hold no more than the budget and fit within the texture's side. */
+static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *pc, long budget, int side, double s,
+		       double a, struct plane_fit *fit)
+{
+	/* Stretched, the finer axis may give a lixel per pixel or more along it: then it takes
+	 * a whole number (rounded down; the other axis takes the rest of the lixels) and whole
+	 * pixels of translation, so that along it lixel centres fall on pixel centres, as at
+	 * lpp 1: a shadow edge along the pixel rows (columns) is then decided exactly, instead
+	 * of a whole row of pixels reading a lixel whose centre lies across it. Over 200 random
+	 * views at 640x480 the mean mismatch fell from 0.0359% to 0.0286% (default scene) and
+	 * 0.0901% to 0.0756% (table) with fixed budgets, 0.0130% to 0.0109% and 0.0617% to
+	 * 0.0560% with shared ones (snapping rounded up from 0.8 or 0.6 measured alike). */
+	double snap_x = 0, snap_y = 0;
+	if (ch->on_grid && a != 1) {
+		if (s * a >= 1)
+			snap_y = floor(s * a);
+		else if (s / a >= 1)
+			snap_x = floor(s / a);
+	}
+	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
+		long total = 0;
+		int worst = 0;
+		double sx = snap_x ? snap_x : snap_y ? s * s / snap_y : s / a, sy = snap_y ? snap_y : snap_x ? s * s / snap_x : s * a;
+		for (int p = 0; p < pc->n; p++) {
+			double x0 = snap_x ? floor(pc->r[p][0]) : pc->r[p][0], y0 = snap_y ? floor(pc->r[p][1]) : pc->r[p][1];
+			double ox = snap_x && fmod(snap_x, 2) == 0 ? 0.5 : 0, oy = snap_y && fmod(snap_y, 2) == 0 ? 0.5 : 0;
+			double uw = sx * (pc->r[p][2] - x0) + ox, vh = sy * (pc->r[p][3] - y0) + oy;
+			int w = (int)ceil(uw), h = (int)ceil(vh);
+			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
+			fit[p] = (struct plane_fit){sqrt(sx * sy), x0, y0, ox, fmin(w, uw), fmin(h, vh), w, h, sqrt(sy / sx), oy};
+			total += (long)w * h;
+			worst = w > worst ? w : h > worst ? h : worst;
+		}
+		if ((total <= budget && worst <= side) || tries == 63)
+			return;
+		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
+	}
+}
+
 /* Sizes the pieces' maps, one scale for all. A fixed (square) region: the paper's
  * uniform scale down when the budget cannot give a lixel per pixel. A fitted region: the
  * scale is set by area, so the budget's lixels all cover wanted pixels, in shapes that
@@ -417,39 +457,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 				return;
 		}
 	}
-	/* Stretched, the finer axis may give a lixel per pixel or more along it: then it takes
-	 * a whole number (rounded down; the other axis takes the rest of the lixels) and whole
-	 * pixels of translation, so that along it lixel centres fall on pixel centres, as at
-	 * lpp 1: a shadow edge along the pixel rows (columns) is then decided exactly, instead
-	 * of a whole row of pixels reading a lixel whose centre lies across it. Over 200 random
-	 * views at 640x480 the mean mismatch fell from 0.0359% to 0.0286% (default scene) and
-	 * 0.0901% to 0.0756% (table) with fixed budgets, 0.0130% to 0.0109% and 0.0617% to
-	 * 0.0560% with shared ones (snapping rounded up from 0.8 or 0.6 measured alike). */
-	double snap_x = 0, snap_y = 0;
-	if (ch->on_grid && a != 1) {
-		if (s * a >= 1)
-			snap_y = floor(s * a);
-		else if (s / a >= 1)
-			snap_x = floor(s / a);
-	}
-	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
-		long total = 0;
-		int worst = 0;
-		double sx = snap_x ? snap_x : snap_y ? s * s / snap_y : s / a, sy = snap_y ? snap_y : snap_x ? s * s / snap_x : s * a;
-		for (int p = 0; p < pc->n; p++) {
-			double x0 = snap_x ? floor(pc->r[p][0]) : pc->r[p][0], y0 = snap_y ? floor(pc->r[p][1]) : pc->r[p][1];
-			double ox = snap_x && fmod(snap_x, 2) == 0 ? 0.5 : 0, oy = snap_y && fmod(snap_y, 2) == 0 ? 0.5 : 0;
-			double uw = sx * (pc->r[p][2] - x0) + ox, vh = sy * (pc->r[p][3] - y0) + oy;
-			int w = (int)ceil(uw), h = (int)ceil(vh);
-			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-			fit[p] = (struct plane_fit){sqrt(sx * sy), x0, y0, ox, fmin(w, uw), fmin(h, vh), w, h, sqrt(sy / sx), oy};
-			total += (long)w * h;
-			worst = w > worst ? w : h > worst ? h : worst;
-		}
-		if ((total <= budget && worst <= side) || tries == 63)
-			return;
-		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
-	}
+	fit_scaled(ch, pc, budget, side, s, a, fit);
 }
 
 /* The farthest depth (z / w of m) of the plane's wanted part: z / w is a ratio of linear
