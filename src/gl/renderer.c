@@ -74,6 +74,7 @@ struct lx_renderer {
 	GLuint piece_vbo;
 	GLuint vbo[LX_MAX_PLANES + LX_MAX_CASTERS];
 	GLsizei vertices[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool flat[LX_MAX_PLANES + LX_MAX_CASTERS]; /* every vertex's normal its face's (face_test) */
 	/* the shadow passes' meshes: positions only, each once, and triangles as indices
 	 * into them (llvmpipe's draw module shades each index once; the sphere's 2976
 	 * vertices are 482 positions), kept on the CPU with each triangle's plane in object
@@ -329,6 +330,10 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
 				 GL_STATIC_DRAW);
 		r->vertices[i] = m->vertex_count;
+		r->flat[i] = true;
+		for (int v = 0; v < m->vertex_count && r->flat[i]; v++)
+			r->flat[i] = !memcmp(m->v + (size_t)v * LX_VERTEX_FLOATS + 3, m->v + (size_t)v * LX_VERTEX_FLOATS + 6,
+					     3 * sizeof(float));
 		if (!shadow_mesh(r, i, m)) {
 			snprintf(err, errlen, "out of memory indexing the meshes");
 			return false;
@@ -745,13 +750,14 @@ static int maps_in(unsigned mask)
 }
 
 /* Whether an object's draws in a pass need the face test (a face turned away from the
- * light is in its own shadow): a caster's do, its smooth normals light faces turned
- * away; a plane's shaded draws do not, its Lambert term is 0 wherever the test would
- * shadow it (a plane's normal is its face's, and which side of a plane a light is on is
- * one answer over the whole plane). The decision says shadowed, so it keeps the test. */
+ * light is in its own shadow): a caster with smooth normals does, they light faces turned
+ * away; a flat-shaded object (a plane, a box) does not in a shaded pass, its Lambert term
+ * is 0 wherever the test would shadow it (each vertex's normal is its face's, and which
+ * side of a flat face a light is on is one answer over the face). The decision says
+ * shadowed, so it keeps the test. */
 static bool face_test(const struct lx_renderer *r, int shading, int object)
 {
-	return shading == SHADING_DECISION || object >= r->d.scene->plane_count;
+	return shading == SHADING_DECISION || !r->flat[object];
 }
 
 /* The main-pass variant for a shading, the face test and the maps a draw reads, built
