@@ -127,6 +127,7 @@ expect_says "not a decimal number" "inf" render --time inf $out
 expect_says "not a decimal number" "empty list item" render --eye 1,,2 $out
 expect_says "not a decimal number" "trailing comma" render --light 1,2,3, $out
 expect_says "too large to hold" "overflowing number" render --eye 1e400,2,3 $out
+expect_says "option 'foo', expected square, fitted" "bench names the bad option and the good ones" bench --methods plane/foo --frames 1
 expect_says "too small to hold" "subnormal number" render --fov 1e-320 $out
 expect_says "too large to hold" "frames overflow" render --frames 99999999999999999999999 $out
 expect_says "not a decimal number" "whole frames" render --frames 2.0 $out

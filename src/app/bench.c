@@ -705,7 +705,8 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 static int bad_methods(const char *got)
 {
 	char expected[320];
-	snprintf(expected, sizeof expected, "methods from %s, plane with /square, /shared or /lppX", lx_shadow_method_names());
+	snprintf(expected, sizeof expected, "methods from %s, each with options after slashes (lixel bench --help)",
+		 lx_shadow_method_names());
 	return bad("--methods", expected, got);
 }
 
@@ -755,9 +756,13 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 		return bad("--methods", "a comma-separated list of methods", copy);
 	for (int m = 0; m < ns; m++) {
 		struct lx_method_options probe = b->options;
-		char why[200];
-		if (!lx_shadow_method_spec(specs[m], &probe, why, sizeof why))
-			return bad_methods(specs[m]);
+		char why[320];
+		if (!lx_shadow_method_spec(specs[m], &probe, why, sizeof why)) {
+			if (strpbrk(specs[m], "\n\r\t")) /* shown escaped, on one line */
+				return bad_methods(specs[m]);
+			fprintf(stderr, "lixel bench: --methods: %s\n", why); /* which part is wrong, and what it may be */
+			return 2;
+		}
 	}
 	expand_runs(b, specs, ns);
 	if (!ba->configs[0]) {

@@ -431,7 +431,7 @@ static int render_option(struct render_args *r, const char *a, const char *v)
 		return st;
 	if (!strcmp(a, "--method")) {
 		struct lx_method_options probe = r->job.budgets;
-		char why[200];
+		char why[320];
 		if (!lx_shadow_method_spec(v, &probe, why, sizeof why)) {
 			if (strpbrk(v, "\n\r\t")) /* shown escaped, on one line */
 				return bad(a, lx_shadow_method_names(), v);
