@@ -754,10 +754,11 @@ static int maps_in(unsigned mask)
  * away; a flat-shaded object (a plane, a box) does not in a shaded pass, its Lambert term
  * is 0 wherever the test would shadow it (each vertex's normal is its face's, and which
  * side of a flat face a light is on is one answer over the face). The decision says
- * shadowed, so it keeps the test. */
+ * shadowed, so it keeps the test. Without maps (method none) there is no test: every
+ * draw takes the one variant. */
 static bool face_test(const struct lx_renderer *r, int shading, int object)
 {
-	return shading == SHADING_DECISION || !r->flat[object];
+	return r->d.map_count > 0 && (shading == SHADING_DECISION || !r->flat[object]);
 }
 
 /* The main-pass variant for a shading, the face test and the maps a draw reads, built

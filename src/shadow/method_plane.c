@@ -397,6 +397,10 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 		}
 		if ((total <= budget && worst <= side) || tries == 63)
 			return;
+		if (worst > side && (snap_x || snap_y)) { /* a snapped axis cannot shrink: unsnapped */
+			snap_x = snap_y = 0;
+			continue;
+		}
 		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
 	}
 }
