@@ -132,7 +132,6 @@ struct plane_chart {
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
-	double stretch; /* the lixels' aspect when the budget cannot give every pixel one (chart_stretch) */
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
 };
 
@@ -306,7 +305,6 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		lx_poly_edges_inside(&one, &win, &dx, &dy);
 		along_x += dx, along_y += dy;
 	}
-	ch->stretch = similar ? 1 : chart_stretch(along_x, along_y);
 	ch->along_x = similar ? 0 : along_x, ch->along_y = similar ? 0 : along_y;
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
@@ -358,14 +356,12 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct pl
 	}
 }
 
-/* A_l's scale and translation for one piece: u = scale (R p - (x0, y0)) + (offset,
- * offset_y), in a map of w x h lixels whose used part is [offset, uw] x [offset_y, vh];
- * stretched, the scale is scale / stretch along x and scale * stretch along y. */
+/* A_l's scales and translation for one piece: u = (sx, sy) * (R p - (x0, y0)) + (ox, oy),
+ * in a map of w x h lixels whose used part is [ox, uw] x [oy, vh]; sx = sy but for a
+ * stretched map (chart_stretch). */
 struct plane_fit {
-	double scale, x0, y0, offset, uw, vh;
+	double sx, sy, x0, y0, ox, oy, uw, vh;
 	int w, h;
-	double stretch;
-	double offset_y; /* the translation along y (offset: along x; they differ when one axis is snapped) */
 };
 
 /* fit_plane below a whole-number scale: scale s, stretched by a, shrunk until the pieces
@@ -387,39 +383,34 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 	 * default scene's median at 1024x1024, fixed budgets, 0.0244% to 0.0193%. One lixel
 	 * per pixel rather than two or more, as the model says: the default scene's horizon
 	 * at 1920x1080, 0.0283% with two, 0.0188% with one. */
-	double snap_x = 0, snap_y = 0;
-	if (ch->on_grid && a != 1 && s * a >= 1)
-		snap_y = 1;
-	else if (ch->on_grid && a != 1 && s / a >= 1)
-		snap_x = 1;
+	bool rows = false, cols = false; /* snapped: the map's y (x) at one lixel per pixel */
+	if (ch->on_grid && a != 1 && (s * a >= 1 || s / a >= 1))
+		rows = s * a >= 1, cols = !rows;
 	else if (ch->on_grid && s < 1 && s >= SNAP_MIN_SCALE) {
 		/* Snapped, the rows' (columns') edges err no more: what is left is Y / s_x
 		 * (X / s_y), against X / s_y + Y / s_x stretched alone (chart_stretch); with the
 		 * snapped axis at 1, the other at s^2 */
 		double X = ch->along_x, Y = ch->along_y, alone = X / (s * a) + Y * a / s;
-		if (Y <= X && Y / (s * s) < alone)
-			snap_y = 1;
-		else if (X < Y && X / (s * s) < alone)
-			snap_x = 1;
+		rows = Y <= X && Y / (s * s) < alone;
+		cols = X < Y && X / (s * s) < alone;
 	}
 	for (int tries = 0; tries < 64; tries++) { /* ceil() may overshoot the budget by a row */
 		long total = 0;
 		int worst = 0;
-		double sx = snap_x ? snap_x : snap_y ? s * s / snap_y : s / a, sy = snap_y ? snap_y : snap_x ? s * s / snap_x : s * a;
+		double sx = cols ? 1 : rows ? s * s : s / a, sy = rows ? 1 : cols ? s * s : s * a;
 		for (int p = 0; p < pc->n; p++) {
-			double x0 = snap_x ? floor(pc->r[p][0]) : pc->r[p][0], y0 = snap_y ? floor(pc->r[p][1]) : pc->r[p][1];
-			double ox = snap_x && fmod(snap_x, 2) == 0 ? 0.5 : 0, oy = snap_y && fmod(snap_y, 2) == 0 ? 0.5 : 0;
-			double uw = sx * (pc->r[p][2] - x0) + ox, vh = sy * (pc->r[p][3] - y0) + oy;
+			double x0 = cols ? floor(pc->r[p][0]) : pc->r[p][0], y0 = rows ? floor(pc->r[p][1]) : pc->r[p][1];
+			double uw = sx * (pc->r[p][2] - x0), vh = sy * (pc->r[p][3] - y0);
 			int w = (int)ceil(uw), h = (int)ceil(vh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-			fit[p] = (struct plane_fit){sqrt(sx * sy), x0, y0, ox, fmin(w, uw), fmin(h, vh), w, h, sqrt(sy / sx), oy};
+			fit[p] = (struct plane_fit){sx, sy, x0, y0, 0, 0, fmin(w, uw), fmin(h, vh), w, h};
 			total += (long)w * h;
 			worst = w > worst ? w : h > worst ? h : worst;
 		}
 		if ((total <= budget && worst <= side) || tries == 63)
 			return;
-		if (worst > side && (snap_x || snap_y)) { /* a snapped axis cannot shrink: unsnapped */
-			snap_x = snap_y = 0;
+		if (worst > side && (rows || cols)) { /* a snapped axis cannot shrink: unsnapped */
+			rows = cols = false;
 			continue;
 		}
 		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
@@ -436,18 +427,17 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 {
 	if (!g->variable) { /* one piece (plane_build) */
 		double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
-		*fit = (struct plane_fit){.x0 = ch->x0, .y0 = ch->y0, .stretch = 1, .offset_y = 0};
-		fit->scale = fmin(1.0, fmin(g->w / rw, g->h / rh));
-		fit->w = g->w, fit->h = g->h;
-		if (fit->scale == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
+		double k = fmin(1.0, fmin(g->w / rw, g->h / rh));
+		*fit = (struct plane_fit){.sx = k, .sy = k, .x0 = ch->x0, .y0 = ch->y0, .w = g->w, .h = g->h};
+		if (k == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
 		    ceil(ch->y1) - floor(ch->y0) <= g->h) {
 			/* pixel centres, turned by quarter turns, stay at half-integers: a
 			 * whole-lixel translation puts each on a lixel centre */
 			fit->x0 = floor(ch->x0);
 			fit->y0 = floor(ch->y0);
 		}
-		fit->uw = fmin(g->w, fit->scale * (ch->x1 - fit->x0));
-		fit->vh = fmin(g->h, fit->scale * (ch->y1 - fit->y0));
+		fit->uw = fmin(g->w, k * (ch->x1 - fit->x0));
+		fit->vh = fmin(g->h, k * (ch->y1 - fit->y0));
 		return;
 	}
 	int side = atlas->max_side > 1 ? atlas->max_side : 1;
@@ -461,7 +451,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 		s = fmin(s, sqrt(max_lpp));
 	/* stretched only short of a lixel per pixel (chart_stretch): from there on a
 	 * similarity keeps lixel centres on pixel centres */
-	double a = s < 1 ? ch->stretch : 1; /* in [1/3, 3] */
+	double a = s < 1 ? chart_stretch(ch->along_x, ch->along_y) : 1; /* in [1/3, 3] */
 	/* the long sides within the texture (both > 0: inside the chart's bounds) */
 	s = fmin(s, fmin((side - 1) * a / fmax(wide, 1e-9), (side - 1) / (a * fmax(tall, 1e-9))));
 	if (ch->on_grid && s >= 1 && a == 1) {
@@ -474,7 +464,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 				double x0 = floor(pc->r[p][0]), y0 = floor(pc->r[p][1]), off = fmod(k, 2) == 0 ? 0.5 : 0;
 				double uw = k * (pc->r[p][2] - x0) + off, vh = k * (pc->r[p][3] - y0) + off;
 				int w = (int)ceil(uw), h = (int)ceil(vh);
-				fit[p] = (struct plane_fit){k, x0, y0, off, uw, vh, w, h, 1, off};
+				fit[p] = (struct plane_fit){k, k, x0, y0, off, off, uw, vh, w, h};
 				total += (long)w * h;
 				fits &= w <= side && h <= side;
 			}
@@ -591,9 +581,9 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 static mat4 piece_matrix(const struct plane_chart *ch, const struct plane_fit *ft)
 {
 	mat4 a = m4_identity();
-	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sx = ft->scale / ft->stretch, sy = ft->scale * ft->stretch;
-	a.m[0] = kx * sx * ch->cs * ch->mx, a.m[4] = -kx * sx * ch->sn * ch->mx, a.m[12] = kx * (ft->offset - sx * ft->x0) - 1;
-	a.m[1] = ky * sy * ch->sn, a.m[5] = ky * sy * ch->cs, a.m[13] = ky * (ft->offset_y - sy * ft->y0) - 1;
+	double kx = 2.0 / ft->w, ky = 2.0 / ft->h, sx = ft->sx, sy = ft->sy;
+	a.m[0] = kx * sx * ch->cs * ch->mx, a.m[4] = -kx * sx * ch->sn * ch->mx, a.m[12] = kx * (ft->ox - sx * ft->x0) - 1;
+	a.m[1] = ky * sy * ch->sn, a.m[5] = ky * sy * ch->cs, a.m[13] = ky * (ft->oy - sy * ft->y0) - 1;
 	return a;
 }
 
@@ -608,7 +598,7 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	for (int k = 0; k < pc->n; k++)
 		r[0] = fmin(r[0], pc->r[k][0]), r[1] = fmin(r[1], pc->r[k][1]), r[2] = fmax(r[2], pc->r[k][2]),
 		r[3] = fmax(r[3], pc->r[k][3]);
-	struct plane_fit ft = {1, r[0], r[1], 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1]), 1, 0};
+	struct plane_fit ft = {1, 1, r[0], r[1], 0, 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1])};
 	ft.w = ft.w < 1 ? 1 : ft.w, ft.h = ft.h < 1 ? 1 : ft.h;
 	mat4 a = piece_matrix(ch, &ft);
 	*depth = m4_mul(&a, &ch->cam.m);
@@ -632,12 +622,12 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 			mk.m[c * 4 + 2] = depth->m[c * 4 + 2];
 		if (!m4_finite(&mk))
 			continue;
-		double b[4] = {2.0 * ft->offset / ft->w - 1, 2.0 * ft->offset_y / ft->h - 1, 2.0 * ft->uw / ft->w - 1,
+		double b[4] = {2.0 * ft->ox / ft->w - 1, 2.0 * ft->oy / ft->h - 1, 2.0 * ft->uw / ft->w - 1,
 			       2.0 * ft->vh / ft->h - 1};
 		mp->light_clip = mk;
 		memcpy(mp->bounds, b, sizeof b);
-		mp->lixel_scale = ft->scale;
-		mp->lixel_stretch = ft->stretch;
+		mp->lixel_scale = ft->sx == ft->sy ? ft->sx : sqrt(ft->sx * ft->sy);
+		mp->lixel_stretch = ft->sx == ft->sy ? 1 : sqrt(ft->sy / ft->sx);
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
