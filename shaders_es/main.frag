@@ -8,13 +8,11 @@
 #ifndef LX_FILTER
 #define LX_FILTER 0
 #endif
-// The face test: a face turned away from the light is in its own shadow. LX_NO_FACE_TEST:
-// none, for a plane's draws in a shaded pass, whose Lambert term (its smooth normal is its
-// face normal) is already 0 wherever the test would shadow it; on llvmpipe the test cost
-// 0.3-0.4 ms of a 1024x1024 main pass.
-#if LX_SHADOWED && !defined(LX_NO_FACE_TEST)
-#define LX_FACE_TEST 1
-#else
+// LX_FACE_TEST: a face turned away from the light is in its own shadow. Off for a
+// flat-shaded object's draws in a shaded pass, whose Lambert term (each normal its face's)
+// is already 0 wherever the test would shadow it: on llvmpipe the test cost 0.16-0.24 ms
+// of a 1024x1024 main pass.
+#ifndef LX_FACE_TEST
 #define LX_FACE_TEST 0
 #endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)

@@ -5,13 +5,11 @@
 #ifndef LX_READS
 #define LX_READS 0
 #endif
-#if LX_SHADOWED && !defined(LX_NO_FACE_TEST)
-#define LX_FACE_TEST 1 // main.frag's face test
-#else
-#define LX_FACE_TEST 0
+#ifndef LX_FACE_TEST
+#define LX_FACE_TEST 0 // main.frag's face test
 #endif
-// Main pass. LX_SHADOWED: the method has shadow maps (the face test,
-// but for LX_NO_FACE_TEST: main.frag); LX_READS (0 to 4):
+// Main pass. LX_SHADOWED: the method has shadow maps; LX_FACE_TEST
+// (main.frag); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order
 // (one variant serves every set of that many maps), a varying each and no more: every
 // varying costs an interpolation per pixel.

@@ -156,9 +156,7 @@ static bool main_program(struct main_program *p, int maps, int shading, bool fac
 			 enum lx_depth_precision path, enum lx_filter filter, char *err, size_t errlen)
 {
 	char defines[400];
-	lx_main_defines(maps, reads, shading == SHADING_DECISION, path, defines, sizeof defines);
-	if (!face)
-		strncat(defines, "#define LX_NO_FACE_TEST 1\n", sizeof defines - strlen(defines) - 1);
+	lx_main_defines(maps, reads, shading == SHADING_DECISION, face, path, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
