@@ -151,6 +151,17 @@ static void run(const char *platform, const char *method, const struct lx_scene 
 	run_path(platform, method, scene, false, rep);
 }
 
+/* One measured frame of a method on OSMesa at a size of its own, at time 0. */
+static void run_sized(const char *method, const struct lx_scene *scene, int w, int h, struct lx_render_report *rep)
+{
+	struct lx_render_job job = {.method = method, .platform = "osmesa", .scene = *scene, .width = w, .height = h,
+				    .timed_frames = 1, .measure = true, .keep_pixels = true,
+				    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
+	char err[512];
+	if (render_run_cached(&job, rep, err, sizeof err))
+		fail_msg("%s %dx%d: %s", method, w, h, err);
+}
+
 /* Chessboard distance from each pixel to the nearest reference edge of light l (a pixel
  * whose 4-neighbour differs in visible object or shadow state), capped at `cap`. */
 static void edge_distance(const struct lx_render_report *r, int l, uint8_t *dist, int cap)
@@ -574,13 +585,8 @@ static void plane_keeps_every_shadow(void **state)
 	s.camera.eye = v3(0, 0.001, 3), s.camera.at = v3(0, 0.001, 0);
 	double pct[2];
 	for (int k = 0; k < 2; k++) {
-		struct lx_render_job job = {.method = k ? "plane" : "uniform", .platform = "osmesa", .scene = s, .width = 1024,
-					    .height = 768, .timed_frames = 1, .measure = true, .keep_pixels = true,
-					    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
 		struct lx_render_report r;
-		char err[512];
-		if (render_run_cached(&job, &r, err, sizeof err))
-			fail_msg("%s", err);
+		run_sized(k ? "plane" : "uniform", &s, 1024, 768, &r);
 		pct[k] = r.mismatch.mismatch_pct;
 		lx_render_report_free(&r);
 	}
@@ -605,13 +611,8 @@ static void stretched_maps_follow_long_shadows(void **state)
 	for (int b = 0; b < 2; b++) {
 		double pct[2], stretch[2];
 		for (int k = 0; k < 2; k++) {
-			struct lx_render_job job = {.method = methods[b][k], .platform = "osmesa", .scene = s, .width = 800,
-						    .height = 600, .timed_frames = 1, .measure = true, .keep_pixels = true,
-						    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
 			struct lx_render_report r;
-			char err[512];
-			if (render_run_cached(&job, &r, err, sizeof err))
-				fail_msg("%s", err);
+			run_sized(methods[b][k], &s, 800, 600, &r);
 			pct[k] = r.mismatch.mismatch_pct;
 			const struct lx_shadow_map *floor_map = &r.light[0].result.maps[1]; /* the table, the floor */
 			assert_true(floor_map->rendered && floor_map->plane == 1);

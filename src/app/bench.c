@@ -702,13 +702,6 @@ static int bench_option(struct bench *b, struct bench_args *ba, const char *a, c
 	return 0;
 }
 
-static int bad_methods(const char *got)
-{
-	char expected[320];
-	snprintf(expected, sizeof expected, "methods from %s, each with options after slashes (lixel bench --help)",
-		 lx_shadow_method_names());
-	return bad("--methods", expected, got);
-}
 
 /* --filters: the names split and checked into b->filter_list. 0 or 2. */
 static int filter_list(struct bench *b, struct bench_args *ba)
@@ -754,16 +747,12 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 	strcpy(copy, ba->methods);
 	if (!split(ba->methods, specs, MAX_METHODS, &ns))
 		return bad("--methods", "a comma-separated list of methods", copy);
-	for (int m = 0; m < ns; m++) {
-		struct lx_method_options probe = b->options;
-		char why[320];
-		if (!lx_shadow_method_spec(specs[m], &probe, why, sizeof why)) {
-			if (strpbrk(specs[m], "\n\r\t")) /* shown escaped, on one line */
-				return bad_methods(specs[m]);
-			fprintf(stderr, "lixel bench: --methods: %s\n", why); /* which part is wrong, and what it may be */
-			return 2;
-		}
-	}
+	char expected[320];
+	snprintf(expected, sizeof expected, "methods from %s, each with options after slashes (lixel bench --help)",
+		 lx_shadow_method_names());
+	for (int m = 0; m < ns; m++)
+		if ((st = lx_arg_method_spec("bench", "--methods", specs[m], &b->options, expected)))
+			return st;
 	expand_runs(b, specs, ns);
 	if (!ba->configs[0]) {
 		for (int c = 0; c < lx_config_count; c++)

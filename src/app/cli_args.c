@@ -138,3 +138,16 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 		return -1;
 	return 0;
 }
+
+int lx_arg_method_spec(const char *cmd, const char *opt, const char *spec, const struct lx_method_options *o,
+		       const char *expected)
+{
+	struct lx_method_options probe = *o;
+	char why[320];
+	if (lx_shadow_method_spec(spec, &probe, why, sizeof why))
+		return 0;
+	if (strpbrk(spec, "\n\r\t")) /* shown escaped, on one line */
+		return lx_arg_bad(cmd, opt, expected, spec);
+	fprintf(stderr, "lixel %s: %s: %s\n", cmd, opt, why);
+	return 2;
+}

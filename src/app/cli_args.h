@@ -48,6 +48,11 @@ int lx_arg_depth_precision(const char *cmd, const char *opt, const char *value, 
 	"                       RGBA8, or mediump, 11-bit codes in RGBA8\n" \
 	"  --mediump            the same as --depth-precision mediump\n"
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o);
+/* A method spec (lx_shadow_method_spec, from options o): 0 when it reads, else one line
+ * saying which part is wrong and what it may be (or, for a spec with a line break or tab,
+ * the usual line with it escaped and expected) and 2. */
+int lx_arg_method_spec(const char *cmd, const char *opt, const char *spec, const struct lx_method_options *o,
+		       const char *expected);
 /* --filter none|pcf2x2|pcf3x3 and --light-size DEG (render; bench takes --light-size):
  * 0 when opt is one of them and its value is good, 2 (after the one line) when the value
  * is bad, -1 for another option. */

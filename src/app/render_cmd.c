@@ -430,14 +430,8 @@ static int render_option(struct render_args *r, const char *a, const char *v)
 	    (st = job_option(&r->job, a, v)) >= 0)
 		return st;
 	if (!strcmp(a, "--method")) {
-		struct lx_method_options probe = r->job.budgets;
-		char why[320];
-		if (!lx_shadow_method_spec(v, &probe, why, sizeof why)) {
-			if (strpbrk(v, "\n\r\t")) /* shown escaped, on one line */
-				return bad(a, lx_shadow_method_names(), v);
-			fprintf(stderr, "lixel render: --method: %s\n", why); /* which part is wrong, and what it may be */
-			return 2;
-		}
+		if ((st = lx_arg_method_spec("render", a, v, &r->job.budgets, lx_shadow_method_names())))
+			return st;
 		r->job.method = v;
 	} else if (!strcmp(a, "--scene"))
 		r->scene_file = v;
