@@ -300,12 +300,14 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 			double *b = ch->foot[ch->feet++];
 			lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
 		}
+		if (similar)
+			continue; /* square lixels: no outlines wanted */
 		double dx, dy;
 		to_chart(ch, &one);
 		lx_poly_edges_inside(&one, &win, &dx, &dy);
 		along_x += dx, along_y += dy;
 	}
-	ch->along_x = similar ? 0 : along_x, ch->along_y = similar ? 0 : along_y;
+	ch->along_x = along_x, ch->along_y = along_y;
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
