@@ -343,6 +343,34 @@ static void caster_meshes_are_closed_and_outward(void **state)
 	lx_meshes_free(&m);
 }
 
+/* A flat-faced object (a plane, a box) carries each face's normal as its shading normal,
+ * the very same floats: the renderer tells a flat-shaded mesh by them and draws it as one
+ * draw, its faces turned away from the light shaded by their Lambert term of 0. The
+ * boxes' normals once came from two computations, a rounding apart, and so were drawn
+ * as round. The round shapes' are smooth. */
+static void flat_meshes_carry_their_face_normals(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_table(&s);
+	struct lx_scene_meshes m;
+	assert_true(lx_meshes_build(&s, &m));
+	int boxes = 0;
+	for (int id = 0; id < m.count; id++) {
+		const struct lx_mesh *me = &m.mesh[id];
+		bool flat = true;
+		for (int i = 0; i < me->vertex_count && flat; i++)
+			flat = !memcmp(me->v + (size_t)i * LX_VERTEX_FLOATS + 3, me->v + (size_t)i * LX_VERTEX_FLOATS + 6,
+				       3 * sizeof(float));
+		bool box = id >= s.plane_count && s.casters[id - s.plane_count].shape == LX_BOX;
+		boxes += box;
+		if (flat != (id < s.plane_count || box))
+			fail_msg("object %d: shading normals %s its face normals", id, flat ? "are" : "are not");
+	}
+	assert_int_equal(boxes, 5);
+	lx_meshes_free(&m);
+}
+
 static int position_of(const int *order, int n, int id)
 {
 	for (int k = 0; k < n; k++)
@@ -533,6 +561,7 @@ int main(void)
 		cmocka_unit_test(lights_are_white_unless_coloured),
 		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
+		cmocka_unit_test(flat_meshes_carry_their_face_normals),
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),
 		cmocka_unit_test(a_plane_in_front_hides_the_one_behind),

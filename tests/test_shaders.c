@@ -48,16 +48,17 @@ static void every_variant_is_glsl_es_100(void **state)
 	char defines[360], tag[64];
 	static const enum lx_depth_precision paths[3] = {LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP, LX_DEPTH_TEXTURE};
 	/* the main pass: every count of maps, every count of them read, shaded or decision,
-	 * with and without the face test, each depth path (0 highp, 1 mediump, 2 highp with
+	 * each rule for their faces (toward the light, tested, away), each depth path (0 highp, 1 mediump, 2 highp with
 	 * the maps in a depth texture), every shadow filter, and the fragment shader under the
 	 * lima simulation */
 	for (int maps = 0; maps <= 4; maps++)
 		for (int reads = 0; reads <= maps; reads++)
 			for (int decision = 0; decision < 2; decision++)
-				for (int face = 0; face < 2; face++)
+				for (int face = 0; face < LX_FACES_COUNT; face++)
 					for (int path = 0; path < 3; path++)
 						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-							lx_main_defines(maps, reads, decision, face, paths[path], defines, sizeof defines);
+							lx_main_defines(maps, reads, decision, (enum lx_faces)face, paths[path], defines,
+									sizeof defines);
 							strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 							snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d", maps, reads, decision, face, path, filter);
 							if (filter == 0) /* the vertex shader reads no filter */
@@ -70,7 +71,7 @@ static void every_variant_is_glsl_es_100(void **state)
 	for (int maps = 0; maps <= 4; maps++)
 		for (int path = 0; path < 3; path++)
 			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-				lx_main_defines(maps, maps, false, true, paths[path], defines, sizeof defines);
+				lx_main_defines(maps, maps, false, LX_FACES_TESTED, paths[path], defines, sizeof defines);
 				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, path, filter);

@@ -158,7 +158,7 @@ static bool run(enum lx_depth_precision path, bool *unsupported, char *detail, s
 	char err[1024];
 	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", lx_shadow_defines(path), err, sizeof err);
 	char cdef[320];
-	lx_main_defines(1, 1, true, true, path, cdef, sizeof cdef);
+	lx_main_defines(1, 1, true, LX_FACES_TESTED, path, cdef, sizeof cdef);
 	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;
 	if (!write || !compare) {
 		snprintf(detail, len, "%.200s", err);

@@ -115,14 +115,17 @@ const char *lx_shadow_defines(enum lx_depth_precision path)
 					  : NULL;
 }
 
-void lx_main_defines(int maps, int reads, bool decision, bool face, enum lx_depth_precision path, char *out,
-		     size_t len)
+void lx_main_defines(int maps, int reads, bool decision, enum lx_faces faces, enum lx_depth_precision path,
+		     char *out, size_t len)
 {
 	const char *p = lx_shadow_defines(path);
+	bool away = maps > 0 && faces == LX_FACES_AWAY;
+	if (away)
+		reads = 0; /* in its own shadow: nothing to read */
 	/* the served test on edge functions (main.vert), for both shaders alike; not on the
 	 * mediump path, whose fp16 test stays as it was */
 	bool edges = reads > 0 && path != LX_DEPTH_MEDIUMP;
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s", maps > 0,
-		 reads, maps > 0 && face, decision ? "#define LX_DECISION 1\n" : "", p ? p : "",
-		 edges ? "#define LX_EDGES 1\n" : "");
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s", maps > 0,
+		 reads, maps > 0 && faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
+		 decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "");
 }

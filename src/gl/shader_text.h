@@ -11,13 +11,20 @@
  * highp made mediump, as Mesa's lima computes fragment shaders (LIXEL_SIMULATE_LIMA). */
 char *lx_shader_text(const char *name, const char *text, const char *defines, bool simulate_lima_fragment, char *err,
 		     size_t errlen);
+/* What a main-pass draw knows of its faces' side of the light (a face turned away from
+ * it is in its own shadow): every face turned towards it, or the draw need not tell
+ * (a flat-shaded object's shading, whose Lambert term is 0 where it is turned away);
+ * some of each, the shader tests each (LX_FACE_TEST); every face turned away (LX_FACE_AWAY,
+ * read nothing: shadowed). */
+enum lx_faces { LX_FACES_TOWARD, LX_FACES_TESTED, LX_FACES_AWAY, LX_FACES_COUNT };
+
 /* The main pass's defines for a variant: how many maps the method has, how many of them
  * a draw reads (0 to maps; the draw puts them in the first slots), the decision output,
- * the face test (face, where the method has maps: main.frag), the depth path
- * (LX_DEPTH_AUTO as LX_DEPTH_HIGHP), and where reads > 0 off the mediump path, the served
- * test on edge functions (LX_EDGES). */
-void lx_main_defines(int maps, int reads, bool decision, bool face, enum lx_depth_precision path, char *out,
-		     size_t len);
+ * its faces (where the method has maps; LX_FACES_AWAY reads none: main.frag), the depth
+ * path (LX_DEPTH_AUTO as LX_DEPTH_HIGHP), and where reads > 0 off the mediump path, the
+ * served test on edge functions (LX_EDGES). */
+void lx_main_defines(int maps, int reads, bool decision, enum lx_faces faces, enum lx_depth_precision path,
+		     char *out, size_t len);
 /* The shadow pass's defines for a depth path (NULL: none). */
 const char *lx_shadow_defines(enum lx_depth_precision path);
 

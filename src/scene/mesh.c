@@ -30,24 +30,30 @@ static void emit(struct builder *b, vec3 p, vec3 n, vec3 fn)
 	o[6] = (float)fn.x, o[7] = (float)fn.y, o[8] = (float)fn.z;
 }
 
-/* A triangle with given smooth normals; degenerate ones (sphere poles) are dropped. */
-static void tri(struct builder *b, vec3 a, vec3 na, vec3 c1, vec3 n1, vec3 c2, vec3 n2)
+/* A triangle with given smooth normals, or (flat) each its face normal, the very same
+ * floats (the renderer tells a flat-shaded mesh by them); degenerate ones (sphere poles)
+ * are dropped. */
+static void tri_normals(struct builder *b, bool flat, vec3 a, vec3 na, vec3 c1, vec3 n1, vec3 c2, vec3 n2)
 {
 	vec3 fn, e1, e2;
 	/* the edges normalised first: a tiny caster's cross product would underflow */
 	if (!v3_normalize(v3_sub(c1, a), &e1) || !v3_normalize(v3_sub(c2, a), &e2) || !v3_normalize(v3_cross(e1, e2), &fn))
 		return;
-	emit(b, a, na, fn);
-	emit(b, c1, n1, fn);
-	emit(b, c2, n2, fn);
+	emit(b, a, flat ? fn : na, fn);
+	emit(b, c1, flat ? fn : n1, fn);
+	emit(b, c2, flat ? fn : n2, fn);
+}
+
+static void tri(struct builder *b, vec3 a, vec3 na, vec3 c1, vec3 n1, vec3 c2, vec3 n2)
+{
+	tri_normals(b, false, a, na, c1, n1, c2, n2);
 }
 
 static void flat_quad(struct builder *b, vec3 p0, vec3 p1, vec3 p2, vec3 p3)
 {
-	vec3 n = v3(0, 1, 0);
-	v3_normalize(v3_cross(v3_sub(p1, p0), v3_sub(p2, p0)), &n);
-	tri(b, p0, n, p1, n, p2, n);
-	tri(b, p0, n, p2, n, p3, n);
+	vec3 n = v3(0, 0, 0); /* unused: flat */
+	tri_normals(b, true, p0, n, p1, n, p2, n);
+	tri_normals(b, true, p0, n, p2, n, p3, n);
 }
 
 static vec3 ring(double r, double y, int i)
