@@ -57,6 +57,8 @@ static void every_variant_is_glsl_es_100(void **state)
 				for (int face = 0; face < LX_FACES_COUNT; face++)
 					for (int path = 0; path < 3; path++)
 						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
+							if (face == LX_FACES_AWAY && reads > 0)
+								continue; /* faces turned away read nothing: the reads 0 text */
 							lx_main_defines(maps, reads, decision, (enum lx_faces)face, paths[path], defines,
 									sizeof defines);
 							strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
