@@ -344,10 +344,10 @@ static void caster_meshes_are_closed_and_outward(void **state)
 }
 
 /* A flat-faced object (a plane, a box) carries each face's normal as its shading normal,
- * the very same floats: the renderer tells a flat-shaded mesh by them and draws it as one
- * draw, its faces turned away from the light shaded by their Lambert term of 0. The
- * boxes' normals once came from two computations, a rounding apart, and so were drawn
- * as round. The round shapes' are smooth. */
+ * the very same floats (lx_mesh_is_flat): the renderer draws it as one draw, its faces
+ * turned away from the light shaded by their Lambert term of 0. The boxes' and planes'
+ * normals once came from two computations, a rounding apart, and so were drawn as round.
+ * The round shapes' are smooth. */
 static void flat_meshes_carry_their_face_normals(void **state)
 {
 	(void)state;
@@ -357,11 +357,7 @@ static void flat_meshes_carry_their_face_normals(void **state)
 	assert_true(lx_meshes_build(&s, &m));
 	int boxes = 0;
 	for (int id = 0; id < m.count; id++) {
-		const struct lx_mesh *me = &m.mesh[id];
-		bool flat = true;
-		for (int i = 0; i < me->vertex_count && flat; i++)
-			flat = !memcmp(me->v + (size_t)i * LX_VERTEX_FLOATS + 3, me->v + (size_t)i * LX_VERTEX_FLOATS + 6,
-				       3 * sizeof(float));
+		bool flat = lx_mesh_is_flat(&m.mesh[id]);
 		bool box = id >= s.plane_count && s.casters[id - s.plane_count].shape == LX_BOX;
 		boxes += box;
 		if (flat != (id < s.plane_count || box))

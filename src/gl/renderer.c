@@ -329,10 +329,7 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)m->vertex_count * LX_VERTEX_FLOATS * sizeof(float), m->v,
 				 GL_STATIC_DRAW);
 		r->vertices[i] = m->vertex_count;
-		r->flat[i] = true;
-		for (int v = 0; v < m->vertex_count && r->flat[i]; v++)
-			r->flat[i] = !memcmp(m->v + (size_t)v * LX_VERTEX_FLOATS + 3, m->v + (size_t)v * LX_VERTEX_FLOATS + 6,
-					     3 * sizeof(float));
+		r->flat[i] = lx_mesh_is_flat(m);
 		if (!shadow_mesh(r, i, m)) {
 			snprintf(err, errlen, "out of memory indexing the meshes");
 			return false;

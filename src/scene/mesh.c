@@ -159,6 +159,14 @@ bool lx_meshes_build(const struct lx_scene *s, struct lx_scene_meshes *out)
 	return true;
 }
 
+bool lx_mesh_is_flat(const struct lx_mesh *m)
+{
+	for (int i = 0; i < m->vertex_count; i++)
+		if (memcmp(m->v + (size_t)i * LX_VERTEX_FLOATS + 3, m->v + (size_t)i * LX_VERTEX_FLOATS + 6, 3 * sizeof(float)))
+			return false;
+	return true;
+}
+
 void lx_meshes_free(struct lx_scene_meshes *m)
 {
 	if (m->mesh)

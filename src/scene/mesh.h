@@ -21,6 +21,10 @@ struct lx_scene_meshes {
 };
 
 bool lx_meshes_build(const struct lx_scene *s, struct lx_scene_meshes *out);
+/* Whether a mesh is flat-shaded: every vertex's shading normal is its face's, the very
+ * same floats (the builder writes them so for planes and boxes), so that its Lambert term
+ * is 0 wherever its face is turned away from the light. */
+bool lx_mesh_is_flat(const struct lx_mesh *m);
 void lx_meshes_free(struct lx_scene_meshes *m);
 /* World translation of object id at time t (zero for planes). */
 vec3 lx_object_offset(const struct lx_scene *s, int id, double t);
