@@ -192,6 +192,10 @@ static bool light_coloured(const struct lx_light *l)
 	return !(l->color.x == 1 && l->color.y == 1 && l->color.z == 1);
 }
 
+/* How many rules of the faces the renderer draws with: without maps (method none) only
+ * the first, LX_FACES_TOWARD, whose text is every rule's there (variant_for). */
+static int face_rules(const struct lx_renderer *r) { return r->d.map_count > 0 ? LX_FACES_COUNT : 1; }
+
 /* The decision variant and each light's shaded variants of a filter for each rule of the
  * faces, those that read reading every map (built now, so that a shader error shows when
  * the filter is chosen). */
@@ -200,7 +204,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 	for (int i = -1; i < r->d.light_count; i++) {
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
-		for (int faces = 0; faces < LX_FACES_COUNT; faces++) {
+		for (int faces = 0; faces < face_rules(r); faces++) {
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
 			struct main_program *p = &r->variant[shading][filter][faces][reads];
 			if (!p->prog && !main_program(p, r->d.map_count, shading, (enum lx_faces)faces, reads, r->d.depth,
@@ -762,7 +766,8 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 		if (!main_program(p, r->d.map_count, shading, faces, reads, r->d.depth, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
-			p = &r->variant[shading][r->filter][LX_FACES_TESTED][r->d.map_count];
+			p = &r->variant[shading][r->filter][r->d.map_count > 0 ? LX_FACES_TESTED : LX_FACES_TOWARD]
+				       [r->d.map_count];
 		}
 	}
 	return p;
@@ -1380,7 +1385,7 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->beam_tex[l]);
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
-	for (int faces = 0; faces < LX_FACES_COUNT; faces++)
+	for (int faces = 0; faces < face_rules(r); faces++)
 		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : r->d.map_count); reads++) {
 			unsigned mask = (1u << reads) - 1;
 			struct main_program *p = variant_for(r, shading, (enum lx_faces)faces, &mask);
@@ -1404,7 +1409,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
 			int shading = shading_of(r->beam_tex[l] != 0, l > 0, light_coloured(&r->d.scene->lights[l]));
-			if (!r->variant[shading][f][LX_FACES_TESTED][r->d.map_count].prog)
+			if (!r->variant[shading][f][LX_FACES_TOWARD][r->d.map_count].prog)
 				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
 			r->filter = (enum lx_filter)f;
 			warm_light(r, l, shading);
