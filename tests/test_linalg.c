@@ -1,4 +1,5 @@
 #include "linalg.h"
+#include "convex.h"
 #include "test_util.h"
 
 static mat4 random_matrix(uint64_t *s)
@@ -143,6 +144,51 @@ static void cross3_is_the_cofactor_vector(void **state)
 	}
 }
 
+/* Whether p lies in the truncated pyramid below (near z = -1, far z = -10, sides through
+ * the origin at 45 degrees) and in box lo..hi, both by tol. */
+static bool in_both(vec3 p, vec3 lo, vec3 hi, double tol)
+{
+	double d = -p.z;
+	return d >= 1 - tol && d <= 10 + tol && fabs(p.x) <= d + tol && fabs(p.y) <= d + tol && p.x >= lo.x - tol &&
+	       p.y >= lo.y - tol && p.z >= lo.z - tol && p.x <= hi.x + tol && p.y <= hi.y + tol && p.z <= hi.z + tol;
+}
+
+/* lx_frustum_box_points: a box well inside the frustum comes back as its corners (the
+ * short way, taken for the casters in view every frame), one the far plane or a side cuts
+ * as points inside both, some on the cut. */
+static void frustum_box_points_cut_a_box_or_keep_it(void **state)
+{
+	(void)state;
+	vec3 fc[8] = {v3(-1, -1, -1),	v3(1, -1, -1),	v3(1, 1, -1),	v3(-1, 1, -1),
+		      v3(-10, -10, -10), v3(10, -10, -10), v3(10, 10, -10), v3(-10, 10, -10)};
+	vec3 pts[LX_CONVEX_MAX_POINTS];
+	vec3 lo = v3(-0.5, -0.25, -5), hi = v3(0.5, 0.75, -2);
+	int n = lx_frustum_box_points(fc, lo, hi, pts, LX_CONVEX_MAX_POINTS);
+	assert_int_equal(n, 24); /* each face's four corners */
+	for (int k = 0; k < 8; k++) {
+		bool found = false;
+		for (int i = 0; i < n; i++)
+			found |= v3_len(v3_sub(pts[i], v3_box_corner(lo, hi, k))) == 0;
+		assert_true(found);
+	}
+	for (int i = 0; i < n; i++)
+		assert_true(in_both(pts[i], lo, hi, 0));
+	/* across the far plane, and across a side (x = -z) */
+	vec3 cut[2][2] = {{v3(-0.5, -0.5, -12), v3(0.5, 0.5, -5)}, {v3(1.5, -0.5, -3), v3(4, 0.5, -2)}};
+	for (int c = 0; c < 2; c++) {
+		n = lx_frustum_box_points(fc, cut[c][0], cut[c][1], pts, LX_CONVEX_MAX_POINTS);
+		assert_true(n > 0);
+		bool on_cut = false;
+		for (int i = 0; i < n; i++) {
+			assert_true(in_both(pts[i], cut[c][0], cut[c][1], 1e-9));
+			on_cut |= c == 0 ? fabs(pts[i].z + 10) < 1e-9 : fabs(pts[i].x + pts[i].z) < 1e-9;
+		}
+		assert_true(on_cut);
+	}
+	/* a box wholly outside: nothing */
+	assert_int_equal(lx_frustum_box_points(fc, v3(20, 20, -5), v3(21, 21, -4), pts, LX_CONVEX_MAX_POINTS), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -153,6 +199,7 @@ int main(void)
 		cmocka_unit_test(projections_map_near_and_far_to_unit_cube),
 		cmocka_unit_test(normalize_guards_zero),
 		cmocka_unit_test(cross3_is_the_cofactor_vector),
+		cmocka_unit_test(frustum_box_points_cut_a_box_or_keep_it),
 	};
 	return cmocka_run_group_tests_name("linalg", tests, NULL, NULL);
 }

@@ -203,6 +203,47 @@ static void plane_pieces_cover_the_plane_once(void **state)
 	}
 }
 
+/* lx_lookup_any stops at the first face of a receiver that meets a caster's volume; it
+ * must answer as the whole computation does: a receiver it says no shadow can fall on
+ * gets no lookup span, and one it says may be shadowed gets one, in a window that holds
+ * every hull (here eight screens wide). */
+static void lookup_any_agrees_with_the_spans(void **state)
+{
+	(void)state;
+	static struct lx_span span[4096];
+	static struct lx_lookup_volumes v;
+	struct lx_rect wide = {-8 * W, -8 * H, 9 * W, 9 * H};
+	long yes = 0, no = 0;
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
+		FOR_METHODS(method)
+			for (int c = 0; c < lx_config_count; c++) {
+				struct setup s;
+				assert_true(lx_scene_builtin(*sn, &s.scene));
+				lx_config_apply(&lx_configs[c], &s.scene);
+				if (!build(&s, method, W, H, 0.4))
+					continue;
+				lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP, &v);
+				for (int id = 0; id < s.frame.object_count; id++) {
+					unsigned mask = lx_shadow_receiver_maps(&s.res, id);
+					if (!mask)
+						continue;
+					int n = lx_lookup_spans(&v, id, mask, wide, span, 4096);
+					assert_true(n >= 1);
+					bool looked = false;
+					for (int i = 0; i < n; i++)
+						looked |= span[i].lookup;
+					bool any = lx_lookup_any(&v, id, mask);
+					if (any != looked)
+						fail_msg("%s scene, %s, %s, object %d: lx_lookup_any says %d, the spans %d", *sn,
+							 lx_configs[c].name, method, id, any, looked);
+					yes += any, no += !any;
+				}
+				lx_meshes_free(&s.meshes);
+			}
+	print_message("%ld receivers a shadow can fall on, %ld none can, alike both ways\n", yes, no);
+	assert_true(yes > 100 && no > 10);
+}
+
 /* The first map of a mask that serves a point. */
 static int first_serving(const struct lx_shadow_result *r, unsigned mask, vec3 p)
 {
@@ -348,6 +389,7 @@ int main(void)
 		cmocka_unit_test(shadowed_points_are_looked_up),
 		cmocka_unit_test(extremes_stay_conservative),
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
+		cmocka_unit_test(lookup_any_agrees_with_the_spans),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
 		cmocka_unit_test(casters_left_out_only_where_unread),
 	};

@@ -76,6 +76,22 @@ int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int
 	for (int f = 0; f < 6; f++)
 		for (int i = 0; i < 4; i++)
 			bfaces[f][i] = c[bq[f][i]];
+	/* A box inside the frustum by more than rounding (a caster in view, every frame): its
+	 * faces' corners, as the clipping below would give them, the frustum's faces missing
+	 * the box. */
+	bool inside = true;
+	for (int i = 0; i < 8 && inside; i++)
+		for (int f = 0; f < 6 && inside; f++) {
+			double d = v3_dot(fplanes[f].n, c[i]) + fplanes[f].d;
+			inside = d > 1e-9 * (fabs(c[i].x) + fabs(c[i].y) + fabs(c[i].z) + fabs(fplanes[f].d));
+		}
+	if (inside) {
+		int n = 0;
+		for (int f = 0; f < 6; f++)
+			for (int i = 0; i < 4 && n < max_out; i++)
+				out[n++] = bfaces[f][i];
+		return n;
+	}
 	/* The box's planes written directly: a flat box (zero height) keeps both y planes. */
 	plane_t bplanes[6] = {{v3(1, 0, 0), -bmin.x}, {v3(-1, 0, 0), bmax.x}, {v3(0, 1, 0), -bmin.y},
 			      {v3(0, -1, 0), bmax.y}, {v3(0, 0, 1), -bmin.z}, {v3(0, 0, -1), bmax.z}};

@@ -223,8 +223,10 @@ static void add_point(const struct lx_view *v, vec3 q, struct window_points *w)
 /* The window points of (receiver object id) n (volume): the vertices of an intersection
  * of two convex sets lie on a face of one inside the other, so the receiver's faces
  * clipped by the volume, and for a solid receiver the volume's own vertices inside its
- * box. */
-static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, struct window_points *w)
+ * box. With `first`, it stops at the first face that meets the volume: whether they meet
+ * is then known, and the volume's vertices, the most costly part, are not needed. */
+static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, bool first,
+			       struct window_points *w)
 {
 	static const int quad[1][4] = {{0, 1, 2, 3}};
 	static const int box[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
@@ -247,6 +249,8 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 		}
 		for (int i = 0; i < n; i++)
 			add_point(&f->view, a[i], w);
+		if (first && (w->n > 0 || w->everything))
+			return;
 	}
 	if (!solid)
 		return;
@@ -321,7 +325,7 @@ static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigne
 				continue; /* wholly outside the volume: no point to clip */
 			struct window_points w;
 			w.n = 0, w.everything = false;
-			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], &w);
+			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], first, &w);
 			if (w.everything)
 				return -1;
 			if (w.n > 0 && first)
