@@ -291,7 +291,9 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 /* Whether receiver object id may meet a volume: false only when one of its half-spaces
  * leaves every corner of the receiver's box (a plane's quad) outside, so all of it. A few
  * dot products: the test before receiver_in_volume's clipping, which costs a hundred
- * times more, and the shadow pass's (lx_lookup_caster_maps). */
+ * times more (and which lx_lookup_caster_maps then asks too: a box can have corners on
+ * the inner side of every half-space and still miss the volume, as the table's slab
+ * misses the ball's through the fallback map, seen from close to the floor). */
 static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
 {
 	vec3 q[8];
@@ -378,12 +380,17 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 			out |= bit;
 			continue;
 		}
-		for (int r = 0; r < f->object_count; r++)
-			if (r != c && (v->reads[r] & bit) &&
-			    receiver_may_meet(f, r, v->plane[m][c], v->count[m][c])) {
+		for (int r = 0; r < f->object_count; r++) {
+			if (r == c || !(v->reads[r] & bit) || !receiver_may_meet(f, r, v->plane[m][c], v->count[m][c]))
+				continue;
+			struct window_points w; /* its points are written before they are read */
+			w.n = 0, w.everything = false;
+			receiver_in_volume(f, r, v->plane[m][c], v->count[m][c], true, &w);
+			if (w.n > 0 || w.everything) {
 				out |= bit;
 				break;
 			}
+		}
 	}
 	return out;
 }

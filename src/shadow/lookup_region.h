@@ -89,7 +89,8 @@ unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigne
 
 /* The maps of the frame whose shadow pass must draw object c, as a mask (v prepared with
  * the largest margin of any filter the main pass may use on them): those where c's
- * volume reaches a receiver other than c that reads the map, and with `everywhere`
+ * volume meets a receiver other than c that reads the map (the receiver's faces clipped
+ * by the volume, as the lookup spans do), and with `everywhere`
  * (--lookup-region all) those c reads itself. Leaving c out of the others changes no
  * lookup of another receiver: a caster's depth shadows a point only inside its volume.
  * Nor one of c's own (see above): c shadows none of its faces turned to the light, and
