@@ -291,9 +291,7 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 /* Whether receiver object id may meet a volume: false only when one of its half-spaces
  * leaves every corner of the receiver's box (a plane's quad) outside, so all of it. A few
  * dot products: the test before receiver_in_volume's clipping, which costs a hundred
- * times more (and which lx_lookup_caster_maps then asks too: a box can have corners on
- * the inner side of every half-space and still miss the volume, as the table's slab
- * misses the ball's through the fallback map, seen from close to the floor). */
+ * times more. */
 static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, int np)
 {
 	vec3 q[8];
@@ -308,12 +306,25 @@ static bool receiver_may_meet(const struct lx_frame *f, int id, const vec4 *pl, 
 	return true;
 }
 
-/* Per caster and map of `mask`, the window hull of where it can shadow the receiver
- * (with first, only whether there is one); returns their count, or -1 when one has no
- * bound (the receiver reaches the eye's plane inside it). */
+/* Whether receiver object id meets a volume: its faces clipped by it, up to the first
+ * that meets it (a box can have corners on the inner side of every half-space and still
+ * miss the volume, as the table's slab misses the ball's through the fallback map, seen
+ * from close to the floor). A point on the eye's plane counts as meeting it. */
+static bool receiver_meets(const struct lx_frame *f, int id, const vec4 *pl, int np)
+{
+	if (!receiver_may_meet(f, id, pl, np))
+		return false;
+	struct window_points w; /* its points are written before they are read */
+	w.n = 0, w.everything = false;
+	receiver_in_volume(f, id, pl, np, true, &w);
+	return w.n > 0 || w.everything;
+}
+
+/* Per caster and map of `mask`, the window hull of where it can shadow the receiver;
+ * returns their count, or -1 when one has no bound (the receiver reaches the eye's plane
+ * inside it). */
 #define MAX_HULLS (LX_MAX_MAPS * (LX_MAX_PLANES + LX_MAX_CASTERS))
-static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigned mask, bool first,
-			struct lx_poly *hull)
+static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_poly *hull)
 {
 	const struct lx_frame *f = v->frame;
 	int n = 0;
@@ -327,11 +338,9 @@ static int shadow_hulls(const struct lx_lookup_volumes *v, int receiver, unsigne
 				continue; /* wholly outside the volume: no point to clip */
 			struct window_points w;
 			w.n = 0, w.everything = false;
-			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], first, &w);
+			receiver_in_volume(f, receiver, v->plane[m][c], v->count[m][c], false, &w);
 			if (w.everything)
 				return -1;
-			if (w.n > 0 && first)
-				return 1;
 			if (w.n > 0)
 				lx_poly_hull(w.p, w.n, &hull[n++]);
 		}
@@ -362,7 +371,12 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
-	return shadow_hulls(v, receiver, mask, true, NULL) != 0;
+	const struct lx_frame *f = v->frame;
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
+		for (int c = 0; c < f->object_count && (mask & 1u << m); c++)
+			if (v->count[m][c] >= 0 && c != receiver && receiver_meets(f, receiver, v->plane[m][c], v->count[m][c]))
+				return true;
+	return false;
 }
 
 unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool everywhere)
@@ -380,17 +394,11 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 			out |= bit;
 			continue;
 		}
-		for (int r = 0; r < f->object_count; r++) {
-			if (r == c || !(v->reads[r] & bit) || !receiver_may_meet(f, r, v->plane[m][c], v->count[m][c]))
-				continue;
-			struct window_points w; /* its points are written before they are read */
-			w.n = 0, w.everything = false;
-			receiver_in_volume(f, r, v->plane[m][c], v->count[m][c], true, &w);
-			if (w.n > 0 || w.everything) {
+		for (int r = 0; r < f->object_count; r++)
+			if (r != c && (v->reads[r] & bit) && receiver_meets(f, r, v->plane[m][c], v->count[m][c])) {
 				out |= bit;
 				break;
 			}
-		}
 	}
 	return out;
 }
@@ -401,7 +409,7 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 	if (max < 1)
 		return -1;
 	struct lx_poly hull[MAX_HULLS];
-	int nh = shadow_hulls(v, receiver, mask, false, hull), n = 0;
+	int nh = shadow_hulls(v, receiver, mask, hull), n = 0;
 	if (nh < 0) {
 		out[0] = (struct lx_span){within, true};
 		return 1;
