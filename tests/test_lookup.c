@@ -131,8 +131,11 @@ static void shadowed_points_are_looked_up(void **state)
 	assert_true(checked > 10000); /* there were shadows to check */
 }
 
+static long assert_unread(const struct setup *s, const struct lx_lookup_volumes *v, int id, int m, const char *what);
+
 /* The extremes: the eye a millimetre above the floor, the light inside a caster, on the
- * floor, under it, far away; each still a partition with every shadowed pixel in it. */
+ * floor, under it, far away; each still a partition with every shadowed pixel in it, and
+ * every caster the shadow pass leaves out of a map unread there. */
 static void extremes_stay_conservative(void **state)
 {
 	(void)state;
@@ -146,7 +149,7 @@ static void extremes_stay_conservative(void **state)
 		{"light under the floor", {0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}},
 		{"light far away", {0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}},
 	};
-	long checked = 0, looked = 0;
+	long checked = 0, looked = 0, left_out = 0, unread_points = 0;
 	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
 		FOR_METHODS(method) {
 			struct setup s;
@@ -159,9 +162,21 @@ static void extremes_stay_conservative(void **state)
 			char what[96];
 			snprintf(what, sizeof what, "%s, %s", cases[k].name, method);
 			check_scene(&s, what, &checked, &looked);
+			/* and the shadow pass leaves a caster out of a map only where nothing reads it */
+			static struct lx_lookup_volumes v;
+			lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP + 2, &v);
+			for (int id = 0; id < s.frame.object_count; id++) {
+				unsigned drawn = lx_lookup_caster_maps(&v, id, false);
+				for (int m = 0; m < s.res.map_count; m++)
+					if (v.count[m][id] >= 0 && !(drawn & 1u << m))
+						left_out++, unread_points += assert_unread(&s, &v, id, m, what);
+			}
 			lx_meshes_free(&s.meshes);
 		}
-	print_message("%ld shadowed plane pixels at the extremes, every one looked up\n", checked);
+	print_message("%ld shadowed plane pixels at the extremes, every one looked up; %ld (object, map) pairs left "
+		      "out of the shadow pass, %ld points of their receivers outside their volumes\n",
+		      checked, left_out, unread_points);
+	assert_true(left_out > 0);
 }
 
 /* A plane cut along window lines: the pieces' areas on the screen add up to the whole
@@ -324,13 +339,30 @@ static int object_points(const struct setup *s, int id, vec3 *out, int max)
 	return n;
 }
 
+/* Object id, left out of map m: no point of another receiver that reads the map lies in
+ * its volume. Returns the points checked. */
+static long assert_unread(const struct setup *s, const struct lx_lookup_volumes *v, int id, int m, const char *what)
+{
+	static vec3 pts[4096];
+	long points = 0;
+	for (int r = 0; r < s->frame.object_count; r++) {
+		if (r == id || !(lx_shadow_receiver_maps(&s->res, r) & 1u << m))
+			continue;
+		int n = object_points(s, r, pts, 4096);
+		for (int k = 0; k < n; k++, points++)
+			if (in_volume(v->plane[m][id], v->count[m][id], pts[k]))
+				fail_msg("%s: object %d left out of map %d, but a point of object %d lies in its volume", what, id,
+					 m, r);
+	}
+	return points;
+}
+
 /* The shadow pass leaves a caster out of a map only where no lookup can read it there:
  * no point of another receiver that reads the map lies in the caster's volume (and, with
  * --lookup-region all, the caster does not read the map itself). */
 static void casters_left_out_only_where_unread(void **state)
 {
 	(void)state;
-	static vec3 pts[4096];
 	long left_out = 0, points = 0, default_left_out = 0, tris[2][2][2] = {{{0}}}; /* [scene][plane][before, after] */
 	long ball_low = 0; /* the table's ball left out of plane's fallback map under the low light */
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
@@ -364,16 +396,9 @@ static void casters_left_out_only_where_unread(void **state)
 								      s.scene.casters[id - s.scene.plane_count].shape == LX_SPHERE;
 							if (reads & 1u << m)
 								assert_false(everywhere); /* all reads its own texels */
-							for (int r = 0; r < s.frame.object_count; r++) {
-								if (r == id || !(lx_shadow_receiver_maps(&s.res, r) & 1u << m))
-									continue;
-								int n = object_points(&s, r, pts, 4096);
-								for (int k = 0; k < n; k++, points++)
-									if (in_volume(v.plane[m][id], v.count[m][id], pts[k]))
-										fail_msg("%s scene, %s, %s: object %d left out of map %d, but a "
-											 "point of object %d lies in its volume",
-											 *sn, lx_configs[c].name, method, id, m, r);
-							}
+							char what[96];
+							snprintf(what, sizeof what, "%s scene, %s, %s", *sn, lx_configs[c].name, method);
+							points += assert_unread(&s, &v, id, m, what);
 						}
 					}
 					lx_meshes_free(&s.meshes);
