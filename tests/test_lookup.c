@@ -71,9 +71,40 @@ static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
 	return t0 <= t1;
 }
 
+/* What check_scene counted. */
+struct tally {
+	long checked, looked; /* shadowed plane pixels checked; pixels looked up */
+	long yes, no;         /* receivers lx_lookup_any says a shadow can fall on, and not */
+};
+
+/* lx_lookup_any stops at the first face of a receiver that meets a caster's volume; it
+ * must answer as the whole computation does: a receiver it says no shadow can fall on
+ * gets no lookup span, and one it says may be shadowed gets one, in a window that holds
+ * every hull (here eight screens wide). */
+static void check_lookup_any(const struct lx_lookup_volumes *v, const struct setup *s, const char *what,
+			     struct lx_span *span, int room, struct tally *t)
+{
+	struct lx_rect wide = {-8 * W, -8 * H, 9 * W, 9 * H};
+	for (int id = 0; id < s->frame.object_count; id++) {
+		unsigned mask = lx_shadow_receiver_maps(&s->res, id);
+		if (!mask)
+			continue;
+		int n = lx_lookup_spans(v, id, mask, wide, span, room);
+		assert_true(n >= 1);
+		bool looked = false;
+		for (int i = 0; i < n; i++)
+			looked |= span[i].lookup;
+		bool any = lx_lookup_any(v, id, mask);
+		if (any != looked)
+			fail_msg("%s, object %d: lx_lookup_any says %d, the spans %d", what, id, any, looked);
+		t->yes += any, t->no += !any;
+	}
+}
+
 /* Every plane pixel whose point a caster shadows, and which a map of the plane serves,
- * lies in a lookup span; the spans partition the window. */
-static void check_scene(struct setup *s, const char *what, long *checked, long *looked_total)
+ * lies in a lookup span; the spans partition the window; lx_lookup_any agrees with the
+ * spans (check_lookup_any). */
+static void check_scene(struct setup *s, const char *what, struct tally *tally)
 {
 	uint8_t *hit = malloc((size_t)W * H);
 	assert_non_null(hit);
@@ -87,7 +118,7 @@ static void check_scene(struct setup *s, const char *what, long *checked, long *
 			continue;
 		int n = lx_lookup_spans(&v, id, mask, screen, span, 4096);
 		assert_true(n >= 1);
-		*looked_total += check_partition(span, n, screen, hit);
+		tally->looked += check_partition(span, n, screen, hit);
 		vec4 pe = lx_plane_equation(&s->scene.planes[id]);
 		for (int y = 0; y < H; y++)
 			for (int x = 0; x < W; x++) {
@@ -101,18 +132,19 @@ static void check_scene(struct setup *s, const char *what, long *checked, long *
 						if (hit[y * W + x] != 2)
 							fail_msg("%s: plane %d pixel (%d, %d) is shadowed by object %d but not looked up",
 								 what, id, x, y, c);
-						++*checked;
+						tally->checked++;
 						break;
 					}
 			}
 	}
 	free(hit);
+	check_lookup_any(&v, s, what, span, 4096, tally);
 }
 
 static void shadowed_points_are_looked_up(void **state)
 {
 	(void)state;
-	long checked = 0, looked = 0;
+	struct tally t = {0, 0, 0, 0};
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
 		FOR_METHODS(method)
 			for (int c = 0; c < lx_config_count; c++) {
@@ -123,12 +155,15 @@ static void shadowed_points_are_looked_up(void **state)
 					continue;
 				char what[96];
 				snprintf(what, sizeof what, "%s scene, %s, %s", *sn, lx_configs[c].name, method);
-				check_scene(&s, what, &checked, &looked);
+				check_scene(&s, what, &t);
 				lx_meshes_free(&s.meshes);
 			}
 	print_message("%ld shadowed plane pixels, every one inside a lookup span; %ld pixels looked up in all\n",
-		      checked, looked);
-	assert_true(checked > 10000); /* there were shadows to check */
+		      t.checked, t.looked);
+	print_message("%ld receivers a shadow can fall on, %ld none can, alike by lx_lookup_any and the spans\n", t.yes,
+		      t.no);
+	assert_true(t.checked > 10000); /* there were shadows to check */
+	assert_true(t.yes > 100 && t.no > 10);
 }
 
 static long assert_unread(const struct setup *s, const struct lx_lookup_volumes *v, int id, int m, const char *what);
@@ -149,7 +184,8 @@ static void extremes_stay_conservative(void **state)
 		{"light under the floor", {0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}},
 		{"light far away", {0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}},
 	};
-	long checked = 0, looked = 0, left_out = 0, unread_points = 0;
+	struct tally t = {0, 0, 0, 0};
+	long left_out = 0, unread_points = 0;
 	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
 		FOR_METHODS(method) {
 			struct setup s;
@@ -161,7 +197,7 @@ static void extremes_stay_conservative(void **state)
 				continue;
 			char what[96];
 			snprintf(what, sizeof what, "%s, %s", cases[k].name, method);
-			check_scene(&s, what, &checked, &looked);
+			check_scene(&s, what, &t);
 			/* and the shadow pass leaves a caster out of a map only where nothing reads it */
 			static struct lx_lookup_volumes v;
 			lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP + 2, &v);
@@ -175,7 +211,7 @@ static void extremes_stay_conservative(void **state)
 		}
 	print_message("%ld shadowed plane pixels at the extremes, every one looked up; %ld (object, map) pairs left "
 		      "out of the shadow pass, %ld points of their receivers outside their volumes\n",
-		      checked, left_out, unread_points);
+		      t.checked, left_out, unread_points);
 	assert_true(left_out > 0);
 }
 
@@ -216,47 +252,6 @@ static void plane_pieces_cover_the_plane_once(void **state)
 		}
 		lx_meshes_free(&s.meshes);
 	}
-}
-
-/* lx_lookup_any stops at the first face of a receiver that meets a caster's volume; it
- * must answer as the whole computation does: a receiver it says no shadow can fall on
- * gets no lookup span, and one it says may be shadowed gets one, in a window that holds
- * every hull (here eight screens wide). */
-static void lookup_any_agrees_with_the_spans(void **state)
-{
-	(void)state;
-	static struct lx_span span[4096];
-	static struct lx_lookup_volumes v;
-	struct lx_rect wide = {-8 * W, -8 * H, 9 * W, 9 * H};
-	long yes = 0, no = 0;
-	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
-		FOR_METHODS(method)
-			for (int c = 0; c < lx_config_count; c++) {
-				struct setup s;
-				assert_true(lx_scene_builtin(*sn, &s.scene));
-				lx_config_apply(&lx_configs[c], &s.scene);
-				if (!build(&s, method, W, H, 0.4))
-					continue;
-				lx_lookup_prepare(&s.frame, &s.atlas, &s.res, LX_LOOKUP_MARGIN_HIGHP, &v);
-				for (int id = 0; id < s.frame.object_count; id++) {
-					unsigned mask = lx_shadow_receiver_maps(&s.res, id);
-					if (!mask)
-						continue;
-					int n = lx_lookup_spans(&v, id, mask, wide, span, 4096);
-					assert_true(n >= 1);
-					bool looked = false;
-					for (int i = 0; i < n; i++)
-						looked |= span[i].lookup;
-					bool any = lx_lookup_any(&v, id, mask);
-					if (any != looked)
-						fail_msg("%s scene, %s, %s, object %d: lx_lookup_any says %d, the spans %d", *sn,
-							 lx_configs[c].name, method, id, any, looked);
-					yes += any, no += !any;
-				}
-				lx_meshes_free(&s.meshes);
-			}
-	print_message("%ld receivers a shadow can fall on, %ld none can, alike both ways\n", yes, no);
-	assert_true(yes > 100 && no > 10);
 }
 
 /* The first map of a mask that serves a point. */
@@ -423,7 +418,6 @@ int main(void)
 		cmocka_unit_test(shadowed_points_are_looked_up),
 		cmocka_unit_test(extremes_stay_conservative),
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
-		cmocka_unit_test(lookup_any_agrees_with_the_spans),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
 		cmocka_unit_test(casters_left_out_only_where_unread),
 	};

@@ -372,10 +372,13 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
 	const struct lx_frame *f = v->frame;
-	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
-		for (int c = 0; c < f->object_count && (mask & 1u << m); c++)
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
+		if (!(mask & 1u << m))
+			continue;
+		for (int c = 0; c < f->object_count; c++)
 			if (v->count[m][c] >= 0 && c != receiver && receiver_meets(f, receiver, v->plane[m][c], v->count[m][c]))
 				return true;
+	}
 	return false;
 }
 
