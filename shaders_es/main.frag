@@ -16,6 +16,18 @@
 #ifndef LX_FACE_TEST
 #define LX_FACE_TEST 0
 #endif
+// LX_FACE_PLANE: the draw is a caster's faces turned towards the light (a convex closed
+// mesh, as every caster is), highp, unfiltered. A coarse map's lixel near such a caster's
+// silhouette holds its own back face at its centre, which can lie nearer the light than
+// the pixel does: acne along a lit face's edges. The face's plane is compared there
+// instead, moved only towards the light: the caster lies wholly beyond its face's plane,
+// so none of its own depths is nearer than that plane at any lixel centre.
+#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || !defined(GL_FRAGMENT_PRECISION_HIGH) || defined(LX_FORCE_MEDIUMP))
+#undef LX_FACE_PLANE
+#endif
+#ifdef LX_FACE_PLANE
+#extension GL_OES_standard_derivatives : enable
+#endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
 #else
@@ -54,6 +66,9 @@ uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bo
                                  // x1, y1), empty when not rendered (else main.vert's)
 #endif
 uniform float u_bias;            // in depth codes
+#ifdef LX_FACE_PLANE
+uniform vec4 u_texel; // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
+#endif
 #if LX_FILTER > 0
 // --filter pcf2x2 (1) or pcf3x3 (2): several texels of the map around the point, each
 // compared, the results averaged (shaders_es/pcf.glsl)
@@ -137,6 +152,9 @@ void main()
 	// written out). Then one fetch and the compare (LX_FILTER: several, averaged); a point no
 	// map serves is lit.
 	vec3 p = vec3(0.0), q;
+#ifdef LX_FACE_PLANE
+	vec3 dpx = vec3(0.0), dpy = vec3(0.0); /* the served map's point across the pixel */
+#endif
 	float found = 0.0, s;
 #if LX_FILTER > 0
 	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
@@ -148,6 +166,10 @@ void main()
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FACE_PLANE
+	dpx = s > 0.5 ? dFdx(q) : dpx;
+	dpy = s > 0.5 ? dFdy(q) : dpy;
+#endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[0] : box;
 #endif
@@ -160,6 +182,10 @@ void main()
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FACE_PLANE
+	dpx = s > 0.5 ? dFdx(q) : dpx;
+	dpy = s > 0.5 ? dFdy(q) : dpy;
+#endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[1] : box;
 #endif
@@ -173,6 +199,10 @@ void main()
 	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FACE_PLANE
+	dpx = s > 0.5 ? dFdx(q) : dpx;
+	dpy = s > 0.5 ? dFdy(q) : dpy;
+#endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[2] : box;
 #endif
@@ -186,6 +216,10 @@ void main()
 	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FACE_PLANE
+	dpx = s > 0.5 ? dFdx(q) : dpx;
+	dpy = s > 0.5 ? dFdy(q) : dpy;
+#endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[3] : box;
 #endif
@@ -195,6 +229,18 @@ void main()
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */
 #else
 	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
+#ifdef LX_FACE_PLANE
+	// The face's depth is affine in the map's (s, t) [Isidoro]: its slope from the
+	// derivatives, the move to the lixel's centre, kept where the face is not edge-on to
+	// the map (det) or grazed by the light (on a face lit at under a tenth, a half-lixel
+	// move is a long way along it, past the edge of a caster it touches).
+	float det = dpx.x * dpy.y - dpx.y * dpy.x;
+	vec2 off = (floor(p.xy * u_texel.xy) + 0.5) * u_texel.zw - p.xy;
+	float num = (dpx.z * dpy.y - dpy.z * dpx.y) * off.x + (dpy.z * dpx.x - dpx.z * dpy.x) * off.y;
+	float lit = dot(normalize(v_normal), normalize(v_to_light));
+	float ok = float(abs(det) > 1e-3 * length(dpx.xy) * length(dpy.xy)) * float(lit > 0.1); /* 0 for a NaN */
+	p.z += ok > 0.5 ? min(num / det, 0.0) : 0.0; /* a select, as above */
+#endif
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
 #endif
 #endif

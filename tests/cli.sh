@@ -27,7 +27,8 @@ expect_bad() {
 "$lixel" --help >"$tmp/help" 2>&1 && grep -q "render" "$tmp/help" && ok || no "lixel --help"
 "$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
 for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json \
-    --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size --lookup-region --depth-slots; do
+    --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size --lookup-region --caster-depth \
+    --depth-slots; do
   grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
 done
 
@@ -199,6 +200,13 @@ for lr in footprint all; do
     >"$tmp/l-$lr.json" 2>&1 && grep -q '"lookup_pct": [0-9]' "$tmp/l-$lr.json" && ok || no "render --lookup-region $lr: $(cat "$tmp/l-$lr.json")"
 done
 cmp -s "$tmp/d-footprint.png" "$tmp/d-all.png" && ok || no "--lookup-region footprint and all decide differently"
+# casters' faces compared along their planes (the default) or at their pixels' depth: the
+# table's legs from close to the floor decide otherwise (the coarse fallback's acne)
+for cd in face point; do
+  "$lixel" render --scene table --config floor-close --caster-depth $cd --size 320x240 --frames 1 --out "$tmp/l.png" \
+    --decision-out "$tmp/c-$cd.png" >"$tmp/c-$cd.txt" 2>&1 && ok || no "render --caster-depth $cd: $(cat "$tmp/c-$cd.txt")"
+done
+! cmp -s "$tmp/c-face.png" "$tmp/c-point.png" && ok || no "--caster-depth face and point decide alike on the table's legs"
 fp=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-footprint.json"); al=$(sed -n 's/.*"lookup_pct": \([0-9.]*\).*/\1/p' "$tmp/l-all.json")
 awk -v a="$fp" -v b="$al" 'BEGIN { exit !(a > 0 && a < b) }' && ok || no "lookup share footprint $fp, all $al"
 grep -q '^\[uniform/all\] config=low: ' "$tmp/bench.txt" && grep -q '^\[tsm/footprint\] config=low: ' "$tmp/bench.txt" && ok ||
@@ -265,6 +273,8 @@ expect_bad "bench --strips ''" bench --strips ''
 expect_bad "bench --plot onto a folder" bench --plot "$tmp"
 expect_bad "time beyond a million seconds" render --time 1e308 $out
 expect_bad "lookup region" render --lookup-region some $out
+expect_bad "caster depth" render --caster-depth middle $out
+expect_bad "method option pointdepth misspelt" render --method uniform/pointdepths $out
 expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot
 expect_bad "bench zero frames" bench --frames 0

@@ -829,6 +829,78 @@ static void lookup_region_changes_no_decision(void **state)
 	decisions_free(&dc);
 }
 
+/* --caster-depth face (the default) against point: a caster's face compared along its
+ * plane at the centre of the lixel read, moved only towards the light, can only light a
+ * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
+ * before); over every method and standard configuration of both built-in scenes it
+ * decides fewer pixels otherwise than the exact reference does, and it takes the coarse
+ * fallback's acne off the table's legs seen from close to the floor. */
+static void caster_faces_compare_along_their_planes(void **state)
+{
+	(void)state;
+	enum { w = 320, h = 240 };
+	char err[512];
+	struct decisions dc = decisions_alloc(w, h);
+	uint8_t *ref_sh = malloc((size_t)w * h);
+	int16_t *ref_obj = malloc((size_t)w * h * sizeof(int16_t));
+	assert_true(ref_sh && ref_obj);
+	long lit = 0, wrong[2] = {0, 0}, legs[2] = {0, 0};
+	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+		struct lx_scene base;
+		assert_true(lx_scene_builtin(*sn, &base));
+		struct lx_scene_meshes meshes = {0};
+		assert_true(lx_meshes_build(&base, &meshes));
+		char list[128];
+		memcpy(list, dc.names, sizeof list);
+		for (char *save = NULL, *m = strtok_r(list, "|", &save); m; m = strtok_r(NULL, "|", &save)) {
+			struct lx_method_run run[2]; /* 0: face, 1: point */
+			for (int k = 0; k < 2; k++) {
+				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+				o.caster_point_depth = k == 1;
+				if (lx_method_run_init(&run[k], m, &base, &meshes, &dc.caps, &o, w, h, LX_DEPTH_AUTO,
+						       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+					fail_msg("%s: %s", m, err);
+			}
+			for (int c = 0; c < lx_config_count; c++) {
+				struct lx_scene scene = base;
+				lx_config_apply(&lx_configs[c], &scene);
+				struct lx_frame frame;
+				assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
+				long shadowed = 0;
+				decide_both(&dc, run, &frame, w, h, &shadowed);
+				for (long i = 0; i < (long)w * h; i++) {
+					if (dc.sh[0][i] == dc.sh[1][i])
+						continue;
+					if (dc.obj[0][i] < base.plane_count || dc.sh[0][i] || !dc.sh[1][i])
+						fail_msg("%s scene, %s, %s: pixel %ld (object %d) is %s with face, %s with point", *sn,
+							 lx_configs[c].name, m, i, dc.obj[0][i], dc.sh[0][i] ? "shadowed" : "lit",
+							 dc.sh[1][i] ? "shadowed" : "lit");
+					lit++;
+				}
+				assert_true(lx_reference_image(&frame, ref_obj, ref_sh, 2));
+				for (int k = 0; k < 2; k++) {
+					struct lx_mismatch mm;
+					lx_mismatch_compare(ref_obj, ref_sh, dc.obj[k], dc.sh[k], (long)w * h, &mm);
+					wrong[k] += mm.false_shadow + mm.missing_shadow;
+					if (!strcmp(*sn, "table") && !strcmp(m, "plane") && !strcmp(lx_configs[c].name, "floor-close"))
+						legs[k] = mm.false_shadow + mm.missing_shadow;
+				}
+			}
+			for (int k = 0; k < 2; k++)
+				lx_method_run_free(&run[k]);
+		}
+		lx_meshes_free(&meshes);
+	}
+	print_message("face against point: %ld casters' pixels lit that point shadowed; %ld against %ld pixels decided "
+		      "otherwise than the exact reference; the table from close to the floor, plane: %ld against %ld\n",
+		      lit, wrong[0], wrong[1], legs[0], legs[1]);
+	assert_true(lit > 0);
+	assert_true(wrong[0] < wrong[1]);
+	assert_true(legs[0] < legs[1]);
+	free(ref_sh), free(ref_obj);
+	decisions_free(&dc);
+}
+
 /* The two runs' atlases (run[0] RGBA8, run[1] a depth texture) read back as codes: the
  * largest difference is returned (the RGBA8 path's shader interpolates z and w in single
  * precision, the rasterizer its own depth, so they part by tens of codes on triangles
@@ -1058,6 +1130,9 @@ static void simulated_lima_keeps_the_shadows(void **state)
 		assert_true(lx_meshes_build(&base, &meshes));
 		struct lx_method_run run[2];
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		/* the mediump path compares casters' faces at their pixels' depth (main.frag's
+		 * LX_FACE_PLANE needs highp): so does the highp run, so that only precision differs */
+		o.caster_point_depth = true;
 		for (int k = 0; k < 2; k++) {
 			if (k)
 				setenv("LIXEL_SIMULATE_LIMA", "1", 1);
@@ -1458,6 +1533,7 @@ int main(void)
 		cmocka_unit_test_teardown(stretched_maps_follow_long_shadows, close_shared_platform),
 		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),
 		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
+		cmocka_unit_test_teardown(caster_faces_compare_along_their_planes, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
 		cmocka_unit_test_teardown(depth_texture_path_decides_as_highp, close_shared_platform),
 		cmocka_unit_test_teardown(depth_slots_decide_as_clearing_every_frame, close_shared_platform),

@@ -68,7 +68,8 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
 	"                       --measure computes it when a filter is on or this is given\n"
 #define LX_PLANE_OPTION_NAMES \
-	"--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--depth-slots", "--light-budget"
+	"--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--caster-depth", "--depth-slots", \
+		"--light-budget"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
@@ -81,6 +82,10 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \
 	"                       where a caster's shadow can fall on it) or all (everywhere: the\n" \
 	"                       same shadows, more fill)\n" \
+	"  --caster-depth D     face (default: a caster's face is compared along its plane at\n" \
+	"                       the centre of the lixel read, never further from the light: no\n" \
+	"                       acne where a coarse map meets its silhouette; highp, unfiltered)\n" \
+	"                       or point (the pixel's own depth, for comparison)\n" \
 	"  --depth-slots N      the atlas cleared once every N frames, 1 to 64 (default 8):\n" \
 	"                       each frame's maps written into their own Nth of the depth range,\n" \
 	"                       below the earlier frames' (24 - log2 N bits a frame); taken on\n" \

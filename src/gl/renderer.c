@@ -106,6 +106,9 @@ struct lx_renderer {
 	 * the faces: object_draws; LX_FACES_AWAY reads none, its other slots stay empty) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
+	/* casters' faces drawn with LX_FACES_CASTER: derivatives, off the mediump path, not
+	 * --caster-depth point (else as LX_FACES_TOWARD) */
+	bool face_plane;
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
 	 * into the next one down (glDepthRange), below every depth an earlier frame left, so
@@ -205,6 +208,8 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 		int shading = i < 0 ? SHADING_DECISION
 				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
 		for (int faces = 0; faces < face_rules(r); faces++) {
+			if (faces == LX_FACES_CASTER && !r->face_plane)
+				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
 			struct main_program *p = &r->variant[shading][filter][faces][reads];
 			if (!p->prog && !main_program(p, r->d.map_count, shading, (enum lx_faces)faces, reads, r->d.depth,
@@ -468,6 +473,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
+	r->face_plane = d->caps->derivatives && !mediump(r) && !d->caster_point_depth;
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
@@ -755,7 +761,7 @@ static int maps_in(unsigned mask)
  * the start compiled), the one that tests each face and reads every map, *mask every map. */
 static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask)
 {
-	if (r->d.map_count == 0)
+	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !r->face_plane))
 		faces = LX_FACES_TOWARD;
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
@@ -1002,11 +1008,11 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : LX_FACES_TOWARD, WHOLE, 0, 0};
+			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : LX_FACES_CASTER, WHOLE, 0, 0};
 			return n;
 		}
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, LX_FACES_TOWARD, INDEXED, first, facing};
+			out[n++] = (struct draw){id, mask, LX_FACES_CASTER, INDEXED, first, facing};
 		if (r->facing_count - first - facing > 0)
 			out[n++] = r->d.lookup_everywhere
 					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, first + facing,

@@ -125,7 +125,10 @@ void lx_main_defines(int maps, int reads, bool decision, enum lx_faces faces, en
 	/* the served test on edge functions (main.vert), for both shaders alike; not on the
 	 * mediump path, whose fp16 test stays as it was */
 	bool edges = reads > 0 && path != LX_DEPTH_MEDIUMP;
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s", maps > 0,
+	/* the face's plane off the mediump path (main.frag also leaves it out under a filter) */
+	bool plane = reads > 0 && faces == LX_FACES_CASTER && path != LX_DEPTH_MEDIUMP;
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s", maps > 0,
 		 reads, maps > 0 && faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
-		 decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "");
+		 decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "",
+		 plane ? "#define LX_FACE_PLANE 1\n" : "");
 }

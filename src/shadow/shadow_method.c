@@ -64,13 +64,15 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		int lights, slots;
 		if (!strcmp(opt, "all") || !strcmp(opt, "footprint"))
 			o->lookup_everywhere = opt[0] == 'a';
+		else if (!strcmp(opt, "pointdepth") || !strcmp(opt, "facedepth"))
+			o->caster_point_depth = opt[0] == 'p';
 		else if (!strncmp(opt, "lights", 6) && !lx_number_int(opt + 6, 1, LX_MAX_LIGHTS, &lights))
 			o->max_lights = lights;
 		else if (!strncmp(opt, "slots", 5) && !lx_number_int(opt + 5, 1, LX_DEPTH_SLOTS_MAX, &slots))
 			o->depth_slots = slots;
 		else if (strcmp(m->name, "plane")) {
 			snprintf(err, errlen,
-				 "method '%s': option '%s', expected all, footprint, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
+				 "method '%s': option '%s', expected all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
 				 m->name, opt, LX_MAX_LIGHTS, LX_DEPTH_SLOTS_MAX);
 			return NULL;
 		} else if (!strcmp(opt, "square") || !strcmp(opt, "fitted"))
@@ -88,7 +90,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
 			o->plane_max_lpp = lpp;
 		else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, similar, stretch, lppX (0 < X <= 10000), all, footprint, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, similar, stretch, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
 				 spec, opt, LX_MAX_LIGHTS, LX_DEPTH_SLOTS_MAX);
 			return NULL;
 		}
