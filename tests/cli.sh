@@ -201,7 +201,7 @@ for lr in footprint all; do
 done
 cmp -s "$tmp/d-footprint.png" "$tmp/d-all.png" && ok || no "--lookup-region footprint and all decide differently"
 # casters' faces compared along their planes (the default) or at their pixels' depth: the
-# table's legs from close to the floor decide otherwise (the coarse fallback's acne)
+# table's legs from close to the floor decide otherwise (a coarse map's acne)
 for cd in face point; do
   "$lixel" render --scene table --config floor-close --caster-depth $cd --size 320x240 --frames 1 --out "$tmp/l.png" \
     --decision-out "$tmp/c-$cd.png" >"$tmp/c-$cd.txt" 2>&1 && ok || no "render --caster-depth $cd: $(cat "$tmp/c-$cd.txt")"
@@ -277,6 +277,9 @@ expect_bad "caster depth" render --caster-depth middle $out
 expect_bad "method option pointdepth misspelt" render --method uniform/pointdepths $out
 expect_bad "method option of a one-map method" render --method uniform/square $out
 expect_bad "bench unknown method" bench --methods none,teapot
+expect_bad "bench 17 methods" bench --methods none,uniform,psm,lispsm,tsm,xpsm,plane,plane/square,plane/shared,plane/lpp1,plane/twist,plane/onepiece,plane/similar,plane/pointdepth,uniform/pointdepth,tsm/all,psm/all
+"$lixel" bench --methods none,uniform,psm,lispsm,tsm,xpsm,plane,plane/square,plane/shared,plane/lpp1,plane/twist,plane/onepiece,plane/similar,plane/pointdepth,uniform/pointdepth,tsm/all,psm/all \
+  >/dev/null 2>"$tmp/stderr"; grep -q "at most 16 methods" "$tmp/stderr" && ok || no "17 methods: $(cat "$tmp/stderr")"
 expect_bad "bench zero frames" bench --frames 0
 expect_bad "bench unknown config" bench --configs sideways
 expect_bad "bench strips into a missing directory" bench --strips "$tmp/no/such"

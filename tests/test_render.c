@@ -833,8 +833,9 @@ static void lookup_region_changes_no_decision(void **state)
  * plane at the centre of the lixel read, moved only towards the light, can only light a
  * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
  * before); over every method and standard configuration of both built-in scenes it
- * decides fewer pixels otherwise than the exact reference does, and it takes the coarse
- * fallback's acne off the table's legs seen from close to the floor. */
+ * decides fewer pixels otherwise than the exact reference does, and it takes the acne
+ * off the table's legs seen from close to the floor (there they read the floor's map at
+ * a few pixels per lixel). */
 static void caster_faces_compare_along_their_planes(void **state)
 {
 	(void)state;

@@ -21,9 +21,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_METHODS 12
+#define MAX_METHODS 16
 /* a run: a method with a filter (none reads no map: once, unfiltered) */
 #define MAX_RUNS (MAX_METHODS * LX_FILTER_COUNT)
+#define LX_STR_(x) #x
+#define LX_STR(x) LX_STR_(x) /* a limit in a message */
 #define MAX_CONFIGS 16
 #define ANIMATION_SAMPLES 5 /* times at which the animation's accuracy is measured */
 
@@ -747,7 +749,7 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 		return st;
 	strcpy(copy, ba->methods);
 	if (!split(ba->methods, specs, MAX_METHODS, &ns))
-		return bad("--methods", "a comma-separated list of methods", copy);
+		return bad("--methods", "a comma-separated list of at most " LX_STR(MAX_METHODS) " methods, none empty", copy);
 	char expected[320];
 	snprintf(expected, sizeof expected, "methods from %s, each with options after slashes (lixel bench --help)",
 		 lx_shadow_method_names());
@@ -763,7 +765,7 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 	}
 	strcpy(copy, ba->configs);
 	if (!split(ba->configs, b->configs, MAX_CONFIGS, &b->nc))
-		return bad("--configs", "a comma-separated list of configurations", copy);
+		return bad("--configs", "a comma-separated list of at most " LX_STR(MAX_CONFIGS) " configurations, none empty", copy);
 	for (int c = 0; c < b->nc; c++)
 		if (!is_animation(b->configs[c]) && !lx_config_find(b->configs[c]))
 			return bad("--configs", "configurations named in lixel render --help, or animation", b->configs[c]);
