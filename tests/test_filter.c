@@ -62,7 +62,6 @@ static void golden_scene(const char *scene_name, enum lx_depth_precision path, c
 		struct lx_method_run run;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 		o.depth_slots = 1; /* the depth paths' codes, byte for byte; slots: test_render */
-		o.caster_point_depth = true; /* as before LX_FACE_PLANE (test_render compares the two) */
 		if (lx_method_run_init(&run, name, &base, &meshes, caps, &o, GW, GH, path, LX_DEFAULT_BIAS_CODES, false, err,
 				       sizeof err))
 			fail_msg("%s: %s", name, err);
@@ -163,8 +162,7 @@ static void same_as_highp(const char *texture, const char *now)
 /* --filter none draws what lixel drew before filters: the hashes of every method's shaded
  * and decision images, on every standard configuration of both built-in scenes and both
  * depth paths, against tests/data/filter-none.golden, written by the code before the
- * filters came (LIXEL_GOLDEN_WRITE=FILE writes them again), casters' faces compared at
- * their pixels' depth as then (--caster-depth point). A method or configuration
+ * filters came (LIXEL_GOLDEN_WRITE=FILE writes them again). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

@@ -829,7 +829,7 @@ static void lookup_region_changes_no_decision(void **state)
 	decisions_free(&dc);
 }
 
-/* --caster-depth face (the default) against point: a caster's face compared along its
+/* --caster-depth face against point (the default): a caster's face compared along its
  * plane at the centre of the lixel read, moved only towards the light, can only light a
  * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
  * before); over every method and standard configuration of both built-in scenes it
@@ -857,7 +857,7 @@ static void caster_faces_compare_along_their_planes(void **state)
 			struct lx_method_run run[2]; /* 0: face, 1: point */
 			for (int k = 0; k < 2; k++) {
 				struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-				o.caster_point_depth = k == 1;
+				o.caster_face_depth = k == 0;
 				if (lx_method_run_init(&run[k], m, &base, &meshes, &dc.caps, &o, w, h, LX_DEPTH_AUTO,
 						       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
 					fail_msg("%s: %s", m, err);
@@ -1131,9 +1131,6 @@ static void simulated_lima_keeps_the_shadows(void **state)
 		assert_true(lx_meshes_build(&base, &meshes));
 		struct lx_method_run run[2];
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-		/* the mediump path compares casters' faces at their pixels' depth (main.frag's
-		 * LX_FACE_PLANE needs highp): so does the highp run, so that only precision differs */
-		o.caster_point_depth = true;
 		for (int k = 0; k < 2; k++) {
 			if (k)
 				setenv("LIXEL_SIMULATE_LIMA", "1", 1);

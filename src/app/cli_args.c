@@ -122,9 +122,9 @@ int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, str
 			return lx_arg_bad(cmd, opt, "footprint or all", value);
 		o->lookup_everywhere = value[0] == 'a';
 	} else if (!strcmp(opt, "--caster-depth")) {
-		if (strcmp(value, "face") && strcmp(value, "point"))
-			return lx_arg_bad(cmd, opt, "face or point", value);
-		o->caster_point_depth = value[0] == 'p';
+		if (strcmp(value, "point") && strcmp(value, "face"))
+			return lx_arg_bad(cmd, opt, "point or face", value);
+		o->caster_face_depth = value[0] == 'f';
 	} else if (!strcmp(opt, "--depth-slots")) {
 		enum lx_number_error e = lx_number_int(value, 1, LX_DEPTH_SLOTS_MAX, &o->depth_slots);
 		if (e)

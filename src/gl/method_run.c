@@ -58,7 +58,7 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 				      .map_count = mr->lights[0].atlas.count, .width = width, .height = height,
 				      .depth = mr->depth.taken, .bias_codes = bias_codes, .to_window = to_window,
 				      .lookup_everywhere = mr->options.lookup_everywhere,
-				      .caster_point_depth = mr->options.caster_point_depth, .light_count = mr->light_count,
+				      .caster_face_depth = mr->options.caster_face_depth, .light_count = mr->light_count,
 				      .depth_slots = mr->options.depth_slots};
 	for (int i = 0; i < mr->light_count; i++) {
 		rd.lights[i].atlas = &mr->lights[i].atlas;

@@ -106,8 +106,8 @@ struct lx_renderer {
 	 * the faces: object_draws; LX_FACES_AWAY reads none, its other slots stay empty) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
-	/* casters' faces drawn with LX_FACES_CASTER: derivatives, off the mediump path, not
-	 * --caster-depth point (else as LX_FACES_TOWARD) */
+	/* casters' faces drawn with LX_FACES_CASTER: --caster-depth face, derivatives, off the
+	 * mediump path (else as LX_FACES_TOWARD) */
 	bool face_plane;
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -473,7 +473,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
-	r->face_plane = d->caps->derivatives && !mediump(r) && !d->caster_point_depth;
+	r->face_plane = d->caps->derivatives && !mediump(r) && d->caster_face_depth;
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;

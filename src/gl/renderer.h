@@ -37,8 +37,8 @@ struct lx_renderer_desc {
 	bool clear_whole_atlas;
 	bool lookup_everywhere; /* every receiver pixel reads its maps (--lookup-region all), not
 				 * only where a shadow can fall (lookup_region.h) */
-	bool caster_point_depth; /* a caster's faces compared at their pixels' depth (--caster-depth
-				  * point), not along their planes (LX_FACES_CASTER, shader_text.h) */
+	bool caster_face_depth; /* a caster's faces compared along their planes (--caster-depth
+				 * face: LX_FACES_CASTER, shader_text.h), not at their pixels' depth */
 	int depth_slots; /* --depth-slots: the atlas cleared once every this many frames (renderer.c);
 			  * taken on the depth-texture path of a GPU that is not a tiler, else 1 */
 	enum lx_filter filter;  /* the main pass's shadow filter to start with (shadow_filter.h) */

@@ -65,7 +65,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		if (!strcmp(opt, "all") || !strcmp(opt, "footprint"))
 			o->lookup_everywhere = opt[0] == 'a';
 		else if (!strcmp(opt, "pointdepth") || !strcmp(opt, "facedepth"))
-			o->caster_point_depth = opt[0] == 'p';
+			o->caster_face_depth = opt[0] == 'f';
 		else if (!strncmp(opt, "lights", 6) && !lx_number_int(opt + 6, 1, LX_MAX_LIGHTS, &lights))
 			o->max_lights = lights;
 		else if (!strncmp(opt, "slots", 5) && !lx_number_int(opt + 5, 1, LX_DEPTH_SLOTS_MAX, &slots))

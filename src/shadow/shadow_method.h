@@ -65,10 +65,11 @@ struct lx_method_options {
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
-	/* The main pass (every method): a caster's face compared at the pixel's own depth
-	 * (--caster-depth point), not along the face's plane at the centre of the lixel read
-	 * (main.frag's LX_FACE_PLANE), for comparison. */
-	bool caster_point_depth;
+	/* The main pass (every method): a caster's face compared along its plane at the centre
+	 * of the lixel read (--caster-depth face, main.frag's LX_FACE_PLANE: no acne where a
+	 * coarse map meets its silhouette, for a few ALU operations per lookup), not at the
+	 * pixel's own depth. */
+	bool caster_face_depth;
 	/* The shadow pass (every method): the atlas cleared once every depth_slots frames,
 	 * each frame's depths in its own slot of the depth range (--depth-slots, default
 	 * LX_DEPTH_SLOTS_DEFAULT; 1: cleared every frame). */
