@@ -1,6 +1,7 @@
 #include "cli_args.h"
 #include "shadow_method.h"
 #include "soft_reference.h"
+#include <stddef.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
@@ -107,25 +108,30 @@ bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t
 	return false;
 }
 
+/* The options of two words: the default's (false) and the other's (true). */
+struct two_way {
+	const char *name, *off, *on, *expected;
+	size_t field; /* a bool of struct lx_method_options */
+};
+static const struct two_way two_ways[] = {
+	{"--region-shape", "fitted", "square", "fitted or square", offsetof(struct lx_method_options, square_regions)},
+	{"--budget-split", "fixed", "shared", "fixed or shared", offsetof(struct lx_method_options, shared_budget)},
+	{"--lookup-region", "footprint", "all", "footprint or all", offsetof(struct lx_method_options, lookup_everywhere)},
+	{"--caster-depth", "point", "face", "point or face", offsetof(struct lx_method_options, caster_face_depth)},
+};
+
 int lx_arg_plane_option(const char *cmd, const char *opt, const char *value, struct lx_method_options *o)
 {
-	if (!strcmp(opt, "--region-shape")) {
-		if (strcmp(value, "square") && strcmp(value, "fitted"))
-			return lx_arg_bad(cmd, opt, "square or fitted", value);
-		o->square_regions = value[0] == 's';
-	} else if (!strcmp(opt, "--budget-split")) {
-		if (strcmp(value, "fixed") && strcmp(value, "shared"))
-			return lx_arg_bad(cmd, opt, "fixed or shared", value);
-		o->shared_budget = value[0] == 's';
-	} else if (!strcmp(opt, "--lookup-region")) {
-		if (strcmp(value, "footprint") && strcmp(value, "all"))
-			return lx_arg_bad(cmd, opt, "footprint or all", value);
-		o->lookup_everywhere = value[0] == 'a';
-	} else if (!strcmp(opt, "--caster-depth")) {
-		if (strcmp(value, "point") && strcmp(value, "face"))
-			return lx_arg_bad(cmd, opt, "point or face", value);
-		o->caster_face_depth = value[0] == 'f';
-	} else if (!strcmp(opt, "--depth-slots")) {
+	for (size_t i = 0; i < sizeof two_ways / sizeof two_ways[0]; i++) {
+		const struct two_way *t = &two_ways[i];
+		if (strcmp(opt, t->name))
+			continue;
+		if (strcmp(value, t->off) && strcmp(value, t->on))
+			return lx_arg_bad(cmd, opt, t->expected, value);
+		*(bool *)((char *)o + t->field) = !strcmp(value, t->on);
+		return 0;
+	}
+	if (!strcmp(opt, "--depth-slots")) {
 		enum lx_number_error e = lx_number_int(value, 1, LX_DEPTH_SLOTS_MAX, &o->depth_slots);
 		if (e)
 			return lx_arg_bad_number(cmd, opt, "a whole number of frames from 1 to 64", value, e);

@@ -1006,13 +1006,14 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(&r->lookup, id, mask))
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
+		enum lx_faces toward = r->face_plane ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : LX_FACES_CASTER, WHOLE, 0, 0};
+			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0};
 			return n;
 		}
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, LX_FACES_CASTER, INDEXED, first, facing};
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing};
 		if (r->facing_count - first - facing > 0)
 			out[n++] = r->d.lookup_everywhere
 					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, first + facing,
