@@ -107,6 +107,16 @@ fi
 "$lixel" render --scene table --plane-lixels 200 --fallback-lixels 64 --json --size 96x64 --frames 1 --out "$tmp/t.png" >"$tmp/json" 2>&1 &&
   n=$(map_lixels table "$tmp/json") && [ -n "$n" ] && [ "$n" -le 40000 ] && grep -q '"lixels": 84096' "$tmp/json" && ok ||
   no "table scene with budgets: $(cat "$tmp/json")"
+# each two-word option's words both taken, to different effect: fixed budgets' atlas is
+# smaller than shared ones' (which must hold a map grown by what the others leave)
+for b in fixed shared; do
+  "$lixel" render --budget-split $b --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/b-$b.json" 2>&1 || no "--budget-split $b"
+done
+grep -q '"atlas": \[1982, 624\]' "$tmp/b-fixed.json" && grep -q '"atlas": \[2048, 778\]' "$tmp/b-shared.json" && ok ||
+  no "--budget-split fixed and shared: $(grep -o '"atlas": [^]]*' "$tmp/b-fixed.json" "$tmp/b-shared.json")"
+"$lixel" render --region-shape fitted --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>&1 &&
+  ! grep -q '"name": "floor", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' "$tmp/json" && ok ||
+  no "--region-shape fitted gave a square: $(cat "$tmp/json")"
 expect_bad "region shape" render --region-shape round $out
 expect_bad "budget split" render --budget-split half $out
 expect_bad "max lpp" render --plane-max-lpp 0 $out
