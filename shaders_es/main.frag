@@ -17,16 +17,14 @@
 #define LX_FACE_TEST 0
 #endif
 // LX_FACE_PLANE: the draw is a caster's faces turned towards the light (a convex closed
-// mesh, as every caster is), highp, unfiltered. A coarse map's lixel near such a caster's
-// silhouette holds its own back face at its centre, which can lie nearer the light than
-// the pixel does: acne along a lit face's edges. The face's plane is compared there
-// instead, moved only towards the light: the caster lies wholly beyond its face's plane,
-// so none of its own depths is nearer than that plane at any lixel centre.
-#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || !defined(GL_FRAGMENT_PRECISION_HIGH) || defined(LX_FORCE_MEDIUMP))
+// mesh, as every caster is), off the mediump path, unfiltered. A coarse map's lixel near
+// such a caster's silhouette holds its own back face at its centre, which can lie nearer
+// the light than the pixel does: acne along a lit face's edges. The face's plane is
+// compared there instead, moved only towards the light: the caster lies wholly beyond its
+// face's plane, so none of its own depths is nearer than that plane at any lixel centre.
+// main.vert gives the plane's slope in each map (v_slope01, v_slope23).
+#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || defined(LX_FORCE_MEDIUMP))
 #undef LX_FACE_PLANE
-#endif
-#ifdef LX_FACE_PLANE
-#extension GL_OES_standard_derivatives : enable
 #endif
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
@@ -68,6 +66,10 @@ uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bo
 uniform float u_bias;            // in depth codes
 #ifdef LX_FACE_PLANE
 uniform vec4 u_texel; // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
+varying vec4 v_slope01; // d depth / d (s, t) of the face in maps 0 (xy) and 1 (zw)
+#if LX_READS > 2
+varying vec4 v_slope23;
+#endif
 #endif
 #if LX_FILTER > 0
 // --filter pcf2x2 (1) or pcf3x3 (2): several texels of the map around the point, each
@@ -153,7 +155,7 @@ void main()
 	// map serves is lit.
 	vec3 p = vec3(0.0), q;
 #ifdef LX_FACE_PLANE
-	vec3 dpx = vec3(0.0), dpy = vec3(0.0); /* the served map's point across the pixel */
+	vec2 slope = vec2(0.0); /* the served map's */
 #endif
 	float found = 0.0, s;
 #if LX_FILTER > 0
@@ -167,8 +169,7 @@ void main()
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
 #ifdef LX_FACE_PLANE
-	dpx = s > 0.5 ? dFdx(q) : dpx;
-	dpy = s > 0.5 ? dFdy(q) : dpy;
+	slope = s > 0.5 ? v_slope01.xy : slope;
 #endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[0] : box;
@@ -183,8 +184,7 @@ void main()
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
 #ifdef LX_FACE_PLANE
-	dpx = s > 0.5 ? dFdx(q) : dpx;
-	dpy = s > 0.5 ? dFdy(q) : dpy;
+	slope = s > 0.5 ? v_slope01.zw : slope;
 #endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[1] : box;
@@ -200,8 +200,7 @@ void main()
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
 #ifdef LX_FACE_PLANE
-	dpx = s > 0.5 ? dFdx(q) : dpx;
-	dpy = s > 0.5 ? dFdy(q) : dpy;
+	slope = s > 0.5 ? v_slope23.xy : slope;
 #endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[2] : box;
@@ -217,8 +216,7 @@ void main()
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
 #ifdef LX_FACE_PLANE
-	dpx = s > 0.5 ? dFdx(q) : dpx;
-	dpy = s > 0.5 ? dFdy(q) : dpy;
+	slope = s > 0.5 ? v_slope23.zw : slope;
 #endif
 #if LX_FILTER > 0
 	box = s > 0.5 ? u_clamp[3] : box;
@@ -230,16 +228,9 @@ void main()
 #else
 	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
 #ifdef LX_FACE_PLANE
-	// The face's depth is affine in the map's (s, t) [Isidoro]: its slope from the
-	// derivatives, the move to the lixel's centre, kept where the face is not edge-on to
-	// the map (det) or grazed by the light (on a face lit at under a tenth, a half-lixel
-	// move is a long way along it, past the edge of a caster it touches).
-	float det = dpx.x * dpy.y - dpx.y * dpy.x;
+	// the face's depth at the centre of the lixel read, where nearer the light
 	vec2 off = (floor(p.xy * u_texel.xy) + 0.5) * u_texel.zw - p.xy;
-	float num = (dpx.z * dpy.y - dpy.z * dpx.y) * off.x + (dpy.z * dpx.x - dpx.z * dpy.x) * off.y;
-	float lit = dot(normalize(v_normal), normalize(v_to_light));
-	float ok = float(abs(det) > 1e-3 * length(dpx.xy) * length(dpy.xy)) * float(lit > 0.1); /* 0 for a NaN */
-	p.z += ok > 0.5 ? min(num / det, 0.0) : 0.0; /* a select, as above */
+	p.z += min(dot(slope, off), 0.0);
 #endif
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
 #endif

@@ -8,6 +8,12 @@
 #ifndef LX_FACE_TEST
 #define LX_FACE_TEST 0 // main.frag's face test
 #endif
+#ifndef LX_FILTER
+#define LX_FILTER 0
+#endif
+#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || defined(LX_FORCE_MEDIUMP) || LX_READS == 0)
+#undef LX_FACE_PLANE // as main.frag
+#endif
 // Main pass. LX_SHADOWED: the method has shadow maps; LX_FACE_TEST
 // (main.frag); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order
@@ -50,6 +56,26 @@ varying vec4 v_shadow3;
 #ifdef LX_EDGES
 varying vec4 v_edges3;
 #endif
+#endif
+#ifdef LX_FACE_PLANE
+// Each map's inverse transpose, which takes a plane of the world to the map's homogeneous
+// space: there the face (A, B, C, D) holds A s + B t + C depth + D = 0 (s, t and depth
+// divided by q), so its depth's slope over (s, t) is -(A, B) / C, one value over the
+// triangle (main.frag). Left at 0 where the light grazes the face (lit at under a tenth: a
+// half-lixel move runs a long way along it, past the edge of a caster it touches) or the
+// face is edge-on to the map.
+uniform mat4 u_face_tex[LX_READS];
+varying vec4 v_slope01;
+#if LX_READS > 2
+varying vec4 v_slope23;
+#endif
+
+vec2 face_slope(mat4 face_tex, vec4 plane, float lit)
+{
+	vec4 h = face_tex * plane;
+	float ok = lit * float(abs(h.z) > 1e-6 * (abs(h.x) + abs(h.y)));
+	return ok > 0.5 ? -h.xy / h.z : vec2(0.0);
+}
 #endif
 attribute vec3 a_position;
 attribute vec3 a_normal;
@@ -106,6 +132,21 @@ void main()
 	v_shadow3 = u_shadow_tex[3] * world;
 #ifdef LX_EDGES
 	v_edges3 = edges(v_shadow3, u_region[3]);
+#endif
+#endif
+#ifdef LX_FACE_PLANE
+	vec4 plane = vec4(a_face_normal, -dot(a_face_normal, world.xyz));
+	float c = dot(a_face_normal, v_to_light);
+	float lit = float(c > 0.0) * float(c * c > 0.01 * dot(a_face_normal, a_face_normal) * dot(v_to_light, v_to_light));
+	v_slope01 = vec4(face_slope(u_face_tex[0], plane, lit), 0.0, 0.0);
+#if LX_READS > 1
+	v_slope01.zw = face_slope(u_face_tex[1], plane, lit);
+#endif
+#if LX_READS > 2
+	v_slope23 = vec4(face_slope(u_face_tex[2], plane, lit), 0.0, 0.0);
+#endif
+#if LX_READS > 3
+	v_slope23.zw = face_slope(u_face_tex[3], plane, lit);
 #endif
 #endif
 	gl_Position = u_view_proj * world;

@@ -41,7 +41,6 @@ void lx_gl_caps_probe(struct lx_gl_caps *c)
 	const char *ext = (const char *)lx_gl.GetString(GL_EXTENSIONS);
 	c->depth_texture = ext && (strstr(ext, "GL_OES_depth_texture") || strstr(ext, "GL_ARB_depth_texture"));
 	c->depth24 = (ext && strstr(ext, "GL_OES_depth24")) || renderbuffer_format_works(GL_DEPTH_COMPONENT24_OES);
-	c->derivatives = (ext && strstr(ext, "GL_OES_standard_derivatives")) || strncmp(c->version, "OpenGL ES", 9) != 0;
 	GLint range[2] = {0, 0}, precision = 0;
 	lx_gl.GetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
 	c->fragment_highp = precision > 0;

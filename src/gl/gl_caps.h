@@ -15,8 +15,6 @@ struct lx_gl_caps {
 	 * render target is cheapest cleared whole, once per pass, which also spares loading
 	 * its tiles from memory; llvmpipe and desktop GPUs clear per region. */
 	bool tiler;
-	/* dFdx and dFdy in fragment shaders: GL_OES_standard_derivatives, or core (desktop GL) */
-	bool derivatives;
 };
 
 void lx_gl_caps_probe(struct lx_gl_caps *caps);

@@ -18,6 +18,7 @@ struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
+	GLint face_tex;     /* LX_FACE_PLANE variants: the maps' inverse transposes (main.vert) */
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
 };
@@ -106,8 +107,8 @@ struct lx_renderer {
 	 * the faces: object_draws; LX_FACES_AWAY reads none, its other slots stay empty) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
-	/* casters' faces drawn with LX_FACES_CASTER: --caster-depth face, derivatives, off the
-	 * mediump path (else as LX_FACES_TOWARD) */
+	/* casters' faces drawn with LX_FACES_CASTER: --caster-depth face, off the mediump path
+	 * (else as LX_FACES_TOWARD) */
 	bool face_plane;
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -186,6 +187,7 @@ static bool main_program(struct main_program *p, int maps, int shading, enum lx_
 	p->range = lx_gl.GetUniformLocation(p->prog, "u_range");
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
+	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
 	return true;
 }
 
@@ -473,7 +475,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
-	r->face_plane = d->caps->derivatives && !mediump(r) && d->caster_face_depth;
+	r->face_plane = !mediump(r) && d->caster_face_depth;
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
@@ -1059,13 +1061,37 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	return n;
 }
 
+/* The uniforms of a frame every main-pass program takes. */
+struct main_uniforms {
+	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
+	float face[LX_MAX_MAPS][16]; /* tex's inverse transposes, for planes (LX_FACE_PLANE) */
+	float light_color[3];
+	float beam[16], range[3]; /* a projective light's */
+	GLuint beam_tex;          /* its image, else 0 */
+};
+
+/* The inverse transpose of m, which takes planes as m takes points; zero where m is
+ * singular (an unrendered map's, never read). */
+static void plane_matrix(const mat4 *m, float out[16])
+{
+	mat4 inv;
+	memset(out, 0, 16 * sizeof(float));
+	if (!m4_invert(m, &inv))
+		return;
+	for (int c = 0; c < 4; c++)
+		for (int k = 0; k < 4; k++)
+			out[c * 4 + k] = (float)inv.m[k * 4 + c];
+}
+
 /* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q), the
  * atlas-space bounds of the rays it serves (an empty box for a map not rendered: every
- * lookup misses and reads lit), and for a filter the texel centres at its region's edges,
- * which its samples are clamped to. */
+ * lookup misses and reads lit), for a filter the texel centres at its region's edges,
+ * which its samples are clamped to, and for --caster-depth face the texture matrix's
+ * inverse transpose (main.vert's u_face_tex). */
 static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-			 float tex[][16], float region[][4], float clamp[][4])
+			 struct main_uniforms *u)
 {
+	float(*tex)[16] = u->tex, (*region)[4] = u->region, (*clamp)[4] = u->clamp;
 	double tw = r->texture_width, th = r->texture_height, lo, hi;
 	slot_range(r, &lo, &hi);
 	for (int m = 0; m < r->d.map_count; m++) {
@@ -1075,6 +1101,8 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 			for (int c = 0; c < 4; c++)
 				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
 		to_float(&t, tex[m]);
+		if (r->face_plane)
+			plane_matrix(&t, u->face[m]);
 		const struct lx_region *g = &atlas->regions[map->region];
 		clamp[m][0] = (float)((g->x + 0.5) / tw), clamp[m][1] = (float)((g->y + 0.5) / th);
 		clamp[m][2] = (float)((g->x + g->w - 0.5) / tw);
@@ -1151,14 +1179,6 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	return n;
 }
 
-/* The uniforms of a frame every main-pass program takes. */
-struct main_uniforms {
-	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
-	float light_color[3];
-	float beam[16], range[3]; /* a projective light's */
-	GLuint beam_tex;          /* its image, else 0 */
-};
-
 /* A projective light's matrix and range, and its image bound to unit 1. */
 static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f, struct main_uniforms *u)
 {
@@ -1229,11 +1249,13 @@ enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
 static void set_maps(const struct lx_renderer *r, const struct main_program *p, const struct main_uniforms *u,
 		     unsigned mask)
 {
-	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
+	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4], face[LX_MAX_MAPS][16];
 	int n = 0;
 	for (int m = 0; m < r->d.map_count; m++)
 		if (mask & 1u << m) {
 			memcpy(tex[n], u->tex[m], sizeof tex[n]);
+			if (p->face_tex >= 0)
+				memcpy(face[n], u->face[m], sizeof face[n]);
 			memcpy(region[n], u->region[m], sizeof region[n]);
 			memcpy(clamp[n], u->clamp[m], sizeof clamp[n]);
 			n++;
@@ -1242,6 +1264,8 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 	lx_gl.Uniform4fv(p->region, n, region[0]);
 	if (r->filter != LX_FILTER_NONE)
 		lx_gl.Uniform4fv(p->clamp, n, clamp[0]);
+	if (p->face_tex >= 0)
+		lx_gl.UniformMatrix4fv(p->face_tex, n, GL_FALSE, face[0]);
 }
 
 /* A program's uniforms for a frame, set when the program changes (a uniform the variant
@@ -1323,7 +1347,7 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
 	u.light_color[0] = (float)L->color.x, u.light_color[1] = (float)L->color.y, u.light_color[2] = (float)L->color.z;
-	map_uniforms(r, r->d.lights[f->light_index].atlas, res, u.tex, u.region, u.clamp);
+	map_uniforms(r, r->d.lights[f->light_index].atlas, res, &u);
 	beam_uniforms(r, f, &u);
 	bool projective = kind != DECISION && u.beam_tex != 0; /* the decision needs only the shadow test */
 	int shading = kind == DECISION ? SHADING_DECISION
