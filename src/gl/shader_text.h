@@ -16,8 +16,8 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
  * (a flat-shaded object's shading, whose Lambert term is 0 where it is turned away);
  * some of each, the shader tests each (LX_FACE_TEST); every face turned away (LX_FACE_AWAY,
  * read nothing: shadowed); or as LX_FACES_TOWARD, a caster's faces, each compared along
- * its plane at the centre of the lixel read (LX_FACE_PLANE, main.frag: no acne at the
- * caster's silhouette in a coarse map). */
+ * its plane at the centre of the lixel read (LX_FACE_PLANE, main.vert and main.frag: no
+ * acne at the caster's silhouette in a coarse map; --caster-depth face). */
 enum lx_faces { LX_FACES_TOWARD, LX_FACES_TESTED, LX_FACES_AWAY, LX_FACES_CASTER, LX_FACES_COUNT };
 
 /* The main pass's defines for a variant: how many maps the method has, how many of them
