@@ -16,16 +16,14 @@
 #ifndef LX_FACE_TEST
 #define LX_FACE_TEST 0
 #endif
-// LX_FACE_PLANE: the draw is a caster's faces turned towards the light (a convex closed
-// mesh, as every caster is), off the mediump path, unfiltered. A coarse map's lixel near
-// such a caster's silhouette holds its own back face at its centre, which can lie nearer
-// the light than the pixel does: acne along a lit face's edges. The face's plane is
-// compared there instead, moved only towards the light: the caster lies wholly beyond its
-// face's plane, so none of its own depths is nearer than that plane at any lixel centre.
-// main.vert gives the plane's slope in each map (v_slope01, v_slope23).
-#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || defined(LX_FORCE_MEDIUMP))
-#undef LX_FACE_PLANE
-#endif
+// LX_FACE_PLANE (unfiltered, off the mediump path: lx_main_face_plane): the draw is a
+// caster's faces turned towards the light (a convex closed mesh, as every caster is). A
+// coarse map's lixel near such a caster's silhouette holds its own back face at its
+// centre, which can lie nearer the light than the pixel does: acne along a lit face's
+// edges. The face's plane is compared there instead, moved only towards the light: the
+// caster lies wholly beyond its face's plane, so none of its own depths is nearer than
+// that plane at any lixel centre. main.vert gives the plane's slope in each map
+// (v_slope01, v_slope23).
 #if defined(GL_FRAGMENT_PRECISION_HIGH) && !defined(LX_FORCE_MEDIUMP)
 precision highp float;
 #else

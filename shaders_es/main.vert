@@ -8,12 +8,6 @@
 #ifndef LX_FACE_TEST
 #define LX_FACE_TEST 0 // main.frag's face test
 #endif
-#ifndef LX_FILTER
-#define LX_FILTER 0
-#endif
-#if defined(LX_FACE_PLANE) && (LX_FILTER > 0 || defined(LX_FORCE_MEDIUMP) || LX_READS == 0)
-#undef LX_FACE_PLANE // as main.frag
-#endif
 // Main pass. LX_SHADOWED: the method has shadow maps; LX_FACE_TEST
 // (main.frag); LX_READS (0 to 4):
 // how many of them a draw reads, their matrices in the first slots in the maps' order

@@ -13,7 +13,7 @@
 struct batch {
 	char dir[64];
 	int files;
-	char list[262144];
+	char list[524288];
 };
 
 static void write_variant(struct batch *b, const char *file, const char *defines, bool lima, const char *tag)
@@ -48,19 +48,23 @@ static void every_variant_is_glsl_es_100(void **state)
 	char defines[360], tag[64];
 	static const enum lx_depth_precision paths[3] = {LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP, LX_DEPTH_TEXTURE};
 	/* the main pass: every count of maps, every count of them read, shaded or decision,
-	 * each rule for their faces (toward the light, tested, away), each depth path (0 highp, 1 mediump, 2 highp with
-	 * the maps in a depth texture), every shadow filter, and the fragment shader under the
-	 * lima simulation */
+	 * each rule for their faces (toward the light, tested, away, a caster's along its
+	 * plane), each depth path (0 highp, 1 mediump, 2 highp with the maps in a depth
+	 * texture), every shadow filter, with no limit on varyings and with a VideoCore IV's 8,
+	 * and the fragment shader under the lima simulation */
 	for (int maps = 0; maps <= 4; maps++)
 		for (int reads = 0; reads <= maps; reads++)
 			for (int decision = 0; decision < 2; decision++)
-				for (int face = 0; face < LX_FACES_COUNT; face++)
+				for (int face = 0; face < 2 * LX_FACES_COUNT; face++)
 					for (int path = 0; path < 3; path++)
 						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-							if (face == LX_FACES_AWAY && reads > 0)
+							if (face % LX_FACES_COUNT == LX_FACES_AWAY && reads > 0)
 								continue; /* faces turned away read nothing: the reads 0 text */
-							lx_main_defines(maps, reads, decision, (enum lx_faces)face, paths[path], defines,
-									sizeof defines);
+							struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = decision,
+										    .faces = (enum lx_faces)(face % LX_FACES_COUNT),
+										    .path = paths[path], .filtered = filter > 0,
+										    .max_varyings = face < LX_FACES_COUNT ? 0 : 8};
+							lx_main_defines(&v, defines, sizeof defines);
 							strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 							snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d", maps, reads, decision, face, path, filter);
 							if (filter == 0) /* the vertex shader reads no filter */
@@ -73,7 +77,10 @@ static void every_variant_is_glsl_es_100(void **state)
 	for (int maps = 0; maps <= 4; maps++)
 		for (int path = 0; path < 3; path++)
 			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-				lx_main_defines(maps, maps, false, LX_FACES_TESTED, paths[path], defines, sizeof defines);
+				lx_main_defines(&(struct lx_main_variant){.maps = maps, .reads = maps, .faces = LX_FACES_TESTED,
+									  .path = paths[path], .filtered = filter > 0,
+									  .projective = true},
+						defines, sizeof defines);
 				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
 				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, path, filter);
@@ -92,9 +99,15 @@ static void every_variant_is_glsl_es_100(void **state)
 							    "overlay.vert", "overlay.frag", NULL};
 	     *f; f++)
 		write_variant(&b, *f, NULL, false, "plain");
-	char cmd[sizeof b.list + 400], out[300];
+	/* the files through xargs: one sh -c argument holds at most 128 KiB */
+	char cmd[700], out[300], list[300];
 	snprintf(out, sizeof out, "%s/log", b.dir);
-	snprintf(cmd, sizeof cmd, "glslangValidator%s > %s 2>&1", b.list, out);
+	snprintf(list, sizeof list, "%s/list", b.dir);
+	FILE *lf = fopen(list, "w");
+	assert_non_null(lf);
+	fputs(b.list, lf);
+	assert_int_equal(fclose(lf), 0);
+	snprintf(cmd, sizeof cmd, "xargs glslangValidator < %s > %s 2>&1", list, out);
 	int st = system(cmd);
 	if (st != 0) {
 		FILE *f = fopen(out, "r");
@@ -111,10 +124,79 @@ static void every_variant_is_glsl_es_100(void **state)
 	assert_int_equal(st, 0);
 }
 
+/* The varying vectors of main.vert's text for a variant, as glslangValidator -E
+ * preprocesses it: every varying but a float, which the packing rules put beside a vec3. */
+static int vertex_varyings(const char *dir, const char *defines, int k)
+{
+	char err[256], path[128], cmd[400], line[256];
+	char *src = lx_shader_text("main.vert", lx_embedded_text(lx_shader_files, "main.vert"), defines, false, err,
+				   sizeof err);
+	if (!src)
+		fail_msg("%s", err);
+	snprintf(path, sizeof path, "%s/v%d.vert", dir, k);
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	fputs(src, f);
+	assert_int_equal(fclose(f), 0);
+	free(src);
+	snprintf(cmd, sizeof cmd, "glslangValidator -E %s > %s.pre 2>&1", path, path);
+	assert_int_equal(system(cmd), 0);
+	snprintf(path + strlen(path), sizeof path - strlen(path), ".pre");
+	f = fopen(path, "r");
+	assert_non_null(f);
+	int n = 0;
+	while (fgets(line, sizeof line, f)) {
+		const char *t = line + strspn(line, " \t");
+		n += !strncmp(t, "varying ", 8) && !strstr(t, " float ");
+	}
+	fclose(f);
+	return n;
+}
+
+/* lx_main_varyings counts what main.vert writes, for every count of maps read, with and
+ * without a face plane and a projective light; under a VideoCore IV's 8 no variant
+ * writes more (edges give way first, then the face plane), and without a limit every
+ * variant keeps both. */
+static void variants_fit_the_varyings(void **state)
+{
+	(void)state;
+	if (system("glslangValidator --version > /dev/null 2>&1") != 0)
+		fail_msg("glslangValidator is not installed (Debian: glslang-tools; make check installs it)");
+	char dir[64] = "/tmp/lixel-varyings-XXXXXX", defines[400];
+	assert_non_null(mkdtemp(dir));
+	int k = 0, dropped = 0;
+	for (int reads = 0; reads <= 4; reads++)
+		for (int caster = 0; caster < 2; caster++)
+			for (int projective = 0; projective < 2; projective++)
+				for (int limit = 0; limit <= 8; limit += 8) {
+					struct lx_main_variant v = {.maps = 4, .reads = reads,
+								    .faces = caster ? LX_FACES_CASTER : LX_FACES_TOWARD,
+								    .path = LX_DEPTH_HIGHP, .projective = projective,
+								    .max_varyings = limit};
+					lx_main_defines(&v, defines, sizeof defines);
+					if (projective)
+						strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
+					bool edges = strstr(defines, "LX_EDGES") != NULL, plane = strstr(defines, "LX_FACE_PLANE") != NULL;
+					int n = vertex_varyings(dir, defines, k++);
+					assert_int_equal(n, lx_main_varyings(reads, edges, plane, projective));
+					if (limit)
+						assert_true(n <= limit);
+					else
+						assert_true(edges == (reads > 0) && plane == (caster && reads > 0));
+					dropped += limit && reads > 0 && (!edges || plane != (bool)caster);
+				}
+	print_message("%d variants' varyings counted; under 8, %d gave up edges or the face plane\n", k, dropped);
+	assert_true(dropped > 0);
+	char cmd[128];
+	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+	assert_int_equal(system(cmd), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(every_variant_is_glsl_es_100),
+		cmocka_unit_test(variants_fit_the_varyings),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -158,7 +158,9 @@ static bool run(enum lx_depth_precision path, bool *unsupported, char *detail, s
 	char err[1024];
 	GLuint write = lx_program_build("shadow_depth.vert", "shadow_depth.frag", lx_shadow_defines(path), err, sizeof err);
 	char cdef[320];
-	lx_main_defines(1, 1, true, LX_FACES_TESTED, path, cdef, sizeof cdef);
+	lx_main_defines(&(struct lx_main_variant){.maps = 1, .reads = 1, .decision = true, .faces = LX_FACES_TESTED,
+						  .path = path},
+			cdef, sizeof cdef);
 	GLuint compare = write ? lx_program_build("main.vert", "main.frag", cdef, err, sizeof err) : 0;
 	if (!write || !compare) {
 		snprintf(detail, len, "%.200s", err);

@@ -1,6 +1,7 @@
 #include "gl_caps.h"
 #include "gl_api.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifndef GL_DEPTH_COMPONENT24_OES
@@ -41,6 +42,17 @@ void lx_gl_caps_probe(struct lx_gl_caps *c)
 	const char *ext = (const char *)lx_gl.GetString(GL_EXTENSIONS);
 	c->depth_texture = ext && (strstr(ext, "GL_OES_depth_texture") || strstr(ext, "GL_ARB_depth_texture"));
 	c->depth24 = (ext && strstr(ext, "GL_OES_depth24")) || renderbuffer_format_works(GL_DEPTH_COMPONENT24_OES);
+	while (lx_gl.GetError() != GL_NO_ERROR) {
+	}
+	lx_gl.GetIntegerv(GL_MAX_VARYING_VECTORS, &c->max_varying_vectors);
+	if (lx_gl.GetError() != GL_NO_ERROR || c->max_varying_vectors <= 0) { /* a desktop context without it */
+		GLint floats = 0;
+		lx_gl.GetIntegerv(0x8B4B /* GL_MAX_VARYING_FLOATS */, &floats);
+		c->max_varying_vectors = floats / 4;
+	}
+	const char *cap = getenv("LIXEL_MAX_VARYINGS");
+	if (cap && atoi(cap) > 0 && (c->max_varying_vectors <= 0 || atoi(cap) < c->max_varying_vectors))
+		c->max_varying_vectors = atoi(cap);
 	GLint range[2] = {0, 0}, precision = 0;
 	lx_gl.GetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
 	c->fragment_highp = precision > 0;

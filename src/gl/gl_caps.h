@@ -15,6 +15,10 @@ struct lx_gl_caps {
 	 * render target is cheapest cleared whole, once per pass, which also spares loading
 	 * its tiles from memory; llvmpipe and desktop GPUs clear per region. */
 	bool tiler;
+	/* GL_MAX_VARYING_VECTORS (a VideoCore IV has 8): main.vert's outputs must fit
+	 * (lx_main_varyings). LIXEL_MAX_VARYINGS=N in the environment lowers it, so that the
+	 * tests run a small GPU's variants. */
+	int max_varying_vectors;
 };
 
 void lx_gl_caps_probe(struct lx_gl_caps *caps);

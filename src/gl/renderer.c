@@ -157,11 +157,35 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 	return true;
 }
 
-static bool main_program(struct main_program *p, int maps, int shading, enum lx_faces faces, int reads,
-			 enum lx_depth_precision path, enum lx_filter filter, char *err, size_t errlen)
+/* --caster-depth face on a GPU whose varyings cannot hold it for a draw reading every map
+ * (main.vert): one line saying so; those draws compare at their pixels' depth
+ * (lx_main_face_plane), draws reading fewer maps may still take it. */
+static void face_plane_fits(const struct lx_renderer *r)
 {
+	bool projective = false;
+	for (int i = 0; i < r->d.light_count; i++)
+		projective |= r->d.scene->lights[i].projective != LX_LIGHT_PLAIN;
+	struct lx_main_variant v = {.maps = r->d.map_count, .reads = r->d.map_count, .faces = LX_FACES_CASTER,
+				    .path = r->d.depth, .projective = projective,
+				    .max_varyings = r->d.caps->max_varying_vectors};
+	if (r->face_plane && r->d.map_count > 0 && !lx_main_face_plane(&v))
+		fprintf(stderr,
+			"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has %d: "
+			"such casters are compared at their pixels' depth\n",
+			v.reads, lx_main_varyings(v.reads, false, true, projective), v.max_varyings);
+}
+
+static bool main_program(struct main_program *p, const struct lx_renderer *r, int shading, enum lx_faces faces,
+			 int reads, enum lx_filter filter, char *err, size_t errlen)
+{
+	int maps = r->d.map_count, max_varyings = r->d.caps->max_varying_vectors;
+	enum lx_depth_precision path = r->d.depth;
 	char defines[400];
-	lx_main_defines(maps, reads, shading == SHADING_DECISION, faces, path, defines, sizeof defines);
+	struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = shading == SHADING_DECISION, .faces = faces,
+				    .path = path, .filtered = filter != LX_FILTER_NONE,
+				    .projective = shading != SHADING_DECISION && ((shading - 1) >> 2 & 1),
+				    .max_varyings = max_varyings};
+	lx_main_defines(&v, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
 	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
@@ -214,8 +238,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
 			struct main_program *p = &r->variant[shading][filter][faces][reads];
-			if (!p->prog && !main_program(p, r->d.map_count, shading, (enum lx_faces)faces, reads, r->d.depth,
-						      filter, err, errlen))
+			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, err, errlen))
 				return false;
 		}
 	}
@@ -476,6 +499,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
 	r->face_plane = !mediump(r) && d->caster_face_depth;
+	face_plane_fits(r);
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
@@ -771,7 +795,7 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 	struct main_program *p = &r->variant[shading][r->filter][faces][reads];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r->d.map_count, shading, faces, reads, r->d.depth, r->filter, err, sizeof err)) {
+		if (!main_program(p, r, shading, faces, reads, r->filter, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count > 0 ? LX_FACES_TESTED : LX_FACES_TOWARD]

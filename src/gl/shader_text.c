@@ -115,20 +115,31 @@ const char *lx_shadow_defines(enum lx_depth_precision path)
 					  : NULL;
 }
 
-void lx_main_defines(int maps, int reads, bool decision, enum lx_faces faces, enum lx_depth_precision path,
-		     char *out, size_t len)
+int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective)
 {
-	const char *p = lx_shadow_defines(path);
-	bool away = maps > 0 && faces == LX_FACES_AWAY;
-	if (away)
-		reads = 0; /* in its own shadow: nothing to read */
+	return 2 + reads * (1 + edges) + (face_plane ? (reads + 1) / 2 : 0) + projective;
+}
+
+static bool varyings_fit(const struct lx_main_variant *v, int n) { return v->max_varyings <= 0 || n <= v->max_varyings; }
+
+bool lx_main_face_plane(const struct lx_main_variant *v)
+{
+	return v->maps > 0 && v->reads > 0 && v->faces == LX_FACES_CASTER && v->path != LX_DEPTH_MEDIUMP &&
+	       !v->filtered && varyings_fit(v, lx_main_varyings(v->reads, false, true, v->projective));
+}
+
+void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len)
+{
+	const char *p = lx_shadow_defines(v->path);
+	bool away = v->maps > 0 && v->faces == LX_FACES_AWAY;
+	int reads = away ? 0 : v->reads; /* in its own shadow: nothing to read */
+	bool plane = !away && lx_main_face_plane(v);
 	/* the served test on edge functions (main.vert), for both shaders alike; not on the
 	 * mediump path, whose fp16 test stays as it was */
-	bool edges = reads > 0 && path != LX_DEPTH_MEDIUMP;
-	/* the face's plane off the mediump path (main.frag also leaves it out under a filter) */
-	bool plane = reads > 0 && faces == LX_FACES_CASTER && path != LX_DEPTH_MEDIUMP;
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s", maps > 0,
-		 reads, maps > 0 && faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
-		 decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "",
+	bool edges = reads > 0 && v->path != LX_DEPTH_MEDIUMP &&
+		     varyings_fit(v, lx_main_varyings(reads, true, plane, v->projective));
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s", v->maps > 0,
+		 reads, v->maps > 0 && v->faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
+		 v->decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "",
 		 plane ? "#define LX_FACE_PLANE 1\n" : "");
 }

@@ -20,13 +20,32 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
  * acne at the caster's silhouette in a coarse map; --caster-depth face). */
 enum lx_faces { LX_FACES_TOWARD, LX_FACES_TESTED, LX_FACES_AWAY, LX_FACES_CASTER, LX_FACES_COUNT };
 
-/* The main pass's defines for a variant: how many maps the method has, how many of them
- * a draw reads (0 to maps; the draw puts them in the first slots), the decision output,
- * its faces (where the method has maps; LX_FACES_AWAY reads none: main.frag), the depth
- * path (LX_DEPTH_AUTO as LX_DEPTH_HIGHP), and where reads > 0 off the mediump path, the
- * served test on edge functions (LX_EDGES). */
-void lx_main_defines(int maps, int reads, bool decision, enum lx_faces faces, enum lx_depth_precision path,
-		     char *out, size_t len);
+/* A main-pass variant: how many maps the method has, how many of them a draw reads (0 to
+ * maps; the draw puts them in the first slots), the decision output, its faces (where the
+ * method has maps; LX_FACES_AWAY reads none: main.frag), the depth path (LX_DEPTH_AUTO as
+ * LX_DEPTH_HIGHP), a shadow filter (no face plane then), a projective light (one more
+ * varying), and the GPU's GL_MAX_VARYING_VECTORS (0: no limit). */
+struct lx_main_variant {
+	int maps, reads;
+	bool decision;
+	enum lx_faces faces;
+	enum lx_depth_precision path;
+	bool filtered, projective;
+	int max_varyings;
+};
+/* The varying vectors main.vert writes for a draw reading `reads` maps: the light's
+ * direction and the normal, a point per map, with edges an edge vector per map, with a
+ * face plane a slope (two numbers) per map, and a projective light's point. */
+int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective);
+/* Whether a variant draws casters' faces along their planes (LX_FACE_PLANE): faces
+ * LX_FACES_CASTER, reading maps, off the mediump path, unfiltered, and within the
+ * varyings (without edges, which give way first). */
+bool lx_main_face_plane(const struct lx_main_variant *v);
+/* The main pass's defines for a variant: besides the above, where it reads maps off the
+ * mediump path and the varyings hold them, the served test on edge functions (LX_EDGES;
+ * else the test compares the divided point, which needs no varying: a VideoCore IV has 8,
+ * and four maps read with edges take 10). */
+void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len);
 /* The shadow pass's defines for a depth path (NULL: none). */
 const char *lx_shadow_defines(enum lx_depth_precision path);
 
