@@ -50,9 +50,10 @@ void lx_gl_caps_probe(struct lx_gl_caps *c)
 		lx_gl.GetIntegerv(0x8B4B /* GL_MAX_VARYING_FLOATS */, &floats);
 		c->max_varying_vectors = floats / 4;
 	}
-	const char *cap = getenv("LIXEL_MAX_VARYINGS");
-	if (cap && atoi(cap) > 0 && (c->max_varying_vectors <= 0 || atoi(cap) < c->max_varying_vectors))
-		c->max_varying_vectors = atoi(cap);
+	const char *cap = getenv("LIXEL_MAX_VARYINGS"); /* a test hook: a smaller GPU's limit */
+	int fewer = cap ? atoi(cap) : 0;
+	if (fewer > 0 && (c->max_varying_vectors <= 0 || fewer < c->max_varying_vectors))
+		c->max_varying_vectors = fewer;
 	GLint range[2] = {0, 0}, precision = 0;
 	lx_gl.GetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
 	c->fragment_highp = precision > 0;

@@ -496,10 +496,10 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
-	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
-	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
 	r->face_plane = !mediump(r) && d->caster_face_depth;
 	face_plane_fits(r);
+	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
+	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
 	r->slot = -1;
 	r->texture_width = d->lights[0].atlas->texture_width;
