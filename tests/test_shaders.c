@@ -36,6 +36,46 @@ static void write_variant(struct batch *b, const char *file, const char *defines
 	snprintf(b->list + n, sizeof b->list - n, " %s", path);
 }
 
+static const enum lx_depth_precision paths[3] = {LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP, LX_DEPTH_TEXTURE};
+
+/* One main-pass variant's texts (its defines, `extra` and the filter's, as the renderer
+ * puts them): the vertex shader, the fragment shader, and that under the lima simulation. */
+static void write_main_variant(struct batch *b, const struct lx_main_variant *v, const char *extra, int filter,
+			       const char *tag)
+{
+	char defines[360];
+	lx_main_defines(v, defines, sizeof defines);
+	strncat(defines, extra, sizeof defines - strlen(defines) - 1);
+	strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
+	write_variant(b, "main.vert", defines, false, tag); /* a filter leaves the face plane out */
+	write_variant(b, "main.frag", defines, false, tag);
+	write_variant(b, "main.frag", defines, true, tag);
+}
+
+/* The main pass under a limit of varyings (0: none): every count of maps, every count of
+ * them read, shaded or decision, each rule for their faces (toward the light, tested,
+ * away, a caster's along its plane), each depth path (0 highp, 1 mediump, 2 highp with
+ * the maps in a depth texture), every shadow filter. */
+static void main_variants(struct batch *b, int max_varyings)
+{
+	char tag[64];
+	for (int maps = 0; maps <= 4; maps++)
+		for (int reads = 0; reads <= maps; reads++)
+			for (int decision = 0; decision < 2; decision++)
+				for (int face = 0; face < LX_FACES_COUNT; face++)
+					for (int path = 0; path < 3; path++)
+						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
+							if (face == LX_FACES_AWAY && reads > 0)
+								continue; /* faces turned away read nothing: the reads 0 text */
+							struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = decision,
+										    .faces = (enum lx_faces)face, .path = paths[path],
+										    .filtered = filter > 0, .max_varyings = max_varyings};
+							snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d-%d", max_varyings, maps, reads,
+								 decision, face, path, filter);
+							write_main_variant(b, &v, "", filter, tag);
+						}
+}
+
 static void every_variant_is_glsl_es_100(void **state)
 {
 	(void)state;
@@ -45,49 +85,19 @@ static void every_variant_is_glsl_es_100(void **state)
 	snprintf(b.dir, sizeof b.dir, "/tmp/lixel-glsl-XXXXXX");
 	assert_non_null(mkdtemp(b.dir));
 	b.files = 0, b.list[0] = 0;
-	char defines[360], tag[64];
-	static const enum lx_depth_precision paths[3] = {LX_DEPTH_HIGHP, LX_DEPTH_MEDIUMP, LX_DEPTH_TEXTURE};
-	/* the main pass: every count of maps, every count of them read, shaded or decision,
-	 * each rule for their faces (toward the light, tested, away, a caster's along its
-	 * plane), each depth path (0 highp, 1 mediump, 2 highp with the maps in a depth
-	 * texture), every shadow filter, with no limit on varyings and with a VideoCore IV's 8,
-	 * and the fragment shader under the lima simulation */
-	for (int maps = 0; maps <= 4; maps++)
-		for (int reads = 0; reads <= maps; reads++)
-			for (int decision = 0; decision < 2; decision++)
-				for (int face = 0; face < 2 * LX_FACES_COUNT; face++)
-					for (int path = 0; path < 3; path++)
-						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-							if (face % LX_FACES_COUNT == LX_FACES_AWAY && reads > 0)
-								continue; /* faces turned away read nothing: the reads 0 text */
-							struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = decision,
-										    .faces = (enum lx_faces)(face % LX_FACES_COUNT),
-										    .path = paths[path], .filtered = filter > 0,
-										    .max_varyings = face < LX_FACES_COUNT ? 0 : 8};
-							lx_main_defines(&v, defines, sizeof defines);
-							strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
-							snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d", maps, reads, decision, face, path, filter);
-							if (filter == 0) /* the vertex shader reads no filter */
-								write_variant(&b, "main.vert", defines, false, tag);
-							write_variant(&b, "main.frag", defines, false, tag);
-							write_variant(&b, "main.frag", defines, true, tag);
-						}
+	char tag[64];
+	/* the main pass with no limit on varyings and with a VideoCore IV's 8 */
+	main_variants(&b, 0);
+	main_variants(&b, 8);
 	/* a projective light's shaded variants (the decision reads no light image), with each
 	 * filter, every map read */
 	for (int maps = 0; maps <= 4; maps++)
 		for (int path = 0; path < 3; path++)
 			for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-				lx_main_defines(&(struct lx_main_variant){.maps = maps, .reads = maps, .faces = LX_FACES_TESTED,
-									  .path = paths[path], .filtered = filter > 0,
-									  .projective = true},
-						defines, sizeof defines);
-				strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
-				strncat(defines, lx_filter_define((enum lx_filter)filter), sizeof defines - strlen(defines) - 1);
+				struct lx_main_variant v = {.maps = maps, .reads = maps, .faces = LX_FACES_TESTED,
+							    .path = paths[path], .filtered = filter > 0, .projective = true};
 				snprintf(tag, sizeof tag, "projective-%d-%d-%d", maps, path, filter);
-				if (filter == 0)
-					write_variant(&b, "main.vert", defines, false, tag);
-				write_variant(&b, "main.frag", defines, false, tag);
-				write_variant(&b, "main.frag", defines, true, tag);
+				write_main_variant(&b, &v, "#define LX_PROJECTIVE 1\n", filter, tag);
 			}
 	for (int path = 0; path < 3; path++)
 		for (int lima = 0; lima < 2; lima++) {

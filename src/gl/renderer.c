@@ -33,6 +33,8 @@ static int shading_of(bool projective, bool added, bool coloured)
 {
 	return 1 + 4 * projective + 2 * added + (coloured && !projective);
 }
+enum { SHADING_COLOURED, SHADING_ADDED, SHADING_PROJECTIVE }; /* shading_bit's bits */
+static bool shading_bit(int shading, int bit) { return shading != SHADING_DECISION && ((shading - 1) >> bit & 1); }
 
 /* A window rectangle of a plane and the maps it reads there. */
 struct span {
@@ -107,9 +109,6 @@ struct lx_renderer {
 	 * the faces: object_draws; LX_FACES_AWAY reads none, its other slots stay empty) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1];
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
-	/* casters' faces drawn with LX_FACES_CASTER: --caster-depth face, off the mediump path
-	 * (else as LX_FACES_TOWARD) */
-	bool face_plane;
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
 	 * into the next one down (glDepthRange), below every depth an earlier frame left, so
@@ -124,6 +123,9 @@ struct lx_renderer {
 /* The depth path's two departures from 24-bit codes in RGBA8. */
 static bool mediump(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_MEDIUMP; }
 static bool depth_texture(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_TEXTURE; }
+/* Casters' faces drawn with LX_FACES_CASTER: --caster-depth face, off the mediump path
+ * (else as LX_FACES_TOWARD). */
+static bool face_plane(const struct lx_renderer *r) { return r->d.caster_face_depth && !mediump(r); }
 
 static void to_float(const mat4 *m, float out[16])
 {
@@ -157,39 +159,26 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 	return true;
 }
 
-/* --caster-depth face on a GPU whose varyings cannot hold it for a draw reading every map
- * (main.vert): one line saying so; those draws compare at their pixels' depth
- * (lx_main_face_plane), draws reading fewer maps may still take it. */
-static void face_plane_fits(const struct lx_renderer *r)
+/* The main-pass variant for a shading, faces, maps read and filter, on this GPU. */
+static struct lx_main_variant variant_of(const struct lx_renderer *r, int shading, enum lx_faces faces, int reads,
+					 enum lx_filter filter)
 {
-	bool projective = false;
-	for (int i = 0; i < r->d.light_count; i++)
-		projective |= r->d.scene->lights[i].projective != LX_LIGHT_PLAIN;
-	struct lx_main_variant v = {.maps = r->d.map_count, .reads = r->d.map_count, .faces = LX_FACES_CASTER,
-				    .path = r->d.depth, .projective = projective,
-				    .max_varyings = r->d.caps->max_varying_vectors};
-	if (r->face_plane && r->d.map_count > 0 && !lx_main_face_plane(&v))
-		fprintf(stderr,
-			"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has %d: "
-			"such casters are compared at their pixels' depth\n",
-			v.reads, lx_main_varyings(v.reads, false, true, projective), v.max_varyings);
+	return (struct lx_main_variant){.maps = r->d.map_count, .reads = reads, .decision = shading == SHADING_DECISION,
+					.faces = faces, .path = r->d.depth, .filtered = filter != LX_FILTER_NONE,
+					.projective = shading_bit(shading, SHADING_PROJECTIVE),
+					.max_varyings = r->d.caps->max_varying_vectors};
 }
 
 static bool main_program(struct main_program *p, const struct lx_renderer *r, int shading, enum lx_faces faces,
 			 int reads, enum lx_filter filter, char *err, size_t errlen)
 {
-	int maps = r->d.map_count, max_varyings = r->d.caps->max_varying_vectors;
-	enum lx_depth_precision path = r->d.depth;
 	char defines[400];
-	struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = shading == SHADING_DECISION, .faces = faces,
-				    .path = path, .filtered = filter != LX_FILTER_NONE,
-				    .projective = shading != SHADING_DECISION && ((shading - 1) >> 2 & 1),
-				    .max_varyings = max_varyings};
+	struct lx_main_variant v = variant_of(r, shading, faces, reads, filter);
 	lx_main_defines(&v, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
-	for (int bit = 0; bit < 3 && shading != SHADING_DECISION; bit++) /* the decision needs only the shadow test */
-		if ((shading - 1) >> bit & 1)
+	for (int bit = SHADING_COLOURED; bit <= SHADING_PROJECTIVE; bit++) /* none for the decision: the shadow test alone */
+		if (shading_bit(shading, bit))
 			strncat(defines, shading_define[bit], sizeof defines - strlen(defines) - 1);
 	/* nothing for none: the text it always had */
 	strncat(defines, lx_filter_define(filter), sizeof defines - strlen(defines) - 1);
@@ -225,16 +214,38 @@ static bool light_coloured(const struct lx_light *l)
  * the first, LX_FACES_TOWARD, whose text is every rule's there (variant_for). */
 static int face_rules(const struct lx_renderer *r) { return r->d.map_count > 0 ? LX_FACES_COUNT : 1; }
 
+/* Light i's shaded variants' shading. */
+static int light_shading(const struct lx_renderer *r, int i)
+{
+	return shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
+}
+
+/* --caster-depth face on a GPU whose varyings cannot hold it for a caster reading every
+ * map (main.vert) in some light's pass: one line saying so; those draws compare at their
+ * pixels' depth (lx_main_face_plane), draws reading fewer maps may still take it. */
+static void face_plane_fits(const struct lx_renderer *r)
+{
+	for (int i = 0; face_plane(r) && r->d.map_count > 0 && i < r->d.light_count; i++) {
+		struct lx_main_variant v = variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE);
+		if (!lx_main_face_plane(&v)) {
+			fprintf(stderr,
+				"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has "
+				"%d: such casters are compared at their pixels' depth\n",
+				v.reads, lx_main_varyings(v.reads, false, true, v.projective), v.max_varyings);
+			return;
+		}
+	}
+}
+
 /* The decision variant and each light's shaded variants of a filter for each rule of the
  * faces, those that read reading every map (built now, so that a shader error shows when
  * the filter is chosen). */
 static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *err, size_t errlen)
 {
 	for (int i = -1; i < r->d.light_count; i++) {
-		int shading = i < 0 ? SHADING_DECISION
-				    : shading_of(r->beam_tex[i] != 0, i > 0, light_coloured(&r->d.scene->lights[i]));
+		int shading = i < 0 ? SHADING_DECISION : light_shading(r, i);
 		for (int faces = 0; faces < face_rules(r); faces++) {
-			if (faces == LX_FACES_CASTER && !r->face_plane)
+			if (faces == LX_FACES_CASTER && !face_plane(r))
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
 			struct main_program *p = &r->variant[shading][filter][faces][reads];
@@ -496,8 +507,6 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
-	r->face_plane = !mediump(r) && d->caster_face_depth;
-	face_plane_fits(r);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
 	 * that pays for clears (a tiler's clear is free; not clearing would cost it a load) */
 	r->slots = depth_texture(r) && !d->caps->tiler && !r->d.clear_whole_atlas && d->depth_slots > 1 ? d->depth_slots : 1;
@@ -507,6 +516,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	bool ok = true;
 	for (int i = 0; i < d->light_count && ok; i++)
 		ok = renderer_beam(r, i, err, errlen);
+	if (ok)
+		face_plane_fits(r);
 	if (!ok || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) ||
 	    !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
@@ -787,7 +798,7 @@ static int maps_in(unsigned mask)
  * the start compiled), the one that tests each face and reads every map, *mask every map. */
 static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask)
 {
-	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !r->face_plane))
+	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !face_plane(r)))
 		faces = LX_FACES_TOWARD;
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
@@ -1032,7 +1043,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(&r->lookup, id, mask))
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
-		enum lx_faces toward = r->face_plane ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
+		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
 			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0};
@@ -1125,7 +1136,7 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 			for (int c = 0; c < 4; c++)
 				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
 		to_float(&t, tex[m]);
-		if (r->face_plane)
+		if (face_plane(r))
 			plane_matrix(&t, u->face[m]);
 		const struct lx_region *g = &atlas->regions[map->region];
 		clamp[m][0] = (float)((g->x + 0.5) / tw), clamp[m][1] = (float)((g->y + 0.5) / th);
@@ -1463,7 +1474,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	enum lx_filter was = r->filter;
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
-			int shading = shading_of(r->beam_tex[l] != 0, l > 0, light_coloured(&r->d.scene->lights[l]));
+			int shading = light_shading(r, l);
 			if (!r->variant[shading][f][LX_FACES_TOWARD][r->d.map_count].prog)
 				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
 			r->filter = (enum lx_filter)f;
