@@ -588,6 +588,83 @@ static void polygon_edges_inside(void **state)
 	struct lx_poly empty = {0};
 	lx_poly_edges_inside(&square, &empty, &dx, &dy);
 	assert_true(dx == 0 && dy == 0);
+	double t0, t1; /* one segment's part inside: across, along an edge, apart, either winding */
+	assert_true(lx_segment_inside(&right, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
+	assert_true(fabs(t0 - 0.5) < 1e-12 && fabs(t1 - 1) < 1e-12);
+	assert_true(lx_segment_inside(&cw, (vec2){0, 0}, (vec2){30, 0}, &t0, &t1));
+	assert_true(fabs(t0 - 5.0 / 30) < 1e-12 && fabs(t1 - 20.0 / 30) < 1e-12);
+	assert_false(lx_segment_inside(&far, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
+	assert_false(lx_segment_inside(&empty, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
+}
+
+/* Where a floor point lands in the floor map's lixels: (u, v) in lixels of its atlas
+ * region, or false when no rendered floor map serves it. */
+static bool floor_lixel(const struct setup *s, int floor, vec3 p, double *u, double *v)
+{
+	for (int m = 0; m < s->res.map_count; m++) {
+		const struct lx_shadow_map *map = &s->res.maps[m];
+		if (!map->rendered || map->plane != floor)
+			continue;
+		vec4 c = m4_mul_point(&map->light_clip, p);
+		double x = c.x / c.w, y = c.y / c.w;
+		if (x < map->bounds[0] || x > map->bounds[2] || y < map->bounds[1] || y > map->bounds[3])
+			continue;
+		const struct lx_region *r = &s->atlas.regions[map->region];
+		*u = (x + 1) / 2 * r->w, *v = (y + 1) / 2 * r->h;
+		return true;
+	}
+	return false;
+}
+
+/* Short of a lixel per pixel, a shadow edge that runs along the pixel rows costs a row of
+ * pixels wherever a lixel holds it with its centre across the edge from them: the table
+ * with the light facing the camera at 1024x1024 (floor at 0.18 lixels per pixel) lost a
+ * whole row, 0.306% of the pixels wrong against uniform's 0.284%. The map's phase moves
+ * its lixel boundaries so that no pixel centre lies on the far side of such an edge in the
+ * lixel holding it; plane/corner (rows counted from the wanted rectangle's corner) leaves
+ * a row there. The edges: the table top's front and back edges' shadows on the floor at
+ * the view's middle column (the top lies 1 mm above its slab: the exact shadow's edges). */
+static void level_shadow_edges_fall_on_lixel_boundaries(void **state)
+{
+	(void)state;
+	for (int corner = 0; corner < 2; corner++) {
+		struct setup s;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		o.plane_corner = corner;
+		memset(&s, 0, sizeof s);
+		lx_scene_table(&s.scene);
+		lx_config_apply(lx_config_find("facing"), &s.scene);
+		assert_true(build_with(&s, "plane", 1024, 1024, 0, &o));
+		const struct lx_plane *top = &s.scene.planes[0];
+		vec4 floor_eq = lx_plane_equation(&s.scene.planes[1]);
+		vec3 L = s.frame.light.position;
+		bool turned = s.atlas.regions[s.res.maps[1].region].turned;
+		int wrong = 0;
+		for (int k = 0; k < 2; k++) {
+			vec3 e = v3(0, top->corner.y, k ? top->corner.z : top->corner.z + top->edge2.z);
+			vec3 f = v3_add(L, v3_scale(v3_sub(e, L), L.y / (L.y - e.y))); /* its shadow */
+			vec4 h = m4_mul_point(&s.frame.view.view_proj, f);
+			double wx = (h.x / h.w + 1) * 0.5 * s.frame.view.width, wy = (h.y / h.w + 1) * 0.5 * s.frame.view.height;
+			double u, v;
+			assert_true(floor_lixel(&s, 1, f, &u, &v));
+			double at = turned ? u : v, cell = floor(at); /* across the edge */
+			for (int j = -4; j <= 4; j++) { /* the pixel centres of the column around it */
+				vec3 g;
+				double t, gu, gv;
+				assert_true(lx_window_on_plane(&s.frame.view, floor_eq, floor(wx) + 0.5, floor(wy) + 0.5 + j, &g, &t));
+				assert_true(floor_lixel(&s, 1, g, &gu, &gv));
+				double c = turned ? gu : gv;
+				wrong += floor(c) == cell && (c > at) != (cell + 0.5 > at);
+			}
+		}
+		print_message("%s: %d pixels on the far side of a level edge in its lixel\n", corner ? "corner" : "edges",
+			      wrong);
+		if (corner)
+			assert_true(wrong > 0);
+		else
+			assert_int_equal(wrong, 0);
+		lx_meshes_free(&s.meshes);
+	}
 }
 
 static void polygon_caps_keep_a_superset(void **state)
@@ -628,6 +705,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(polygon_edges_inside),
 		cmocka_unit_test(polygon_caps_keep_a_superset),
+		cmocka_unit_test(level_shadow_edges_fall_on_lixel_boundaries),
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_one_affine_map_on_every_plane),

@@ -144,6 +144,30 @@ double lx_poly_area(const struct lx_poly *p)
 	return 0.5 * s;
 }
 
+/* lx_segment_inside with b's winding given: side 1 counter-clockwise, -1 clockwise */
+static bool segment_in(const struct lx_poly *b, double side, vec2 p, vec2 q, double *t0, double *t1)
+{
+	*t0 = 0, *t1 = 1;
+	for (int k = 0; k < b->n && *t0 < *t1; k++) {
+		vec2 u = b->v[k], w = b->v[(k + 1) % b->n];
+		double ex = w.x - u.x, ey = w.y - u.y;
+		double f0 = side * (ex * (p.y - u.y) - ey * (p.x - u.x)), f1 = side * (ex * (q.y - u.y) - ey * (q.x - u.x));
+		if (f0 < 0 && f1 < 0)
+			*t1 = -1;
+		else if (f0 < 0) /* f1 >= 0 > f0: f0 - f1 < 0 */
+			*t0 = fmax(*t0, f0 / (f0 - f1));
+		else if (f1 < 0) /* f0 >= 0 > f1: f0 - f1 > 0 */
+			*t1 = fmin(*t1, f0 / (f0 - f1));
+	}
+	return *t1 > *t0;
+}
+
+bool lx_segment_inside(const struct lx_poly *b, vec2 p, vec2 q, double *t0, double *t1)
+{
+	*t0 = 0, *t1 = 1;
+	return b->n >= 3 && segment_in(b, lx_poly_area(b) < 0 ? -1 : 1, p, q, t0, t1);
+}
+
 void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, double *dx, double *dy)
 {
 	*dx = *dy = 0;
@@ -152,19 +176,8 @@ void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, doub
 	double side = lx_poly_area(b) < 0 ? -1 : 1;
 	for (int i = 0; i < a->n; i++) {
 		vec2 p = a->v[i], q = a->v[(i + 1) % a->n];
-		double t0 = 0, t1 = 1; /* the segment p + t (q - p) inside each of b's edges */
-		for (int k = 0; k < b->n && t0 < t1; k++) {
-			vec2 u = b->v[k], w = b->v[(k + 1) % b->n];
-			double ex = w.x - u.x, ey = w.y - u.y;
-			double f0 = side * (ex * (p.y - u.y) - ey * (p.x - u.x)), f1 = side * (ex * (q.y - u.y) - ey * (q.x - u.x));
-			if (f0 < 0 && f1 < 0)
-				t1 = -1;
-			else if (f0 < 0) /* f1 >= 0 > f0: f0 - f1 < 0 */
-				t0 = fmax(t0, f0 / (f0 - f1));
-			else if (f1 < 0) /* f0 >= 0 > f1: f0 - f1 > 0 */
-				t1 = fmin(t1, f0 / (f0 - f1));
-		}
-		if (t1 > t0) {
+		double t0, t1;
+		if (segment_in(b, side, p, q, &t0, &t1)) {
 			*dx += (t1 - t0) * fabs(q.x - p.x);
 			*dy += (t1 - t0) * fabs(q.y - p.y);
 		}

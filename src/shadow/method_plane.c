@@ -119,6 +119,8 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 /* A plane's light image before A_l's scale: the plane-optimal camera, the visible
  * polygon, the wanted rays (window coordinates on the plane) turned by the twist, and
  * their bounding rectangle. */
+/* The most level shadow edges a plane's phase is chosen from (level_edges). */
+#define LEVELS_MAX 32
 struct plane_chart {
 	struct lx_plane_camera cam;
 	struct lx_poly win;
@@ -133,6 +135,11 @@ struct plane_chart {
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
+	int levels;              /* level shadow edges in view (level_edges), turned */
+	struct level_edge {
+		bool row;        /* along the chart's x, at y = at (else along y, at x = at) */
+		double at, len;  /* pixels */
+	} level[LEVELS_MAX];
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
@@ -183,13 +190,15 @@ static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *
 /* The casters' box corners in the light image (8 each, in object order; whole[c] false
  * for one that reaches behind the light image, its corners then meaningless), and false
  * when one does (then the casters bound nothing). */
-static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *np)
+static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
+			   int *np)
 {
 	bool all = true;
 	*np = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
+		ids[*np / 8] = id;
 		bool in_front = true;
 		for (int k = 0; k < 8; k++) {
 			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
@@ -249,16 +258,162 @@ static double chart_stretch(double along_x, double along_y)
 	return fmin(STRETCH_MAX, fmax(1 / STRETCH_MAX, sqrt(along_x / along_y)));
 }
 
-/* A polygon in the chart's frame: twisted and mirrored. */
+/* A point, and a polygon, in the chart's frame: twisted and mirrored. */
+static vec2 chart_point(const struct plane_chart *ch, vec2 p)
+{
+	return (vec2){ch->mx * (ch->cs * p.x - ch->sn * p.y), ch->sn * p.x + ch->cs * p.y};
+}
+
 static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
 {
 	for (int k = 0; k < p->n; k++)
-		p->v[k] = (vec2){ch->mx * (ch->cs * p->v[k].x - ch->sn * p->v[k].y), ch->sn * p->v[k].x + ch->cs * p->v[k].y};
+		p->v[k] = chart_point(ch, p->v[k]);
 }
 
-static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next, bool twist,
-			bool similar, struct lx_shadow_result *out, struct plane_chart *ch)
+/* Whether object id lies wholly on the light's side of plane i (touching it counts), so
+ * that its shadow on the plane is its corners' shadows' hull. */
+static bool above_plane(const struct lx_frame *f, int i, int id)
 {
+	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
+	for (int k = 0; k < 8; k++)
+		if (v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) < -1e-6)
+			return false; /* the plane's map exists: its lit side faces the light */
+	return true;
+}
+
+/* The footprints on plane i of the other planes that lie over it and whose lit side faces
+ * the light: they cast nothing in lixel's maps (lx_object_can_cast: a caster under such a
+ * plane casts its shadow), but they do shadow, and where the exact shadow's edge is
+ * theirs (the table top 1 mm above its slab: its shadow reaches past the slab's by a
+ * fraction of a pixel) that is the edge a lixel boundary should follow. */
+static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart *ch, struct lx_poly *feet, bool *exact)
+{
+	int n = 0;
+	for (int id = 0; id < f->scene->plane_count; id++) {
+		if (id == i || lx_object_can_cast(f, id) || !above_plane(f, i, id))
+			continue;
+		vec2 pts[8];
+		bool whole = true;
+		for (int k = 0; k < 8 && whole; k++) {
+			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
+			whole = h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
+			pts[k] = whole ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
+		}
+		if (whole && lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3)
+			exact[n++] = true;
+	}
+	return n;
+}
+
+/* The window boxes (x0, y0, x1, y1) of what can hide plane i from the eye: every other
+ * object lying wholly on the eye's side of the plane (or touching it) and in front of the
+ * eye. A box bounds its object's image, so it over-states what is hidden. */
+static int plane_hiders(const struct lx_frame *f, int i, double (*box)[4])
+{
+	const struct lx_view *v = &f->view;
+	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
+	double eye = v4_dot_point(pi, v->eye), tol = 1e-6 * (1 + fabs(eye));
+	int n = 0;
+	for (int id = 0; id < f->object_count; id++) {
+		bool hides = id != i;
+		double *b = box[n];
+		b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
+		for (int k = 0; k < 8 && hides; k++) {
+			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
+			double d = v4_dot_point(pi, c);
+			vec4 h = m4_mul_point(&v->view_proj, c);
+			hides = (eye > 0 ? d >= -tol : d <= tol) && h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
+			if (!hides)
+				break;
+			double x = (h.x / h.w + 1) * 0.5 * v->width, y = (h.y / h.w + 1) * 0.5 * v->height;
+			b[0] = x < b[0] ? x : b[0], b[1] = y < b[1] ? y : b[1], b[2] = x > b[2] ? x : b[2], b[3] = y > b[3] ? y : b[3];
+		}
+		n += hides;
+	}
+	return n;
+}
+
+/* The part [*t0, *t1] of segment p + t (q - p) inside window box b; false when none is. */
+static bool segment_in_box(const double *b, vec2 p, vec2 q, double *t0, double *t1)
+{
+	double o[2] = {p.x, p.y}, d[2] = {q.x - p.x, q.y - p.y};
+	*t0 = 0, *t1 = 1;
+	if ((p.x < b[0] && q.x < b[0]) || (p.x > b[2] && q.x > b[2]) || (p.y < b[1] && q.y < b[1]) ||
+	    (p.y > b[3] && q.y > b[3]))
+		return false; /* apart: the usual case, without a division */
+	for (int a = 0; a < 2; a++) {
+		if (d[a] == 0) {
+			if (o[a] < b[a] || o[a] > b[a + 2])
+				return false;
+			continue;
+		}
+		double u = (b[a] - o[a]) / d[a], w = (b[a + 2] - o[a]) / d[a], lo = u < w ? u : w, hi = u < w ? w : u;
+		*t0 = lo > *t0 ? lo : *t0, *t1 = hi < *t1 ? hi : *t1;
+	}
+	return *t1 > *t0;
+}
+
+/* How much of [t0, t1] the n intervals (start, end pairs) leave uncovered. */
+static double uncovered(double t0, double t1, double (*iv)[2], int n)
+{
+	for (int a = 1; a < n; a++) /* by start: a few */
+		for (int b = a; b > 0 && iv[b][0] < iv[b - 1][0]; b--) {
+			double s0 = iv[b][0], s1 = iv[b][1];
+			iv[b][0] = iv[b - 1][0], iv[b][1] = iv[b - 1][1], iv[b - 1][0] = s0, iv[b - 1][1] = s1;
+		}
+	double left = 0, at = t0;
+	for (int a = 0; a < n && at < t1; a++) {
+		if (iv[a][0] > at)
+			left += fmin(iv[a][0], t1) - at;
+		at = fmax(at, iv[a][1]);
+	}
+	return left + fmax(0, t1 - at);
+}
+
+/* The level shadow edges in view: the edges of the exact footprints that run along a
+ * pixel row (column) of the chart within half a pixel, where they lie on the visible
+ * plane, outside what hides it (plane_hiders) and outside the other footprints (there
+ * both sides are in shadow). Where a lixel holds such an edge, the pixels on the far
+ * side of it from the lixel's centre read the wrong side: fit_scaled's phase puts lixel
+ * boundaries on them. Only on a grid of whole pixels (ch->on_grid). */
+#define LEVEL_SLOPE 0.1
+static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *feet, const bool *exact, int nfeet,
+			struct plane_chart *ch)
+{
+	double hide[LX_MAX_PLANES + LX_MAX_CASTERS][4], box[LX_MAX_PLANES + LX_MAX_CASTERS][4];
+	int nhide = -1; /* found on the first level edge */
+	for (int c = 0; c < nfeet; c++)
+		lx_poly_bounds(&feet[c], &box[c][0], &box[c][1], &box[c][2], &box[c][3]);
+	for (int c = 0; c < nfeet; c++) {
+		if (!exact[c])
+			continue;
+		for (int e = 0; e < feet[c].n && ch->levels < LEVELS_MAX; e++) {
+			vec2 p = feet[c].v[e], q = feet[c].v[(e + 1) % feet[c].n], cp = chart_point(ch, p), cq = chart_point(ch, q);
+			double dx = fabs(cq.x - cp.x), dy = fabs(cq.y - cp.y);
+			bool row = dy <= LEVEL_SLOPE && dx > dy, col = dx <= LEVEL_SLOPE && dy > dx;
+			double t0, t1;
+			if (!(row || col) || !lx_segment_inside(&ch->win, p, q, &t0, &t1))
+				continue;
+			if (nhide < 0)
+				nhide = plane_hiders(f, i, hide);
+			double iv[2 * (LX_MAX_PLANES + LX_MAX_CASTERS)][2];
+			int n = 0;
+			for (int h = 0; h < nhide; h++)
+				n += segment_in_box(hide[h], p, q, &iv[n][0], &iv[n][1]);
+			for (int o = 0; o < nfeet; o++) /* its box first: most footprints lie apart */
+				n += o != c && segment_in_box(box[o], p, q, &iv[n][0], &iv[n][1]) &&
+				     lx_segment_inside(&feet[o], p, q, &iv[n][0], &iv[n][1]);
+			double len = uncovered(t0, t1, iv, n) * (row ? dx : dy);
+			if (len > 0.5)
+				ch->level[ch->levels++] = (struct level_edge){row, row ? (cp.y + cq.y) / 2 : (cp.x + cq.x) / 2, len};
+		}
+	}
+}
+
+static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
+			const struct lx_method_options *o, struct lx_shadow_result *out, struct plane_chart *ch)
+{
+	bool twist = o->plane_twist || o->square_regions, similar = o->plane_similar;
 	ch->needs_fallback = false;
 	if (!chart_usable(f, ls, i, out, ch))
 		return false;
@@ -267,8 +422,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	struct lx_poly wanted = ch->win, cast;
 	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-	int np;
-	bool bounded = caster_corners(f, ch, pts, whole, &np);
+	int np, ids[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool bounded = caster_corners(f, ch, pts, whole, ids, &np);
 	if (bounded) {
 		lx_poly_hull(pts, np, &cast);
 		lx_poly_intersect(&ch->win, &cast, &wanted);
@@ -285,7 +440,10 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	 * aspect (chart_stretch: from those that have one) */
 	ch->feet = 0;
 	double along_x = 0, along_y = 0;
-	struct lx_poly win = ch->win;
+	struct lx_poly win = ch->win, feet[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool exact[LX_MAX_PLANES + LX_MAX_CASTERS];
+	int nfeet = 0;
+	bool levels = !o->plane_corner && ch->on_grid; /* level_edges */
 	to_chart(ch, &win);
 	for (int c = 0; c < np / 8; c++) {
 		struct lx_poly one, on;
@@ -295,6 +453,15 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
+		if (levels) {
+			/* a box's (or a plane's) shadow is the hull of its corners' shadows: its
+			 * footprint's edges are shadow edges; a round caster's box only bounds its shadow */
+			exact[nfeet] = (ids[c] < f->scene->plane_count ||
+					f->scene->casters[ids[c] - f->scene->plane_count].shape == LX_BOX) &&
+				       above_plane(f, i, ids[c]);
+			feet[nfeet].n = one.n;
+			memcpy(feet[nfeet++].v, one.v, (size_t)one.n * sizeof(vec2));
+		}
 		to_chart(ch, &on);
 		if (bounded) {
 			double *b = ch->foot[ch->feet++];
@@ -308,6 +475,11 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
+	ch->levels = 0;
+	if (levels) {
+		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet);
+		level_edges(f, i, feet, exact, nfeet, ch);
+	}
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
@@ -366,6 +538,44 @@ struct plane_fit {
 	int w, h;
 };
 
+/* Pixel centres (half-integers) in [lo, hi). */
+static double centres_in(double lo, double hi) { return fmax(0, ceil(hi - 0.5) - ceil(lo - 0.5)); }
+
+/* The pixels a grid of lixel boundaries at o + k h (h pixels apart) puts on the wrong side
+ * of the level edges along the rows (row) or columns within [lo, hi], each weighed by its
+ * edge's length: in the lixel holding an edge, those on the far side of it from the
+ * lixel's centre. */
+static double phase_cost(const struct plane_chart *ch, bool row, double lo, double hi, double o, double h)
+{
+	double cost = 0;
+	for (int k = 0; k < ch->levels; k++) {
+		const struct level_edge *e = &ch->level[k];
+		if (e->row != row || e->at < lo || e->at > hi)
+			continue;
+		double b = o + floor((e->at - o) / h) * h, c = b + h / 2; /* h > 0 */
+		cost += e->len * (e->at < c ? centres_in(b, e->at) : centres_in(e->at, b + h));
+	}
+	return cost;
+}
+
+/* An unsnapped axis's origin: start, or moved back by less than a lixel (h pixels) so that
+ * a lixel boundary falls on a level edge, whichever phase_cost counts least (start on a
+ * tie). */
+static double level_phase(const struct plane_chart *ch, bool row, double lo, double hi, double start, double h)
+{
+	double best = start, least = phase_cost(ch, row, lo, hi, start, h);
+	for (int k = 0; k < ch->levels && least > 0; k++) {
+		const struct level_edge *e = &ch->level[k];
+		if (e->row != row || e->at < lo || e->at > hi)
+			continue;
+		double o = start - fmod(fmod(start - e->at, h) + h, h); /* in (start - h, start] */
+		double cost = phase_cost(ch, row, lo, hi, o, h);
+		if (cost < least)
+			least = cost, best = o;
+	}
+	return best;
+}
+
 /* fit_plane below a whole-number scale: scale s, stretched by a, shrunk until the pieces
  * hold no more than the budget and fit within the texture's side. */
 static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *pc, long budget, int side, double s,
@@ -401,7 +611,8 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 		int worst = 0;
 		double sx = cols ? 1 : rows ? s * s : s / a, sy = rows ? 1 : cols ? s * s : s * a;
 		for (int p = 0; p < pc->n; p++) {
-			double x0 = cols ? floor(pc->r[p][0]) : pc->r[p][0], y0 = rows ? floor(pc->r[p][1]) : pc->r[p][1];
+			double x0 = cols ? floor(pc->r[p][0]) : level_phase(ch, false, pc->r[p][0], pc->r[p][2], pc->r[p][0], 1 / sx);
+			double y0 = rows ? floor(pc->r[p][1]) : level_phase(ch, true, pc->r[p][1], pc->r[p][3], pc->r[p][1], 1 / sy);
 			double uw = sx * (pc->r[p][2] - x0), vh = sy * (pc->r[p][3] - y0);
 			int w = (int)ceil(uw), h = (int)ceil(vh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
@@ -896,8 +1107,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	for (int i = 0; i < np; i++) {
-		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o->plane_twist || o->square_regions,
-				    o->plane_similar, out, &ch[i]);
+		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;
 		plane_pieces(&ch[i], piece_free, &pc[i]);
