@@ -116,11 +116,11 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 	return m;
 }
 
+/* The most level shadow edges a plane's phase is chosen from (level_edges). */
+#define LEVELS_MAX 32
 /* A plane's light image before A_l's scale: the plane-optimal camera, the visible
  * polygon, the wanted rays (window coordinates on the plane) turned by the twist, and
  * their bounding rectangle. */
-/* The most level shadow edges a plane's phase is chosen from (level_edges). */
-#define LEVELS_MAX 32
 struct plane_chart {
 	struct lx_plane_camera cam;
 	struct lx_poly win;
@@ -277,7 +277,7 @@ static bool above_plane(const struct lx_frame *f, int i, int id)
 	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
 	for (int k = 0; k < 8; k++)
 		if (v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) < -1e-6)
-			return false; /* the plane's map exists: its lit side faces the light */
+			return false; /* the positive side is the lit one, turned to the light (the plane has a map) */
 	return true;
 }
 
@@ -286,10 +286,11 @@ static bool above_plane(const struct lx_frame *f, int i, int id)
  * plane casts its shadow), but they do shadow, and where the exact shadow's edge is
  * theirs (the table top 1 mm above its slab: its shadow reaches past the slab's by a
  * fraction of a pixel) that is the edge a lixel boundary should follow. */
-static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart *ch, struct lx_poly *feet, bool *exact)
+static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart *ch, struct lx_poly *feet, bool *exact,
+		      int room)
 {
 	int n = 0;
-	for (int id = 0; id < f->scene->plane_count; id++) {
+	for (int id = 0; id < f->scene->plane_count && n < room; id++) {
 		if (id == i || lx_object_can_cast(f, id) || !above_plane(f, i, id))
 			continue;
 		vec2 pts[8];
@@ -371,7 +372,7 @@ static double uncovered(double t0, double t1, double (*iv)[2], int n)
 }
 
 /* The level shadow edges in view: the edges of the exact footprints that run along a
- * pixel row (column) of the chart within half a pixel, where they lie on the visible
+ * pixel row (column) of the chart within LEVEL_SLOPE pixels, where they lie on the visible
  * plane, outside what hides it (plane_hiders) and outside the other footprints (there
  * both sides are in shadow). Where a lixel holds such an edge, the pixels on the far
  * side of it from the lixel's centre read the wrong side: fit_scaled's phase puts lixel
@@ -414,7 +415,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 			const struct lx_method_options *o, struct lx_shadow_result *out, struct plane_chart *ch)
 {
 	bool twist = o->plane_twist || o->square_regions, similar = o->plane_similar;
-	ch->needs_fallback = false;
+	ch->needs_fallback = false, ch->levels = 0;
 	if (!chart_usable(f, ls, i, out, ch))
 		return false;
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
@@ -475,9 +476,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
-	ch->levels = 0;
 	if (levels) {
-		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet);
+		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet, LX_MAX_PLANES + LX_MAX_CASTERS - nfeet);
 		level_edges(f, i, feet, exact, nfeet, ch);
 	}
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
