@@ -628,9 +628,10 @@ static void stretched_maps_follow_long_shadows(void **state)
 
 /* Level shadow edges set the rows' phase where no axis is snapped (method_plane.c,
  * level_phase): the table with the light facing the camera, its floor map at 0.18 lixels
- * per pixel, lost a whole row along the slab's level shadow edge with the rows counted
- * from the wanted rectangle's corner (plane/corner). Measured at 1024x1024: 0.130%
- * against 0.306%, uniform 0.284%. */
+ * per pixel, lost a whole row along each of the slab shadow's two level edges with the
+ * rows counted from the wanted rectangle's corner (plane/corner). Measured at 1024x1024:
+ * 0.130% against 0.306%, uniform 0.284%. (test_plane checks the edges themselves, this
+ * one and the box's in the default scene.) */
 static void rows_phase_follows_level_edges(void **state)
 {
 	(void)state;

@@ -281,13 +281,78 @@ static bool above_plane(const struct lx_frame *f, int i, int id)
 	return true;
 }
 
+/* A box's (or a plane's) shadow is the hull of its corners' shadows, so its footprint's
+ * edges are shadow edges, when it lies wholly on the light's side of plane i; a round
+ * caster's box only bounds its shadow. */
+static bool exact_outline(const struct lx_frame *f, int i, int id)
+{
+	int caster = id - f->scene->plane_count;
+	return (caster < 0 || f->scene->casters[caster].shape == LX_BOX) && above_plane(f, i, id);
+}
+
+/* The footprint on plane i of object id when its corners' shadows do not all lie in front
+ * of the eye (a light facing the camera throws shadows past it): the shadows' hull on the
+ * plane, clipped to the near plane, in window coordinates. Bit e of *cut marks edge e as
+ * the clip's (no shadow edge). False when a corner lies level with a point light or
+ * above it (its shadow does not fall on the plane), or nothing is left in front. */
+static bool footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+{
+	const struct lx_plane *P = &f->scene->planes[i];
+	const struct lx_light *L = &f->light;
+	vec4 pi = lx_plane_equation(P);
+	vec3 n = v3(pi.x, pi.y, pi.z);
+	double dl = L->directional ? 0 : v4_dot_point(pi, L->position), dn = L->directional ? v3_dot(n, L->direction) : 0;
+	vec3 w[8];
+	vec2 uv[8];
+	for (int k = 0; k < 8; k++) {
+		vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
+		double dc = v4_dot_point(pi, c);
+		if (L->directional ? !(dn < -1e-9) : !(dl - dc > 1e-9 * (1 + fabs(dl))))
+			return false;
+		w[k] = L->directional ? v3_sub(c, v3_scale(L->direction, dc / dn))
+				      : v3_add(L->position, v3_scale(v3_sub(c, L->position), dl / (dl - dc)));
+		vec3 r = v3_sub(w[k], P->corner); /* coordinates on the plane: edge1, edge2 are independent */
+		uv[k] = (vec2){v3_dot(r, P->edge1), v3_dot(r, P->edge2)};
+	}
+	struct lx_poly hull;
+	lx_poly_hull(uv, 8, &hull);
+	vec4 h[9], in[8];
+	int m = 0, nin = 0;
+	for (int v = 0; v < hull.n; v++) /* the hull's vertices are corners' shadows */
+		for (int k = 0; k < 8; k++)
+			if (uv[k].x == hull.v[v].x && uv[k].y == hull.v[v].y) {
+				in[nin++] = m4_mul_point(&f->view.view_proj, w[k]);
+				break;
+			}
+	*cut = 0;
+	for (int v = 0; v < nin; v++) { /* in front of the near plane: w + z >= 0 */
+		vec4 a = in[v], b = in[(v + 1) % nin];
+		double da = a.w + a.z, db = b.w + b.z;
+		if (da >= 0)
+			h[m++] = a;
+		if ((da >= 0) != (db >= 0)) {
+			double t = da / (da - db); /* signs differ */
+			if (da >= 0)
+				*cut |= 1u << m; /* leaving: the edge to the next point is the clip's */
+			h[m++] = (vec4){a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
+		}
+	}
+	out->n = 0;
+	for (int v = 0; v < m; v++) {
+		if (!(h[v].w > 0))
+			return false;
+		out->v[out->n++] = (vec2){(h[v].x / h[v].w + 1) * 0.5 * f->view.width, (h[v].y / h[v].w + 1) * 0.5 * f->view.height};
+	}
+	return out->n >= 3;
+}
+
 /* The footprints on plane i of the other planes that lie over it and whose lit side faces
  * the light: they cast nothing in lixel's maps (lx_object_can_cast: a caster under such a
  * plane casts its shadow), but they do shadow, and where the exact shadow's edge is
  * theirs (the table top 1 mm above its slab: its shadow reaches past the slab's by a
  * fraction of a pixel) that is the edge a lixel boundary should follow. */
 static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart *ch, struct lx_poly *feet, bool *exact,
-		      int room)
+		      unsigned *cuts, int room)
 {
 	int n = 0;
 	for (int id = 0; id < f->scene->plane_count && n < room; id++) {
@@ -300,16 +365,23 @@ static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart 
 			whole = h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
 			pts[k] = whole ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
 		}
-		if (whole && lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3)
+		cuts[n] = 0;
+		if (whole ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3 : footprint_clipped(f, i, id, &feet[n], &cuts[n]))
 			exact[n++] = true;
 	}
 	return n;
 }
 
-/* The window boxes (x0, y0, x1, y1) of what can hide plane i from the eye: every other
- * object lying wholly on the eye's side of the plane (or touching it) and in front of the
- * eye. A box bounds its object's image, so it over-states what is hidden. */
-static int plane_hiders(const struct lx_frame *f, int i, double (*box)[4])
+/* What can hide plane i from the eye: every other object lying wholly on the eye's side
+ * of the plane (or touching it) and in front of the eye, by its box's corners in window
+ * coordinates and their bounds (x0, y0, x1, y1). The box's image bounds the object's, so
+ * it over-states what is hidden. */
+struct hider {
+	vec2 corner[8];
+	double box[4];
+};
+
+static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
 {
 	const struct lx_view *v = &f->view;
 	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
@@ -317,7 +389,7 @@ static int plane_hiders(const struct lx_frame *f, int i, double (*box)[4])
 	int n = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		bool hides = id != i;
-		double *b = box[n];
+		double *b = hide[n].box;
 		b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
 		for (int k = 0; k < 8 && hides; k++) {
 			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
@@ -327,6 +399,7 @@ static int plane_hiders(const struct lx_frame *f, int i, double (*box)[4])
 			if (!hides)
 				break;
 			double x = (h.x / h.w + 1) * 0.5 * v->width, y = (h.y / h.w + 1) * 0.5 * v->height;
+			hide[n].corner[k] = (vec2){x, y};
 			b[0] = x < b[0] ? x : b[0], b[1] = y < b[1] ? y : b[1], b[2] = x > b[2] ? x : b[2], b[3] = y > b[3] ? y : b[3];
 		}
 		n += hides;
@@ -354,6 +427,15 @@ static bool segment_in_box(const double *b, vec2 p, vec2 q, double *t0, double *
 	return *t1 > *t0;
 }
 
+/* The part [*t0, *t1] of segment p + t (q - p) inside the hull of 8 points; false when
+ * none is. */
+static bool segment_in_hull(const vec2 *pts, vec2 p, vec2 q, double *t0, double *t1)
+{
+	struct lx_poly hull;
+	lx_poly_hull(pts, 8, &hull);
+	return lx_segment_inside(&hull, p, q, t0, t1);
+}
+
 /* How much of [t0, t1] the n intervals (start, end pairs) leave uncovered. */
 static double uncovered(double t0, double t1, double (*iv)[2], int n)
 {
@@ -378,10 +460,11 @@ static double uncovered(double t0, double t1, double (*iv)[2], int n)
  * side of it from the lixel's centre read the wrong side: fit_scaled's phase puts lixel
  * boundaries on them. Only on a grid of whole pixels (ch->on_grid). */
 #define LEVEL_SLOPE 0.1
-static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *feet, const bool *exact, int nfeet,
-			struct plane_chart *ch)
+static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *feet, const bool *exact,
+			const unsigned *cuts, int nfeet, struct plane_chart *ch)
 {
-	double hide[LX_MAX_PLANES + LX_MAX_CASTERS][4], box[LX_MAX_PLANES + LX_MAX_CASTERS][4];
+	struct hider hide[LX_MAX_PLANES + LX_MAX_CASTERS];
+	double box[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	int nhide = -1; /* found on the first level edge */
 	for (int c = 0; c < nfeet; c++)
 		lx_poly_bounds(&feet[c], &box[c][0], &box[c][1], &box[c][2], &box[c][3]);
@@ -393,14 +476,15 @@ static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *f
 			double dx = fabs(cq.x - cp.x), dy = fabs(cq.y - cp.y);
 			bool row = dy <= LEVEL_SLOPE && dx > dy, col = dx <= LEVEL_SLOPE && dy > dx;
 			double t0, t1;
-			if (!(row || col) || !lx_segment_inside(&ch->win, p, q, &t0, &t1))
+			if (!(row || col) || (cuts[c] >> e & 1) || !lx_segment_inside(&ch->win, p, q, &t0, &t1))
 				continue;
 			if (nhide < 0)
 				nhide = plane_hiders(f, i, hide);
 			double iv[2 * (LX_MAX_PLANES + LX_MAX_CASTERS)][2];
 			int n = 0;
-			for (int h = 0; h < nhide; h++)
-				n += segment_in_box(hide[h], p, q, &iv[n][0], &iv[n][1]);
+			for (int h = 0; h < nhide; h++) /* its box first, then its image */
+				n += segment_in_box(hide[h].box, p, q, &iv[n][0], &iv[n][1]) &&
+				     segment_in_hull(hide[h].corner, p, q, &iv[n][0], &iv[n][1]);
 			for (int o = 0; o < nfeet; o++) /* its box first: most footprints lie apart */
 				n += o != c && segment_in_box(box[o], p, q, &iv[n][0], &iv[n][1]) &&
 				     lx_segment_inside(&feet[o], p, q, &iv[n][0], &iv[n][1]);
@@ -443,23 +527,25 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	double along_x = 0, along_y = 0;
 	struct lx_poly win = ch->win, feet[LX_MAX_PLANES + LX_MAX_CASTERS];
 	bool exact[LX_MAX_PLANES + LX_MAX_CASTERS];
+	unsigned cuts[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int nfeet = 0;
 	bool levels = !o->plane_corner && ch->on_grid; /* level_edges */
 	to_chart(ch, &win);
 	for (int c = 0; c < np / 8; c++) {
 		struct lx_poly one, on;
-		if (!whole[c])
+		if (!whole[c]) {
+			if (levels && exact_outline(f, i, ids[c]) &&
+			    footprint_clipped(f, i, ids[c], &feet[nfeet], &cuts[nfeet]))
+				exact[nfeet++] = true; /* for its level edges only */
 			continue;
+		}
 		lx_poly_hull(pts + 8 * c, 8, &one);
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
 		if (levels) {
-			/* a box's (or a plane's) shadow is the hull of its corners' shadows: its
-			 * footprint's edges are shadow edges; a round caster's box only bounds its shadow */
-			exact[nfeet] = (ids[c] < f->scene->plane_count ||
-					f->scene->casters[ids[c] - f->scene->plane_count].shape == LX_BOX) &&
-				       above_plane(f, i, ids[c]);
+			exact[nfeet] = exact_outline(f, i, ids[c]);
+			cuts[nfeet] = 0;
 			feet[nfeet].n = one.n;
 			memcpy(feet[nfeet++].v, one.v, (size_t)one.n * sizeof(vec2));
 		}
@@ -477,8 +563,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
 	if (levels) {
-		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet, LX_MAX_PLANES + LX_MAX_CASTERS - nfeet);
-		level_edges(f, i, feet, exact, nfeet, ch);
+		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet, cuts + nfeet, LX_MAX_PLANES + LX_MAX_CASTERS - nfeet);
+		level_edges(f, i, feet, exact, cuts, nfeet, ch);
 	}
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
