@@ -379,6 +379,8 @@ static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart 
 struct hider {
 	vec2 corner[8];
 	double box[4];
+	int n; /* its image: the corners' hull, found when first needed (n < 0 until then) */
+	vec2 hull[8];
 };
 
 static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
@@ -400,6 +402,7 @@ static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
 				break;
 			double x = (h.x / h.w + 1) * 0.5 * v->width, y = (h.y / h.w + 1) * 0.5 * v->height;
 			hide[n].corner[k] = (vec2){x, y};
+			hide[n].n = -1;
 			b[0] = x < b[0] ? x : b[0], b[1] = y < b[1] ? y : b[1], b[2] = x > b[2] ? x : b[2], b[3] = y > b[3] ? y : b[3];
 		}
 		n += hides;
@@ -427,12 +430,19 @@ static bool segment_in_box(const double *b, vec2 p, vec2 q, double *t0, double *
 	return *t1 > *t0;
 }
 
-/* The part [*t0, *t1] of segment p + t (q - p) inside the hull of 8 points; false when
- * none is. */
-static bool segment_in_hull(const vec2 *pts, vec2 p, vec2 q, double *t0, double *t1)
+/* The part [*t0, *t1] of segment p + t (q - p) inside a hider's image; false when none
+ * is. */
+static bool segment_in_image(struct hider *h, vec2 p, vec2 q, double *t0, double *t1)
 {
 	struct lx_poly hull;
-	lx_poly_hull(pts, 8, &hull);
+	if (h->n < 0) {
+		lx_poly_hull(h->corner, 8, &hull); /* at most 8 vertices: they are corners */
+		h->n = hull.n;
+		memcpy(h->hull, hull.v, (size_t)hull.n * sizeof(vec2));
+	} else {
+		hull.n = h->n;
+		memcpy(hull.v, h->hull, (size_t)h->n * sizeof(vec2));
+	}
 	return lx_segment_inside(&hull, p, q, t0, t1);
 }
 
@@ -484,7 +494,7 @@ static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *f
 			int n = 0;
 			for (int h = 0; h < nhide; h++) /* its box first, then its image */
 				n += segment_in_box(hide[h].box, p, q, &iv[n][0], &iv[n][1]) &&
-				     segment_in_hull(hide[h].corner, p, q, &iv[n][0], &iv[n][1]);
+				     segment_in_image(&hide[h], p, q, &iv[n][0], &iv[n][1]);
 			for (int o = 0; o < nfeet; o++) /* its box first: most footprints lie apart */
 				n += o != c && segment_in_box(box[o], p, q, &iv[n][0], &iv[n][1]) &&
 				     lx_segment_inside(&feet[o], p, q, &iv[n][0], &iv[n][1]);
