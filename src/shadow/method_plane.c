@@ -393,6 +393,7 @@ static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
 		bool hides = id != i;
 		double *b = hide[n].box;
 		b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
+		hide[n].n = -1;
 		for (int k = 0; k < 8 && hides; k++) {
 			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
 			double d = v4_dot_point(pi, c);
@@ -402,7 +403,6 @@ static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
 				break;
 			double x = (h.x / h.w + 1) * 0.5 * v->width, y = (h.y / h.w + 1) * 0.5 * v->height;
 			hide[n].corner[k] = (vec2){x, y};
-			hide[n].n = -1;
 			b[0] = x < b[0] ? x : b[0], b[1] = y < b[1] ? y : b[1], b[2] = x > b[2] ? x : b[2], b[3] = y > b[3] ? y : b[3];
 		}
 		n += hides;
