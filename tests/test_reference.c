@@ -110,10 +110,12 @@ static void bvh_depth_cap_loses_nothing(void **state)
 }
 
 /* The default scene's frame at time 0, w x h. */
-static void default_frame(struct lx_scene *s, struct lx_scene_meshes *m, struct lx_frame *f, int w, int h)
+/* A built-in scene's meshes and its frame at time 0 (free with lx_meshes_free). */
+static void scene_frame(void (*scene)(struct lx_scene *), struct lx_scene *s, struct lx_scene_meshes *m,
+			struct lx_frame *f, int w, int h)
 {
 	char err[256];
-	lx_scene_default(s);
+	scene(s);
 	assert_true(lx_meshes_build(s, m));
 	assert_true(lx_frame_setup(f, s, m, 0, w, h, err, sizeof err));
 }
@@ -124,7 +126,7 @@ static void reference_image_is_deterministic_across_threads(void **state)
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	default_frame(&s, &m, &f, 96, 72);
+	scene_frame(lx_scene_default, &s, &m, &f, 96, 72);
 	long n = 96 * 72;
 	int16_t *o1 = malloc(n * sizeof(int16_t)), *o2 = malloc(n * sizeof(int16_t));
 	uint8_t *s1 = malloc(n), *s2 = malloc(n);
@@ -153,10 +155,7 @@ static void table_top_shades_the_slab_seen_through_the_gap(void **state)
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	char err[256];
-	lx_scene_table(&s);
-	assert_true(lx_meshes_build(&s, &m));
-	assert_true(lx_frame_setup(&f, &s, &m, 0, 1920, 1080, err, sizeof err));
+	scene_frame(lx_scene_table, &s, &m, &f, 1920, 1080);
 	struct lx_raycaster *rc = lx_raycaster_create(&f);
 	assert_non_null(rc);
 	int slab = s.plane_count; /* the first caster */
@@ -196,7 +195,7 @@ static void hinted_rays_answer_as_plain_ones(void **state)
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	default_frame(&s, &m, &f, 64, 48);
+	scene_frame(lx_scene_default, &s, &m, &f, 64, 48);
 	struct lx_raycaster *rc = lx_raycaster_create(&f);
 	assert_non_null(rc);
 	long blocked = 0, open = 0, kept = 0;
@@ -286,7 +285,7 @@ static void plane_homography_matches_projection(void **state)
 	struct lx_scene_meshes m;
 	struct lx_frame f;
 	char err[256];
-	default_frame(&s, &m, &f, 200, 150);
+	scene_frame(lx_scene_default, &s, &m, &f, 200, 150);
 	struct lx_region_request req[] = {{"m", 300, 200, 0, false}};
 	struct lx_atlas atlas;
 	assert_true(lx_atlas_layout(&atlas, req, 1, 1, 2048, err, sizeof err));
@@ -404,7 +403,7 @@ static void soft_image_is_deterministic_and_bounded(void **state)
 	struct lx_scene s;
 	struct lx_scene_meshes m;
 	struct lx_frame f;
-	default_frame(&s, &m, &f, 96, 72);
+	scene_frame(lx_scene_default, &s, &m, &f, 96, 72);
 	long n = 96 * 72, between = 0;
 	float *a = malloc(n * sizeof(float)), *b = malloc(n * sizeof(float));
 	int16_t *o = malloc(n * sizeof(int16_t));

@@ -490,6 +490,37 @@ static void a_plane_in_front_hides_the_one_behind(void **state)
 	lx_meshes_free(&m);
 }
 
+/* The boxes that hide a plane from the eye (lx_frame_box_hides): in the table scene seen
+ * from above, a leg standing on the floor and the table top hide the floor, the slab
+ * under the top does not hide the top, and nothing hides itself; a leg behind the eye
+ * hides nothing, the one ahead does. The corners come back in the window. */
+static void a_box_on_the_eyes_side_hides_the_plane(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	vec2 w[8];
+	lx_scene_table(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	int top = 0, floor = 1, slab = s.plane_count, leg = s.plane_count + 1;
+	assert_true(lx_frame_box_hides(&f, leg, floor, w)); /* touching the floor counts */
+	vec4 c = m4_mul_point(&f.view.view_proj, v3_box_corner(f.bmin[leg], f.bmax[leg], 7));
+	assert_true(fabs(w[7].x - (c.x / c.w * 0.5 + 0.5) * 256) < 1e-9 && fabs(w[7].y - (c.y / c.w * 0.5 + 0.5) * 192) < 1e-9);
+	assert_true(lx_frame_box_hides(&f, top, floor, w));
+	assert_true(lx_frame_box_hides(&f, slab, floor, w));
+	assert_false(lx_frame_box_hides(&f, slab, top, w)); /* below the top, the eye above */
+	assert_false(lx_frame_box_hides(&f, floor, floor, w));
+	int back_leg = s.plane_count + 2; /* at x 1.1, z -0.7 */
+	s.camera.eye = v3(1.1, 0.3, -0.5), s.camera.at = v3(1.1, 0.3, 3); /* just past it, facing away */
+	assert_true(lx_frame_setup(&f, &s, &m, 0, 256, 192, err, sizeof err));
+	assert_false(lx_frame_box_hides(&f, back_leg, floor, w));
+	assert_true(lx_frame_box_hides(&f, s.plane_count + 4, floor, w)); /* the leg at x 1.1, z 0.7, ahead */
+	lx_meshes_free(&m);
+}
+
 /* A projective light's matrix, image look-up and fall-off [Segal], against values worked
  * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
 static void projective_light_geometry(void **state)
@@ -561,6 +592,7 @@ int main(void)
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),
 		cmocka_unit_test(a_plane_in_front_hides_the_one_behind),
+		cmocka_unit_test(a_box_on_the_eyes_side_hides_the_plane),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);
 }

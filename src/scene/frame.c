@@ -276,6 +276,22 @@ bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct 
 	return true;
 }
 
+bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[8])
+{
+	struct eye_side s;
+	if (id == back || !eye_side(f, back, &s))
+		return false;
+	double touch = -1e-6 * fabs(s.eye) * v3_len(s.n); /* a micrometre beyond it: on it */
+	for (int k = 0; k < 8; k++) {
+		vec3 x = v3_box_corner(f->bmin[id], f->bmax[id], k);
+		vec4 c = m4_mul_point(&f->view.view_proj, x);
+		if (!(side(&s, x) >= touch) || !(c.w > 1e-12 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
+			return false;
+		window[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+	}
+	return true;
+}
+
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
 {
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};

@@ -71,5 +71,10 @@ void lx_frame_draw_order(const struct lx_frame *f, int *order);
  * wholly on the eye's side of back's plane (strictly), and beyond the near plane, so that
  * it is drawn whole. *win: that image in the window (pixels, GL's origin), convex. */
 bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct lx_poly *win);
+/* Whether object id's box lies wholly on the eye's side of plane `back`'s plane (touching
+ * it counts: a caster standing on the floor hides what is behind it) and in front of the
+ * eye, so that whatever of back its image covers is hidden. window: the box's corners in
+ * the window (pixels, GL's origin), in v3_box_corner's order. */
+bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[8]);
 
 #endif

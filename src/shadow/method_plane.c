@@ -190,6 +190,19 @@ static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *
 /* The casters' box corners in the light image (8 each, in object order; whole[c] false
  * for one that reaches behind the light image, its corners then meaningless), and false
  * when one does (then the casters bound nothing). */
+/* Object id's box corners in the chart's light image, and whether all of them lie in
+ * front of it (from the first that does not, pts holds zeros). */
+static bool box_in_chart(const struct lx_frame *f, const struct plane_chart *ch, int id, vec2 pts[8])
+{
+	bool in_front = true;
+	for (int k = 0; k < 8; k++) {
+		vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
+		in_front &= h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
+		pts[k] = in_front ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
+	}
+	return in_front;
+}
+
 static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
 			   int *np)
 {
@@ -199,14 +212,9 @@ static bool caster_corners(const struct lx_frame *f, const struct plane_chart *c
 		if (!lx_object_can_cast(f, id))
 			continue;
 		ids[*np / 8] = id;
-		bool in_front = true;
-		for (int k = 0; k < 8; k++) {
-			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
-			in_front &= h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
-			pts[(*np)++] = in_front ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0}; /* room: every object's 8 */
-		}
-		whole[*np / 8 - 1] = in_front;
-		all &= in_front;
+		whole[*np / 8] = box_in_chart(f, ch, id, pts + *np); /* room: every object's 8 */
+		all &= whole[*np / 8];
+		*np += 8;
 	}
 	return all;
 }
@@ -359,22 +367,15 @@ static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart 
 		if (id == i || lx_object_can_cast(f, id) || !above_plane(f, i, id))
 			continue;
 		vec2 pts[8];
-		bool whole = true;
-		for (int k = 0; k < 8 && whole; k++) {
-			vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
-			whole = h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
-			pts[k] = whole ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
-		}
 		cuts[n] = 0;
-		if (whole ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3 : footprint_clipped(f, i, id, &feet[n], &cuts[n]))
+		if (box_in_chart(f, ch, id, pts) ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3 : footprint_clipped(f, i, id, &feet[n], &cuts[n]))
 			exact[n++] = true;
 	}
 	return n;
 }
 
-/* What can hide plane i from the eye: every other object lying wholly on the eye's side
- * of the plane (or touching it) and in front of the eye, by its box's corners in window
- * coordinates and their bounds (x0, y0, x1, y1). The box's image bounds the object's, so
+/* What can hide plane i from the eye (lx_frame_box_hides): each object's box corners in
+ * the window and their bounds (x0, y0, x1, y1). The box's image bounds the object's, so
  * it over-states what is hidden. */
 struct hider {
 	vec2 corner[8];
@@ -385,27 +386,19 @@ struct hider {
 
 static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
 {
-	const struct lx_view *v = &f->view;
-	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
-	double eye = v4_dot_point(pi, v->eye), tol = 1e-6 * (1 + fabs(eye));
 	int n = 0;
 	for (int id = 0; id < f->object_count; id++) {
-		bool hides = id != i;
-		double *b = hide[n].box;
-		b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
-		hide[n].n = -1;
-		for (int k = 0; k < 8 && hides; k++) {
-			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
-			double d = v4_dot_point(pi, c);
-			vec4 h = m4_mul_point(&v->view_proj, c);
-			hides = (eye > 0 ? d >= -tol : d <= tol) && h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
-			if (!hides)
-				break;
-			double x = (h.x / h.w + 1) * 0.5 * v->width, y = (h.y / h.w + 1) * 0.5 * v->height;
-			hide[n].corner[k] = (vec2){x, y};
-			b[0] = x < b[0] ? x : b[0], b[1] = y < b[1] ? y : b[1], b[2] = x > b[2] ? x : b[2], b[3] = y > b[3] ? y : b[3];
+		struct hider *h = &hide[n];
+		if (!lx_frame_box_hides(f, id, i, h->corner))
+			continue;
+		h->n = -1;
+		h->box[0] = h->box[2] = h->corner[0].x, h->box[1] = h->box[3] = h->corner[0].y;
+		for (int k = 1; k < 8; k++) {
+			vec2 c = h->corner[k];
+			h->box[0] = c.x < h->box[0] ? c.x : h->box[0], h->box[1] = c.y < h->box[1] ? c.y : h->box[1];
+			h->box[2] = c.x > h->box[2] ? c.x : h->box[2], h->box[3] = c.y > h->box[3] ? c.y : h->box[3];
 		}
-		n += hides;
+		n++;
 	}
 	return n;
 }
