@@ -1,5 +1,5 @@
 /* The coverage check shared by the method tests: every shadow that can fall on a
- * visible receiver is captured. For caster points c (sampled in the casters' boxes) and
+ * visible receiver is captured. For caster points c (sampled in the casters' shapes) and
  * receiver points r beyond c on the same light ray inside the view frustum and the
  * scene box (on a plane, or in a caster's box), the map that serves r
  * (lx_shadow_select_map for r's object, the shader's choice) holds c
@@ -52,6 +52,35 @@ static void check_pair(const struct lx_shadow_result *res, int object, vec3 c, v
 	assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6); /* same ray, same lixel */
 }
 
+/* A point of caster id's exact shape (its mesh lies inside it), drawn in its box: inside
+ * it, or every other one on its surface, where the footprints' outlines are tightest
+ * (lx_frame_object_outline). False when 64 draws found none. */
+static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 *out)
+{
+	const struct lx_caster *cs = &f->scene->casters[id - f->scene->plane_count];
+	vec3 o = f->offset[id];
+	double r = cs->size.x, h = cs->size.y;
+	bool surface = test_rand(seed) < 0.5;
+	for (int tries = 0; tries < 64; tries++) {
+		vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
+			    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
+			    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
+		if (cs->shape == LX_BOX) {
+			*out = c;
+			return true;
+		}
+		vec3 axis = cs->shape == LX_SPHERE ? v3(o.x, o.y + r, o.z) : v3(o.x, c.y, o.z);
+		vec3 d = v3_sub(c, axis);
+		double len = v3_len(d);
+		double reach = cs->shape == LX_SPHERE ? r : cs->shape == LX_CYLINDER ? r : r * (1 - (c.y - o.y) / h);
+		if (!(len <= reach) || !(len > 1e-9))
+			continue;
+		*out = surface ? v3_add(axis, v3_scale(d, reach / len)) : c;
+		return true;
+	}
+	return false;
+}
+
 /* Returns the number of caster/receiver pairs checked; fails the test on the first miss.
  * Receivers are the points of the planes' parallelograms and of the casters' boxes, each
  * looked up in the maps its object reads (lx_shadow_receiver_maps). */
@@ -62,9 +91,9 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
 	for (int id = plane_count; id < f->object_count; id++)
 		for (int k = 0; k < samples; k++) {
-			vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
-				    f->bmin[id].y + test_rand(seed) * (f->bmax[id].y - f->bmin[id].y),
-				    f->bmin[id].z + test_rand(seed) * (f->bmax[id].z - f->bmin[id].z));
+			vec3 c;
+			if (!caster_point(f, id, seed, &c))
+				continue;
 			vec3 dir = f->light.directional ? f->light.direction : v3_sub(c, f->light.position);
 			if (!v3_normalize(dir, &dir))
 				continue;

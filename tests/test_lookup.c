@@ -40,9 +40,8 @@ static long check_partition(const struct lx_span *s, int n, struct lx_rect withi
 }
 
 /* Whether the segment from p towards the light (to the light, or on for a directional
- * one) meets caster c: its sphere, or the box of any other shape (the region of a box
- * holds its image, so anything the box shadows lies in it). */
-static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
+ * one) meets caster c: its sphere, or its box (for a cylinder or cone, a first cut). */
+static bool caster_box_shadows(const struct lx_frame *f, int c, vec3 p)
 {
 	const struct lx_light *l = &f->light;
 	vec3 d = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
@@ -69,6 +68,43 @@ static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
 		t0 = fmax(t0, fmin(a, b)), t1 = fmin(t1, fmax(a, b));
 	}
 	return t0 <= t1;
+}
+
+/* How far q lies outside cylinder or cone cs standing at o, across its axis (<= 0:
+ * within its radius at q's height). */
+static double round_gap(const struct lx_caster *cs, vec3 o, vec3 q)
+{
+	double reach = cs->shape == LX_CONE ? cs->size.x * (1 - (q.y - o.y) / cs->size.y) : cs->size.x;
+	return hypot(q.x - o.x, q.z - o.z) - reach;
+}
+
+/* Whether the segment from p towards the light meets caster c's exact shape (its mesh
+ * lies inside it): the sphere and the box as caster_box_shadows; a cylinder or cone
+ * where the gap across its axis, convex along the segment, falls to 0 between its
+ * bottom and top (the least gap found by ternary search). */
+static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
+{
+	const struct lx_caster *cs = &f->scene->casters[c - f->scene->plane_count];
+	if (!caster_box_shadows(f, c, p) || cs->shape == LX_SPHERE || cs->shape == LX_BOX)
+		return caster_box_shadows(f, c, p);
+	const struct lx_light *l = &f->light;
+	vec3 d = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p), o = f->offset[c];
+	double lo = 1e-9, hi = l->directional ? 1e9 : 1, y0 = o.y, y1 = o.y + cs->size.y;
+	if (d.y != 0) {
+		double a = (y0 - p.y) / d.y, b = (y1 - p.y) / d.y;
+		lo = fmax(lo, fmin(a, b)), hi = fmin(hi, fmax(a, b));
+	} else if (p.y < y0 || p.y > y1)
+		return false;
+	if (!(lo <= hi))
+		return false;
+	for (int i = 0; i < 200; i++) {
+		double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+		if (round_gap(cs, o, v3_add(p, v3_scale(d, m1))) < round_gap(cs, o, v3_add(p, v3_scale(d, m2))))
+			hi = m2;
+		else
+			lo = m1;
+	}
+	return round_gap(cs, o, v3_add(p, v3_scale(d, 0.5 * (lo + hi)))) <= 1e-9;
 }
 
 /* What check_scene counted. */

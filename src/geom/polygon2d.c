@@ -53,7 +53,7 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	if (n <= 0)
 		return true;
 	/* the usual few hundred points on the stack: this runs every frame */
-	enum { ON_STACK = 512 }; /* more than any caller passes: 8 corners of 40 objects */
+	enum { ON_STACK = 512 }; /* what callers pass but for scenes of many round casters (16 points each) */
 	vec2 stack[3 * ON_STACK];
 	vec2 *p = n <= ON_STACK ? stack : malloc((size_t)n * 3 * sizeof(vec2)), *h = p + n;
 	if (!p) { /* out of memory: the 32-sided polygon around the points, no hull */

@@ -292,6 +292,69 @@ bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[
 	return true;
 }
 
+/* An octagon in the plane through c with unit normal n, drawn around the circle of radius
+ * r there (its corners r / cos(pi/8) out, a hair more for rounding). */
+static void octagon(vec3 c, vec3 n, double r, vec3 *out)
+{
+	vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0), e1 = a, e2;
+	v3_normalize(v3_cross(n, a), &e1); /* |n x a| >= 0.6 for a unit n */
+	e2 = v3_cross(n, e1);
+	double R = r / cos(M_PI / 8) * (1 + 1e-9);
+	for (int k = 0; k < 8; k++) {
+		double t = k * M_PI / 4;
+		out[k] = v3_add(c, v3_add(v3_scale(e1, R * cos(t)), v3_scale(e2, R * sin(t))));
+	}
+}
+
+/* A sphere's outline as the light sees it: the circle where the rays from the light touch
+ * it (for a point light d = |L - C| > r: centred r^2 / d from C towards the light, of
+ * radius r sqrt(1 - r^2 / d^2)), or its great circle across a directional light's
+ * direction. False when the light is inside it or on it. */
+static bool sphere_outline(const struct lx_light *l, vec3 c, double r, vec3 *out)
+{
+	if (l->directional) {
+		octagon(c, l->direction, r, out);
+		return true;
+	}
+	vec3 to = v3_sub(l->position, c);
+	double d = v3_len(to);
+	if (!(d > r * (1 + 1e-6)) || !isfinite(d))
+		return false;
+	vec3 u = v3_scale(to, 1 / d); /* d > r > 0 */
+	double k = r / d;
+	octagon(v3_add(c, v3_scale(u, r * k)), u, r * sqrt(1 - k * k), out); /* k < 1 */
+	return true;
+}
+
+int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLINE_POINTS])
+{
+	int pc = f->scene->plane_count;
+	if (id >= pc) {
+		const struct lx_caster *c = &f->scene->casters[id - pc];
+		vec3 o = f->offset[id], up = v3(0, 1, 0);
+		double r = c->size.x, h = c->size.y;
+		switch (c->shape) {
+		case LX_SPHERE:
+			if (sphere_outline(&f->light, v3_add(o, v3(0, r, 0)), r, pts))
+				return 8;
+			break;
+		case LX_CYLINDER:
+			octagon(o, up, r, pts);
+			octagon(v3_add(o, v3(0, h, 0)), up, r, pts + 8);
+			return 16;
+		case LX_CONE:
+			octagon(o, up, r, pts);
+			pts[8] = v3_add(o, v3(0, h, 0));
+			return 9;
+		default:
+			break;
+		}
+	}
+	for (int k = 0; k < 8; k++)
+		pts[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	return 8;
+}
+
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
 {
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};

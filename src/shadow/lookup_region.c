@@ -104,6 +104,25 @@ static bool sphere_range(vec4 nn, vec4 dd, vec3 c, double r, double *lo, double 
 	return *lo <= *hi;
 }
 
+/* Narrows b0 and b1 (the image's x, y, x + y and x - y bounds) to caster id's outline
+ * (lx_frame_object_outline), when all of it lies in front of the light. */
+static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, double *b0, double *b1)
+{
+	vec3 x[LX_OUTLINE_POINTS];
+	int n = lx_frame_object_outline(f, id, x);
+	double t0[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, t1[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+	for (int k = 0; k < n; k++) {
+		vec4 c = m4_mul_point(m, x[k]);
+		if (!(c.w > 0) || !isfinite(c.x + c.y))
+			return; /* reaches behind the light: the box's bounds stand */
+		double u = c.x / c.w, v = c.y / c.w, p[4] = {u, v, u + v, u - v};
+		for (int d = 0; d < 4; d++)
+			t0[d] = fmin(t0[d], p[d]), t1[d] = fmax(t1[d], p[d]);
+	}
+	for (int d = 0; d < 4; d++)
+		b0[d] = fmax(b0[d], t0[d]), b1[d] = fmin(b1[d], t1[d]);
+}
+
 /* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
  * image, an octagon (x, y, x + y and x - y bounded: tight for the round shapes) grown by
  * the margin and cut to the rays the map serves, swept beyond the caster's nearest depth.
@@ -166,7 +185,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		for (int d = 0; d < OCTAGON; d++)
 			if (sphere_range(dir[d], r3, centre, r, &l, &h))
 				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
-	}
+	} else if (id >= f->scene->plane_count) /* a cylinder's or cone's octagons; a box's own corners */
+		outline_bounds(f, m, id, b0, b1);
 	/* grown by the margin and cut to the rays the map serves */
 	double ex = margin[0], ey = margin[1];
 	double grow[OCTAGON] = {ex, ey, ex + ey, ex + ey};

@@ -187,35 +187,50 @@ static bool chart_usable(const struct lx_frame *f, const struct lx_light_space *
 	return true;
 }
 
-/* The casters' box corners in the light image (8 each, in object order; whole[c] false
- * for one that reaches behind the light image, its corners then meaningless), and false
- * when one does (then the casters bound nothing). */
-/* Object id's box corners in the chart's light image, and whether all of them lie in
- * front of it (from the first that does not, pts holds zeros). */
-static bool box_in_chart(const struct lx_frame *f, const struct plane_chart *ch, int id, vec2 pts[8])
+/* Points in the chart's light image, and whether all of them lie in front of it (from
+ * the first that does not, pts holds zeros). */
+static bool in_chart(const struct plane_chart *ch, const vec3 *x, int n, vec2 *pts)
 {
 	bool in_front = true;
-	for (int k = 0; k < 8; k++) {
-		vec4 h = m4_mul_point(&ch->cam.m, v3_box_corner(f->bmin[id], f->bmax[id], k));
+	for (int k = 0; k < n; k++) {
+		vec4 h = m4_mul_point(&ch->cam.m, x[k]);
 		in_front &= h.w > 1e-12 * (fabs(h.x) + fabs(h.y) + fabs(h.z));
 		pts[k] = in_front ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
 	}
 	return in_front;
 }
 
-static bool caster_corners(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
-			   int *np)
+/* Object id's box corners in the chart's light image (in v3_box_corner's order), as
+ * in_chart. */
+static bool box_in_chart(const struct lx_frame *f, const struct plane_chart *ch, int id, vec2 pts[8])
+{
+	vec3 x[8];
+	for (int k = 0; k < 8; k++)
+		x[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	return in_chart(ch, x, 8, pts);
+}
+
+/* The casters' outlines in the light image (lx_frame_object_outline's points, caster c's
+ * from first[c], first[c + 1] - first[c] of them, in object order; whole[c] false for one
+ * that reaches behind the light image, its points then meaningless), and false when one
+ * does (then the casters bound nothing). */
+static bool caster_outlines(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
+			    int *first, int *nc)
 {
 	bool all = true;
-	*np = 0;
+	int np = 0;
+	*nc = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
-		ids[*np / 8] = id;
-		whole[*np / 8] = box_in_chart(f, ch, id, pts + *np); /* room: every object's 8 */
-		all &= whole[*np / 8];
-		*np += 8;
+		vec3 x[LX_OUTLINE_POINTS];
+		int n = lx_frame_object_outline(f, id, x);
+		ids[*nc] = id, first[*nc] = np;
+		whole[*nc] = in_chart(ch, x, n, pts + np); /* room: LX_OUTLINE_POINTS an object */
+		all &= whole[(*nc)++];
+		np += n;
 	}
+	first[*nc] = np;
 	return all;
 }
 
@@ -508,12 +523,12 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
 	 * plane, within what the casters can cover. */
 	struct lx_poly wanted = ch->win, cast;
-	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-	int np, ids[LX_MAX_PLANES + LX_MAX_CASTERS];
-	bool bounded = caster_corners(f, ch, pts, whole, ids, &np);
+	int nc, ids[LX_MAX_PLANES + LX_MAX_CASTERS], first[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
+	bool bounded = caster_outlines(f, ch, pts, whole, ids, first, &nc);
 	if (bounded) {
-		lx_poly_hull(pts, np, &cast);
+		lx_poly_hull(pts, first[nc], &cast);
 		lx_poly_intersect(&ch->win, &cast, &wanted);
 	}
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
@@ -534,7 +549,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	int nfeet = 0;
 	bool levels = !o->plane_corner && ch->on_grid; /* level_edges */
 	to_chart(ch, &win);
-	for (int c = 0; c < np / 8; c++) {
+	for (int c = 0; c < nc; c++) {
 		struct lx_poly one, on;
 		if (!whole[c]) {
 			if (levels && exact_outline(f, i, ids[c]) &&
@@ -542,7 +557,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 				exact[nfeet++] = true; /* for its level edges only */
 			continue;
 		}
-		lx_poly_hull(pts + 8 * c, 8, &one);
+		lx_poly_hull(pts + first[c], first[c + 1] - first[c], &one);
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
