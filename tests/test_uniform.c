@@ -54,8 +54,13 @@ static void random_lights(void **state)
 			print_message("light %d at (%g, %g, %g): %s\n", i, s.scene.light.position.x, s.scene.light.position.y,
 				      s.scene.light.position.z, s.res.warnings[0]);
 			too_wide++;
-		} else
-			check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, "random light");
+		} else {
+			char what[160];
+			vec3 L = s.scene.light.directional ? s.scene.light.direction : s.scene.light.position;
+			snprintf(what, sizeof what, "random light %d (%s %g, %g, %g)", i,
+				 s.scene.light.directional ? "direction" : "at", L.x, L.y, L.z);
+			check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 40, what);
+		}
 		rendered += s.res.maps[0].rendered;
 		cleanup(&s);
 	}

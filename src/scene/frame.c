@@ -293,36 +293,46 @@ bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[
 }
 
 /* An octagon in the plane through c with unit normal n, drawn around the circle of radius
- * r there (its corners r / cos(pi/8) out, a hair more for rounding). */
+ * r there (its corners r / cos(pi/8) out, and a millionth more: the meshes' vertices are
+ * floats, and the matrices that carry these points round); for a level circle its sides
+ * face the axes, so that it lies within the circle's square, and a cylinder's or cone's
+ * outline within its box. */
 static void octagon(vec3 c, vec3 n, double r, vec3 *out)
 {
 	vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0), e1 = a, e2;
 	v3_normalize(v3_cross(n, a), &e1); /* |n x a| >= 0.6 for a unit n */
 	e2 = v3_cross(n, e1);
-	double R = r / cos(M_PI / 8) * (1 + 1e-9);
+	double R = r / cos(M_PI / 8) * (1 + 1e-6);
 	for (int k = 0; k < 8; k++) {
-		double t = k * M_PI / 4;
+		double t = (k + 0.5) * M_PI / 4;
 		out[k] = v3_add(c, v3_add(v3_scale(e1, R * cos(t)), v3_scale(e2, R * sin(t))));
 	}
 }
 
-/* A sphere's outline as the light sees it: the circle where the rays from the light touch
- * it (for a point light d = |L - C| > r: centred r^2 / d from C towards the light, of
- * radius r sqrt(1 - r^2 / d^2)), or its great circle across a directional light's
- * direction. False when the light is inside it or on it. */
+/* Around a sphere (centre c, radius r), 16 points whose hull holds it and whose image from
+ * the light is an octagon drawn around its outline: for a point light at distance d > r,
+ * the frustum of the octagonal cone around the rays that touch it (they touch along a
+ * circle r^2 / d from c towards the light, of radius r sqrt(1 - r^2 / d^2)), cut where
+ * the sphere begins and ends along its axis (d - r and d + r from the light); for a
+ * directional light, the prism around it along the direction. False when the light is
+ * inside it or on it. */
 static bool sphere_outline(const struct lx_light *l, vec3 c, double r, vec3 *out)
 {
 	if (l->directional) {
-		octagon(c, l->direction, r, out);
+		octagon(v3_sub(c, v3_scale(l->direction, r)), l->direction, r, out);
+		octagon(v3_add(c, v3_scale(l->direction, r)), l->direction, r, out + 8);
 		return true;
 	}
-	vec3 to = v3_sub(l->position, c);
-	double d = v3_len(to);
+	vec3 away = v3_sub(c, l->position);
+	double d = v3_len(away);
 	if (!(d > r * (1 + 1e-6)) || !isfinite(d))
 		return false;
-	vec3 u = v3_scale(to, 1 / d); /* d > r > 0 */
-	double k = r / d;
-	octagon(v3_add(c, v3_scale(u, r * k)), u, r * sqrt(1 - k * k), out); /* k < 1 */
+	vec3 u = v3_scale(away, 1 / d); /* d > r > 0 */
+	double k = r / d, s = d * (1 - k * k), rho = r * sqrt(1 - k * k); /* k < 1: s, rho > 0 */
+	for (int e = 0; e < 2; e++) { /* the cone widens in proportion to the distance */
+		double t = e ? d + r : d - r;
+		octagon(v3_add(l->position, v3_scale(u, t)), u, rho * t / s, out + 8 * e);
+	}
 	return true;
 }
 
@@ -336,7 +346,7 @@ int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLIN
 		switch (c->shape) {
 		case LX_SPHERE:
 			if (sphere_outline(&f->light, v3_add(o, v3(0, r, 0)), r, pts))
-				return 8;
+				return 16;
 			break;
 		case LX_CYLINDER:
 			octagon(o, up, r, pts);

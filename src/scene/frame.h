@@ -76,12 +76,14 @@ bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct 
  * eye, so that whatever of back its image covers is hidden. window: the box's corners in
  * the window (pixels, GL's origin), in v3_box_corner's order. */
 bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[8]);
-/* Points whose image from the frame's light holds object id's whole image (its shadow's
- * outline on any plane lies inside theirs): its box's corners, or for a round caster
- * octagons drawn around the circles that bound it, tighter than its box (a cylinder's
- * caps; a cone's base and apex; the circle along which a sphere meets the rays that
- * touch it, when the light is outside it). Their meshes lie inside these shapes.
- * Returns the count, at most LX_OUTLINE_POINTS. */
+/* Points whose convex hull holds object id (and so its mesh, which lies inside its
+ * shape): its box's corners, or for a round caster a polytope tighter than its box in
+ * the light's image: the octagonal prism around a cylinder, the octagonal pyramid around
+ * a cone, and around a sphere the frustum of the octagonal cone drawn around the rays
+ * from the light that touch it (a prism along a directional light's direction), whose
+ * image is an octagon around the sphere's. The prism and pyramid lie within the box; the
+ * frustum's corners may not, so a caller checks each point as it would the corners
+ * (in front of the light or not). Returns the count, at most LX_OUTLINE_POINTS. */
 #define LX_OUTLINE_POINTS 16
 int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLINE_POINTS]);
 

@@ -44,10 +44,11 @@ static bool project_view(const struct lx_light_space *ls, vec4 q, vec2 *g, doubl
 	return true;
 }
 
-/* Room for every point the light space projects: the receiver volume's vertices, or the
- * corners of every object's box. */
-#define LIGHT_SPACE_POINTS \
-	(LX_CONVEX_MAX_POINTS > 8 * (LX_MAX_PLANES + LX_MAX_CASTERS) ? LX_CONVEX_MAX_POINTS : 8 * (LX_MAX_PLANES + LX_MAX_CASTERS))
+/* Room for every point the light space projects: the receiver volume's vertices, or
+ * every object's outline (lx_frame_object_outline). */
+#define LIGHT_SPACE_POINTS                                                                           \
+	(LX_CONVEX_MAX_POINTS > LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS) ? LX_CONVEX_MAX_POINTS \
+										      : LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS))
 
 /* The images of view-space points q[0, n) that project (packed into g) and the depth
  * range [*dlo, *dhi] they span (empty: +inf, -inf); returns how many project (the rest
@@ -123,7 +124,8 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	ls->receivers_behind = n < nrec;
 	ls->zfar = dhi;
 	lx_poly_hull(pts, n, &ls->receivers);
-	/* the casters that reach them: every corner of their boxes */
+	/* the casters that reach them: their outlines (lx_frame_object_outline: a box's
+	 * corners, tighter for round casters) */
 	int ncasters = 0, ncorners = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id) ||
@@ -131,11 +133,13 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 			continue;
 		ls->casting |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
 		ncasters++;
-		for (int k = 0; k < 8; k++)
-			q[ncorners++] = m4_mul_point(&ls->view, v3_box_corner(f->bmin[id], f->bmax[id], k));
+		vec3 x[LX_OUTLINE_POINTS];
+		int k = lx_frame_object_outline(f, id, x);
+		for (int j = 0; j < k; j++)
+			q[ncorners++] = m4_mul_point(&ls->view, x[j]);
 	}
 	n = project_points(ls, q, ncorners, pts, &dlo, &dhi);
-	ls->casters_unbounded = n < ncorners; /* a box reaching behind the light projects everywhere */
+	ls->casters_unbounded = n < ncorners; /* a caster reaching behind the light projects everywhere */
 	ls->znear = ls->casters_unbounded ? -INFINITY : dlo;
 	lx_poly_hull(pts, n, &ls->casters);
 	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond

@@ -24,8 +24,9 @@ double lx_lispsm_warp(double y, double n, double d)
 	return ((f + n) * y - 2 * f * n) / ((f - n) * y); /* y >= n > 0 on the body */
 }
 
-/* Points of B: the receiver volume's vertices and the box corners of the objects that
- * can cast onto it (not one far off: it would stretch the body and the warp). */
+/* Points of B: the receiver volume's vertices and the outlines (lx_frame_object_outline)
+ * of the objects that can cast onto it (not one far off: it would stretch the body and
+ * the warp). */
 static int body_points(const struct lx_frame *f, const struct lx_light_space *ls, vec3 *pts, bool *caster, int max)
 {
 	int n = 0;
@@ -34,8 +35,9 @@ static int body_points(const struct lx_frame *f, const struct lx_light_space *ls
 	for (int id = 0; id < f->object_count; id++) {
 		if (!(ls->casting >> id & 1))
 			continue;
-		for (int k = 0; k < 8 && n < max; k++) {
-			pts[n] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+		vec3 x[LX_OUTLINE_POINTS];
+		for (int k = 0, m = lx_frame_object_outline(f, id, x); k < m && n < max; k++) {
+			pts[n] = x[k];
 			caster[n++] = true;
 		}
 	}
@@ -135,8 +137,8 @@ static void lispsm_warp(const struct lx_frame *f, const struct lx_light_space *l
 	struct light_frame lf;
 	if (light_frame(f, ls, &map->light_clip, &lf, out) <= 0)
 		return; /* the uniform map stands */
-	vec3 pts[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
-	bool caster[LX_CONVEX_MAX_POINTS + 8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	vec3 pts[LX_CONVEX_MAX_POINTS + LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	bool caster[LX_CONVEX_MAX_POINTS + LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	int n = body_points(f, ls, pts, caster, (int)(sizeof pts / sizeof pts[0]));
 	double ylo = INFINITY, yhi = -INFINITY;
 	for (int i = 0; i < n; i++) {

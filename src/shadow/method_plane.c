@@ -1047,22 +1047,20 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 }
 
 /* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
- * casters' boxes in view (their surfaces are receivers no plane map serves) and the
+ * casters in view, by their outlines (their surfaces are receivers no plane map serves), and the
  * visible part of each plane that needs it, within what the casters cover. False when a
  * point cannot be charted on G (a receiver behind the point light). */
 static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *in_view,
 			    const bool *needs, struct lx_poly *want)
 {
-	vec2 pts[8 * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
+	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
 	int n = 0;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		if (!in_view[id])
-			continue;
-		for (int k = 0; k < 8; k++) {
-			vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
-			if (!lx_light_space_chart(ls, f, (vec4){c.x, c.y, c.z, 1}, &pts[n++]))
+		vec3 x[LX_OUTLINE_POINTS];
+		int m = in_view[id] ? lx_frame_object_outline(f, id, x) : 0;
+		for (int k = 0; k < m; k++)
+			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, &pts[n++]))
 				return false;
-		}
 	}
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		struct lx_poly win;

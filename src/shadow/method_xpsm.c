@@ -85,7 +85,7 @@ static bool xpsm_space(const struct lx_frame *f, const struct lx_light_space *ls
  * that can shadow them, in RS; false after a warning (one lies behind a point light). */
 struct xpsm_points {
 	int nrec, ncas;
-	vec3 rec[LX_CONVEX_MAX_POINTS], cas[8 * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	vec3 rec[LX_CONVEX_MAX_POINTS], cas[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 };
 
 static bool xpsm_points(const struct lx_frame *f, const struct lx_light_space *ls, const mat4 *RS,
@@ -97,12 +97,15 @@ static bool xpsm_points(const struct lx_frame *f, const struct lx_light_space *l
 			lx_shadow_warn(out, "xpsm: receivers reach behind the point light (it lies among them or on a plane); uniform this frame");
 			return false;
 		}
-	for (int id = 0; id < f->object_count; id++)
-		for (int k = 0; (ls->casting >> id & 1) && k < 8; k++)
-			if (!to_space(RS, v3_box_corner(f->bmin[id], f->bmax[id], k), &pt->cas[pt->ncas++])) {
+	for (int id = 0; id < f->object_count; id++) {
+		vec3 x[LX_OUTLINE_POINTS];
+		int n = ls->casting >> id & 1 ? lx_frame_object_outline(f, id, x) : 0;
+		for (int k = 0; k < n; k++)
+			if (!to_space(RS, x[k], &pt->cas[pt->ncas++])) {
 				lx_shadow_warn(out, "xpsm: a caster reaches behind the point light; uniform this frame");
 				return false;
 			}
+	}
 	return true;
 }
 
