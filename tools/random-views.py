@@ -4,8 +4,10 @@ configurations: each view a random eye, target, point light and animation time (
 views for a given seed), rendered once per method with `lixel render --measure --json`;
 prints, per scene, each method's mean and median mismatch, how many views it is more than
 0.01 points worse than uniform on, and its worst such excess. Two renders run at a time.
-Usage: random-views.py LIXEL [--seed N] [--views N] [--size WxH] [--methods LIST]
+Usage: random-views.py LIXEL [--seed N] [--views N] [--size WxH] [--methods LIST] [--worst N]
   LIXEL     the lixel binary (build/lixel)
+  --worst   also list, per scene and method, the N views it is furthest above uniform on,
+            with the render options that give each view
   --methods comma-separated method specs as lixel render --method takes them (default
             uniform,plane,plane/similar,plane/shared,plane/shared/similar); uniform is
             added first when missing, being the reference of the counts"""
@@ -44,6 +46,7 @@ def main():
     ap.add_argument("--views", type=int, default=200)
     ap.add_argument("--size", default="640x480")
     ap.add_argument("--methods", default="uniform,plane,plane/similar,plane/shared,plane/shared/similar")
+    ap.add_argument("--worst", type=int, default=0)
     a = ap.parse_args()
     methods = [m for m in a.methods.split(",") if m]
     if "uniform" not in methods:
@@ -84,6 +87,11 @@ def main():
             over = [pct[m][k] - pct["uniform"][k] for k in ks]
             print("  %-22s mean %.4f%%  median %.4f%%  more than 0.01 points above uniform on %d  worst %+.4f" %
                   (m, statistics.mean(vals), statistics.median(vals), sum(d > 0.01 for d in over), max(over)))
+        for m in methods[1:] if a.worst > 0 else []:
+            for k in sorted(ks, key=lambda k: pct["uniform"][k] - pct[m][k])[:a.worst]:
+                _, eye, at, light, t = vs[k]
+                print("    %s view %d: %.4f%% against uniform's %.4f%%: --scene %s --eye %s --at %s --light %s --time %g" %
+                      (m, k, pct[m][k], pct["uniform"][k], scene, triple(eye), triple(at), triple(light), t))
     return 0
 
 

@@ -80,14 +80,24 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 				p[j] = p[j - gaps[g]];
 			p[j] = t;
 		}
+	/* A turn counts only above a trillionth of the points' extent squared: points the
+	 * same but for rounding (a flat box's corners come in pairs; a sphere's outline sends
+	 * two points down each ray) turn any way, and kept, they let a vertex that is no
+	 * corner stay and leave an edge of length about 0, which points anywhere: a polygon
+	 * clipped by it loses nearly everything. What this drops lies within about a
+	 * trillionth of the extent of the hull. */
+	double ylo = p[0].y, yhi = p[0].y;
+	for (int i = 1; i < m; i++)
+		ylo = fmin(ylo, p[i].y), yhi = fmax(yhi, p[i].y);
+	double ext = fmax(p[m - 1].x - p[0].x, yhi - ylo), turn = 1e-12 * ext * ext;
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
-		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)
+		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= turn)
 			k--;
 		h[k++] = p[i];
 	}
 	for (int i = m - 2, t = k + 1; i >= 0; i--) { /* upper hull */
-		while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0)
+		while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= turn)
 			k--;
 		h[k++] = p[i];
 	}

@@ -14,7 +14,9 @@ struct lx_poly {
 	vec2 v[LX_POLY_MAX];
 };
 
-/* Convex hull of n points (Andrew's monotone chain); collinear points dropped. A hull
+/* Convex hull of n points (Andrew's monotone chain); collinear points dropped, and
+ * points the same but for rounding (a turn within a trillionth of the points' extent
+ * squared counts as none), so that no edge has a length of about 0. A hull
  * of more than LX_POLY_MAX vertices becomes a 32-sided polygon around it (a superset):
  * false then. Clipping (below) does the same where a cut would add the 65th vertex. */
 bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);
