@@ -4,6 +4,7 @@
 #include "mesh.h"
 #include "scene.h"
 #include "test_util.h"
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -521,6 +522,94 @@ static void a_box_on_the_eyes_side_hides_the_plane(void **state)
 	lx_meshes_free(&m);
 }
 
+/* The largest of v . x over the n points. */
+static double support(const vec3 *x, int n, vec3 v)
+{
+	double best = -INFINITY;
+	for (int k = 0; k < n; k++)
+		best = fmax(best, v3_dot(v, x[k]));
+	return best;
+}
+
+/* A round caster's outline (lx_frame_object_outline) holds its exact shape, so its mesh:
+ * in every direction v the outline reaches at least as far as any point of the shape
+ * (two convex sets, one inside the other), checked over random directions and the
+ * shape's points, for point lights near and far and directional ones. And it is tighter
+ * than the box: a cylinder's and cone's points lie within it (but for the outline's
+ * millionth of margin), and a sphere's image from
+ * a point light (its angle around the ray to the centre) is at most 9% wider than the
+ * sphere's own (the octagon's corners, 1 / cos(pi/8) out). */
+static void round_outlines_hold_their_shapes(void **state)
+{
+	(void)state;
+	uint64_t seed = 11;
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	char err[256];
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	long checked = 0;
+	for (int trial = 0; trial < 60; trial++) {
+		vec3 d = v3(test_rand(&seed) * 2 - 1, -0.1 - test_rand(&seed), test_rand(&seed) * 2 - 1);
+		double far = trial % 3 == 0 ? 1.3 : trial % 3 == 1 ? 4 : 40; /* metres from the centre of the scene */
+		s.light = trial % 4 == 3 ? (struct lx_light){.directional = true, .color = v3(1, 1, 1)}
+					 : lx_light_white(v3_scale(d, -far));
+		if (s.light.directional)
+			assert_true(v3_normalize(d, &s.light.direction));
+		assert_true(lx_frame_setup(&f, &s, &m, test_rand(&seed) * 5, 64, 48, err, sizeof err));
+		for (int id = s.plane_count; id < f.object_count; id++) {
+			const struct lx_caster *c = &s.casters[id - s.plane_count];
+			vec3 x[LX_OUTLINE_POINTS], o = f.offset[id];
+			int n = lx_frame_object_outline(&f, id, x);
+			double r = c->size.x, h = c->size.y;
+			vec3 centre = v3_add(o, v3(0, c->shape == LX_SPHERE ? r : h / 2, 0));
+			bool inside_light = !f.light.directional && v3_len(v3_sub(f.light.position, centre)) <= r * 1.0001;
+			assert_int_equal(n, c->shape == LX_BOX || (c->shape == LX_SPHERE && inside_light) ? 8 : c->shape == LX_CONE ? 9 : 16);
+			for (int k = 0; k < 200; k++) {
+				vec3 v = v3(0, 0, 0);
+				if (!v3_normalize(v3(test_rand(&seed) - 0.5, test_rand(&seed) - 0.5, test_rand(&seed) - 0.5), &v))
+					continue;
+				double reach; /* of the exact shape along v */
+				double hv = hypot(v.x, v.z);
+				if (c->shape == LX_SPHERE)
+					reach = v3_dot(v, centre) + r;
+				else if (c->shape == LX_CYLINDER)
+					reach = v3_dot(v, o) + r * hv + fmax(0, v.y * h);
+				else if (c->shape == LX_CONE)
+					reach = v3_dot(v, o) + fmax(r * hv, v.y * h); /* the base's rim or the apex */
+				else
+					reach = support((vec3[8]){v3_box_corner(f.bmin[id], f.bmax[id], 0), v3_box_corner(f.bmin[id], f.bmax[id], 1),
+								  v3_box_corner(f.bmin[id], f.bmax[id], 2), v3_box_corner(f.bmin[id], f.bmax[id], 3),
+								  v3_box_corner(f.bmin[id], f.bmax[id], 4), v3_box_corner(f.bmin[id], f.bmax[id], 5),
+								  v3_box_corner(f.bmin[id], f.bmax[id], 6), v3_box_corner(f.bmin[id], f.bmax[id], 7)},
+							8, v);
+				if (!(support(x, n, v) >= reach - 1e-12 * (1 + fabs(reach))))
+					fail_msg("trial %d, object %d: the outline reaches %.17g along (%g, %g, %g), the shape %.17g", trial,
+						 id, support(x, n, v), v.x, v.y, v.z, reach);
+				checked++;
+			}
+			if (c->shape == LX_CYLINDER || c->shape == LX_CONE)
+				for (int k = 0; k < n; k++)
+					assert_true(x[k].x >= f.bmin[id].x - 2e-6 * r && x[k].x <= f.bmax[id].x + 2e-6 * r &&
+						    x[k].z >= f.bmin[id].z - 2e-6 * r && x[k].z <= f.bmax[id].z + 2e-6 * r);
+			if (c->shape == LX_SPHERE && !f.light.directional && !inside_light) {
+				vec3 to = v3_sub(centre, f.light.position), u = v3(0, 0, 0);
+				assert_true(v3_normalize(to, &u));
+				double own = asin(r / v3_len(to)), widest = 0;
+				for (int k = 0; k < n; k++) {
+					vec3 w = v3(0, 0, 0);
+					assert_true(v3_normalize(v3_sub(x[k], f.light.position), &w));
+					widest = fmax(widest, acos(fmin(1, v3_dot(w, u))));
+				}
+				assert_true(widest >= own && tan(widest) <= tan(own) * 1.0825 + 1e-9);
+			}
+		}
+	}
+	print_message("%ld directions checked: every outline holds its shape\n", checked);
+	lx_meshes_free(&m);
+}
+
 /* A projective light's matrix, image look-up and fall-off [Segal], against values worked
  * out by hand: a spotlight 5 m above the origin looking straight down, fov 60 degrees. */
 static void projective_light_geometry(void **state)
@@ -592,6 +681,7 @@ int main(void)
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),
 		cmocka_unit_test(a_plane_in_front_hides_the_one_behind),
+		cmocka_unit_test(round_outlines_hold_their_shapes),
 		cmocka_unit_test(a_box_on_the_eyes_side_hides_the_plane),
 	};
 	return cmocka_run_group_tests_name("scene", tests, NULL, NULL);

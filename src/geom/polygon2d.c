@@ -47,6 +47,14 @@ static void fit(const vec2 *pts, int n, struct lx_poly *out)
 	memcpy(out->v, pts, (size_t)n * sizeof(vec2));
 }
 
+/* Whether a and b are the same point but for rounding: within a trillionth of their size,
+ * or within tol. */
+static bool same_point(vec2 a, vec2 b, double tol)
+{
+	double d = fabs(a.x - b.x) + fabs(a.y - b.y);
+	return d <= 1e-12 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y)) || d <= tol;
+}
+
 bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 {
 	out->n = 0;
@@ -80,24 +88,29 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 				p[j] = p[j - gaps[g]];
 			p[j] = t;
 		}
-	/* A turn counts only above a trillionth of the points' extent squared: points the
-	 * same but for rounding (a flat box's corners come in pairs; a sphere's outline sends
-	 * two points down each ray) turn any way, and kept, they let a vertex that is no
-	 * corner stay and leave an edge of length about 0, which points anywhere: a polygon
-	 * clipped by it loses nearly everything. What this drops lies within about a
-	 * trillionth of the extent of the hull. */
+	/* Points the same but for rounding (a flat box's corners come in pairs; a sphere's
+	 * outline sends two points down each ray) turn any way, and kept, they let a vertex
+	 * that is no corner stay and leave an edge of length about 0, which points anywhere:
+	 * a polygon clipped by it loses nearly everything. So a point within a trillionth of
+	 * its own size (and a thousand-trillionth of the points' extent, for those near 0) of
+	 * the last one kept is skipped. A tolerance on the turns instead, scaled by the
+	 * extent squared, cut real corners when a point lay near the light's plane, far out. */
 	double ylo = p[0].y, yhi = p[0].y;
 	for (int i = 1; i < m; i++)
 		ylo = fmin(ylo, p[i].y), yhi = fmax(yhi, p[i].y);
-	double ext = fmax(p[m - 1].x - p[0].x, yhi - ylo), turn = 1e-12 * ext * ext;
+	double floor_tol = 1e-15 * fmax(p[m - 1].x - p[0].x, yhi - ylo);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
-		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= turn)
+		if (k > 0 && same_point(h[k - 1], p[i], floor_tol))
+			continue;
+		while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)
 			k--;
 		h[k++] = p[i];
 	}
 	for (int i = m - 2, t = k + 1; i >= 0; i--) { /* upper hull */
-		while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= turn)
+		if (same_point(h[k - 1], p[i], floor_tol))
+			continue;
+		while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0)
 			k--;
 		h[k++] = p[i];
 	}

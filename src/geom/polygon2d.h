@@ -15,8 +15,8 @@ struct lx_poly {
 };
 
 /* Convex hull of n points (Andrew's monotone chain); collinear points dropped, and
- * points the same but for rounding (a turn within a trillionth of the points' extent
- * squared counts as none), so that no edge has a length of about 0. A hull
+ * points the same but for rounding (within a trillionth of their size), so that no edge
+ * has a length of about 0. A hull
  * of more than LX_POLY_MAX vertices becomes a 32-sided polygon around it (a superset):
  * false then. Clipping (below) does the same where a cut would add the 65th vertex. */
 bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);

@@ -185,8 +185,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		for (int d = 0; d < OCTAGON; d++)
 			if (sphere_range(dir[d], r3, centre, r, &l, &h))
 				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
-	} else if (id >= f->scene->plane_count) /* a cylinder's or cone's octagons; a box's own corners */
-		outline_bounds(f, m, id, b0, b1);
+	} else if (id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape != LX_BOX)
+		outline_bounds(f, m, id, b0, b1); /* a cylinder's or cone's octagons */
 	/* grown by the margin and cut to the rays the map serves */
 	double ex = margin[0], ey = margin[1];
 	double grow[OCTAGON] = {ex, ey, ex + ey, ex + ey};

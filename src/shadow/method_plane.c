@@ -1047,9 +1047,9 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 }
 
 /* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
- * casters in view, by their outlines (their surfaces are receivers no plane map serves), and the
- * visible part of each plane that needs it, within what the casters cover. False when a
- * point cannot be charted on G (a receiver behind the point light). */
+ * casters in view, by their outlines (their surfaces are receivers no plane map serves),
+ * and the visible part of each plane that needs it, within what the casters cover. False
+ * when a point cannot be charted on G (a receiver behind the point light). */
 static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *in_view,
 			    const bool *needs, struct lx_poly *want)
 {
