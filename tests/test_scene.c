@@ -561,7 +561,7 @@ static void round_outlines_hold_their_shapes(void **state)
 		for (int id = s.plane_count; id < f.object_count; id++) {
 			const struct lx_caster *c = &s.casters[id - s.plane_count];
 			vec3 x[LX_OUTLINE_POINTS], o = f.offset[id];
-			int n = lx_frame_object_outline(&f, id, x);
+			int n = lx_frame_object_outline(&f, id, false, x);
 			double r = c->size.x, h = c->size.y;
 			vec3 centre = v3_add(o, v3(0, c->shape == LX_SPHERE ? r : h / 2, 0));
 			bool inside_light = !f.light.directional && v3_len(v3_sub(f.light.position, centre)) <= r * 1.0001;
@@ -593,6 +593,16 @@ static void round_outlines_hold_their_shapes(void **state)
 				for (int k = 0; k < n; k++)
 					assert_true(x[k].x >= f.bmin[id].x - 2e-6 * r && x[k].x <= f.bmax[id].x + 2e-6 * r &&
 						    x[k].z >= f.bmin[id].z - 2e-6 * r && x[k].z <= f.bmax[id].z + 2e-6 * r);
+			if (c->shape == LX_SPHERE && !inside_light) { /* image_only: the near half, on the same rays */
+				vec3 y[LX_OUTLINE_POINTS];
+				assert_int_equal(lx_frame_object_outline(&f, id, true, y), 8);
+				for (int k = 0; k < 8; k++) {
+					vec3 a = f.light.directional ? f.light.direction : v3_sub(y[k], f.light.position);
+					vec3 b = f.light.directional ? v3_sub(x[k + 8], y[k]) : v3_sub(x[k + 8], f.light.position);
+					vec3 c3 = v3_cross(a, b);
+					assert_true(v3_len(c3) <= 1e-12 * v3_len(a) * v3_len(b));
+				}
+			}
 			if (c->shape == LX_SPHERE && !f.light.directional && !inside_light) {
 				vec3 to = v3_sub(centre, f.light.position), u = v3(0, 0, 0);
 				assert_true(v3_normalize(to, &u));

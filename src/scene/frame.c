@@ -299,14 +299,15 @@ bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[
  * outline within its box. */
 static void octagon(vec3 c, vec3 n, double r, vec3 *out)
 {
+	/* cos and sin of (k + 1/2) pi / 4 times 1 / cos(pi / 8): the corners lie at (+-1, +-t)
+	 * and (+-t, +-1) times r, t = tan(pi / 8) */
+	static const double t = 0.41421356237309503, u[8][2] = {{1, t}, {t, 1}, {-t, 1}, {-1, t}, {-1, -t}, {-t, -1}, {t, -1}, {1, -t}};
 	vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0), e1 = a, e2;
 	v3_normalize(v3_cross(n, a), &e1); /* |n x a| >= 0.6 for a unit n */
 	e2 = v3_cross(n, e1);
-	double R = r / cos(M_PI / 8) * (1 + 1e-6);
-	for (int k = 0; k < 8; k++) {
-		double t = (k + 0.5) * M_PI / 4;
-		out[k] = v3_add(c, v3_add(v3_scale(e1, R * cos(t)), v3_scale(e2, R * sin(t))));
-	}
+	double R = r * (1 + 1e-6);
+	for (int k = 0; k < 8; k++)
+		out[k] = v3_add(c, v3_add(v3_scale(e1, R * u[k][0]), v3_scale(e2, R * u[k][1])));
 }
 
 /* Around a sphere (centre c, radius r), 16 points whose hull holds it and whose image from
@@ -336,7 +337,7 @@ static bool sphere_outline(const struct lx_light *l, vec3 c, double r, vec3 *out
 	return true;
 }
 
-int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLINE_POINTS])
+int lx_frame_object_outline(const struct lx_frame *f, int id, bool image_only, vec3 pts[LX_OUTLINE_POINTS])
 {
 	int pc = f->scene->plane_count;
 	if (id >= pc) {
@@ -344,9 +345,9 @@ int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLIN
 		vec3 o = f->offset[id], up = v3(0, 1, 0);
 		double r = c->size.x, h = c->size.y;
 		switch (c->shape) {
-		case LX_SPHERE:
+		case LX_SPHERE: /* the far octagon lies on the near one's rays from the light */
 			if (sphere_outline(&f->light, v3_add(o, v3(0, r, 0)), r, pts))
-				return 16;
+				return image_only ? 8 : 16;
 			break;
 		case LX_CYLINDER:
 			octagon(o, up, r, pts);

@@ -83,8 +83,10 @@ bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[
  * from the light that touch it (a prism along a directional light's direction), whose
  * image is an octagon around the sphere's. The prism and pyramid lie within the box; the
  * frustum's corners may not, so a caller checks each point as it would the corners
- * (in front of the light or not). Returns the count, at most LX_OUTLINE_POINTS. */
+ * (in front of the light or not). image_only: the points for the image from the light
+ * alone (a sphere's near octagon: the far one lies on its rays). Returns the count, at
+ * most LX_OUTLINE_POINTS. */
 #define LX_OUTLINE_POINTS 16
-int lx_frame_object_outline(const struct lx_frame *f, int id, vec3 pts[LX_OUTLINE_POINTS]);
+int lx_frame_object_outline(const struct lx_frame *f, int id, bool image_only, vec3 pts[LX_OUTLINE_POINTS]);
 
 #endif

@@ -134,7 +134,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 		ls->casting |= 1ull << id; /* ids < LX_MAX_PLANES + LX_MAX_CASTERS = 40 */
 		ncasters++;
 		vec3 x[LX_OUTLINE_POINTS];
-		int k = lx_frame_object_outline(f, id, x);
+		int k = lx_frame_object_outline(f, id, false, x);
 		for (int j = 0; j < k; j++)
 			q[ncorners++] = m4_mul_point(&ls->view, x[j]);
 	}

@@ -109,7 +109,7 @@ static bool sphere_range(vec4 nn, vec4 dd, vec3 c, double r, double *lo, double 
 static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, double *b0, double *b1)
 {
 	vec3 x[LX_OUTLINE_POINTS];
-	int n = lx_frame_object_outline(f, id, x);
+	int n = lx_frame_object_outline(f, id, true, x);
 	double t0[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, t1[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
 	for (int k = 0; k < n; k++) {
 		vec4 c = m4_mul_point(m, x[k]);

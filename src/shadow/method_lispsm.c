@@ -36,7 +36,7 @@ static int body_points(const struct lx_frame *f, const struct lx_light_space *ls
 		if (!(ls->casting >> id & 1))
 			continue;
 		vec3 x[LX_OUTLINE_POINTS];
-		for (int k = 0, m = lx_frame_object_outline(f, id, x); k < m && n < max; k++) {
+		for (int k = 0, m = lx_frame_object_outline(f, id, false, x); k < m && n < max; k++) {
 			pts[n] = x[k];
 			caster[n++] = true;
 		}

@@ -224,7 +224,7 @@ static bool caster_outlines(const struct lx_frame *f, const struct plane_chart *
 		if (!lx_object_can_cast(f, id))
 			continue;
 		vec3 x[LX_OUTLINE_POINTS];
-		int n = lx_frame_object_outline(f, id, x);
+		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
 		whole[*nc] = in_chart(ch, x, n, pts + np); /* room: LX_OUTLINE_POINTS an object */
 		all &= whole[(*nc)++];
@@ -1057,7 +1057,7 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	int n = 0;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		vec3 x[LX_OUTLINE_POINTS];
-		int m = in_view[id] ? lx_frame_object_outline(f, id, x) : 0;
+		int m = in_view[id] ? lx_frame_object_outline(f, id, true, x) : 0;
 		for (int k = 0; k < m; k++)
 			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, &pts[n++]))
 				return false;

@@ -99,7 +99,7 @@ static bool xpsm_points(const struct lx_frame *f, const struct lx_light_space *l
 		}
 	for (int id = 0; id < f->object_count; id++) {
 		vec3 x[LX_OUTLINE_POINTS];
-		int n = ls->casting >> id & 1 ? lx_frame_object_outline(f, id, x) : 0;
+		int n = ls->casting >> id & 1 ? lx_frame_object_outline(f, id, false, x) : 0;
 		for (int k = 0; k < n; k++)
 			if (!to_space(RS, x[k], &pt->cas[pt->ncas++])) {
 				lx_shadow_warn(out, "xpsm: a caster reaches behind the point light; uniform this frame");
