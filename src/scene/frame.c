@@ -301,7 +301,8 @@ static void octagon(vec3 c, vec3 n, double r, vec3 *out)
 {
 	/* cos and sin of (k + 1/2) pi / 4 times 1 / cos(pi / 8): the corners lie at (+-1, +-t)
 	 * and (+-t, +-1) times r, t = tan(pi / 8) */
-	static const double t = 0.41421356237309503, u[8][2] = {{1, t}, {t, 1}, {-t, 1}, {-1, t}, {-1, -t}, {-t, -1}, {t, -1}, {1, -t}};
+	const double t = 0.41421356237309503; /* an automatic table: t is no constant in C */
+	const double u[8][2] = {{1, t}, {t, 1}, {-t, 1}, {-1, t}, {-1, -t}, {-t, -1}, {t, -1}, {1, -t}};
 	vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0), e1 = a, e2;
 	v3_normalize(v3_cross(n, a), &e1); /* |n x a| >= 0.6 for a unit n */
 	e2 = v3_cross(n, e1);

@@ -126,7 +126,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	lx_poly_hull(pts, n, &ls->receivers);
 	/* the casters that reach them: their outlines (lx_frame_object_outline: a box's
 	 * corners, tighter for round casters) */
-	int ncasters = 0, ncorners = 0;
+	int ncasters = 0, npoints = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id) ||
 		    !reaches_receivers(ls, f->bmin[id], f->bmax[id], cone, (double[4]){rx0, ry0, rx1, ry1}))
@@ -136,10 +136,10 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 		vec3 x[LX_OUTLINE_POINTS];
 		int k = lx_frame_object_outline(f, id, false, x);
 		for (int j = 0; j < k; j++)
-			q[ncorners++] = m4_mul_point(&ls->view, x[j]);
+			q[npoints++] = m4_mul_point(&ls->view, x[j]);
 	}
-	n = project_points(ls, q, ncorners, pts, &dlo, &dhi);
-	ls->casters_unbounded = n < ncorners; /* a caster reaching behind the light projects everywhere */
+	n = project_points(ls, q, npoints, pts, &dlo, &dhi);
+	ls->casters_unbounded = n < npoints; /* a caster reaching behind the light projects everywhere */
 	ls->znear = ls->casters_unbounded ? -INFINITY : dlo;
 	lx_poly_hull(pts, n, &ls->casters);
 	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond
