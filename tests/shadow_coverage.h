@@ -72,7 +72,7 @@ static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 
 		vec3 axis = cs->shape == LX_SPHERE ? v3(o.x, o.y + r, o.z) : v3(o.x, c.y, o.z);
 		vec3 d = v3_sub(c, axis);
 		double len = v3_len(d);
-		double reach = cs->shape == LX_SPHERE ? r : cs->shape == LX_CYLINDER ? r : r * (1 - (c.y - o.y) / h);
+		double reach = cs->shape == LX_CONE ? r * (1 - (c.y - o.y) / h) : r;
 		if (!(len <= reach) || !(len > 1e-9))
 			continue;
 		*out = surface ? v3_add(axis, v3_scale(d, reach / len)) : c;

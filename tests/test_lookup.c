@@ -85,8 +85,9 @@ static double round_gap(const struct lx_caster *cs, vec3 o, vec3 q)
 static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
 {
 	const struct lx_caster *cs = &f->scene->casters[c - f->scene->plane_count];
-	if (!caster_box_shadows(f, c, p) || cs->shape == LX_SPHERE || cs->shape == LX_BOX)
-		return caster_box_shadows(f, c, p);
+	bool box = caster_box_shadows(f, c, p);
+	if (!box || cs->shape == LX_SPHERE || cs->shape == LX_BOX)
+		return box;
 	const struct lx_light *l = &f->light;
 	vec3 d = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p), o = f->offset[c];
 	double lo = 1e-9, hi = l->directional ? 1e9 : 1, y0 = o.y, y1 = o.y + cs->size.y;
