@@ -12,6 +12,14 @@ struct setup {
 	struct lx_shadow_result res;
 };
 
+/* The radius at height y of caster id's exact shape, a cylinder or a cone standing on
+ * f->offset[id] (its mesh lies inside it). */
+static inline double caster_radius_at(const struct lx_frame *f, int id, double y)
+{
+	const struct lx_caster *c = &f->scene->casters[id - f->scene->plane_count];
+	return c->shape == LX_CONE ? c->size.x * (1 - (y - f->offset[id].y) / c->size.y) : c->size.x;
+}
+
 /* Builds s->scene's meshes and frame at time t and runs the method's build with options
  * o; false (and nothing to free) when the camera is degenerate. Free with
  * lx_meshes_free(&s->meshes). */

@@ -4,7 +4,8 @@
  * scene box (on a plane, or in a caster's box), the map that serves r
  * (lx_shadow_select_map for r's object, the shader's choice) holds c
  * on the same lixel with -1 <= depth(c) <= depth(r) <= 1 (a map that declares pancaking
- * clamps depth(c) to -1 as its shadow pass does). Include after test_util.h. */
+ * clamps depth(c) to -1 as its shadow pass does). Include after test_util.h and
+ * method_fixture.h. */
 #ifndef LX_SHADOW_COVERAGE_H
 #define LX_SHADOW_COVERAGE_H
 #include "plane_optimal.h"
@@ -59,7 +60,7 @@ static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 
 {
 	const struct lx_caster *cs = &f->scene->casters[id - f->scene->plane_count];
 	vec3 o = f->offset[id];
-	double r = cs->size.x, h = cs->size.y;
+	double r = cs->size.x;
 	bool surface = test_rand(seed) < 0.5;
 	for (int tries = 0; tries < 64; tries++) {
 		vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
@@ -72,7 +73,7 @@ static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 
 		vec3 axis = cs->shape == LX_SPHERE ? v3(o.x, o.y + r, o.z) : v3(o.x, c.y, o.z);
 		vec3 d = v3_sub(c, axis);
 		double len = v3_len(d);
-		double reach = cs->shape == LX_CONE ? r * (1 - (c.y - o.y) / h) : r;
+		double reach = cs->shape == LX_SPHERE ? r : caster_radius_at(f, id, c.y);
 		if (!(len <= reach) || !(len > 1e-9))
 			continue;
 		*out = surface ? v3_add(axis, v3_scale(d, reach / len)) : c;

@@ -70,12 +70,12 @@ static bool caster_box_shadows(const struct lx_frame *f, int c, vec3 p)
 	return t0 <= t1;
 }
 
-/* How far q lies outside cylinder or cone cs standing at o, across its axis (<= 0:
- * within its radius at q's height). */
-static double round_gap(const struct lx_caster *cs, vec3 o, vec3 q)
+/* How far q lies outside cylinder or cone id, across its axis (<= 0: within its radius
+ * at q's height). */
+static double round_gap(const struct lx_frame *f, int id, vec3 q)
 {
-	double reach = cs->shape == LX_CONE ? cs->size.x * (1 - (q.y - o.y) / cs->size.y) : cs->size.x;
-	return hypot(q.x - o.x, q.z - o.z) - reach;
+	vec3 o = f->offset[id];
+	return hypot(q.x - o.x, q.z - o.z) - caster_radius_at(f, id, q.y);
 }
 
 /* Whether the segment from p towards the light meets caster c's exact shape (its mesh
@@ -100,12 +100,12 @@ static bool caster_shadows(const struct lx_frame *f, int c, vec3 p)
 		return false;
 	for (int i = 0; i < 200; i++) {
 		double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-		if (round_gap(cs, o, v3_add(p, v3_scale(d, m1))) < round_gap(cs, o, v3_add(p, v3_scale(d, m2))))
+		if (round_gap(f, c, v3_add(p, v3_scale(d, m1))) < round_gap(f, c, v3_add(p, v3_scale(d, m2))))
 			hi = m2;
 		else
 			lo = m1;
 	}
-	return round_gap(cs, o, v3_add(p, v3_scale(d, 0.5 * (lo + hi)))) <= 1e-9;
+	return round_gap(f, c, v3_add(p, v3_scale(d, 0.5 * (lo + hi)))) <= 1e-9;
 }
 
 /* What check_scene counted. */

@@ -149,6 +149,12 @@ static void reference_image_is_deterministic_across_threads(void **state)
  * (any triangle blocks), while in lixel a plane whose lit side faces the light casts
  * nothing, so every method lights it (results.md, the table at 1920x1080). This pins
  * the reference's side of that: the row is there, on the slab's top, and shadowed. */
+/* Whether triangle tri (-1: none) is on the slab's top face. */
+static bool on_slab_top(const struct lx_raycaster *rc, int tri, int slab)
+{
+	return tri >= 0 && lx_raycaster_object(rc, tri) == slab && lx_raycaster_normal(rc, tri).y > 0.99;
+}
+
 static void table_top_shades_the_slab_seen_through_the_gap(void **state)
 {
 	(void)state;
@@ -163,7 +169,7 @@ static void table_top_shades_the_slab_seen_through_the_gap(void **state)
 	for (int y = 0; y < f.view.height; y++) { /* the middle column, through the table's front */
 		vec3 p;
 		int tri = lx_reference_pixel(&f, rc, f.view.width / 2, y, &p);
-		if (tri >= 0 && lx_raycaster_object(rc, tri) == slab && lx_raycaster_normal(rc, tri).y > 0.99)
+		if (on_slab_top(rc, tri, slab))
 			rows++, row = y;
 	}
 	assert_int_equal(rows, 1);
@@ -171,7 +177,7 @@ static void table_top_shades_the_slab_seen_through_the_gap(void **state)
 	for (int x = 0; x < f.view.width; x++) {
 		vec3 p;
 		int tri = lx_reference_pixel(&f, rc, x, row, &p);
-		if (tri < 0 || lx_raycaster_object(rc, tri) != slab || !(lx_raycaster_normal(rc, tri).y > 0.99))
+		if (!on_slab_top(rc, tri, slab))
 			continue;
 		seen++;
 		assert_true(p.y < 0.75 && p.y > 0.748); /* the slab's top, under the table top */
