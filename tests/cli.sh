@@ -104,6 +104,21 @@ if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png"
 else
   no "default render failed: $(cat "$tmp/stderr")"
 fi
+# the miner's lamp (the light at the eye): every shadow lies behind what casts it, so no
+# method draws a map or looks one up, and the image matches the reference; the text says why
+for m in plane uniform lispsm; do
+  if "$lixel" render --config miner --method $m --measure --json --size 160x120 --frames 1 --out "$tmp/m.png" \
+      >"$tmp/json" 2>"$tmp/stderr"; then
+    grep -q '"rendered": true' "$tmp/json" && no "miner's lamp, $m: a map drawn: $(cat "$tmp/json")" || ok
+    for key in '"lookup_pct": 0[,}]' '"mismatch_pct": 0[,}]' '"warnings": \["light: the point light is at the eye'; do
+      grep -q "$key" "$tmp/json" && ok || no "miner's lamp, $m: JSON lacks $key: $(cat "$tmp/json")"
+    done
+  else
+    no "miner's lamp, $m: render failed: $(cat "$tmp/stderr")"
+  fi
+done
+"$lixel" render --config miner --size 160x120 --frames 1 --out "$tmp/m.png" >"$tmp/text" 2>&1 &&
+  grep -q '^warning: light: the point light is at the eye' "$tmp/text" && ok || no "miner's lamp: the text: $(cat "$tmp/text")"
 # the paper's square maps on request
 "$lixel" render --region-shape square --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>&1 &&
   grep -q '"name": "floor", "x": [0-9]*, "y": [0-9]*, "w": 350, "h": 350' "$tmp/json" && ok ||

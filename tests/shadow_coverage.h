@@ -4,10 +4,13 @@
  * scene box (on a plane, or in a caster's box), the map that serves r
  * (lx_shadow_select_map for r's object, the shader's choice) holds c
  * on the same lixel with -1 <= depth(c) <= depth(r) <= 1 (a map that declares pancaking
- * clamps depth(c) to -1 as its shadow pass does). Include after test_util.h and
- * method_fixture.h. */
+ * clamps depth(c) to -1 as its shadow pass does). With the light at the eye
+ * (lx_shadows_hidden) every such r lies behind its c as the eye sees it: no map may be
+ * drawn, and no pair is checked (test_reference's hidden_shadows_are_hidden checks that
+ * rule against the reference). Include after test_util.h and method_fixture.h. */
 #ifndef LX_SHADOW_COVERAGE_H
 #define LX_SHADOW_COVERAGE_H
+#include "light_space.h"
 #include "plane_optimal.h"
 #include "shadow_method.h"
 
@@ -90,6 +93,12 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 {
 	long checked = 0;
 	double size = v3_len(v3_sub(f->scene_max, f->scene_min));
+	if (lx_shadows_hidden(f)) {
+		for (int m = 0; m < res->map_count; m++)
+			if (res->maps[m].rendered)
+				fail_msg("%s: the light is at the eye, yet map %d is drawn", what, m);
+		return 0;
+	}
 	for (int id = plane_count; id < f->object_count; id++)
 		for (int k = 0; k < samples; k++) {
 			vec3 c;

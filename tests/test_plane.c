@@ -191,7 +191,7 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.05 - test_rand(&seed), test_rand(&seed) - 0.5),
 							 &s.scene.light.direction));
 			} else if (k % 7 == 0)
-				s.scene.light.position = s.scene.camera.eye; /* miner's lamp */
+				s.scene.light.position = v3_add(s.scene.camera.eye, v3(0, 0.05, 0)); /* a lamp on a helmet */
 			else
 				s.scene.light.position = v3(test_rand(&seed) * 14 - 7, 0.2 + test_rand(&seed) * 8, test_rand(&seed) * 14 - 4.5);
 		}
@@ -439,7 +439,7 @@ static void every_shadow_is_covered(void **state)
 struct degenerate {
 	const char *what;
 	vec3 eye, at;
-	int light; /* 0 point at pos, 1 directional along pos, 2 at the eye */
+	int light; /* 0 point at pos, 1 directional along pos, 2 at the eye + pos */
 	vec3 pos;
 	const char *warning; /* a fragment expected among the warnings, or NULL */
 };
@@ -458,7 +458,8 @@ static void degenerate_configurations(void **state)
 		{"looking up: two corner rays miss the floor", {0, 0.6, 4.5}, {0, 2.5, -5}, 0, {2.5, 6, 3}, NULL},
 		{"floor seen edge-on", {0, 0, 6}, {0, 0, -5}, 0, {2.5, 6, 3}, "plane floor is seen edge-on"},
 		{"wall seen edge-on", {-3, 2, -5}, {3, 1, -5}, 0, {2.5, 6, 3}, "plane wall is seen edge-on"},
-		{"miner's lamp", {0.5, 2.2, 5}, {0, 0.5, -1}, 2, {0, 0, 0}, NULL},
+		{"miner's lamp", {0.5, 2.2, 5}, {0, 0.5, -1}, 2, {0, 0, 0}, "the point light is at the eye"},
+		{"lamp 5 cm above the eye", {0.5, 2.2, 5}, {0, 0.5, -1}, 2, {0, 0.05, 0}, NULL},
 		{"directional light", {0, 2, 6}, {0, 0.8, 0}, 1, {-0.4, -1, -0.3}, NULL},
 		{"grazing directional light", {0, 2, 6}, {0, 0.8, 0}, 1, {1, -0.0001, 0}, "plane floor: the light grazes"},
 		{"camera 2 cm above the floor", {0.3, 0.02, 2}, {0, 0.01, -3}, 0, {2.5, 6, 3}, NULL},
@@ -475,7 +476,7 @@ static void degenerate_configurations(void **state)
 			s.scene.light.directional = true;
 			assert_true(v3_normalize(cases[i].pos, &s.scene.light.direction));
 		} else
-			s.scene.light.position = cases[i].light == 2 ? cases[i].eye : cases[i].pos;
+			s.scene.light.position = cases[i].light == 2 ? v3_add(cases[i].eye, cases[i].pos) : cases[i].pos;
 		assert_true(build(&s, "plane", 320, 240, 0.4));
 		check_sampling(&s, cases[i].what, &stretched);
 		char ws[512] = "";

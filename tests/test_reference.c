@@ -1,4 +1,5 @@
 #include "light_image.h"
+#include "light_space.h"
 #include "metrics.h"
 #include "reference.h"
 #include "soft_reference.h"
@@ -118,6 +119,79 @@ static void scene_frame(void (*scene)(struct lx_scene *), struct lx_scene *s, st
 	scene(s);
 	assert_true(lx_meshes_build(s, m));
 	assert_true(lx_frame_setup(f, s, m, 0, w, h, err, sizeof err));
+}
+
+/* Pixels the reference shadows for frame f (w x h) among those whose four neighbours see
+ * the same object: off the objects' outlines, where a pixel's ray can graze an edge and
+ * the ray caster decides by rounding (the table top flush with its slab, seen from
+ * below: a ray past the slab's edge onto the top, and the shadow ray back along it). */
+static long reference_shadowed(const struct lx_frame *f, int w, int h)
+{
+	long n = (long)w * h, shadowed = 0;
+	int16_t *obj = malloc((size_t)n * sizeof(int16_t));
+	uint8_t *sh = malloc((size_t)n);
+	assert_true(obj && sh && lx_reference_image(f, obj, sh, 2));
+	for (int y = 1; y < h - 1; y++)
+		for (int x = 1; x < w - 1; x++) {
+			long i = (long)y * w + x;
+			shadowed += obj[i] != LX_NO_OBJECT && sh[i] == 1 && obj[i - 1] == obj[i] && obj[i + 1] == obj[i] &&
+				    obj[i - w] == obj[i] && obj[i + w] == obj[i];
+		}
+	free(obj), free(sh);
+	return shadowed;
+}
+
+/* The rule that lets every method draw no map (lx_shadows_hidden): with the point light
+ * at the eye, over random views of both built-in scenes, the exact reference shadows no
+ * pixel it sees; 20 cm above the eye the rule no longer holds, and shadows come into view.
+ * A light a nanometre off the eye still counts as at it; a caster reaching between the
+ * eye's plane and the near plane (the eye on the box's top, looking along it) turns the
+ * rule off. */
+static void hidden_shadows_are_hidden(void **state)
+{
+	(void)state;
+	enum { W = 160, H = 120 };
+	uint64_t seed = 77;
+	int hidden = 0, seen_off = 0;
+	char err[256];
+	for (int k = 0; k < 24; k++) {
+		struct lx_scene s;
+		struct lx_scene_meshes m;
+		struct lx_frame f;
+		k % 2 ? lx_scene_table(&s) : lx_scene_default(&s);
+		s.camera.eye = v3(test_rand(&seed) * 8 - 4, 0.3 + test_rand(&seed) * 4, test_rand(&seed) * 8 - 3);
+		s.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 1.5, test_rand(&seed) * 4 - 4);
+		s.light = lx_light_white(v3_add(s.camera.eye, v3(0, 1e-9, 0)));
+		assert_true(lx_meshes_build(&s, &m));
+		assert_true(lx_frame_setup(&f, &s, &m, 0.7 * k, W, H, err, sizeof err));
+		if (lx_shadows_hidden(&f)) {
+			hidden++;
+			long n = reference_shadowed(&f, W, H);
+			if (n != 0)
+				fail_msg("view %d: the light at the eye, yet the reference shadows %ld pixels in sight", k, n);
+		}
+		s.light = lx_light_white(v3_add(s.camera.eye, v3(0, 0.2, 0)));
+		assert_true(lx_frame_setup(&f, &s, &m, 0.7 * k, W, H, err, sizeof err));
+		assert_false(lx_shadows_hidden(&f));
+		seen_off += reference_shadowed(&f, W, H) > 0;
+		lx_meshes_free(&m);
+	}
+	print_message("%d of 24 views hidden with the light at the eye; 20 cm above it, %d show a shadow\n", hidden,
+		      seen_off);
+	assert_true(hidden >= 20 && seen_off >= 12);
+	/* the eye 0.1 mm above the default box's top, looking along it */
+	struct lx_scene s;
+	struct lx_scene_meshes m;
+	struct lx_frame f;
+	lx_scene_default(&s);
+	assert_true(lx_meshes_build(&s, &m));
+	assert_true(lx_frame_setup(&f, &s, &m, 0, W, H, err, sizeof err));
+	int box = s.plane_count + 1;
+	vec3 top = v3(0.5 * (f.bmin[box].x + f.bmax[box].x), f.bmax[box].y + 1e-4, 0.5 * (f.bmin[box].z + f.bmax[box].z));
+	s.camera.eye = top, s.camera.at = v3_add(top, v3(-1, 0, 0)), s.light = lx_light_white(top);
+	assert_true(lx_frame_setup(&f, &s, &m, 0, W, H, err, sizeof err));
+	assert_false(lx_shadows_hidden(&f));
+	lx_meshes_free(&m);
 }
 
 static void reference_image_is_deterministic_across_threads(void **state)
@@ -640,6 +714,7 @@ int main(void)
 		cmocka_unit_test(shadows_fall_where_geometry_says),
 		cmocka_unit_test(bvh_depth_cap_loses_nothing),
 		cmocka_unit_test(reference_image_is_deterministic_across_threads),
+		cmocka_unit_test(hidden_shadows_are_hidden),
 		cmocka_unit_test(hinted_rays_answer_as_plain_ones),
 		cmocka_unit_test(table_top_shades_the_slab_seen_through_the_gap),
 		cmocka_unit_test(mismatch_counts_each_kind),

@@ -250,7 +250,7 @@ static void xpsm_degenerate_cases_warn(void **state)
 	const struct {
 		const char *what;
 		vec3 eye, at;
-		int light; /* 0: point at v, 1: directional along v, 2: point at the eye */
+		int light; /* 0: point at v, 1: directional along v, 2: point at the eye + v */
 		vec3 v;
 		const char *warning;
 	} cases[] = {
@@ -258,7 +258,9 @@ static void xpsm_degenerate_cases_warn(void **state)
 		 "the view runs along the light's rays (within 1.1 degrees, the light behind"},
 		{"directional light against the view (dueling frusta)", {0, 2, 6}, {0, 0.8, 0}, 1, {0, 1.2, 6},
 		 "the light facing the viewer"},
-		{"miner's lamp: the point light at the eye", {0, 2, 6}, {0, 0.8, 0}, 2, {0, 0, 0}, "runs along the light's rays"},
+		/* 1 cm above the eye: at the eye no map is drawn at all (lx_shadows_hidden) */
+		{"miner's lamp: the point light 1 cm above the eye", {0, 2, 6}, {0, 0.8, 0}, 2, {0, 0.01, 0},
+		 "runs along the light's rays"},
 		{"the point light on the floor", {0, 2, 6}, {0, 0.8, 0}, 0, {0.5, 0, 1}, "lies within 0.02 m of plane floor"},
 		{"a point light 1e-9 m above the floor", {0, 2, 6}, {0, 0.8, 0}, 0, {0.5, 1e-9, 1}, "lies within 0.02 m of plane floor"},
 		{"the point light inside the box", {0, 2, 6}, {0, 0.8, 0}, 0, {1.4, 1.0, -0.6}, "behind the point light"},
@@ -274,7 +276,7 @@ static void xpsm_degenerate_cases_warn(void **state)
 		if (cases[i].light == 1)
 			assert_true(v3_normalize(cases[i].v, &s.scene.light.direction));
 		else
-			s.scene.light.position = cases[i].light == 2 ? cases[i].eye : cases[i].v;
+			s.scene.light.position = cases[i].light == 2 ? v3_add(cases[i].eye, cases[i].v) : cases[i].v;
 		u = s;
 		assert_true(build(&s, "xpsm", 320, 240, 0.3));
 		assert_true(build(&u, "uniform", 320, 240, 0.3));

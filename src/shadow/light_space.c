@@ -85,11 +85,54 @@ static bool reaches_receivers(const struct lx_light_space *ls, vec3 lo, vec3 hi,
 	return atan2(sqrt(q.x * q.x + q.y * q.y), depth) - asin(r / dist) <= cone; /* r / dist < 1 */
 }
 
+bool lx_shadows_hidden(const struct lx_frame *f)
+{
+	const struct lx_view *v = &f->view;
+	if (f->light.directional)
+		return false;
+	/* A light d from the eye moves a shadow's edge off its caster's outline by at most
+	 * d / near radians (the caster lies beyond the near plane), and a radian spans at most
+	 * f (1 + t^2 (1 + a^2)) pixels, at the image's corners (f: the focal length in pixels,
+	 * t = tan(fovy / 2), a the aspect). fovy < pi and height >= 1: t and f are finite. */
+	double t = tan(0.5 * v->fovy), a = (double)v->width / v->height;
+	double px_per_rad = 0.5 * v->height / t * (1 + t * t * (1 + a * a));
+	if (!(v3_len(v3_sub(f->light.position, v->eye)) * px_per_rad <= LX_HIDDEN_SHADOW_PX * v->near))
+		return false;
+	/* The segment from a point in sight to the eye runs, in front of the near plane, inside
+	 * the pyramid from the eye to the near plane's window: no caster's box may meet it. A
+	 * box misses it when it lies farther from the eye than the window's corners, or all its
+	 * corners lie outside one of the pyramid's six planes (the four sides pass through the
+	 * eye, so they hold behind it too). */
+	double reach = v->near * sqrt(1 + t * t * (1 + a * a)); /* the eye to a corner of the window */
+	for (int id = 0; id < f->object_count; id++) {
+		if (!lx_object_can_cast(f, id))
+			continue;
+		vec3 lo = f->bmin[id], hi = f->bmax[id], e = v->eye;
+		vec3 gap = v3(fmax(fmax(lo.x - e.x, e.x - hi.x), 0), fmax(fmax(lo.y - e.y, e.y - hi.y), 0),
+			      fmax(fmax(lo.z - e.z, e.z - hi.z), 0));
+		if (v3_len(gap) > reach)
+			continue;
+		int out[6] = {0};
+		for (int k = 0; k < 8; k++) {
+			vec3 x = v3_box_corner(f->bmin[id], f->bmax[id], k);
+			vec4 c = m4_mul_point(&v->view_proj, x);
+			double along = v3_dot(v3_sub(x, v->eye), v->dir);
+			out[0] += c.x > c.w, out[1] += -c.x > c.w, out[2] += c.y > c.w, out[3] += -c.y > c.w;
+			out[4] += along >= v->near, out[5] += along <= 0;
+		}
+		if (out[0] < 8 && out[1] < 8 && out[2] < 8 && out[3] < 8 && out[4] < 8 && out[5] < 8)
+			return false;
+	}
+	return true;
+}
+
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 {
 	*ls = (struct lx_light_space){.directional = f->light.directional, .empty = true};
 	ls->size = v3_len(v3_sub(f->scene_max, f->scene_min));
 	ls->tiny = 1e-9 * (ls->size + 1e-300);
+	if (lx_shadows_hidden(f))
+		return; /* every shadow behind its caster: nothing to draw */
 	vec3 *rec = ls->receiver_pts;
 	int nrec = ls->receiver_count = lx_light_space_receivers(f, rec);
 	if (nrec == 0)

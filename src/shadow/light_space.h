@@ -28,6 +28,16 @@ struct lx_light_space {
 /* Whether object id can cast: casters always, planes only when their back face is lit
  * (the shadow passes write back faces). */
 bool lx_object_can_cast(const struct lx_frame *f, int id);
+/* Whether no shadow of the frame's light can be seen: a point light at the eye (a
+ * miner's lamp, a flash on the camera) lights every point the eye sees along the very
+ * ray the eye sees it by, so each shadow lies behind what casts it. Holds when the light
+ * is so near the eye that a shadow's edge stands off its caster's outline by at most
+ * LX_HIDDEN_SHADOW_PX pixels anywhere in the image, and no object that casts reaches into
+ * the pyramid from the eye to the near plane's window (such an object is clipped from the
+ * view yet blocks the light; the eye inside a caster's box is such a case). Every method
+ * then draws no map: no pass, no lookup. */
+#define LX_HIDDEN_SHADOW_PX 1e-3
+bool lx_shadows_hidden(const struct lx_frame *f);
 /* The receiver volume's vertices (the view frustum clipped to the box of what is in view
  * and lit, f->lit_min and lit_max); returns
  * the count, at most LX_CONVEX_MAX_POINTS. */

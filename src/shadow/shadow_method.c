@@ -267,6 +267,9 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 		m->build(f, atlas, o, out);
 	for (int i = 0; i < f->note_count; i++)
 		lx_shadow_warn(out, "%s", f->notes[i]);
+	if (lx_shadows_hidden(f))
+		lx_shadow_warn(out, "light: the point light is at the eye, so every shadow lies behind what casts it; "
+				    "no shadow map is drawn");
 	int w[LX_ATLAS_MAX_REGIONS] = {0}, h[LX_ATLAS_MAX_REGIONS] = {0};
 	for (int i = 0; i < out->map_count; i++) {
 		const struct lx_shadow_map *map = &out->maps[i];
