@@ -212,12 +212,11 @@ static bool box_in_chart(const struct lx_frame *f, const struct plane_chart *ch,
 
 /* The casters' outlines in the light image (lx_frame_object_outline's points, caster c's
  * from first[c], first[c + 1] - first[c] of them, in object order; whole[c] false for one
- * that reaches behind the light image, its points then meaningless), and false when one
- * does (then the casters bound nothing). */
-static bool caster_outlines(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
+ * that reaches behind the light image, its points then meaningless: casters_bound takes
+ * its clipped footprint instead). */
+static void caster_outlines(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
 			    int *first, int *nc)
 {
-	bool all = true;
 	int np = 0;
 	*nc = 0;
 	for (int id = 0; id < f->object_count; id++) {
@@ -226,12 +225,10 @@ static bool caster_outlines(const struct lx_frame *f, const struct plane_chart *
 		vec3 x[LX_OUTLINE_POINTS];
 		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
-		whole[*nc] = in_chart(ch, x, n, pts + np); /* room: LX_OUTLINE_POINTS an object */
-		all &= whole[(*nc)++];
+		whole[(*nc)++] = in_chart(ch, x, n, pts + np); /* room: LX_OUTLINE_POINTS an object */
 		np += n;
 	}
 	first[*nc] = np;
-	return all;
 }
 
 /* A_l's twist and mirror: a twist by a multiple of 90 degrees (a level camera facing the
@@ -316,9 +313,12 @@ static bool exact_outline(const struct lx_frame *f, int i, int id)
 /* The footprint on plane i of object id when its corners' shadows do not all lie in front
  * of the eye (a light facing the camera throws shadows past it): the shadows' hull on the
  * plane, clipped to the near plane, in window coordinates. Bit e of *cut marks edge e as
- * the clip's (no shadow edge). False when a corner lies level with a point light or
- * above it (its shadow does not fall on the plane), or nothing is left in front. */
-static bool footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+ * the clip's (no shadow edge). FOOT_LEVEL when a corner lies level with a point light or
+ * beyond it (its shadow does not fall on the plane: the footprint is unbounded, or
+ * nothing, caster_reach tells which), FOOT_EMPTY when nothing is left in front, FOOT_OPEN
+ * when rounding leaves no bound. */
+enum foot { FOOT_POLYGON, FOOT_EMPTY, FOOT_OPEN, FOOT_LEVEL };
+static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
 	const struct lx_light *L = &f->light;
@@ -331,7 +331,7 @@ static bool footprint_clipped(const struct lx_frame *f, int i, int id, struct lx
 		vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
 		double dc = v4_dot_point(pi, c);
 		if (L->directional ? !(dn < -1e-9) : !(dl - dc > 1e-9 * (1 + fabs(dl))))
-			return false;
+			return FOOT_LEVEL;
 		w[k] = L->directional ? v3_sub(c, v3_scale(L->direction, dc / dn))
 				      : v3_add(L->position, v3_scale(v3_sub(c, L->position), dl / (dl - dc)));
 		vec3 r = v3_sub(w[k], P->corner); /* coordinates on the plane: edge1, edge2 are independent */
@@ -363,10 +363,31 @@ static bool footprint_clipped(const struct lx_frame *f, int i, int id, struct lx
 	out->n = 0;
 	for (int v = 0; v < m; v++) {
 		if (!(h[v].w > 0))
-			return false;
+			return FOOT_OPEN; /* in front of the near plane w > 0: rounding, and no bound */
 		out->v[out->n++] = (vec2){(h[v].x / h[v].w + 1) * 0.5 * f->view.width, (h[v].y / h[v].w + 1) * 0.5 * f->view.height};
 	}
-	return out->n >= 3;
+	return out->n >= 3 ? FOOT_POLYGON : FOOT_EMPTY;
+}
+
+/* Where caster id can shadow the visible part of plane i, for one whose outline reaches
+ * behind the chart's light image (its shadow passes the eye, or it reaches the light's
+ * level): FOOT_POLYGON with its clipped footprint in *out, FOOT_EMPTY when it shadows
+ * nothing there (its shadow lies wholly behind the eye, or it lies wholly level with the
+ * point light or beyond it, so that no ray from the light through it meets the plane),
+ * FOOT_OPEN when its shadow reaches the plane's horizon (it straddles the light's level). */
+static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+{
+	enum foot r = footprint_clipped(f, i, id, out, cut);
+	if (r != FOOT_LEVEL)
+		return r;
+	if (f->light.directional)
+		return FOOT_OPEN; /* a light not travelling towards the plane: no map asks (chart_usable) */
+	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
+	double dl = v4_dot_point(pi, f->light.position);
+	for (int k = 0; k < 8; k++)
+		if (dl - v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) > 1e-9 * (1 + fabs(dl)))
+			return FOOT_OPEN; /* one corner below the light, another level with it or beyond */
+	return FOOT_EMPTY;
 }
 
 /* The footprints on plane i of the other planes that lie over it and whose lit side faces
@@ -383,7 +404,8 @@ static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart 
 			continue;
 		vec2 pts[8];
 		cuts[n] = 0;
-		if (box_in_chart(f, ch, id, pts) ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3 : footprint_clipped(f, i, id, &feet[n], &cuts[n]))
+		if (box_in_chart(f, ch, id, pts) ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3
+						 : footprint_clipped(f, i, id, &feet[n], &cuts[n]) == FOOT_POLYGON)
 			exact[n++] = true;
 	}
 	return n;
@@ -513,6 +535,70 @@ static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *f
 	}
 }
 
+/* A caster's clipped footprint (caster_reach), window coordinates: at most the hull of
+ * its box's 8 corners' shadows cut by one plane. */
+struct reach {
+	enum foot kind;
+	unsigned cut;
+	int n;
+	vec2 v[LX_OUTLINE_POINTS];
+};
+
+static struct lx_poly reach_poly(const struct reach *r)
+{
+	struct lx_poly p = {.n = r->n};
+	memcpy(p.v, r->v, (size_t)r->n * sizeof(vec2));
+	return p;
+}
+
+/* What the casters can shadow of plane i, in window coordinates, for its wanted rays: the
+ * hull of the outlines of the casters charted whole and of the clipped footprints of the
+ * others (a light facing the camera throws shadows past the eye; a caster beyond the
+ * light's level throws none on the plane); false when one reaches the plane's horizon
+ * (no bound: every visible ray is wanted). reach[c]: the others' footprints. */
+static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, const bool *whole, const int *ids,
+			  const int *first, int nc, struct reach *reach, struct lx_poly *cast)
+{
+	vec2 all[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
+	int n = 0;
+	bool bounded = true;
+	for (int c = 0; c < nc; c++) {
+		reach[c].kind = FOOT_EMPTY, reach[c].n = 0;
+		if (whole[c]) {
+			memcpy(all + n, pts + first[c], (size_t)(first[c + 1] - first[c]) * sizeof(vec2));
+			n += first[c + 1] - first[c];
+			continue;
+		}
+		struct lx_poly fp;
+		reach[c].kind = caster_reach(f, i, ids[c], &fp, &reach[c].cut);
+		if (reach[c].kind == FOOT_POLYGON && fp.n > LX_OUTLINE_POINTS)
+			reach[c].kind = FOOT_OPEN; /* cannot happen: 8 corners cut once */
+		bounded &= reach[c].kind != FOOT_OPEN;
+		if (reach[c].kind != FOOT_POLYGON)
+			continue;
+		reach[c].n = fp.n;
+		memcpy(reach[c].v, fp.v, (size_t)fp.n * sizeof(vec2));
+		memcpy(all + n, fp.v, (size_t)fp.n * sizeof(vec2));
+		n += fp.n;
+	}
+	if (bounded)
+		lx_poly_hull(all, n, cast);
+	return bounded;
+}
+
+/* A clipped footprint's part on the visible plane among the chart's footprints, which
+ * the pieces must hold (plane_pieces). */
+static void reach_foot(struct plane_chart *ch, const struct reach *r)
+{
+	struct lx_poly one = reach_poly(r), on;
+	lx_poly_intersect(&ch->win, &one, &on);
+	if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
+		return;
+	to_chart(ch, &on);
+	double *b = ch->foot[ch->feet++];
+	lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+}
+
 static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
 			const struct lx_method_options *o, struct lx_shadow_result *out, struct plane_chart *ch)
 {
@@ -526,11 +612,11 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS)];
 	bool whole[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int nc, ids[LX_MAX_PLANES + LX_MAX_CASTERS], first[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
-	bool bounded = caster_outlines(f, ch, pts, whole, ids, first, &nc);
-	if (bounded) {
-		lx_poly_hull(pts, first[nc], &cast);
+	struct reach reach[LX_MAX_PLANES + LX_MAX_CASTERS];
+	caster_outlines(f, ch, pts, whole, ids, first, &nc);
+	bool bounded = casters_bound(f, i, pts, whole, ids, first, nc, reach, &cast);
+	if (bounded)
 		lx_poly_intersect(&ch->win, &cast, &wanted);
-	}
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
 		return false; /* no caster over the visible plane: nothing to shadow there */
 	ch->wanted = wanted;
@@ -552,9 +638,13 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	for (int c = 0; c < nc; c++) {
 		struct lx_poly one, on;
 		if (!whole[c]) {
-			if (levels && exact_outline(f, i, ids[c]) &&
-			    footprint_clipped(f, i, ids[c], &feet[nfeet], &cuts[nfeet]))
-				exact[nfeet++] = true; /* for its level edges only */
+			bool foot = reach[c].kind == FOOT_POLYGON;
+			if (foot && levels && exact_outline(f, i, ids[c])) { /* for its level edges */
+				feet[nfeet] = reach_poly(&reach[c]);
+				cuts[nfeet] = reach[c].cut, exact[nfeet++] = true;
+			}
+			if (foot && bounded)
+				reach_foot(ch, &reach[c]);
 			continue;
 		}
 		lx_poly_hull(pts + first[c], first[c + 1] - first[c], &one);
