@@ -744,6 +744,50 @@ static void level_shadow_edges_fall_on_lixel_boundaries(void **state)
 	assert_true(far[0] < far[1]);
 }
 
+/* A caster whose shadow passes the eye (the light facing the camera, or near the wall) no
+ * longer makes a plane's whole visible part wanted: its footprint clipped to the near
+ * plane bounds the map's pieces. Under the low light the cylinder straddles the light's
+ * level as seen from the wall: its shadow there runs to the wall's horizon, and the whole
+ * visible wall stays wanted (the floor is bounded). Counted over the plane's pixel
+ * centres in view at 320x240 (hidden by a caster or not, alike); every_shadow_is_covered
+ * checks that the bounded maps still hold every shadow. */
+static void clipped_footprints_bound_the_planes(void **state)
+{
+	(void)state;
+	static const struct {
+		const char *config;
+		int plane;
+		bool bounded;
+	} cases[] = {{"facing", 0, true}, {"near-wall", 0, true}, {"low", 0, true}, {"low", 1, false}};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		lx_config_apply(lx_config_find(cases[i].config), &s.scene);
+		assert_true(build(&s, "plane", 320, 240, 0));
+		const struct lx_plane *P = &s.scene.planes[cases[i].plane];
+		vec4 eq = lx_plane_equation(P);
+		long seen = 0, served = 0;
+		for (int y = 0; y < 240; y++)
+			for (int x = 0; x < 320; x++) {
+				vec3 g;
+				double t, u, v;
+				if (!lx_window_on_plane(&s.frame.view, eq, x + 0.5, y + 0.5, &g, &t) || !(t > 0 && t < 1) ||
+				    !lx_plane_contains(P, g))
+					continue;
+				seen++;
+				served += floor_lixel(&s, cases[i].plane, g, &u, &v);
+			}
+		print_message("%-10s %-5s pixels %ld, in its map's pieces %ld\n", cases[i].config, P->name, seen, served);
+		assert_true(seen > 10000);
+		if (cases[i].bounded)
+			assert_true(served < 0.9 * seen);
+		else
+			assert_true(served == seen);
+		lx_meshes_free(&s.meshes);
+	}
+}
+
 /* Points repeated but for rounding (a flat box's corners come in pairs; a sphere's
  * outline sends two points down each ray) make no edge of length about 0 in the hull:
  * such an edge, pointing anywhere, once made a clip against the hull keep 21 of a
@@ -821,6 +865,7 @@ int main(void)
 		cmocka_unit_test(polygon_caps_keep_a_superset),
 		cmocka_unit_test(polygon_hull_of_repeated_points),
 		cmocka_unit_test(level_shadow_edges_fall_on_lixel_boundaries),
+		cmocka_unit_test(clipped_footprints_bound_the_planes),
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
 		cmocka_unit_test(sweep_is_one_affine_map_on_every_plane),
