@@ -747,23 +747,32 @@ static void level_shadow_edges_fall_on_lixel_boundaries(void **state)
 /* A caster whose shadow passes the eye (the light facing the camera, or near the wall) no
  * longer makes a plane's whole visible part wanted: its footprint clipped to the near
  * plane bounds the map's pieces. Under the low light the cylinder straddles the light's
- * level as seen from the wall: its shadow there runs to the wall's horizon, and the whole
- * visible wall stays wanted (the floor is bounded). Counted over the plane's pixel
- * centres in view at 320x240 (hidden by a caster or not, alike); every_shadow_is_covered
- * checks that the bounded maps still hold every shadow. */
+ * level as seen from the wall: its shadow there runs to the wall's horizon, and is
+ * bounded where it falls on the wall's parallelogram (straddling_reach). With the light
+ * inside the box's bounds nothing bounds its shadow, and the whole visible floor stays
+ * wanted. Counted over the plane's pixel centres in view at 320x240 (hidden by a caster
+ * or not, alike); every_shadow_is_covered and the sweep's random lights check that the
+ * bounded maps still hold every shadow. */
 static void clipped_footprints_bound_the_planes(void **state)
 {
 	(void)state;
 	static const struct {
-		const char *config;
+		const char *config; /* NULL: the light inside the box's bounds */
 		int plane;
 		bool bounded;
-	} cases[] = {{"facing", 0, true}, {"near-wall", 0, true}, {"low", 0, true}, {"low", 1, false}};
+	} cases[] = {{"facing", 0, true}, {"near-wall", 0, true}, {"low", 0, true}, {"low", 1, true}, {NULL, 0, false}};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		struct setup s;
 		memset(&s, 0, sizeof s);
 		lx_scene_default(&s.scene);
-		lx_config_apply(lx_config_find(cases[i].config), &s.scene);
+		if (cases[i].config)
+			lx_config_apply(lx_config_find(cases[i].config), &s.scene);
+		else { /* the box's centre at time 0 */
+			assert_true(build(&s, "plane", 320, 240, 0));
+			int box = s.scene.plane_count + 1;
+			s.scene.light.position = v3_scale(v3_add(s.frame.bmin[box], s.frame.bmax[box]), 0.5);
+			lx_meshes_free(&s.meshes);
+		}
 		assert_true(build(&s, "plane", 320, 240, 0));
 		const struct lx_plane *P = &s.scene.planes[cases[i].plane];
 		vec4 eq = lx_plane_equation(P);
@@ -778,7 +787,8 @@ static void clipped_footprints_bound_the_planes(void **state)
 				seen++;
 				served += floor_lixel(&s, cases[i].plane, g, &u, &v);
 			}
-		print_message("%-10s %-5s pixels %ld, in its map's pieces %ld\n", cases[i].config, P->name, seen, served);
+		print_message("%-10s %-5s pixels %ld, in its map's pieces %ld\n", cases[i].config ? cases[i].config : "in the box",
+			      P->name, seen, served);
 		assert_true(seen > 10000);
 		if (cases[i].bounded)
 			assert_true(served < 0.9 * seen);

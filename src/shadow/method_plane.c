@@ -318,17 +318,20 @@ static bool exact_outline(const struct lx_frame *f, int i, int id)
  * nothing, caster_reach tells which), FOOT_EMPTY when nothing is left in front, FOOT_OPEN
  * when rounding leaves no bound. */
 enum foot { FOOT_POLYGON, FOOT_EMPTY, FOOT_OPEN, FOOT_LEVEL };
-static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+#define FOOT_POINTS 20 /* a box's 8 corners, or a box cut by a plane: at most 8 + 12 */
+/* footprint_clipped for the hull of any points (at most FOOT_POINTS). */
+static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, int np, struct lx_poly *out,
+			      unsigned *cut)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
 	const struct lx_light *L = &f->light;
 	vec4 pi = lx_plane_equation(P);
 	vec3 n = v3(pi.x, pi.y, pi.z);
 	double dl = L->directional ? 0 : v4_dot_point(pi, L->position), dn = L->directional ? v3_dot(n, L->direction) : 0;
-	vec3 w[8];
-	vec2 uv[8];
-	for (int k = 0; k < 8; k++) {
-		vec3 c = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	vec3 w[FOOT_POINTS];
+	vec2 uv[FOOT_POINTS];
+	for (int k = 0; k < np; k++) {
+		vec3 c = pts[k];
 		double dc = v4_dot_point(pi, c);
 		if (L->directional ? !(dn < -1e-9) : !(dl - dc > 1e-9 * (1 + fabs(dl))))
 			return FOOT_LEVEL;
@@ -338,11 +341,11 @@ static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, stru
 		uv[k] = (vec2){v3_dot(r, P->edge1), v3_dot(r, P->edge2)};
 	}
 	struct lx_poly hull;
-	lx_poly_hull(uv, 8, &hull);
-	vec4 h[9], in[8];
+	lx_poly_hull(uv, np, &hull);
+	vec4 h[FOOT_POINTS + 1], in[FOOT_POINTS];
 	int m = 0, nin = 0;
-	for (int v = 0; v < hull.n; v++) /* the hull's vertices are corners' shadows */
-		for (int k = 0; k < 8; k++)
+	for (int v = 0; v < hull.n && nin < FOOT_POINTS; v++) /* the hull's vertices are points' shadows */
+		for (int k = 0; k < np; k++)
 			if (uv[k].x == hull.v[v].x && uv[k].y == hull.v[v].y) {
 				in[nin++] = m4_mul_point(&f->view.view_proj, w[k]);
 				break;
@@ -369,12 +372,91 @@ static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, stru
 	return out->n >= 3 ? FOOT_POLYGON : FOOT_EMPTY;
 }
 
+static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+{
+	vec3 c[8];
+	for (int k = 0; k < 8; k++)
+		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	return footprint_of(f, i, c, 8, out, cut);
+}
+
+/* The distance from the origin to the convex polygon p (0 inside it). */
+static double origin_distance(const struct lx_poly *p)
+{
+	double best = INFINITY, turn = 0;
+	bool inside = p->n >= 3;
+	for (int k = 0; k < p->n; k++) {
+		vec2 a = p->v[k], b = p->v[(k + 1) % p->n], d = {b.x - a.x, b.y - a.y};
+		double c = a.x * b.y - a.y * b.x; /* the origin's side of edge a b */
+		inside &= turn == 0 || (c >= 0) == (turn > 0);
+		turn = turn == 0 ? c : turn;
+		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? fmin(1, fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
+		best = fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
+	}
+	return inside ? 0 : best;
+}
+
+/* A box that straddles the point light's level as seen from plane i (corners on both
+ * sides of the plane through the light parallel to i): only its part below that level
+ * shadows the plane, and a point within delta of the level throws its shadow past the
+ * plane's parallelogram. A point at r from the light's normal line and dc - as far
+ * towards the light as it, of dl - throws its shadow r dl / (dl - dc) from the light's
+ * foot F, so with r >= r_min (the box's distance from that line) and R the farthest
+ * corner of the parallelogram from F, delta = r_min dl / (2 R) leaves those shadows
+ * beyond 2 R. The box cut at dl - delta then bounds what falls on the plane. FOOT_OPEN
+ * when the box meets the light's normal line (r_min 0). */
+static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+{
+	const struct lx_plane *P = &f->scene->planes[i];
+	vec4 pi = lx_plane_equation(P);
+	vec3 nrm = v3(pi.x, pi.y, pi.z), L = f->light.position, e1, e2;
+	double nn = v3_dot(nrm, nrm), dl = v4_dot_point(pi, L); /* nn > 0: a plane's edges are independent */
+	if (!(dl > 0) || !v3_normalize(v3_cross(nrm, fabs(nrm.x) < 0.9 * sqrt(nn) ? v3(1, 0, 0) : v3(0, 1, 0)), &e1) ||
+	    !v3_normalize(v3_cross(nrm, e1), &e2))
+		return FOOT_OPEN;
+	vec3 F = v3_sub(L, v3_scale(nrm, dl / nn)), q[4] = {P->corner, v3_add(P->corner, P->edge1),
+							       v3_add(v3_add(P->corner, P->edge1), P->edge2),
+							       v3_add(P->corner, P->edge2)};
+	double R = 0;
+	for (int k = 0; k < 4; k++)
+		R = fmax(R, v3_len(v3_sub(q[k], F)));
+	vec3 c[8];
+	vec2 flat[8];
+	double dc[8];
+	for (int k = 0; k < 8; k++) {
+		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k), dc[k] = v4_dot_point(pi, c[k]);
+		flat[k] = (vec2){v3_dot(v3_sub(c[k], L), e1), v3_dot(v3_sub(c[k], L), e2)};
+	}
+	struct lx_poly shadow_line;
+	lx_poly_hull(flat, 8, &shadow_line);
+	double r_min = origin_distance(&shadow_line);
+	if (!(r_min > 1e-9 * (R + r_min)) || !(R > 0))
+		return FOOT_OPEN;
+	double level = dl - 0.5 * r_min * dl / R; /* < dl: r_min, dl, R > 0 */
+	vec3 pts[FOOT_POINTS];
+	int n = 0;
+	for (int k = 0; k < 8; k++) {
+		if (dc[k] <= level)
+			pts[n++] = c[k];
+		for (int bit = 1; bit < 8; bit <<= 1) { /* the 12 edges: corners k and k | bit */
+			int j = k | bit;
+			if (j != k && (dc[k] <= level) != (dc[j] <= level)) {
+				double t = (level - dc[k]) / (dc[j] - dc[k]); /* sides differ: no zero division */
+				pts[n++] = v3_add(c[k], v3_scale(v3_sub(c[j], c[k]), t));
+			}
+		}
+	}
+	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out, cut) : FOOT_EMPTY;
+	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
+}
+
 /* Where caster id can shadow the visible part of plane i, for one whose outline reaches
  * behind the chart's light image (its shadow passes the eye, or it reaches the light's
  * level): FOOT_POLYGON with its clipped footprint in *out, FOOT_EMPTY when it shadows
  * nothing there (its shadow lies wholly behind the eye, or it lies wholly level with the
- * point light or beyond it, so that no ray from the light through it meets the plane),
- * FOOT_OPEN when its shadow reaches the plane's horizon (it straddles the light's level). */
+ * point light or beyond it, so that no ray from the light through it meets the plane);
+ * one that straddles the light's level is bounded where its shadow falls on the plane's
+ * parallelogram (straddling_reach), FOOT_OPEN where that fails. */
 static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
 {
 	enum foot r = footprint_clipped(f, i, id, out, cut);
@@ -386,7 +468,7 @@ static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx
 	double dl = v4_dot_point(pi, f->light.position);
 	for (int k = 0; k < 8; k++)
 		if (dl - v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) > 1e-9 * (1 + fabs(dl)))
-			return FOOT_OPEN; /* one corner below the light, another level with it or beyond */
+			return straddling_reach(f, i, id, out, cut); /* one corner below the light, another not */
 	return FOOT_EMPTY;
 }
 
