@@ -414,9 +414,8 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	if (!(dl > 0) || !v3_normalize(v3_cross(nrm, fabs(nrm.x) < 0.9 * sqrt(nn) ? v3(1, 0, 0) : v3(0, 1, 0)), &e1) ||
 	    !v3_normalize(v3_cross(nrm, e1), &e2))
 		return FOOT_OPEN;
-	vec3 F = v3_sub(L, v3_scale(nrm, dl / nn)), q[4] = {P->corner, v3_add(P->corner, P->edge1),
-							       v3_add(v3_add(P->corner, P->edge1), P->edge2),
-							       v3_add(P->corner, P->edge2)};
+	vec3 F = v3_sub(L, v3_scale(nrm, dl / nn)), q[4];
+	lx_frame_plane_corners(f, i, q);
 	double R = 0;
 	for (int k = 0; k < 4; k++)
 		R = fmax(R, v3_len(v3_sub(q[k], F)));
@@ -654,7 +653,8 @@ static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, cons
 		struct lx_poly fp;
 		reach[c].kind = caster_reach(f, i, ids[c], &fp, &reach[c].cut);
 		if (reach[c].kind == FOOT_POLYGON && fp.n > LX_OUTLINE_POINTS)
-			reach[c].kind = FOOT_OPEN; /* cannot happen: 8 corners cut once */
+			reach[c].kind = FOOT_OPEN; /* cannot happen: a box, cut once or not, has at most 13
+						    * corners, and the near plane's cut adds one */
 		bounded &= reach[c].kind != FOOT_OPEN;
 		if (reach[c].kind != FOOT_POLYGON)
 			continue;
