@@ -598,13 +598,14 @@ static void polygon_edges_inside(void **state)
 	assert_false(lx_segment_inside(&empty, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
 }
 
-/* Where a floor point lands in the floor map's lixels: (u, v) in lixels of its atlas
- * region, or false when no rendered floor map serves it. */
-static bool floor_lixel(const struct setup *s, int floor, vec3 p, double *u, double *v)
+/* Where a point of plane `plane` lands in that plane's map's lixels (a piece's or the
+ * map's): (u, v) in lixels of its atlas region, or false when no rendered map of the
+ * plane serves it. */
+static bool plane_lixel(const struct setup *s, int plane, vec3 p, double *u, double *v)
 {
 	for (int m = 0; m < s->res.map_count; m++) {
 		const struct lx_shadow_map *map = &s->res.maps[m];
-		if (!map->rendered || map->plane != floor)
+		if (!map->rendered || map->plane != plane)
 			continue;
 		vec4 c = m4_mul_point(&map->light_clip, p);
 		double x = c.x / c.w, y = c.y / c.w;
@@ -619,8 +620,8 @@ static bool floor_lixel(const struct setup *s, int floor, vec3 p, double *u, dou
 
 /* The pixel centres of the window column through floor point f (on a level shadow edge)
  * that read, in the lixel holding the edge, the far side of it from the lixel's centre;
- * -1 when no floor map holds f (the table top's shadow edge lies a fraction of a pixel
- * past the slab's, whose footprint bounds the map's pieces). */
+ * -1 when no map of the plane holds f. Pixels of the column outside the map's pieces
+ * (which bound the casters' footprints, not the whole plane) read lit and are skipped. */
 static int far_side_pixels(const struct setup *s, int plane, vec3 f)
 {
 	vec4 floor_eq = lx_plane_equation(&s->scene.planes[plane]);
@@ -628,7 +629,7 @@ static int far_side_pixels(const struct setup *s, int plane, vec3 f)
 	vec4 h = m4_mul_point(&s->frame.view.view_proj, f);
 	double wx = (h.x / h.w + 1) * 0.5 * s->frame.view.width, wy = (h.y / h.w + 1) * 0.5 * s->frame.view.height;
 	double u, v;
-	if (!floor_lixel(s, plane, f, &u, &v))
+	if (!plane_lixel(s, plane, f, &u, &v))
 		return -1;
 	double at = turned ? u : v, cell = floor(at); /* across the edge */
 	int wrong = 0;
@@ -636,7 +637,7 @@ static int far_side_pixels(const struct setup *s, int plane, vec3 f)
 		vec3 g;
 		double t, gu, gv;
 		assert_true(lx_window_on_plane(&s->frame.view, floor_eq, floor(wx) + 0.5, floor(wy) + 0.5 + j, &g, &t));
-		if (!floor_lixel(s, plane, g, &gu, &gv))
+		if (!plane_lixel(s, plane, g, &gu, &gv))
 			continue; /* outside the map's pieces: read as lit, no lixel of the edge's */
 		double c = turned ? gu : gv;
 		wrong += floor(c) == cell && (c > at) != (cell + 0.5 > at);
@@ -785,7 +786,7 @@ static void clipped_footprints_bound_the_planes(void **state)
 				    !lx_plane_contains(P, g))
 					continue;
 				seen++;
-				served += floor_lixel(&s, cases[i].plane, g, &u, &v);
+				served += plane_lixel(&s, cases[i].plane, g, &u, &v);
 			}
 		print_message("%-10s %-5s pixels %ld, in its map's pieces %ld\n", cases[i].config ? cases[i].config : "in the box",
 			      P->name, seen, served);

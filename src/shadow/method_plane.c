@@ -634,9 +634,10 @@ static struct lx_poly reach_poly(const struct reach *r)
 
 /* What the casters can shadow of plane i, in window coordinates, for its wanted rays: the
  * hull of the outlines of the casters charted whole and of the clipped footprints of the
- * others (a light facing the camera throws shadows past the eye; a caster beyond the
- * light's level throws none on the plane); false when one reaches the plane's horizon
- * (no bound: every visible ray is wanted). reach[c]: the others' footprints. */
+ * others (caster_reach: a light facing the camera throws shadows past the eye; a caster
+ * beyond the light's level throws none on the plane, one across it is cut where its
+ * shadow leaves the plane's parallelogram); false when one cannot be bounded (the light
+ * inside its box: every visible ray is wanted). reach[c]: the others' footprints. */
 static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, const bool *whole, const int *ids,
 			  const int *first, int nc, struct reach *reach, struct lx_poly *cast)
 {
