@@ -318,7 +318,7 @@ static bool exact_outline(const struct lx_frame *f, int i, int id)
  * nothing, caster_reach tells which), FOOT_EMPTY when nothing is left in front, FOOT_OPEN
  * when rounding leaves no bound. */
 enum foot { FOOT_POLYGON, FOOT_EMPTY, FOOT_OPEN, FOOT_LEVEL };
-#define FOOT_POINTS 20 /* a box's 8 corners, or a box cut by a plane: at most 8 + 12 */
+#define FOOT_POINTS 35 /* a box's 8 corners, or a box cut by a plane: one vertex per triple of its 7 planes */
 /* footprint_clipped for the hull of any points (at most FOOT_POINTS). */
 static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, int np, struct lx_poly *out,
 			      unsigned *cut)
@@ -380,20 +380,19 @@ static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, stru
 	return footprint_of(f, i, c, 8, out, cut);
 }
 
-/* The distance from the origin to the convex polygon p (0 inside it). */
+/* The distance from the origin to the convex polygon p (lx_poly_hull's winding; 0 inside
+ * it). */
 static double origin_distance(const struct lx_poly *p)
 {
-	double best = INFINITY, turn = 0;
-	bool inside = p->n >= 3;
+	if (lx_poly_contains(p, (vec2){0, 0}, 0))
+		return 0;
+	double best = INFINITY;
 	for (int k = 0; k < p->n; k++) {
 		vec2 a = p->v[k], b = p->v[(k + 1) % p->n], d = {b.x - a.x, b.y - a.y};
-		double c = a.x * b.y - a.y * b.x; /* the origin's side of edge a b */
-		inside &= turn == 0 || (c >= 0) == (turn > 0);
-		turn = turn == 0 ? c : turn;
 		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? fmin(1, fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
 		best = fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
 	}
-	return inside ? 0 : best;
+	return best;
 }
 
 /* A box that straddles the point light's level as seen from plane i (corners on both
@@ -419,12 +418,11 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	double R = 0;
 	for (int k = 0; k < 4; k++)
 		R = fmax(R, v3_len(v3_sub(q[k], F)));
-	vec3 c[8];
+	vec3 lo = f->bmin[id], hi = f->bmax[id];
 	vec2 flat[8];
-	double dc[8];
 	for (int k = 0; k < 8; k++) {
-		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k), dc[k] = v4_dot_point(pi, c[k]);
-		flat[k] = (vec2){v3_dot(v3_sub(c[k], L), e1), v3_dot(v3_sub(c[k], L), e2)};
+		vec3 r = v3_sub(v3_box_corner(lo, hi, k), L);
+		flat[k] = (vec2){v3_dot(r, e1), v3_dot(r, e2)};
 	}
 	struct lx_poly shadow_line;
 	lx_poly_hull(flat, 8, &shadow_line);
@@ -432,19 +430,11 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	if (!(r_min > 1e-9 * (R + r_min)) || !(R > 0))
 		return FOOT_OPEN;
 	double level = dl - 0.5 * r_min * dl / R; /* < dl: r_min, dl, R > 0 */
+	/* the box's six faces' half-spaces and pi . x <= level */
+	vec4 cut_box[7] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y},
+			   {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}, {-pi.x, -pi.y, -pi.z, level - pi.w}};
 	vec3 pts[FOOT_POINTS];
-	int n = 0;
-	for (int k = 0; k < 8; k++) {
-		if (dc[k] <= level)
-			pts[n++] = c[k];
-		for (int bit = 1; bit < 8; bit <<= 1) { /* the 12 edges: corners k and k | bit */
-			int j = k | bit;
-			if (j != k && (dc[k] <= level) != (dc[j] <= level)) {
-				double t = (level - dc[k]) / (dc[j] - dc[k]); /* sides differ: no zero division */
-				pts[n++] = v3_add(c[k], v3_scale(v3_sub(c[j], c[k]), t));
-			}
-		}
-	}
+	int n = lx_halfspace_vertices(cut_box, 7, pts, FOOT_POINTS);
 	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out, cut) : FOOT_EMPTY;
 	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
 }
