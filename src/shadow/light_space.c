@@ -94,8 +94,8 @@ bool lx_shadows_hidden(const struct lx_frame *f)
 	 * d / near radians (the caster lies beyond the near plane), and a radian spans at most
 	 * f (1 + t^2 (1 + a^2)) pixels, at the image's corners (f: the focal length in pixels,
 	 * t = tan(fovy / 2), a the aspect). fovy < pi and height >= 1: t and f are finite. */
-	double t = tan(0.5 * v->fovy), a = (double)v->width / v->height;
-	double px_per_rad = 0.5 * v->height / t * (1 + t * t * (1 + a * a));
+	double t = tan(0.5 * v->fovy), a = (double)v->width / v->height, corner2 = 1 + t * t * (1 + a * a);
+	double px_per_rad = 0.5 * v->height / t * corner2; /* corner2: 1 / cos^2 at the image's corners */
 	if (!(v3_len(v3_sub(f->light.position, v->eye)) * px_per_rad <= LX_HIDDEN_SHADOW_PX * v->near))
 		return false;
 	/* The segment from a point in sight to the eye runs, in front of the near plane, inside
@@ -103,7 +103,7 @@ bool lx_shadows_hidden(const struct lx_frame *f)
 	 * box misses it when it lies farther from the eye than the window's corners, or all its
 	 * corners lie outside one of the pyramid's six planes (the four sides pass through the
 	 * eye, so they hold behind it too). */
-	double reach = v->near * sqrt(1 + t * t * (1 + a * a)); /* the eye to a corner of the window */
+	double reach = v->near * sqrt(corner2); /* the eye to a corner of the window */
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id))
 			continue;
