@@ -5,6 +5,7 @@
  * Over the standard configurations of both built-in scenes and some extremes. */
 #include "configs.h"
 #include "lookup_region.h"
+#include "plane_cover.h"
 #include "plane_optimal.h"
 #include "test_util.h"
 #include "method_fixture.h"
@@ -449,6 +450,113 @@ static void casters_left_out_only_where_unread(void **state)
 	assert_true(ball_low > 0);
 }
 
+/* Whether the light's ray from x crosses plane p's parallelogram before x, in double,
+ * the direct way; *near: the crossing lies within 1e-9 of the parallelogram's edges or
+ * of x (a rounding there may go either way). */
+static bool ray_crosses_plane(const struct lx_frame *f, int p, vec3 x, bool *near)
+{
+	const struct lx_plane *pl = &f->scene->planes[p];
+	vec3 q[4], n = v3_cross(pl->edge1, pl->edge2);
+	lx_frame_plane_corners(f, p, q);
+	const struct lx_light *L = &f->light;
+	vec3 to = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, x);
+	double dn = v3_dot(n, to);
+	*near = false;
+	if (dn == 0)
+		return false;
+	double t = v3_dot(n, v3_sub(q[0], x)) / dn; /* x + t to lies on the plane */
+	if (!(t > 0) || (!L->directional && !(t < 1)))
+		return false;
+	vec3 y = v3_sub(v3_add(x, v3_scale(to, t)), q[0]);
+	double nn = v3_dot(n, n);
+	double u = v3_dot(v3_cross(pl->edge2, n), y) / nn, v = v3_dot(v3_cross(n, pl->edge1), y) / nn;
+	*near = fabs(u) < 1e-9 || fabs(u - 1) < 1e-9 || fabs(v) < 1e-9 || fabs(v - 1) < 1e-9 || t < 1e-9;
+	return u >= 0 && u <= 1 && v >= 0 && v <= 1;
+}
+
+/* A plane lit on its front (the side its mesh faces) is culled from the shadow pass; the
+ * main pass tests what it shadows with its cover matrix (plane_cover.h). The matrix
+ * against the direct ray test at random points, the objects it is drawn for, and the
+ * lights that leave it out. */
+static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
+{
+	(void)state;
+	uint64_t seed = 0x5eedc0fe11ull;
+	long covered = 0, tested = 0, extra = 0;
+	for (int sc = 0; sc < 2; sc++)
+		for (int c = 0; c < lx_config_count; c++) {
+			struct setup s;
+			lx_scene_builtin(sc ? "table" : "default", &s.scene);
+			lx_config_apply(&lx_configs[c], &s.scene);
+			assert_true(build(&s, "none", W, H, 0.4));
+			const struct lx_frame *f = &s.frame;
+			int np = f->scene->plane_count;
+			for (int p = 0; p < np; p++) {
+				mat4 m;
+				vec3 q[4], n = v3_cross(f->scene->planes[p].edge1, f->scene->planes[p].edge2);
+				lx_frame_plane_corners(f, p, q);
+				double side = f->light.directional ? -v3_dot(n, f->light.direction)
+								    : v3_dot(n, v3_sub(f->light.position, q[0]));
+				bool has = lx_plane_cover_matrix(f, p, &m);
+				assert_true(has == (side > 0)); /* no light of these grazes a plane */
+				for (int k = 0; has && k < 4000; k++) {
+					/* half over the scene, half around the table and under it */
+					vec3 lo = k & 1 ? v3(-1.4, 0, -1) : f->scene_min, hi = k & 1 ? v3(1.4, 0.8, 1) : f->scene_max;
+					vec3 x = v3(lo.x + (hi.x - lo.x) * test_rand(&seed), lo.y + (hi.y - lo.y) * test_rand(&seed),
+						    lo.z + (hi.z - lo.z) * test_rand(&seed));
+					vec4 h = m4_mul_point(&m, x);
+					bool near, want = ray_crosses_plane(f, p, x, &near);
+					bool got = h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
+					if (near)
+						continue;
+					if (got != want)
+						fail_msg("%s scene, %s, plane %d at (%g, %g, %g): the matrix says %d, the ray %d",
+							 sc ? "table" : "default", lx_configs[c].name, p, x.x, x.y, x.z, got, want);
+					covered += got, tested++;
+				}
+			}
+			/* the table top covers its slab wherever the light is above it; nothing in the
+			 * default scene lies beyond a lit front */
+			for (int id = 0; id < f->object_count; id++) {
+				mat4 m;
+				int p = lx_plane_cover_of(f, id, &m);
+				bool slab = sc == 1 && id == np && (f->light.directional ? f->light.direction.y < 0 : f->light.position.y > 0.75);
+				if (slab ? p != 0 : sc == 0 && p != -1)
+					fail_msg("%s scene, %s: object %d covered by plane %d", sc ? "table" : "default",
+						 lx_configs[c].name, id, p);
+				extra += p >= 0;
+				/* and none of an uncovered object's points is in a plane's shadow */
+				for (int q = 0; q < np && p < 0; q++)
+					for (int k = 0; q != id && k < 300 && lx_plane_cover_matrix(f, q, &m); k++) {
+						vec3 x = v3(f->bmin[id].x + (f->bmax[id].x - f->bmin[id].x) * test_rand(&seed),
+							    f->bmin[id].y + (f->bmax[id].y - f->bmin[id].y) * test_rand(&seed),
+							    f->bmin[id].z + (f->bmax[id].z - f->bmin[id].z) * test_rand(&seed));
+						bool near;
+						assert_false(ray_crosses_plane(f, q, x, &near) && !near);
+					}
+			}
+			lx_meshes_free(&s.meshes);
+		}
+	print_message("cover matrices: %ld of %ld random points shadowed, each as the ray test has it; %ld objects of the "
+		      "table scene's %d views drawn with the table top's test\n", covered, tested, extra, lx_config_count);
+	assert_true(covered > 10000 && covered < tested);
+	/* lights that leave the cover out: on the table top's plane, below the floor (its back
+	 * lit: it casts through the maps), a directional light along the table top */
+	const vec3 lights[3] = {{0.3, 0.75, 0.2}, {0, -2, 0}, {1, 0, 0}};
+	for (int i = 0; i < 3; i++) {
+		struct setup s;
+		mat4 m;
+		lx_scene_table(&s.scene);
+		if (i == 2)
+			s.scene.light.directional = true, s.scene.light.direction = lights[i];
+		else
+			s.scene.light.position = lights[i];
+		assert_true(build(&s, "none", W, H, 0));
+		assert_false(lx_plane_cover_matrix(&s.frame, i == 1 ? 1 : 0, &m));
+		lx_meshes_free(&s.meshes);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -457,6 +565,7 @@ int main(void)
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
 		cmocka_unit_test(casters_left_out_only_where_unread),
+		cmocka_unit_test(lit_plane_fronts_shadow_what_lies_beyond),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,40 @@
+/* What a plane of interest's lit front shadows, GL-free.
+ *
+ * The shadow pass draws back faces only (second-depth maps: a lit face never compares
+ * against itself), and a plane's mesh is one quad facing along edge1 x edge2. Lit on that
+ * side, the quad is culled from every map, so it casts nothing through them; yet what
+ * lies beyond it from the light is in its shadow (the table's slab top, 1 mm under the
+ * table top, seen through the gap at the table's edge). The main pass tests that exactly,
+ * per fragment, for the objects that need it: the light's ray from a point crosses the
+ * plane's parallelogram before reaching the point. Lit on its back, a plane casts through
+ * the maps as a caster does, and needs no test. */
+#ifndef LX_PLANE_COVER_H
+#define LX_PLANE_COVER_H
+#include "frame.h"
+
+/* A light within this share of its distance (to the parallelogram's corner, plus the
+ * edges' lengths) of a plane's plane, or a directional light this close to parallel to
+ * it, grazes the plane: its parallelogram covers no solid angle worth a test, and the
+ * matrix would divide by about 0. */
+#define LX_COVER_GRAZING 1e-6
+
+/* A box reaching less than this beyond a plane (a share of the light's distance from
+ * it, or of a directional light's parallelogram's size) only touches it: nothing of it is
+ * shadowed by it, yet its corners on the plane may round to either side. */
+#define LX_COVER_TOUCH 1e-9
+
+/* Plane p's cover matrix for the frame's light: world X -> h = M (X, 1), with X shadowed
+ * by p's front exactly where h.w > 0 (p lies between the light and X; h.w is in
+ * the light's distance from the plane, or for a directional light in the parallelogram's
+ * size) and 0 <= h.x <= h.z,
+ * 0 <= h.y <= h.z (the crossing lies in the parallelogram: h.x / h.z and h.y / h.z are its
+ * coordinates along edge1 and edge2). Affine in X, so a varying carries it exactly.
+ * False where p's front is not lit (its back faces the light, or the light grazes it). */
+bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out);
+
+/* The plane whose lit front may shadow object id: some of id's box lies beyond it from
+ * the light, and the light's rays to that part cross the parallelogram's bounds; the
+ * first such plane, its matrix in *m, or -1. */
+int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m);
+
+#endif
