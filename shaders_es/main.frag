@@ -99,6 +99,10 @@ varying vec4 v_shadow3;
 varying vec4 v_edges3;
 #endif
 #endif
+#ifdef LX_COVER
+varying vec4 v_cover;  // main.vert: a plane lit on its front, over this object: its
+varying float v_beyond; // parallelogram's edge functions, and > 0 beyond it
+#endif
 varying vec3 v_to_light; // towards the light, not normalised
 varying vec3 v_normal;
 #ifdef LX_PROJECTIVE
@@ -233,6 +237,10 @@ void main()
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
 #endif
 #endif
+#endif
+#ifdef LX_COVER
+	// the light's ray crosses the plane's parallelogram on its way here
+	shadowed = max(shadowed, float(all(greaterThanEqual(v_cover, vec4(0.0)))) * float(v_beyond > 0.0));
 #endif
 #if LX_FACE_TEST
 	// a face turned away from the light is in its own shadow

@@ -71,6 +71,17 @@ vec2 face_slope(mat4 face_tex, vec4 plane, float lit)
 	return ok > 0.5 ? -h.xy / h.z : vec2(0.0);
 }
 #endif
+#ifdef LX_COVER
+// A plane lit on the side its mesh faces casts nothing through the maps (the shadow pass
+// draws back faces only); over what lies beyond it the draw tests it exactly:
+// u_cover (plane_cover.h) takes a point to h, shadowed by the plane where h.w > 0 and
+// 0 <= h.x, h.y <= h.z. Passed on as the four edge functions and h.w, each affine in the
+// position (so interpolated exactly) and 0 where the test turns: in fp16 a value near 0
+// keeps its sign, where h.x near h.z = 1 would be 1/2048 of the table top off (1 mm).
+uniform mat4 u_cover;
+varying vec4 v_cover;
+varying float v_beyond;
+#endif
 attribute vec3 a_position;
 attribute vec3 a_normal;
 attribute vec3 a_face_normal;
@@ -142,6 +153,11 @@ void main()
 #if LX_READS > 3
 	v_slope23.zw = face_slope(u_face_tex[3], plane, lit);
 #endif
+#endif
+#ifdef LX_COVER
+	vec4 h = u_cover * world;
+	v_cover = vec4(h.xy, h.zz - h.xy);
+	v_beyond = h.w;
 #endif
 	gl_Position = u_view_proj * world;
 }

@@ -482,7 +482,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 {
 	(void)state;
 	uint64_t seed = 0x5eedc0fe11ull;
-	long covered = 0, tested = 0, extra = 0;
+	long covered = 0, tested = 0, extra = 0, windowed = 0;
 	for (int sc = 0; sc < 2; sc++)
 		for (int c = 0; c < lx_config_count; c++) {
 			struct setup s;
@@ -515,6 +515,31 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 					covered += got, tested++;
 				}
 			}
+			/* a covered point of another plane lies inside the cover's window rectangle */
+			for (int p = 0; p < np; p++)
+				for (int q = 0; q < np; q++) {
+					mat4 m;
+					int rect[4];
+					if (p == q || !lx_plane_cover_matrix(f, p, &m) || !lx_plane_cover_window(f, p, q, rect))
+						continue;
+					const struct lx_plane *pq = &f->scene->planes[q];
+					vec3 qc[4];
+					lx_frame_plane_corners(f, q, qc);
+					for (int k = 0; k < 4000; k++) {
+						vec3 x = v3_add(qc[0], v3_add(v3_scale(pq->edge1, test_rand(&seed)),
+									    v3_scale(pq->edge2, test_rand(&seed))));
+						bool near;
+						vec4 e = m4_mul_point(&f->view.view_proj, x);
+						if (!ray_crosses_plane(f, p, x, &near) || !(e.w > 0) || fabs(e.x) > e.w || fabs(e.y) > e.w)
+							continue; /* not covered, or out of the view */
+						double wx = (e.x / e.w * 0.5 + 0.5) * f->view.width, wy = (e.y / e.w * 0.5 + 0.5) * f->view.height;
+						if (!(wx >= rect[0] && wx <= rect[2] && wy >= rect[1] && wy <= rect[3]))
+							fail_msg("%s scene, %s: plane %d's point at pixel (%g, %g) in plane %d's cover is outside its "
+								 "window [%d, %d] x [%d, %d]", sc ? "table" : "default", lx_configs[c].name, q,
+								 wx, wy, p, rect[0], rect[2], rect[1], rect[3]);
+						windowed++;
+					}
+				}
 			/* the table top covers its slab wherever the light is above it; nothing in the
 			 * default scene lies beyond a lit front */
 			for (int id = 0; id < f->object_count; id++) {
@@ -540,6 +565,17 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 	print_message("cover matrices: %ld of %ld random points shadowed, each as the ray test has it; %ld objects of the "
 		      "table scene's %d views drawn with the table top's test\n", covered, tested, extra, lx_config_count);
 	assert_true(covered > 10000 && covered < tested);
+	print_message("%ld covered points of the floor under the table inside the cover's window\n", windowed);
+	assert_true(windowed > 1000);
+	/* the renderer builds the cover's variants at the start for the table, not the default scene */
+	for (int sc = 0; sc < 2; sc++) {
+		struct lx_scene sn;
+		struct lx_scene_meshes mm;
+		lx_scene_builtin(sc ? "table" : "default", &sn);
+		assert_true(lx_meshes_build(&sn, &mm));
+		assert_true(lx_scene_may_need_cover(&sn, &mm) == (sc == 1));
+		lx_meshes_free(&mm);
+	}
 	/* lights that leave the cover out: on the table top's plane, below the floor (its back
 	 * lit: it casts through the maps), a directional light along the table top */
 	const vec3 lights[3] = {{0.3, 0.75, 0.2}, {0, -2, 0}, {1, 0, 0}};

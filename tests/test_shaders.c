@@ -55,7 +55,8 @@ static void write_main_variant(struct batch *b, const struct lx_main_variant *v,
 /* The main pass under a limit of varyings (0: none): every count of maps, every count of
  * them read, shaded or decision, each rule for their faces (toward the light, tested,
  * away, a caster's along its plane), each depth path (0 highp, 1 mediump, 2 highp with
- * the maps in a depth texture), every shadow filter. */
+ * the maps in a depth texture), every shadow filter; with a plane's cover test where a
+ * draw reads none of the maps or all of them. */
 static void main_variants(struct batch *b, int max_varyings)
 {
 	char tag[64];
@@ -64,16 +65,20 @@ static void main_variants(struct batch *b, int max_varyings)
 			for (int decision = 0; decision < 2; decision++)
 				for (int face = 0; face < LX_FACES_COUNT; face++)
 					for (int path = 0; path < 3; path++)
-						for (int filter = 0; filter < LX_FILTER_COUNT; filter++) {
-							if (face == LX_FACES_AWAY && reads > 0)
-								continue; /* faces turned away read nothing: the reads 0 text */
-							struct lx_main_variant v = {.maps = maps, .reads = reads, .decision = decision,
-										    .faces = (enum lx_faces)face, .path = paths[path],
-										    .filtered = filter > 0, .max_varyings = max_varyings};
-							snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d-%d", max_varyings, maps, reads,
-								 decision, face, path, filter);
-							write_main_variant(b, &v, "", filter, tag);
-						}
+						for (int filter = 0; filter < LX_FILTER_COUNT; filter++)
+							for (int cover = 0; cover < 2; cover++) {
+								if (face == LX_FACES_AWAY && reads > 0)
+									continue; /* faces turned away read nothing: the reads 0 text */
+								if (cover && (face == LX_FACES_AWAY || (reads > 0 && reads < maps)))
+									continue;
+								struct lx_main_variant v = {
+									.maps = maps, .reads = reads, .decision = decision,
+									.faces = (enum lx_faces)face, .path = paths[path],
+									.filtered = filter > 0, .cover = cover, .max_varyings = max_varyings};
+								snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d-%d-%d", max_varyings, maps,
+									 reads, decision, face, path, filter, cover);
+								write_main_variant(b, &v, "", filter, tag);
+							}
 }
 
 static void every_variant_is_glsl_es_100(void **state)
@@ -178,23 +183,27 @@ static void variants_fit_the_varyings(void **state)
 	for (int reads = 0; reads <= 4; reads++)
 		for (int caster = 0; caster < 2; caster++)
 			for (int projective = 0; projective < 2; projective++)
-				for (int limit = 0; limit <= 8; limit += 8) {
-					struct lx_main_variant v = {.maps = 4, .reads = reads,
-								    .faces = caster ? LX_FACES_CASTER : LX_FACES_TOWARD,
-								    .path = LX_DEPTH_HIGHP, .projective = projective,
-								    .max_varyings = limit};
-					lx_main_defines(&v, defines, sizeof defines);
-					if (projective)
-						strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
-					bool edges = strstr(defines, "LX_EDGES") != NULL, plane = strstr(defines, "LX_FACE_PLANE") != NULL;
-					int n = vertex_varyings(dir, defines, k++);
-					assert_int_equal(n, lx_main_varyings(reads, edges, plane, projective));
-					if (limit)
-						assert_true(n <= limit);
-					else
-						assert_true(edges == (reads > 0) && plane == (caster && reads > 0));
-					dropped += limit && reads > 0 && (!edges || plane != (bool)caster);
-				}
+				for (int limit = 0; limit <= 8; limit += 8)
+					for (int cover = 0; cover < 2; cover++) {
+						struct lx_main_variant v = {.maps = 4, .reads = reads,
+									    .faces = caster ? LX_FACES_CASTER : LX_FACES_TOWARD,
+									    .path = LX_DEPTH_HIGHP, .projective = projective,
+									    .cover = cover, .max_varyings = limit};
+						lx_main_defines(&v, defines, sizeof defines);
+						if (projective)
+							strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
+						bool edges = strstr(defines, "LX_EDGES") != NULL,
+						     plane = strstr(defines, "LX_FACE_PLANE") != NULL;
+						/* the cover is never given up: it decides shadows, not their cost */
+						assert_true((strstr(defines, "LX_COVER") != NULL) == (bool)cover);
+						int n = vertex_varyings(dir, defines, k++);
+						assert_int_equal(n, lx_main_varyings(reads, edges, plane, projective, cover));
+						if (limit)
+							assert_true(n <= limit);
+						else
+							assert_true(edges == (reads > 0) && plane == (caster && reads > 0));
+						dropped += limit && reads > 0 && (!edges || plane != (bool)caster);
+					}
 	print_message("%d variants' varyings counted; under 8, %d gave up edges or the face plane\n", k, dropped);
 	assert_true(dropped > 0);
 	char cmd[128];

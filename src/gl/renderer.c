@@ -4,6 +4,7 @@
 #include "depth_rgba.h"
 #include "light_image.h"
 #include "lookup_region.h"
+#include "plane_cover.h"
 #include "shader_text.h"
 #include <math.h>
 #include <stdio.h>
@@ -21,6 +22,7 @@ struct main_program {
 	GLint face_tex;     /* LX_FACE_PLANE variants: the maps' inverse transposes (main.vert) */
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
+	GLint cover;                 /* LX_COVER variants: a plane's cover matrix (plane_cover.h) */
 };
 
 /* How a main-pass variant shades: 0 the decision; else 1 + 4 projective + 2 added (an
@@ -38,9 +40,11 @@ static bool shading_bit(int shading, int bit) { return shading != SHADING_DECISI
 
 /* A window rectangle of a plane and the maps it reads there. */
 struct span {
-	unsigned mask;
+	unsigned mask; /* the maps read, and COVER_SPAN */
 	struct lx_rect box;
 };
+/* A plane's span that tests the cover over it (object_draws): a bit no map has. */
+#define COVER_SPAN (1u << LX_MAX_MAPS)
 
 /* One draw of the main pass: an object with the maps it reads, and what of it: its whole
  * mesh, `count` vertices from `first` of the frame's piece buffer (a plane in pieces), or
@@ -53,6 +57,7 @@ struct draw {
 	enum lx_faces faces; /* its faces' side of the light, which picks the variant */
 	enum draw_kind kind;
 	int first, count;
+	bool cover; /* tests the plane cover_plane[object] (its matrix cover[object]) */
 };
 
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
@@ -105,9 +110,15 @@ struct lx_renderer {
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
 	/* main-pass variants, built when first used: [shading][filter][faces][how many maps a
-	 * draw reads] (whichever they are: a draw puts theirs in the first slots, set_maps;
-	 * the faces: object_draws; LX_FACES_AWAY reads none, its other slots stay empty) */
-	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1];
+	 * draw reads][with a plane's cover test] (whichever maps: a draw puts theirs in the
+	 * first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
+	 * other slots stay empty, and tests no cover) */
+	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][2];
+	/* this frame's plane over each object whose front the light sees (-1: none) and its
+	 * cover matrix (lx_plane_cover_of) */
+	int cover_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
+	float cover[LX_MAX_PLANES + LX_MAX_CASTERS][16];
+	bool may_cover; /* some frame may draw with a cover test (lx_scene_may_need_cover) */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -161,19 +172,19 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 
 /* The main-pass variant for a shading, faces, maps read and filter, on this GPU. */
 static struct lx_main_variant variant_of(const struct lx_renderer *r, int shading, enum lx_faces faces, int reads,
-					 enum lx_filter filter)
+					 enum lx_filter filter, bool cover)
 {
 	return (struct lx_main_variant){.maps = r->d.map_count, .reads = reads, .decision = shading == SHADING_DECISION,
 					.faces = faces, .path = r->d.depth, .filtered = filter != LX_FILTER_NONE,
-					.projective = shading_bit(shading, SHADING_PROJECTIVE),
+					.projective = shading_bit(shading, SHADING_PROJECTIVE), .cover = cover,
 					.max_varyings = r->d.caps->max_varying_vectors};
 }
 
 static bool main_program(struct main_program *p, const struct lx_renderer *r, int shading, enum lx_faces faces,
-			 int reads, enum lx_filter filter, char *err, size_t errlen)
+			 int reads, enum lx_filter filter, bool cover, char *err, size_t errlen)
 {
 	char defines[400];
-	struct lx_main_variant v = variant_of(r, shading, faces, reads, filter);
+	struct lx_main_variant v = variant_of(r, shading, faces, reads, filter, cover);
 	lx_main_defines(&v, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
@@ -201,6 +212,7 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
+	p->cover = lx_gl.GetUniformLocation(p->prog, "u_cover");
 	return true;
 }
 
@@ -226,12 +238,13 @@ static int light_shading(const struct lx_renderer *r, int i)
 static void face_plane_fits(const struct lx_renderer *r)
 {
 	for (int i = 0; face_plane(r) && r->d.map_count > 0 && i < r->d.light_count; i++) {
-		struct lx_main_variant v = variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE);
+		struct lx_main_variant v =
+			variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE, false);
 		if (!lx_main_face_plane(&v)) {
 			fprintf(stderr,
 				"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has "
 				"%d: such casters are compared at their pixels' depth\n",
-				v.reads, lx_main_varyings(v.reads, false, true, v.projective), v.max_varyings);
+				v.reads, lx_main_varyings(v.reads, false, true, v.projective, false), v.max_varyings);
 			return;
 		}
 	}
@@ -248,8 +261,8 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 			if (faces == LX_FACES_CASTER && !face_plane(r))
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
-			struct main_program *p = &r->variant[shading][filter][faces][reads];
-			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, err, errlen))
+			struct main_program *p = &r->variant[shading][filter][faces][reads][0];
+			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, false, err, errlen))
 				return false;
 		}
 	}
@@ -503,6 +516,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	}
 	r->d = *d;
 	r->objects = d->meshes->count;
+	r->may_cover = d->map_count > 0 && lx_scene_may_need_cover(d->scene, d->meshes);
 	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
@@ -796,21 +810,23 @@ static int maps_in(unsigned mask)
  * faces turned away; without maps, method none, there is one variant for every draw),
  * built when first used; when it cannot be (cannot happen once the variants built at
  * the start compiled), the one that tests each face and reads every map, *mask every map. */
-static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask)
+static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask,
+				       bool cover)
 {
 	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !face_plane(r)))
 		faces = LX_FACES_TOWARD;
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
+	cover = cover && r->d.map_count > 0 && faces != LX_FACES_AWAY;
 	int reads = maps_in(*mask);
-	struct main_program *p = &r->variant[shading][r->filter][faces][reads];
+	struct main_program *p = &r->variant[shading][r->filter][faces][reads][cover];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r, shading, faces, reads, r->filter, err, sizeof err)) {
+		if (!main_program(p, r, shading, faces, reads, r->filter, cover, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count > 0 ? LX_FACES_TESTED : LX_FACES_TOWARD]
-				       [r->d.map_count];
+				       [r->d.map_count][0];
 		}
 	}
 	return p;
@@ -992,6 +1008,47 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
 	return span;
 }
 
+/* Plane id's spans, those inside the window rectangle of the cover that may shadow it
+ * (lx_plane_cover_window) marked COVER_SPAN (all of them where it has none): a floor
+ * under a table tests the top's cover only about the top's shadow. Returns the spans. */
+static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
+{
+	int c[4];
+	if (!lx_plane_cover_window(f, r->cover_plane[id], id, c)) {
+		for (int i = 0; i < *ns; i++)
+			span[i].mask |= COVER_SPAN;
+		return span;
+	}
+	struct span *to = span == r->seen ? r->spans : r->seen;
+	int n = 0;
+	for (int i = 0; i < *ns; i++) {
+		struct lx_rect b = span[i].box;
+		unsigned m = span[i].mask;
+		int x0 = b.x0 > c[0] ? b.x0 : c[0], x1 = b.x1 < c[2] ? b.x1 : c[2];
+		int y0 = b.y0 > c[1] ? b.y0 : c[1], y1 = b.y1 < c[3] ? b.y1 : c[3];
+		if (n + 5 > PLANE_SPANS) { /* short of room: all of them tested */
+			for (int k = 0; k < *ns; k++)
+				span[k].mask |= COVER_SPAN;
+			return span;
+		}
+		if (x0 >= x1 || y0 >= y1) {
+			to[n++] = span[i];
+			continue;
+		}
+		to[n++] = (struct span){m | COVER_SPAN, {x0, y0, x1, y1}};
+		if (b.y0 < y0) /* below, above, then the sides between */
+			to[n++] = (struct span){m, {b.x0, b.y0, b.x1, y0}};
+		if (y1 < b.y1)
+			to[n++] = (struct span){m, {b.x0, y1, b.x1, b.y1}};
+		if (b.x0 < x0)
+			to[n++] = (struct span){m, {b.x0, y0, x0, y1}};
+		if (x1 < b.x1)
+			to[n++] = (struct span){m, {x1, y0, b.x1, y1}};
+	}
+	*ns = n;
+	return to;
+}
+
 /* Appends caster id's triangles to the frame's index buffer, those turned towards the
  * light first; returns how many indices those are, or -1 when its mesh cannot be indexed
  * so. A face lying in a plane through the light counts as turned away, as the reference
@@ -1044,19 +1101,20 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
+		bool cover = r->cover_plane[id] >= 0; /* small on the screen: the whole of it */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0};
+			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, cover};
 			return n;
 		}
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing};
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing, cover};
 		if (r->facing_count - first - facing > 0)
 			out[n++] = r->d.lookup_everywhere
 					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, first + facing,
-							   r->facing_count - first - facing}
+							   r->facing_count - first - facing, cover}
 					   : (struct draw){id, 0, LX_FACES_AWAY, INDEXED, first + facing,
-							   r->facing_count - first - facing};
+							   r->facing_count - first - facing, false};
 		return n;
 	}
 	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
@@ -1078,6 +1136,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
+	if (!away && r->cover_plane[id] >= 0)
+		span = cover_spans(r, f, id, span, &ns);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
 		unsigned m = span[i].mask;
@@ -1091,7 +1151,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			if (span[j].mask == m)
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
-			out[n++] = (struct draw){id, m, faces, PIECES, first, r->piece_vertices - first};
+			out[n++] = (struct draw){id, m & ~COVER_SPAN, faces, PIECES, first, r->piece_vertices - first,
+						 (m & COVER_SPAN) != 0};
 	}
 	return n;
 }
@@ -1195,6 +1256,13 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	lx_frame_draw_order(f, order);
+	for (int id = 0; id < r->objects; id++) {
+		mat4 m;
+		/* without maps (method none) nothing is shadowed, planes neither */
+		r->cover_plane[id] = r->d.map_count > 0 ? lx_plane_cover_of(f, id, &m) : -1;
+		if (r->cover_plane[id] >= 0)
+			to_float(&m, r->cover[id]);
+	}
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -1260,6 +1328,8 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
+	if (d->cover && p->cover >= 0)
+		lx_gl.UniformMatrix4fv(p->cover, 1, GL_FALSE, r->cover[id]);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1411,13 +1481,13 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	struct main_program *p = NULL;
 	unsigned current = 0;
 	enum lx_faces faces = LX_FACES_TOWARD;
-	bool culling = false; /* as pass_state left it */
+	bool culling = false, cover = false; /* as pass_state left it */
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
-		if (!p || d->mask != current || d->faces != faces) {
-			current = d->mask, faces = d->faces;
+		if (!p || d->mask != current || d->faces != faces || d->cover != cover) {
+			current = d->mask, faces = d->faces, cover = d->cover;
 			unsigned reads = current;
-			struct main_program *v = variant_for(r, shading, faces, &reads);
+			struct main_program *v = variant_for(r, shading, faces, &reads, cover);
 			if (v != p)
 				use_program(r, v, &u);
 			p = v;
@@ -1452,14 +1522,15 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	for (int faces = 0; faces < face_rules(r); faces++)
-		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : r->d.map_count); reads++) {
-			unsigned mask = (1u << reads) - 1;
-			struct main_program *p = variant_for(r, shading, (enum lx_faces)faces, &mask);
-			use_program(r, p, &u);
-			if (mask)
-				set_maps(r, p, &u, mask);
-			lx_gl.DrawArrays(GL_TRIANGLES, 0, 3);
-		}
+		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : r->d.map_count); reads++)
+			for (int cover = 0; cover <= (r->may_cover && faces != LX_FACES_AWAY); cover++) {
+				unsigned mask = (1u << reads) - 1;
+				struct main_program *p = variant_for(r, shading, (enum lx_faces)faces, &mask, cover);
+				use_program(r, p, &u);
+				if (mask)
+					set_maps(r, p, &u, mask);
+				lx_gl.DrawArrays(GL_TRIANGLES, 0, 3);
+			}
 	light_pass_done(kind);
 }
 
@@ -1475,7 +1546,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
 			int shading = light_shading(r, l);
-			if (!r->variant[shading][f][LX_FACES_TOWARD][r->d.map_count].prog)
+			if (!r->variant[shading][f][LX_FACES_TOWARD][r->d.map_count][0].prog)
 				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
 			r->filter = (enum lx_filter)f;
 			warm_light(r, l, shading);

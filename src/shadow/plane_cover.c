@@ -104,3 +104,56 @@ int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m)
 			return p;
 	return -1;
 }
+
+bool lx_plane_cover_window(const struct lx_frame *f, int p, int q, int rect[4])
+{
+	if (p < 0 || q < 0 || p >= f->scene->plane_count || q >= f->scene->plane_count || p == q)
+		return false;
+	vec3 pc[4], qc[4];
+	lx_frame_plane_corners(f, p, pc);
+	lx_frame_plane_corners(f, q, qc);
+	vec3 nq = v3_cross(f->scene->planes[q].edge1, f->scene->planes[q].edge2);
+	const struct lx_light *L = &f->light;
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	for (int k = 0; k < 4; k++) {
+		/* the corner's shadow on q's plane: along the light's ray past the corner */
+		vec3 dir = L->directional ? L->direction : v3_sub(pc[k], L->position);
+		double along = v3_dot(nq, dir), t = v3_dot(nq, v3_sub(qc[0], pc[k])) / along;
+		if (!(fabs(along) > 1e-12 * v3_len(nq) * v3_len(dir)) || !(t >= 0) || !isfinite(t))
+			return false; /* the ray runs along q's plane, or meets it before the corner */
+		vec4 c = m4_mul_point(&f->view.view_proj, v3_add(pc[k], v3_scale(dir, t)));
+		if (!(c.w > 1e-9 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
+			return false; /* at or behind the eye: the shadow's image is not the corners' hull */
+		double x = (c.x / c.w * 0.5 + 0.5) * f->view.width, y = (c.y / c.w * 0.5 + 0.5) * f->view.height;
+		x0 = fmin(x0, x), y0 = fmin(y0, y), x1 = fmax(x1, x), y1 = fmax(y1, y);
+	}
+	/* the shadow is the corners' shadows' quadrilateral (a projection of the parallelogram
+	 * with every corner in front of the light and the eye keeps it convex and its hull) */
+	rect[0] = (int)fmax(0, fmin(f->view.width, floor(x0) - 1));
+	rect[1] = (int)fmax(0, fmin(f->view.height, floor(y0) - 1));
+	rect[2] = (int)fmax(0, fmin(f->view.width, ceil(x1) + 1));
+	rect[3] = (int)fmax(0, fmin(f->view.height, ceil(y1) + 1));
+	return true;
+}
+
+bool lx_scene_may_need_cover(const struct lx_scene *s, const struct lx_scene_meshes *m)
+{
+	int n = lx_scene_object_count(s);
+	for (int p = 0; p < s->plane_count; p++) {
+		const struct lx_plane *pl = &s->planes[p];
+		vec3 nrm = v3_cross(pl->edge1, pl->edge2);
+		double touch = LX_COVER_TOUCH * v3_len(nrm) * (v3_len(pl->edge1) + v3_len(pl->edge2));
+		for (int id = 0; id < n && id < m->count; id++) {
+			vec3 lo = m->mesh[id].bmin, hi = m->mesh[id].bmax;
+			if (id >= s->plane_count) { /* its box over its bounce (lx_caster_bottom) */
+				const struct lx_caster *c = &s->casters[id - s->plane_count];
+				lo = v3_add(lo, v3(c->x, fmin(c->low, c->high), c->z));
+				hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
+			}
+			for (int k = 0; id != p && k < 8; k++)
+				if (v3_dot(nrm, v3_sub(v3_box_corner(lo, hi, k), pl->corner)) < -touch)
+					return true;
+		}
+	}
+	return false;
+}
