@@ -43,8 +43,11 @@ struct span {
 	unsigned mask; /* the maps read, and COVER_SPAN */
 	struct lx_rect box;
 };
-/* A plane's span that tests the cover over it (object_draws): a bit no map has. */
+/* A plane's span that tests the cover over it, and one wholly in the cover's shadow,
+ * drawn in it without a lookup (object_draws, cover_spans): bits no map has. */
 #define COVER_SPAN (1u << LX_MAX_MAPS)
+#define COVERED_SPAN (1u << (LX_MAX_MAPS + 1))
+#define MAP_BITS (COVER_SPAN - 1)
 
 /* One draw of the main pass: an object with the maps it reads, and what of it: its whole
  * mesh, `count` vertices from `first` of the frame's piece buffer (a plane in pieces), or
@@ -1008,45 +1011,86 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
 	return span;
 }
 
-/* Plane id's spans, those inside the window rectangle of the cover that may shadow it
- * (lx_plane_cover_window) marked COVER_SPAN (all of them where it has none): a floor
- * under a table tests the top's cover only about the top's shadow. Returns the spans. */
+/* The pixels [*x0, *x1) of rows [y0, y1) that may hold a point of convex w, a pixel
+ * wider each way; false when none. */
+static bool rows_touched(const struct lx_poly *w, int y0, int y1, int *x0, int *x1)
+{
+	struct lx_poly a, b;
+	lx_poly_clip_halfplane(w, 0, 1, -(double)y0, &a); /* y >= y0 */
+	lx_poly_clip_halfplane(&a, 0, -1, (double)y1, &b); /* y <= y1 */
+	if (b.n < 1)
+		return false;
+	double lo, hi, ylo, yhi;
+	lx_poly_bounds(&b, &lo, &ylo, &hi, &yhi);
+	*x0 = (int)fmax(-1, floor(lo) - 1), *x1 = (int)fmin(1e9, ceil(hi) + 1);
+	return *x1 > *x0;
+}
+
+/* Band [y0, y1) of a span (box columns x0 to x1, maps m) cut by the cover's shadow w:
+ * outside it as it was, along its edges with the test (COVER_SPAN), and a pixel and a row
+ * inside them in the shadow (COVERED_SPAN). Returns the new count. */
+static int cover_band(const struct lx_poly *w, int x0, int x1, int y0, int y1, unsigned m, struct span *to, int n)
+{
+	int ox0, ox1, ix0, ix1;
+	if (!rows_touched(w, y0, y1, &ox0, &ox1) || ox1 <= x0 || ox0 >= x1) {
+		to[n++] = (struct span){m, {x0, y0, x1, y1}};
+		return n;
+	}
+	ox0 = ox0 > x0 ? ox0 : x0, ox1 = ox1 < x1 ? ox1 : x1;
+	bool in = lx_poly_rows_inside(w, y0 - 1, y1 + 1, 1.0, &ix0, &ix1);
+	ix0 = ix0 > ox0 ? ix0 : ox0, ix1 = ix1 < ox1 ? ix1 : ox1;
+	in = in && ix1 > ix0;
+	if (ox0 > x0)
+		to[n++] = (struct span){m, {x0, y0, ox0, y1}};
+	if (!in)
+		to[n++] = (struct span){m | COVER_SPAN, {ox0, y0, ox1, y1}};
+	if (in && ix0 > ox0)
+		to[n++] = (struct span){m | COVER_SPAN, {ox0, y0, ix0, y1}};
+	if (in)
+		to[n++] = (struct span){COVERED_SPAN, {ix0, y0, ix1, y1}};
+	if (in && ox1 > ix1)
+		to[n++] = (struct span){m | COVER_SPAN, {ix1, y0, ox1, y1}};
+	if (x1 > ox1)
+		to[n++] = (struct span){m, {ox1, y0, x1, y1}};
+	return n;
+}
+
+/* Plane id's spans cut by the shadow the lit front over it throws on it
+ * (lx_plane_cover_image), band by band of the lookup region's grid: the floor under a
+ * table is drawn in the top's shadow without a lookup inside it, and tests it only along
+ * its edges. With no shadow to give (it reaches behind the eye) every span tests it.
+ * Returns the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	int c[4];
-	if (!lx_plane_cover_window(f, r->cover_plane[id], id, c)) {
-		for (int i = 0; i < *ns; i++)
-			span[i].mask |= COVER_SPAN;
-		return span;
-	}
+	struct lx_poly w;
 	struct span *to = span == r->seen ? r->spans : r->seen;
 	int n = 0;
-	for (int i = 0; i < *ns; i++) {
+	double wx0 = 0, wy0 = 0, wx1 = -1, wy1 = -1;
+	bool ok = lx_plane_cover_image(f, r->cover_plane[id], id, &w);
+	if (ok)
+		lx_poly_bounds(&w, &wx0, &wy0, &wx1, &wy1);
+	for (int i = 0; i < *ns && ok; i++) {
 		struct lx_rect b = span[i].box;
-		unsigned m = span[i].mask;
-		int x0 = b.x0 > c[0] ? b.x0 : c[0], x1 = b.x1 < c[2] ? b.x1 : c[2];
-		int y0 = b.y0 > c[1] ? b.y0 : c[1], y1 = b.y1 < c[3] ? b.y1 : c[3];
-		if (n + 5 > PLANE_SPANS) { /* short of room: all of them tested */
-			for (int k = 0; k < *ns; k++)
-				span[k].mask |= COVER_SPAN;
-			return span;
-		}
-		if (x0 >= x1 || y0 >= y1) {
-			to[n++] = span[i];
+		if (b.x1 < wx0 - 1 || b.x0 > wx1 + 1 || b.y1 < wy0 - 1 || b.y0 > wy1 + 1) {
+			ok = n + 1 <= PLANE_SPANS;
+			if (ok)
+				to[n++] = span[i]; /* apart from the shadow: as it was */
 			continue;
 		}
-		to[n++] = (struct span){m | COVER_SPAN, {x0, y0, x1, y1}};
-		if (b.y0 < y0) /* below, above, then the sides between */
-			to[n++] = (struct span){m, {b.x0, b.y0, b.x1, y0}};
-		if (y1 < b.y1)
-			to[n++] = (struct span){m, {b.x0, y1, b.x1, b.y1}};
-		if (b.x0 < x0)
-			to[n++] = (struct span){m, {b.x0, y0, x0, y1}};
-		if (x1 < b.x1)
-			to[n++] = (struct span){m, {x1, y0, b.x1, y1}};
+		for (int y = b.y0 - b.y0 % LX_LOOKUP_BAND; y < b.y1 && ok; y += LX_LOOKUP_BAND) {
+			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1;
+			ok = n + 5 <= PLANE_SPANS;
+			if (ok)
+				n = cover_band(&w, b.x0, b.x1, y0, y1, span[i].mask, to, n);
+		}
 	}
-	*ns = n;
-	return to;
+	if (ok) {
+		*ns = n;
+		return to;
+	}
+	for (int i = 0; i < *ns; i++) /* no shadow to give, or short of room: tested everywhere */
+		span[i].mask |= COVER_SPAN;
+	return span;
 }
 
 /* Appends caster id's triangles to the frame's index buffer, those turned towards the
@@ -1151,8 +1195,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			if (span[j].mask == m)
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
-			out[n++] = (struct draw){id, m & ~COVER_SPAN, faces, PIECES, first, r->piece_vertices - first,
-						 (m & COVER_SPAN) != 0};
+			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
+						 r->piece_vertices - first, (m & COVER_SPAN) != 0};
 	}
 	return n;
 }

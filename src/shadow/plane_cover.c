@@ -105,8 +105,9 @@ int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m)
 	return -1;
 }
 
-bool lx_plane_cover_window(const struct lx_frame *f, int p, int q, int rect[4])
+bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win)
 {
+	win->n = 0;
 	if (p < 0 || q < 0 || p >= f->scene->plane_count || q >= f->scene->plane_count || p == q)
 		return false;
 	vec3 pc[4], qc[4];
@@ -114,7 +115,7 @@ bool lx_plane_cover_window(const struct lx_frame *f, int p, int q, int rect[4])
 	lx_frame_plane_corners(f, q, qc);
 	vec3 nq = v3_cross(f->scene->planes[q].edge1, f->scene->planes[q].edge2);
 	const struct lx_light *L = &f->light;
-	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	vec2 pts[4];
 	for (int k = 0; k < 4; k++) {
 		/* the corner's shadow on q's plane: along the light's ray past the corner */
 		vec3 dir = L->directional ? L->direction : v3_sub(pc[k], L->position);
@@ -124,16 +125,12 @@ bool lx_plane_cover_window(const struct lx_frame *f, int p, int q, int rect[4])
 		vec4 c = m4_mul_point(&f->view.view_proj, v3_add(pc[k], v3_scale(dir, t)));
 		if (!(c.w > 1e-9 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
 			return false; /* at or behind the eye: the shadow's image is not the corners' hull */
-		double x = (c.x / c.w * 0.5 + 0.5) * f->view.width, y = (c.y / c.w * 0.5 + 0.5) * f->view.height;
-		x0 = fmin(x0, x), y0 = fmin(y0, y), x1 = fmax(x1, x), y1 = fmax(y1, y);
+		pts[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
 	}
-	/* the shadow is the corners' shadows' quadrilateral (a projection of the parallelogram
-	 * with every corner in front of the light and the eye keeps it convex and its hull) */
-	rect[0] = (int)fmax(0, fmin(f->view.width, floor(x0) - 1));
-	rect[1] = (int)fmax(0, fmin(f->view.height, floor(y0) - 1));
-	rect[2] = (int)fmax(0, fmin(f->view.width, ceil(x1) + 1));
-	rect[3] = (int)fmax(0, fmin(f->view.height, ceil(y1) + 1));
-	return true;
+	/* the corners' shadows bound the shadow (a central projection of the parallelogram,
+	 * every corner in front of the light and of the eye, keeps it convex) */
+	lx_poly_hull(pts, 4, win);
+	return win->n >= 3;
 }
 
 bool lx_scene_may_need_cover(const struct lx_scene *s, const struct lx_scene_meshes *m)

@@ -37,13 +37,13 @@ bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out);
  * first such plane, its matrix in *m, or -1. */
 int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m);
 
-/* The window rectangle that holds every point of plane q in plane p's cover: the bounds
- * of the shadow p's parallelogram throws on q's plane, as the eye sees it, a pixel wider
- * and within the window (pixels, GL's origin: x0, y0, x1, y1, as glScissor takes them).
- * False when there is none to give (the shadow reaches behind the eye, or runs off to
- * infinity): then anywhere. A plane as large on the screen as a floor draws the test
- * only there. */
-bool lx_plane_cover_window(const struct lx_frame *f, int p, int q, int rect[4]);
+/* The shadow plane p's parallelogram throws on plane q's plane, as the eye sees it: a
+ * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in
+ * p's cover, and outside which none is. False when there is none to give (the shadow
+ * reaches behind the eye, or runs off to infinity): then anywhere. A plane as large on
+ * the screen as a floor is drawn in its own shadow inside it (no lookup, no test), with
+ * the test along its edges, and as before elsewhere. */
+bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win);
 
 /* Whether any frame of the scene's animation may need a cover test: some object's box,
  * anywhere on its path, reaches beyond a plane's plane on the side its back faces (for
