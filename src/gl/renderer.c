@@ -71,7 +71,9 @@ struct draw {
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
-	struct draw draws[LX_MAX_PLANES * (1 << LX_MAX_MAPS) + 2 * LX_MAX_CASTERS];
+	/* a plane draws once per set of maps, with the cover test or without, and once in a
+	 * cover's shadow (object_draws); a caster at most twice */
+	struct draw draws[LX_MAX_PLANES * (2 * (1 << LX_MAX_MAPS) + 1) + 2 * LX_MAX_CASTERS];
 	/* casters' triangles sorted by facing this frame, 16-bit indices into their meshes */
 	unsigned short *facing_index;
 	int facing_count, facing_room;
