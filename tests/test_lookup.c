@@ -491,6 +491,8 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 			assert_true(build(&s, "none", W, H, 0.4));
 			const struct lx_frame *f = &s.frame;
 			int np = f->scene->plane_count;
+			struct lx_plane_covers cov;
+			lx_plane_covers(f, &cov);
 			for (int p = 0; p < np; p++) {
 				mat4 m;
 				vec3 q[4], n = v3_cross(f->scene->planes[p].edge1, f->scene->planes[p].edge2);
@@ -499,6 +501,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 								    : v3_dot(n, v3_sub(f->light.position, q[0]));
 				bool has = lx_plane_cover_matrix(f, p, &m);
 				assert_true(has == (side > 0)); /* no light of these grazes a plane */
+				assert_true(cov.lit[p] == has && (!has || !memcmp(&cov.m[p], &m, sizeof m)));
 				for (int k = 0; has && k < 4000; k++) {
 					/* half over the scene, half around the table and under it */
 					vec3 lo = k & 1 ? v3(-1.4, 0, -1) : f->scene_min, hi = k & 1 ? v3(1.4, 0.8, 1) : f->scene_max;
@@ -557,8 +560,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 			/* the table top covers its slab wherever the light is above it; nothing in the
 			 * default scene lies beyond a lit front */
 			for (int id = 0; id < f->object_count; id++) {
-				mat4 m;
-				int p = lx_plane_cover_of(f, id, &m);
+				int p = cov.of[id];
 				bool slab = sc == 1 && id == np && (f->light.directional ? f->light.direction.y < 0 : f->light.position.y > 0.75);
 				if (slab ? p != 0 : sc == 0 && p != -1)
 					fail_msg("%s scene, %s: object %d covered by plane %d", sc ? "table" : "default",
@@ -566,7 +568,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 				extra += p >= 0;
 				/* and none of an uncovered object's points is in a plane's shadow */
 				for (int q = 0; q < np && p < 0; q++)
-					for (int k = 0; q != id && k < 300 && lx_plane_cover_matrix(f, q, &m); k++) {
+					for (int k = 0; q != id && k < 300 && cov.lit[q]; k++) {
 						vec3 x = v3(f->bmin[id].x + (f->bmax[id].x - f->bmin[id].x) * test_rand(&seed),
 							    f->bmin[id].y + (f->bmax[id].y - f->bmin[id].y) * test_rand(&seed),
 							    f->bmin[id].z + (f->bmax[id].z - f->bmin[id].z) * test_rand(&seed));

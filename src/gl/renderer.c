@@ -60,7 +60,7 @@ struct draw {
 	enum lx_faces faces; /* its faces' side of the light, which picks the variant */
 	enum draw_kind kind;
 	int first, count;
-	bool cover; /* tests the plane cover_plane[object] (its matrix cover[object]) */
+	bool cover; /* tests the plane covers.of[object] (its matrix cover[that plane]) */
 };
 
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
@@ -119,10 +119,10 @@ struct lx_renderer {
 	 * first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][2];
-	/* this frame's plane over each object whose front the light sees (-1: none) and its
-	 * cover matrix (lx_plane_cover_of) */
-	int cover_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
-	float cover[LX_MAX_PLANES + LX_MAX_CASTERS][16];
+	/* this light pass's plane over each object whose front the light sees (-1: none), and
+	 * each plane's cover matrix as the shader takes it (lx_plane_covers) */
+	struct lx_plane_covers covers;
+	float cover[LX_MAX_PLANES][16];
 	bool may_cover; /* some frame may draw with a cover test (lx_scene_may_need_cover) */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
@@ -1068,7 +1068,7 @@ static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f,
 	struct span *to = span == r->seen ? r->spans : r->seen;
 	int n = 0;
 	double wx0 = 0, wy0 = 0, wx1 = -1, wy1 = -1;
-	bool ok = lx_plane_cover_image(f, r->cover_plane[id], id, &w);
+	bool ok = lx_plane_cover_image(f, r->covers.of[id], id, &w);
 	if (ok)
 		lx_poly_bounds(&w, &wx0, &wy0, &wx1, &wy1);
 	for (int i = 0; i < *ns && ok; i++) {
@@ -1147,7 +1147,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
-		bool cover = r->cover_plane[id] >= 0; /* small on the screen: the whole of it */
+		bool cover = r->covers.of[id] >= 0; /* small on the screen: the whole of it */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
 			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, cover};
@@ -1182,7 +1182,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
-	if (!away && r->cover_plane[id] >= 0)
+	if (!away && r->covers.of[id] >= 0)
 		span = cover_spans(r, f, id, span, &ns);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
@@ -1302,13 +1302,14 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	lx_frame_draw_order(f, order);
-	for (int id = 0; id < r->objects; id++) {
-		mat4 m;
-		/* without maps (method none) nothing is shadowed, planes neither */
-		r->cover_plane[id] = r->d.map_count > 0 ? lx_plane_cover_of(f, id, &m) : -1;
-		if (r->cover_plane[id] >= 0)
-			to_float(&m, r->cover[id]);
-	}
+	if (r->d.map_count > 0) {
+		lx_plane_covers(f, &r->covers);
+		for (int p = 0; p < r->d.scene->plane_count; p++)
+			if (r->covers.lit[p])
+				to_float(&r->covers.m[p], r->cover[p]);
+	} else /* without maps (method none) nothing is shadowed, by planes neither */
+		for (int id = 0; id < r->objects; id++)
+			r->covers.of[id] = -1;
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -1375,7 +1376,7 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
 	if (d->cover && p->cover >= 0)
-		lx_gl.UniformMatrix4fv(p->cover, 1, GL_FALSE, r->cover[id]);
+		lx_gl.UniformMatrix4fv(p->cover, 1, GL_FALSE, r->cover[r->covers.of[id]]);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);

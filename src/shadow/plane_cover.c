@@ -1,65 +1,41 @@
 /* What a plane of interest's lit front shadows (plane_cover.h). */
 #include "plane_cover.h"
+#include "plane_optimal.h"
 #include <math.h>
 
-/* Row r of m: h_r = a . X + b. */
-static void set_row(mat4 *m, int r, vec3 a, double b)
+/* Row r of m: h_r = a . (X, 1). */
+static void set_row(mat4 *m, int r, vec4 a)
 {
-	m->m[r] = a.x, m->m[4 + r] = a.y, m->m[8 + r] = a.z, m->m[12 + r] = b;
+	m->m[r] = a.x, m->m[4 + r] = a.y, m->m[8 + r] = a.z, m->m[12 + r] = a.w;
 }
 
 bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out)
 {
 	if (p < 0 || p >= f->scene->plane_count)
 		return false;
-	const struct lx_plane *pl = &f->scene->planes[p];
-	vec3 q[4];
-	lx_frame_plane_corners(f, p, q);
-	vec3 c = q[0], e1 = pl->edge1, e2 = pl->edge2, n = v3_cross(e1, e2);
-	double nn = v3_dot(n, n);
+	const struct lx_plane *pl = &f->scene->planes[p]; /* planes do not move: their offset is 0 */
+	vec3 c = pl->corner, e1 = pl->edge1, e2 = pl->edge2, n = v3_cross(e1, e2);
+	double nn = v3_dot(n, n), size = v3_len(e1) + v3_len(e2);
 	if (!(nn > 0))
 		return false; /* no parallelogram (the scene parser refuses one) */
-	/* the dual basis: a1 . e1 = a2 . e2 = 1, and each is 0 on the other edge and on n */
-	vec3 a1 = v3_scale(v3_cross(e2, n), 1 / nn), a2 = v3_scale(v3_cross(n, e1), 1 / nn);
-	double nl = sqrt(nn); /* nn > 0 */
-	const struct lx_light *L = &f->light;
-	if (L->directional) {
-		vec3 d = L->direction;
-		double nd = v3_dot(n, d);
-		if (!(nd < -LX_COVER_GRAZING * nl * v3_len(d)))
-			return false; /* its back is lit, or the light runs along it */
-		/* s = n . (X - c) / n . d: how far X's ray runs back towards the light to the
-		 * plane (> 0 beyond it), and the crossing Y = X - s d */
-		vec3 s = v3_scale(n, 1 / nd); /* nd < 0 */
-		double s0 = -v3_dot(n, c) / nd;
-		for (int i = 0; i < 2; i++) {
-			vec3 a = i ? a2 : a1;
-			double ad = v3_dot(a, d);
-			set_row(out, i, v3_sub(a, v3_scale(s, ad)), -v3_dot(a, c) - s0 * ad);
-		}
-		set_row(out, 2, v3(0, 0, 0), 1);
-		/* in the parallelogram's size (> 0: nl > 0), as w - 1 below is in the light's
-		 * distance: LX_COVER_TOUCH is a share of either */
-		double size = v3_len(e1) + v3_len(e2);
-		set_row(out, 3, v3_scale(s, 1 / size), s0 / size);
-		return true;
-	}
-	vec3 lp = L->position, lc = v3_sub(lp, c);
-	double k = v3_dot(n, lc), reach = v3_len(lc) + v3_len(e1) + v3_len(e2);
-	if (!(k > LX_COVER_GRAZING * nl * reach))
-		return false; /* its back is lit, or the light lies about on its plane */
-	/* w = n . (L - X) / k: 1 on the plane, > 1 beyond it. The crossing of L -> X with the
-	 * plane lies at 1 / w of the way (between L and X exactly where w > 1), and
-	 * w (Y - c) = w (L - c) + X - L, affine in X */
-	vec3 wv = v3_scale(n, -1 / k); /* k > 0 */
-	double w0 = v3_dot(n, lp) / k;
-	for (int i = 0; i < 2; i++) {
-		vec3 a = i ? a2 : a1;
-		double al = v3_dot(a, lc);
-		set_row(out, i, v3_add(v3_scale(wv, al), a), w0 * al - v3_dot(a, lp));
-	}
-	set_row(out, 2, wv, w0);
-	set_row(out, 3, wv, w0 - 1);
+	/* pi . L: the light's distance in front of the plane, or a directional light's cosine */
+	vec4 pi = lx_plane_equation(pl), L = lx_light_point(&f->light);
+	vec3 lv = v3(L.x, L.y, L.z);
+	double k = v4_dot(pi, L), reach = L.w != 0 ? v3_len(v3_sub(lv, c)) + size : v3_len(lv);
+	if (!(k > LX_COVER_GRAZING * reach))
+		return false; /* its back is lit, or the light lies about in it or runs along it */
+	/* The light's projection onto the plane, X -> X - (pi . X / k) L (homogeneous), then
+	 * the parallelogram's coordinates (the dual basis: a1 . e1 = a2 . e2 = 1, each 0 on
+	 * the other edge and on n) and w: each such row r, taken through the projection, is
+	 * r - (r . L / k) pi, affine in X. */
+	vec3 a1 = v3_scale(v3_cross(e2, n), 1 / nn), a2 = v3_scale(v3_cross(n, e1), 1 / nn); /* nn > 0 */
+	vec4 rows[3] = {{a1.x, a1.y, a1.z, -v3_dot(a1, c)}, {a2.x, a2.y, a2.z, -v3_dot(a2, c)}, {0, 0, 0, 1}};
+	for (int i = 0; i < 3; i++)
+		set_row(out, i, v4_lin(1, rows[i], -v4_dot(rows[i], L) / k, pi)); /* k > 0 */
+	/* how far beyond the plane, in the light's distance from it (a directional light's
+	 * in the parallelogram's size, > 0): LX_COVER_TOUCH is a share of either */
+	double g = -1 / (L.w != 0 ? k : k * size);
+	set_row(out, 3, (vec4){g * pi.x, g * pi.y, g * pi.z, g * pi.w});
 	return true;
 }
 
@@ -95,14 +71,17 @@ static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
 	return u0 <= 1 && u1 >= 0 && v0 <= 1 && v1 >= 0;
 }
 
-int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m)
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 {
-	if (id < 0 || id >= f->object_count)
-		return -1;
-	for (int p = 0; p < f->scene->plane_count; p++)
-		if (p != id && lx_plane_cover_matrix(f, p, m) && beyond_meets(m, f->bmin[id], f->bmax[id]))
-			return p;
-	return -1;
+	int np = f->scene->plane_count;
+	for (int p = 0; p < np; p++)
+		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
+	for (int id = 0; id < f->object_count; id++) {
+		out->of[id] = -1;
+		for (int p = 0; p < np && out->of[id] < 0; p++)
+			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
+				out->of[id] = p;
+	}
 }
 
 bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win)
@@ -110,22 +89,23 @@ bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly
 	win->n = 0;
 	if (p < 0 || q < 0 || p >= f->scene->plane_count || q >= f->scene->plane_count || p == q)
 		return false;
-	vec3 pc[4], qc[4];
+	vec3 pc[4];
 	lx_frame_plane_corners(f, p, pc);
-	lx_frame_plane_corners(f, q, qc);
-	vec3 nq = v3_cross(f->scene->planes[q].edge1, f->scene->planes[q].edge2);
-	const struct lx_light *L = &f->light;
+	vec4 pi = lx_plane_equation(&f->scene->planes[q]), L = lx_light_point(&f->light);
+	double k = v4_dot(pi, L);
 	vec2 pts[4];
-	for (int k = 0; k < 4; k++) {
-		/* the corner's shadow on q's plane: along the light's ray past the corner */
-		vec3 dir = L->directional ? L->direction : v3_sub(pc[k], L->position);
-		double along = v3_dot(nq, dir), t = v3_dot(nq, v3_sub(qc[0], pc[k])) / along;
-		if (!(fabs(along) > 1e-12 * v3_len(nq) * v3_len(dir)) || !(t >= 0) || !isfinite(t))
-			return false; /* the ray runs along q's plane, or meets it before the corner */
-		vec4 c = m4_mul_point(&f->view.view_proj, v3_add(pc[k], v3_scale(dir, t)));
+	for (int i = 0; i < 4; i++) {
+		/* the corner's shadow on q's plane, X - s L with s = pi . X / k (homogeneous): past
+		 * the corner from the light where 0 <= s, and s < 1 for a point light */
+		vec4 x = {pc[i].x, pc[i].y, pc[i].z, 1};
+		double s = v4_dot(pi, x) / k, w = 1 - s * L.w;
+		if (!(s >= 0) || !(w > 1e-12) || !isfinite(s))
+			return false; /* the light runs along q's plane, or the ray meets it before the corner */
+		vec4 y = v4_lin(1 / w, x, -s / w, L);
+		vec4 c = m4_mul_point(&f->view.view_proj, (vec3){y.x, y.y, y.z});
 		if (!(c.w > 1e-9 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
 			return false; /* at or behind the eye: the shadow's image is not the corners' hull */
-		pts[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+		pts[i] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
 	}
 	/* the corners' shadows bound the shadow (a central projection of the parallelogram,
 	 * every corner in front of the light and of the eye, keeps it convex) */

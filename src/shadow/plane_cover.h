@@ -32,10 +32,16 @@
  * False where p's front is not lit (its back faces the light, or the light grazes it). */
 bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out);
 
-/* The plane whose lit front may shadow object id: some of id's box lies beyond it from
- * the light, and the light's rays to that part cross the parallelogram's bounds; the
- * first such plane, its matrix in *m, or -1. */
-int lx_plane_cover_of(const struct lx_frame *f, int id, mat4 *m);
+/* A frame's covers: each plane's matrix where its front is lit (lx_plane_cover_matrix),
+ * and for each object the plane whose lit front may shadow it (some of its box lies
+ * beyond it from the light, and the light's rays to that part cross the parallelogram's
+ * bounds; the first such plane), -1 for none. */
+struct lx_plane_covers {
+	bool lit[LX_MAX_PLANES];
+	mat4 m[LX_MAX_PLANES];
+	int of[LX_MAX_PLANES + LX_MAX_CASTERS];
+};
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
 
 /* The shadow plane p's parallelogram throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in
