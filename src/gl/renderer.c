@@ -964,55 +964,6 @@ static void add_piece(struct lx_renderer *r, const struct lx_frame *f, int id, s
 	}
 }
 
-/* Spans in[0..n) without the pixels plane-image win covers, by a pixel (each band of the
- * lookup region's grid that it covers loses that part; bands it does not cover stay
- * together), into out (room for room); returns the new count, or -1 short of room. */
-static int uncovered(const struct span *in, int n, const struct lx_poly *win, struct span *out, int room)
-{
-	int k = 0;
-	for (int i = 0; i < n; i++) {
-		struct lx_rect b = in[i].box;
-		int run = b.y0; /* rows from run on, not yet written, are whole */
-		for (int y = b.y0 - b.y0 % LX_LOOKUP_BAND; y < b.y1; y += LX_LOOKUP_BAND) {
-			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1, x0, x1;
-			if (!lx_poly_rows_inside(win, y0, y1, 1.0, &x0, &x1) || x1 <= b.x0 || x0 >= b.x1)
-				continue;
-			if (k + 3 > room)
-				return -1;
-			if (y0 > run)
-				out[k++] = (struct span){in[i].mask, {b.x0, run, b.x1, y0}};
-			if (x0 > b.x0)
-				out[k++] = (struct span){in[i].mask, {b.x0, y0, x0, y1}};
-			if (x1 < b.x1)
-				out[k++] = (struct span){in[i].mask, {x1, y0, b.x1, y1}};
-			run = y1;
-		}
-		if (run < b.y1) {
-			if (k + 1 > room)
-				return -1;
-			out[k++] = (struct span){in[i].mask, {b.x0, run, b.x1, b.y1}};
-		}
-	}
-	return k;
-}
-
-/* Plane id's spans without what the planes that hide it cover (lx_frame_plane_hides: a
- * table top over the floor): nothing of it is drawn there, in any pass, since the plane in
- * front is drawn whole. Returns the spans and their count (*ns). */
-static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
-{
-	for (int q = 0; q < r->d.scene->plane_count; q++) {
-		struct lx_poly win;
-		if (!lx_frame_plane_hides(f, q, id, &win))
-			continue;
-		struct span *to = span == r->seen ? r->spans : r->seen;
-		int n = uncovered(span, *ns, &win, to, PLANE_SPANS);
-		if (n >= 0) /* short of room: drawn as they were */
-			span = to, *ns = n;
-	}
-	return span;
-}
-
 /* The pixels [*x0, *x1) of rows [y0, y1) that may hold a point of convex w, a pixel
  * wider each way; false when none. */
 static bool rows_touched(const struct lx_poly *w, int y0, int y1, int *x0, int *x1)
@@ -1028,69 +979,96 @@ static bool rows_touched(const struct lx_poly *w, int y0, int y1, int *x0, int *
 	return *x1 > *x0;
 }
 
-/* Band [y0, y1) of a span (box columns x0 to x1, maps m) cut by the cover's shadow w:
- * outside it as it was, along its edges with the test (COVER_SPAN), and a pixel and a row
- * inside them in the shadow (COVERED_SPAN). Returns the new count. */
-static int cover_band(const struct lx_poly *w, int x0, int x1, int y0, int y1, unsigned m, struct span *to, int n)
+/* Spans in[0..n) cut band by band (the lookup region's grid) by convex window polygon
+ * win, into out (room for room): in each band, the pixels inside win by a pixel along
+ * the row and by `rows` rows across (lx_poly_rows_inside) become a span of mask `inner`
+ * (none when 0), and with `edge` nonzero those around them that win may reach become the
+ * span's own mask | edge; the rest, and the rows of bands it leaves alone, stay as they
+ * were, together. Returns the new count, or -1 short of room. */
+static int cut_spans(const struct span *in, int n, const struct lx_poly *win, int rows, unsigned edge, unsigned inner,
+		     struct span *out, int room)
 {
-	int ox0, ox1, ix0, ix1;
-	if (!rows_touched(w, y0, y1, &ox0, &ox1) || ox1 <= x0 || ox0 >= x1) {
-		to[n++] = (struct span){m, {x0, y0, x1, y1}};
-		return n;
+	int k = 0;
+	for (int i = 0; i < n; i++) {
+		struct lx_rect b = in[i].box;
+		unsigned m = in[i].mask;
+		int run = b.y0; /* rows from run on, not yet written, are whole */
+		for (int y = b.y0 - b.y0 % LX_LOOKUP_BAND; y < b.y1; y += LX_LOOKUP_BAND) {
+			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1;
+			int ix0 = 0, ix1 = 0, ox0 = 0, ox1 = 0;
+			bool touch = edge && rows_touched(win, y0, y1, &ox0, &ox1) && ox1 > b.x0 && ox0 < b.x1;
+			bool inside = lx_poly_rows_inside(win, y0 - rows, y1 + rows, 1.0, &ix0, &ix1);
+			ix0 = ix0 > b.x0 ? ix0 : b.x0, ix1 = ix1 < b.x1 ? ix1 : b.x1;
+			inside = inside && ix1 > ix0;
+			if (!touch && !inside)
+				continue;
+			if (!touch) /* no edges: the inner pixels alone */
+				ox0 = ix0, ox1 = ix1;
+			ox0 = ox0 > b.x0 ? ox0 : b.x0, ox1 = ox1 < b.x1 ? ox1 : b.x1;
+			if (k + 6 > room)
+				return -1;
+			if (y0 > run)
+				out[k++] = (struct span){m, {b.x0, run, b.x1, y0}};
+			if (ox0 > b.x0)
+				out[k++] = (struct span){m, {b.x0, y0, ox0, y1}};
+			if (!inside) {
+				out[k++] = (struct span){m | edge, {ox0, y0, ox1, y1}};
+			} else {
+				ix0 = ix0 > ox0 ? ix0 : ox0, ix1 = ix1 < ox1 ? ix1 : ox1;
+				if (ix0 > ox0)
+					out[k++] = (struct span){m | edge, {ox0, y0, ix0, y1}};
+				if (inner && ix1 > ix0)
+					out[k++] = (struct span){inner, {ix0, y0, ix1, y1}};
+				if (ox1 > ix1)
+					out[k++] = (struct span){m | edge, {ix1, y0, ox1, y1}};
+			}
+			if (b.x1 > ox1)
+				out[k++] = (struct span){m, {ox1, y0, b.x1, y1}};
+			run = y1;
+		}
+		if (run < b.y1) {
+			if (k + 1 > room)
+				return -1;
+			out[k++] = (struct span){m, {b.x0, run, b.x1, b.y1}};
+		}
 	}
-	ox0 = ox0 > x0 ? ox0 : x0, ox1 = ox1 < x1 ? ox1 : x1;
-	bool in = lx_poly_rows_inside(w, y0 - 1, y1 + 1, 1.0, &ix0, &ix1);
-	ix0 = ix0 > ox0 ? ix0 : ox0, ix1 = ix1 < ox1 ? ix1 : ox1;
-	in = in && ix1 > ix0;
-	if (ox0 > x0)
-		to[n++] = (struct span){m, {x0, y0, ox0, y1}};
-	if (!in)
-		to[n++] = (struct span){m | COVER_SPAN, {ox0, y0, ox1, y1}};
-	if (in && ix0 > ox0)
-		to[n++] = (struct span){m | COVER_SPAN, {ox0, y0, ix0, y1}};
-	if (in)
-		to[n++] = (struct span){COVERED_SPAN, {ix0, y0, ix1, y1}};
-	if (in && ox1 > ix1)
-		to[n++] = (struct span){m | COVER_SPAN, {ix1, y0, ox1, y1}};
-	if (x1 > ox1)
-		to[n++] = (struct span){m, {ox1, y0, x1, y1}};
-	return n;
+	return k;
+}
+
+/* Plane id's spans without what the planes that hide it cover (lx_frame_plane_hides: a
+ * table top over the floor): nothing of it is drawn there, in any pass, since the plane in
+ * front is drawn whole. Returns the spans and their count (*ns). */
+static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
+{
+	for (int q = 0; q < r->d.scene->plane_count; q++) {
+		struct lx_poly win;
+		if (!lx_frame_plane_hides(f, q, id, &win))
+			continue;
+		struct span *to = span == r->seen ? r->spans : r->seen;
+		int n = cut_spans(span, *ns, &win, 0, 0, 0, to, PLANE_SPANS); /* nothing of it inside */
+		if (n >= 0) /* short of room: drawn as they were */
+			span = to, *ns = n;
+	}
+	return span;
 }
 
 /* Plane id's spans cut by the shadow the lit front over it throws on it
- * (lx_plane_cover_image), band by band of the lookup region's grid: the floor under a
- * table is drawn in the top's shadow without a lookup inside it, and tests it only along
- * its edges. With no shadow to give (it reaches behind the eye) every span tests it.
- * Returns the spans. */
+ * (lx_plane_cover_image): inside it, a pixel and a row in, drawn in that shadow
+ * (COVERED_SPAN: the floor under a table without a lookup), along its edges with the
+ * test (COVER_SPAN), elsewhere as before. With no shadow to give (it reaches behind the
+ * eye), or short of room, every span tests it. Returns the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
 	struct lx_poly w;
 	struct span *to = span == r->seen ? r->spans : r->seen;
-	int n = 0;
-	double wx0 = 0, wy0 = 0, wx1 = -1, wy1 = -1;
-	bool ok = lx_plane_cover_image(f, r->covers.of[id], id, &w);
-	if (ok)
-		lx_poly_bounds(&w, &wx0, &wy0, &wx1, &wy1);
-	for (int i = 0; i < *ns && ok; i++) {
-		struct lx_rect b = span[i].box;
-		if (b.x1 < wx0 - 1 || b.x0 > wx1 + 1 || b.y1 < wy0 - 1 || b.y0 > wy1 + 1) {
-			ok = n + 1 <= PLANE_SPANS;
-			if (ok)
-				to[n++] = span[i]; /* apart from the shadow: as it was */
-			continue;
-		}
-		for (int y = b.y0 - b.y0 % LX_LOOKUP_BAND; y < b.y1 && ok; y += LX_LOOKUP_BAND) {
-			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1;
-			ok = n + 5 <= PLANE_SPANS;
-			if (ok)
-				n = cover_band(&w, b.x0, b.x1, y0, y1, span[i].mask, to, n);
-		}
-	}
-	if (ok) {
+	int n = lx_plane_cover_image(f, r->covers.of[id], id, &w)
+			? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
+			: -1;
+	if (n >= 0) {
 		*ns = n;
 		return to;
 	}
-	for (int i = 0; i < *ns; i++) /* no shadow to give, or short of room: tested everywhere */
+	for (int i = 0; i < *ns; i++)
 		span[i].mask |= COVER_SPAN;
 	return span;
 }
