@@ -13,6 +13,7 @@
  * in z). Each plane's pixels read only its own maps; a caster reads the plane maps that
  * are dense enough for it, then the fallback. */
 #include "light_space.h"
+#include "plane_cover.h"
 #include "plane_optimal.h"
 #include <math.h>
 #include <string.h>
@@ -132,6 +133,7 @@ struct plane_chart {
 	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
+	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
@@ -661,15 +663,65 @@ static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, cons
 
 /* A clipped footprint's part on the visible plane among the chart's footprints, which
  * the pieces must hold (plane_pieces). */
+static void add_foot(struct plane_chart *ch, struct lx_poly on)
+{
+	if (ch->covered.n >= 3) { /* what lies in the cover's shadow needs no lixel */
+		struct lx_poly rest;
+		lx_poly_hull_of_difference(&on, &ch->covered, NULL, &rest);
+		on = rest;
+	}
+	if (on.n < 3)
+		return;
+	to_chart(ch, &on);
+	double *b = ch->foot[ch->feet++];
+	lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+}
+
 static void reach_foot(struct plane_chart *ch, const struct reach *r)
 {
 	struct lx_poly one = reach_poly(r), on;
 	lx_poly_intersect(&ch->win, &one, &on);
 	if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 		return;
-	to_chart(ch, &on);
-	double *b = ch->foot[ch->feet++];
-	lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+	add_foot(ch, on);
+}
+
+/* Where the cover test (plane_cover.h) shadows plane i exactly: the image of the shadow
+ * of the lit front the renderer tests over it, in window coordinates, COVER_INSET pixels
+ * in from its edges (a lixel there decides nothing, the test shadows the pixel whatever it
+ * reads; the inset keeps the map under the test's rounding, fp16 varyings included).
+ * Empty where no front covers the plane or its shadow has no image. */
+#define COVER_INSET 4.0
+static void covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
+{
+	struct lx_poly img;
+	out->n = 0;
+	if (i >= f->object_count || !lx_plane_cover_image(f, cv->of[i], i, &img))
+		return;
+	*out = img;
+	for (int k = 0; k < img.n && out->n >= 3; k++) { /* counter-clockwise: inside on the left */
+		vec2 p = img.v[k], q = img.v[(k + 1) % img.n];
+		double nx = -(q.y - p.y), ny = q.x - p.x, len = sqrt(nx * nx + ny * ny);
+		if (len > 0) /* the hull leaves no edge of length 0; a guard all the same */
+			lx_poly_clip_halfplane(out, nx, ny, -(nx * p.x + ny * p.y) - COVER_INSET * len, out);
+	}
+	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0))
+		out->n = 0; /* thinner than the inset: nothing to leave out */
+}
+
+/* With a cover over the plane, the wanted rectangle shrinks to the footprints' bounds
+ * (each less the cover's shadow, add_foot); false when none is left. */
+static bool feet_bound(struct plane_chart *ch)
+{
+	if (ch->feet == 0)
+		return false;
+	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+	for (int c = 0; c < ch->feet; c++)
+		for (int k = 0; k < 2; k++)
+			r[k] = fmin(r[k], ch->foot[c][k]), r[k + 2] = fmax(r[k + 2], ch->foot[c][k + 2]);
+	ch->x0 = fmax(ch->x0, r[0]), ch->y0 = fmax(ch->y0, r[1]);
+	ch->x1 = fmin(ch->x1, r[2]), ch->y1 = fmin(ch->y1, r[3]);
+	return true;
 }
 
 static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
@@ -730,11 +782,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 			feet[nfeet].n = one.n;
 			memcpy(feet[nfeet++].v, one.v, (size_t)one.n * sizeof(vec2));
 		}
-		to_chart(ch, &on);
-		if (bounded) {
-			double *b = ch->foot[ch->feet++];
-			lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
-		}
+		if (bounded)
+			add_foot(ch, on);
 		if (similar)
 			continue; /* square lixels: no outlines wanted */
 		double dx, dy;
@@ -743,6 +792,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
+	if (bounded && ch->covered.n >= 3 && !feet_bound(ch))
+		return false; /* every shadow falls in the cover's: the test serves the plane */
 	if (levels) {
 		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet, cuts + nfeet, LX_MAX_PLANES + LX_MAX_CASTERS - nfeet);
 		level_edges(f, i, feet, exact, cuts, nfeet, ch);
@@ -753,7 +804,11 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 /* The rectangles a plane's map is cut into: one around all the casters' footprints, or
  * two around two clusters of them when those cover much less (one similarity for both,
  * each rectangle its own region of the atlas). Clusters: the footprints sorted along x or
- * along y, split where the two bounding rectangles' areas add up least. */
+ * along y, split where the two bounding rectangles' areas add up least. The two may
+ * overlap where the one rectangle holds more pixels than the plane's own budget has
+ * lixels: the density they buy is worth a second lookup over their overlap, where a
+ * pixel reads both maps (each holds every caster over its rectangle, so either alone
+ * decides it right). Where the one rectangle gets a lixel per pixel, they stay apart. */
 #define PIECES_MAX 2
 struct plane_pieces {
 	int n;
@@ -762,13 +817,14 @@ struct plane_pieces {
 
 static double rect_area(const double *r) { return (r[2] - r[0] + 1) * (r[3] - r[1] + 1); }
 
-static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct plane_pieces *pc)
+static void plane_pieces(const struct plane_chart *ch, bool allow_two, long own_budget, struct plane_pieces *pc)
 {
 	pc->n = 1;
 	pc->r[0][0] = ch->x0, pc->r[0][1] = ch->y0, pc->r[0][2] = ch->x1, pc->r[0][3] = ch->y1;
 	if (!allow_two || ch->feet < 2)
 		return;
 	double best = 0.8 * rect_area(pc->r[0]); /* two pieces only where they save a fifth or more */
+	bool overlap = rect_area(pc->r[0]) > (double)own_budget;
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	for (int axis = 0; axis < 2; axis++) {
 		for (int i = 0; i < ch->feet; i++)
@@ -788,7 +844,7 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, struct pl
 			}
 			bool apart = g[0][2] + 2 < g[1][0] || g[1][2] + 2 < g[0][0] || g[0][3] + 2 < g[1][1] || g[1][3] + 2 < g[0][1];
 			double a = rect_area(g[0]) + rect_area(g[1]);
-			if (apart && a < best) {
+			if ((apart || overlap) && a < best) {
 				best = a;
 				pc->n = 2;
 				memcpy(pc->r, g, sizeof g);
@@ -1371,11 +1427,14 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	mat4 depth[PLANE_MAPS];
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
+	struct lx_plane_covers covers;
+	lx_plane_covers(f, &covers);
 	for (int i = 0; i < np; i++) {
+		covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;
-		plane_pieces(&ch[i], piece_free, &pc[i]);
+		plane_pieces(&ch[i], piece_free, (long)o->plane_lixels * o->plane_lixels, &pc[i]);
 		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
 		if (ok[i] && pc[i].n > 1)
 			piece_free = false, piece_of = i;
