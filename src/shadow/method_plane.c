@@ -1428,7 +1428,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	struct lx_plane_covers covers;
-	lx_plane_covers(f, &covers);
+	lx_plane_covers_of_planes(f, &covers);
 	for (int i = 0; i < np; i++) {
 		covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);

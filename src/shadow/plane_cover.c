@@ -71,17 +71,27 @@ static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
 	return u0 <= 1 && u1 >= 0 && v0 <= 1 && v1 >= 0;
 }
 
-void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
+/* The covers, of[] for objects [0, objects). */
+static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
 {
 	int np = f->scene->plane_count;
 	for (int p = 0; p < np; p++)
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
-	for (int id = 0; id < f->object_count; id++) {
+	for (int id = objects; id < f->object_count; id++)
+		out->of[id] = -1;
+	for (int id = 0; id < objects; id++) {
 		out->of[id] = -1;
 		for (int p = 0; p < np && out->of[id] < 0; p++)
 			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
 				out->of[id] = p;
 	}
+}
+
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }
+
+void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out)
+{
+	covers_of(f, f->scene->plane_count, out);
 }
 
 bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win)

@@ -42,6 +42,9 @@ struct lx_plane_covers {
 	int of[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
+/* The same with of[] found for the planes alone (-1 for the casters): what a plane map
+ * leaves to the cover test (method_plane.c). */
+void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);
 
 /* The shadow plane p's parallelogram throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in
