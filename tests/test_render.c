@@ -691,7 +691,7 @@ static void stretched_maps_follow_long_shadows(void **state)
  * the cylinder's is 756x227 pixels for 122,500 lixels (0.71 a pixel); the two overlap
  * where the front leg's footprint meets the cylinder's, and give a lixel per pixel:
  * 0.0086% against one rectangle's 0.0264% (uniform 0.0467%). Where the two pieces
- * overlap, a pixel reads both maps. */
+ * overlap, a pixel is drawn with both maps and reads the first that serves it. */
 static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 {
 	(void)state;

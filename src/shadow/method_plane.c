@@ -806,9 +806,10 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
  * each rectangle its own region of the atlas). Clusters: the footprints sorted along x or
  * along y, split where the two bounding rectangles' areas add up least. The two may
  * overlap where the one rectangle holds more pixels than the plane's own budget has
- * lixels: the density they buy is worth a second lookup over their overlap, where a
- * pixel reads both maps (each holds every caster over its rectangle, so either alone
- * decides it right). Where the one rectangle gets a lixel per pixel, they stay apart. */
+ * lixels: the density they buy is worth drawing their overlap with both maps, of which a
+ * pixel reads the first that serves it (each holds every caster over its rectangle, so
+ * either decides it right). Where the one rectangle gets a lixel per pixel, they stay
+ * apart. */
 #define PIECES_MAX 2
 struct plane_pieces {
 	int n;
