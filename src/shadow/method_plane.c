@@ -661,8 +661,9 @@ static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, cons
 	return bounded;
 }
 
-/* A clipped footprint's part on the visible plane among the chart's footprints, which
- * the pieces must hold (plane_pieces). */
+/* A footprint's part on the visible plane (window coordinates) among the chart's
+ * footprints, which the pieces must hold (plane_pieces), less what the cover test
+ * shadows (covered_part): its bounds, turned. */
 static void add_foot(struct plane_chart *ch, struct lx_poly on)
 {
 	if (ch->covered.n >= 3) { /* what lies in the cover's shadow needs no lixel */
@@ -677,6 +678,7 @@ static void add_foot(struct plane_chart *ch, struct lx_poly on)
 	lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
 }
 
+/* A clipped footprint's part on the visible plane among the chart's footprints. */
 static void reach_foot(struct plane_chart *ch, const struct reach *r)
 {
 	struct lx_poly one = reach_poly(r), on;
@@ -696,7 +698,7 @@ static void covered_part(const struct lx_frame *f, const struct lx_plane_covers 
 {
 	struct lx_poly img;
 	out->n = 0;
-	if (i >= f->object_count || !lx_plane_cover_image(f, cv->of[i], i, &img))
+	if (!lx_plane_cover_image(f, cv->of[i], i, &img)) /* of[i] -1: no front over it */
 		return;
 	*out = img;
 	for (int k = 0; k < img.n && out->n >= 3; k++) { /* counter-clockwise: inside on the left */
