@@ -1030,7 +1030,7 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
 	}
 }
 
-/* --caster-depth face against point (the default): a caster's face compared along its
+/* --caster-depth face (the default) against point: a caster's face compared along its
  * plane at the centre of the lixel read, moved only towards the light, can only light a
  * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
  * before); over every method and standard configuration of both built-in scenes it

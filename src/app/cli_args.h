@@ -82,11 +82,11 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \
 	"                       where a caster's shadow can fall on it) or all (everywhere: the\n" \
 	"                       same shadows, more fill)\n" \
-	"  --caster-depth D     point (default: a caster's pixel compared at its own depth) or\n" \
-	"                       face (along the face's plane at the centre of the lixel read,\n" \
-	"                       never further from the light: no acne where a coarse map meets\n" \
-	"                       the caster's silhouette, for more work per lookup; highp paths,\n" \
-	"                       unfiltered)\n" \
+	"  --caster-depth D     face (default: a caster's pixel compared along its face's plane\n" \
+	"                       at the centre of the lixel read, never further from the light:\n" \
+	"                       no acne where a coarse map meets the caster's silhouette, for\n" \
+	"                       more work per lookup; highp paths, unfiltered, else point) or\n" \
+	"                       point (at its own depth)\n" \
 	"  --depth-slots N      the atlas cleared once every N frames, 1 to 64 (default 8):\n" \
 	"                       each frame's maps written into their own Nth of the depth range,\n" \
 	"                       below the earlier frames' (24 - log2 N bits a frame); taken on\n" \

@@ -90,7 +90,7 @@ struct lx_method_options {
 
 #define LX_METHOD_OPTIONS_DEFAULT \
 	((struct lx_method_options){.uniform_lixels = 512, .plane_lixels = 350, .fallback_lixels = 128, \
-				    .depth_slots = LX_DEPTH_SLOTS_DEFAULT})
+				    .depth_slots = LX_DEPTH_SLOTS_DEFAULT, .caster_face_depth = true})
 
 struct lx_light_space; /* light_space.h: where the warping methods start */
 struct lx_uniform_fit;
