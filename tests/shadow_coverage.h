@@ -49,10 +49,7 @@ static long coverage_left_to_cover;
  * plane, exactly as the shader decides it. */
 static bool covered_by_front(const struct lx_plane_covers *cv, int object, vec3 r)
 {
-	if (object >= LX_MAX_PLANES || cv->of[object] < 0)
-		return false;
-	vec4 h = m4_mul_point(&cv->m[cv->of[object]], r);
-	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
+	return object < LX_MAX_PLANES && cv->of[object] >= 0 && lx_plane_cover_shadows(&cv->m[cv->of[object]], r);
 }
 
 /* Checks the map that serves receiver r of object `object` holds caster point c; a plane

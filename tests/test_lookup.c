@@ -507,9 +507,8 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 					vec3 lo = k & 1 ? v3(-1.4, 0, -1) : f->scene_min, hi = k & 1 ? v3(1.4, 0.8, 1) : f->scene_max;
 					vec3 x = v3(lo.x + (hi.x - lo.x) * test_rand(&seed), lo.y + (hi.y - lo.y) * test_rand(&seed),
 						    lo.z + (hi.z - lo.z) * test_rand(&seed));
-					vec4 h = m4_mul_point(&m, x);
 					bool near, want = ray_crosses_plane(f, p, x, &near);
-					bool got = h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
+					bool got = lx_plane_cover_shadows(&m, x);
 					if (near)
 						continue;
 					if (got != want)

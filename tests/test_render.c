@@ -166,6 +166,16 @@ static void run_sized(const char *method, const struct lx_scene *scene, int w, i
 		fail_msg("%s %dx%d: %s", method, w, h, err);
 }
 
+/* A method's mismatch (%) on the scene at w x h (run_sized). */
+static double mismatch_pct_of(const char *method, const struct lx_scene *scene, int w, int h)
+{
+	struct lx_render_report r;
+	run_sized(method, scene, w, h, &r);
+	double pct = r.mismatch.mismatch_pct;
+	lx_render_report_free(&r);
+	return pct;
+}
+
 /* Chessboard distance from each pixel to the nearest reference edge of light l (a pixel
  * whose 4-neighbour differs in visible object or shadow state), capped at `cap`. */
 static void edge_distance(const struct lx_render_report *r, int l, uint8_t *dist, int cap)
@@ -640,13 +650,7 @@ static void plane_keeps_every_shadow(void **state)
 	struct lx_scene s;
 	lx_scene_default(&s);
 	s.camera.eye = v3(0, 0.001, 3), s.camera.at = v3(0, 0.001, 0);
-	double pct[2];
-	for (int k = 0; k < 2; k++) {
-		struct lx_render_report r;
-		run_sized(k ? "plane" : "uniform", &s, 1024, 768, &r);
-		pct[k] = r.mismatch.mismatch_pct;
-		lx_render_report_free(&r);
-	}
+	double pct[2] = {mismatch_pct_of("uniform", &s, 1024, 768), mismatch_pct_of("plane", &s, 1024, 768)};
 	print_message("%-36s plane %.4f%%, uniform %.4f%%: %+.4f points\n", "eye a millimetre above the floor", pct[1], pct[0],
 		      pct[1] - pct[0]);
 	if (!(pct[1] - pct[0] <= 0.15))
@@ -730,14 +734,8 @@ static void rows_phase_follows_level_edges(void **state)
 	struct lx_scene s;
 	lx_scene_table(&s);
 	lx_config_apply(lx_config_find("near-wall"), &s);
-	static const char *const methods[2] = {"plane/shared", "plane/shared/corner"};
-	double pct[2];
-	for (int k = 0; k < 2; k++) {
-		struct lx_render_report r;
-		run_sized(methods[k], &s, 1920, 1080, &r);
-		pct[k] = r.mismatch.mismatch_pct;
-		lx_render_report_free(&r);
-	}
+	double pct[2] = {mismatch_pct_of("plane/shared", &s, 1920, 1080),
+			 mismatch_pct_of("plane/shared/corner", &s, 1920, 1080)};
 	print_message("table, light near the wall, shared budgets, 1920x1080: %.4f%% with the phase, %.4f%% from the corner\n",
 		      pct[0], pct[1]);
 	assert_true(pct[0] < 0.6 * pct[1]);

@@ -71,6 +71,12 @@ static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
 	return u0 <= 1 && u1 >= 0 && v0 <= 1 && v1 >= 0;
 }
 
+bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
+{
+	vec4 h = m4_mul_point(m, x);
+	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
+}
+
 /* The covers, of[] for objects [0, objects). */
 static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
 {

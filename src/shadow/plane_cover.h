@@ -31,6 +31,9 @@
  * coordinates along edge1 and edge2). Affine in X, so a varying carries it exactly.
  * False where p's front is not lit (its back faces the light, or the light grazes it). */
 bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out);
+/* Whether world point x lies in the shadow of the front whose cover matrix is m, as the
+ * shader decides it (main.frag, LX_COVER): the CPU's mirror, in double. */
+bool lx_plane_cover_shadows(const mat4 *m, vec3 x);
 
 /* A frame's covers: each plane's matrix where its front is lit (lx_plane_cover_matrix),
  * and for each object the plane whose lit front may shadow it (some of its box lies
