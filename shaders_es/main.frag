@@ -102,6 +102,10 @@ varying vec4 v_edges3;
 #ifdef LX_COVER
 varying vec4 v_cover;  // main.vert: a plane lit on its front, over this object: its
 varying float v_beyond; // parallelogram's edge functions, and > 0 beyond it
+#ifdef LX_COVER2
+varying vec4 v_cover2; // a second one's
+varying float v_beyond2;
+#endif
 #endif
 varying vec3 v_to_light; // towards the light, not normalised
 varying vec3 v_normal;
@@ -241,6 +245,9 @@ void main()
 #ifdef LX_COVER
 	// the light's ray crosses the plane's parallelogram on its way here
 	shadowed = max(shadowed, float(all(greaterThanEqual(v_cover, vec4(0.0)))) * float(v_beyond > 0.0));
+#ifdef LX_COVER2
+	shadowed = max(shadowed, float(all(greaterThanEqual(v_cover2, vec4(0.0)))) * float(v_beyond2 > 0.0));
+#endif
 #endif
 #if LX_FACE_TEST
 	// a face turned away from the light is in its own shadow

@@ -81,6 +81,12 @@ vec2 face_slope(mat4 face_tex, vec4 plane, float lit)
 uniform mat4 u_cover;
 varying vec4 v_cover;
 varying float v_beyond;
+#ifdef LX_COVER2
+// a second front over the object (two shelves stacked over the floor), alike
+uniform mat4 u_cover2;
+varying vec4 v_cover2;
+varying float v_beyond2;
+#endif
 #endif
 attribute vec3 a_position;
 attribute vec3 a_normal;
@@ -158,6 +164,11 @@ void main()
 	vec4 h = u_cover * world;
 	v_cover = vec4(h.xy, h.zz - h.xy);
 	v_beyond = h.w;
+#ifdef LX_COVER2
+	h = u_cover2 * world;
+	v_cover2 = vec4(h.xy, h.zz - h.xy);
+	v_beyond2 = h.w;
+#endif
 #endif
 	gl_Position = u_view_proj * world;
 }

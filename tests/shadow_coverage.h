@@ -45,11 +45,11 @@ static bool ray_on_plane(const struct lx_plane *P, vec3 c, vec3 dir, vec3 *r)
  * plane-optimal leaves those to the test. */
 static long coverage_left_to_cover;
 
-/* Whether plane receiver r lies in the shadow of the front the renderer tests over its
+/* Whether plane receiver r lies in the shadow of a front the renderer tests over its
  * plane, exactly as the shader decides it. */
 static bool covered_by_front(const struct lx_plane_covers *cv, int object, vec3 r)
 {
-	return object < LX_MAX_PLANES && cv->of[object] >= 0 && lx_plane_cover_shadows(&cv->m[cv->of[object]], r);
+	return object < LX_MAX_PLANES && lx_plane_covers_shadow(cv, object, r);
 }
 
 /* Checks the map that serves receiver r of object `object` holds caster point c; a plane

@@ -565,6 +565,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 					fail_msg("%s scene, %s: object %d covered by plane %d", sc ? "table" : "default",
 						 lx_configs[c].name, id, p);
 				extra += p >= 0;
+				assert_int_equal(cov.second[id], -1); /* no object here lies under two fronts */
 				/* and none of an uncovered object's points is in a plane's shadow */
 				for (int q = 0; q < np && p < 0; q++)
 					for (int k = 0; q != id && k < 300 && cov.lit[q]; k++) {
@@ -588,7 +589,7 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 		struct lx_scene_meshes mm;
 		lx_scene_builtin(sc ? "table" : "default", &sn);
 		assert_true(lx_meshes_build(&sn, &mm));
-		assert_true(lx_scene_may_need_cover(&sn, &mm) == (sc == 1));
+		assert_int_equal(lx_scene_covers_needed(&sn, &mm), sc);
 		lx_meshes_free(&mm);
 	}
 	/* lights that leave the cover out: on the table top's plane, below the floor (its back
@@ -608,6 +609,54 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 	}
 }
 
+#ifndef LX_TEST_DATA
+#define LX_TEST_DATA "tests/data"
+#endif
+
+/* Two shelves stacked over the floor (tests/data/two-shelves.scene): the floor gets both
+ * fronts' tests, and a point of it is in their shadows exactly where the light's ray
+ * crosses either shelf; part of the upper shelf's shadow falls outside the lower one's,
+ * which one front per object lost. */
+static void two_fronts_over_an_object_are_both_tested(void **state)
+{
+	(void)state;
+	struct setup s;
+	char err[256];
+	if (!lx_scene_load(LX_TEST_DATA "/two-shelves.scene", &s.scene, err, sizeof err))
+		fail_msg("%s", err);
+	assert_true(build(&s, "none", W, H, 0));
+	const struct lx_frame *f = &s.frame;
+	assert_int_equal(lx_scene_covers_needed(&s.scene, &s.meshes), 2);
+	struct lx_plane_covers cov;
+	lx_plane_covers(f, &cov);
+	int box = f->scene->plane_count;
+	assert_int_equal(lx_plane_cover_count(&cov, 0), 2); /* the floor */
+	assert_int_equal(cov.of[0], 1);
+	assert_int_equal(cov.second[0], 2);
+	assert_int_equal(lx_plane_cover_count(&cov, 1), 1); /* the lower shelf, under the upper */
+	assert_int_equal(cov.of[1], 2);
+	assert_int_equal(lx_plane_cover_count(&cov, 2), 0);
+	assert_int_equal(cov.of[box], 1); /* the box: the upper shelf's rays to it pass the lower one */
+	uint64_t seed = 0x5e1f5e1full;
+	long upper_only = 0, shadowed = 0;
+	const struct lx_plane *fl = &f->scene->planes[0];
+	for (int k = 0; k < 20000; k++) {
+		vec3 x = v3_add(fl->corner, v3_add(v3_scale(fl->edge1, 0.3 + 0.4 * test_rand(&seed)),
+						   v3_scale(fl->edge2, 0.3 + 0.4 * test_rand(&seed))));
+		bool n1, n2, a = ray_crosses_plane(f, 1, x, &n1), b = ray_crosses_plane(f, 2, x, &n2);
+		if (n1 || n2)
+			continue;
+		if (lx_plane_covers_shadow(&cov, 0, x) != (a || b))
+			fail_msg("floor point (%g, %g, %g): the tests say %d, the rays %d and %d", x.x, x.y, x.z,
+				 lx_plane_covers_shadow(&cov, 0, x), a, b);
+		shadowed += a || b, upper_only += b && !a;
+	}
+	print_message("two shelves: %ld of 20000 floor points in their shadows, %ld in the upper one's alone\n", shadowed,
+		      upper_only);
+	assert_true(upper_only > 100 && shadowed > upper_only);
+	lx_meshes_free(&s.meshes);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -617,6 +666,7 @@ int main(void)
 		cmocka_unit_test(casters_keep_the_maps_they_read),
 		cmocka_unit_test(casters_left_out_only_where_unread),
 		cmocka_unit_test(lit_plane_fronts_shadow_what_lies_beyond),
+		cmocka_unit_test(two_fronts_over_an_object_are_both_tested),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,6 +3,7 @@
  * texts come from the same code the loader uses (shader_text.c). */
 #include "embedded.h"
 #include "shader_text.h"
+#include "plane_cover.h"
 #include "shadow_filter.h"
 #include "test_util.h"
 #include <stdio.h>
@@ -55,8 +56,8 @@ static void write_main_variant(struct batch *b, const struct lx_main_variant *v,
 /* The main pass under a limit of varyings (0: none): every count of maps, every count of
  * them read, shaded or decision, each rule for their faces (toward the light, tested,
  * away, a caster's along its plane), each depth path (0 highp, 1 mediump, 2 highp with
- * the maps in a depth texture), every shadow filter; with a plane's cover test where a
- * draw reads none of the maps or all of them. */
+ * the maps in a depth texture), every shadow filter; with one plane's cover test where a
+ * draw reads none of the maps or all of them, and with two so, unfiltered. */
 static void main_variants(struct batch *b, int max_varyings)
 {
 	char tag[64];
@@ -66,15 +67,17 @@ static void main_variants(struct batch *b, int max_varyings)
 				for (int face = 0; face < LX_FACES_COUNT; face++)
 					for (int path = 0; path < 3; path++)
 						for (int filter = 0; filter < LX_FILTER_COUNT; filter++)
-							for (int cover = 0; cover < 2; cover++) {
+							for (int cover = 0; cover <= LX_MAX_COVERS; cover++) {
 								if (face == LX_FACES_AWAY && reads > 0)
 									continue; /* faces turned away read nothing: the reads 0 text */
 								if (cover && (face == LX_FACES_AWAY || (reads > 0 && reads < maps)))
 									continue;
+								if (cover > 1 && filter > 0)
+									continue; /* its text is the same with any filter */
 								struct lx_main_variant v = {
 									.maps = maps, .reads = reads, .decision = decision,
 									.faces = (enum lx_faces)face, .path = paths[path],
-									.filtered = filter > 0, .cover = cover, .max_varyings = max_varyings};
+									.filtered = filter > 0, .covers = cover, .max_varyings = max_varyings};
 								snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d-%d-%d", max_varyings, maps,
 									 reads, decision, face, path, filter, cover);
 								write_main_variant(b, &v, "", filter, tag);
@@ -169,9 +172,9 @@ static int vertex_varyings(const char *dir, const char *defines, int k)
 }
 
 /* lx_main_varyings counts what main.vert writes, for every count of maps read, with and
- * without a face plane and a projective light; under a VideoCore IV's 8 no variant
- * writes more (edges give way first, then the face plane), and without a limit every
- * variant keeps both. */
+ * without a face plane and a projective light, with no, one or two covers; under a
+ * VideoCore IV's 8 no variant writes more (edges give way first, then the face plane,
+ * then a second cover), and without a limit every variant keeps all. */
 static void variants_fit_the_varyings(void **state)
 {
 	(void)state;
@@ -179,33 +182,44 @@ static void variants_fit_the_varyings(void **state)
 		fail_msg("glslangValidator is not installed (Debian: glslang-tools; make check installs it)");
 	char dir[64] = "/tmp/lixel-varyings-XXXXXX", defines[400];
 	assert_non_null(mkdtemp(dir));
-	int k = 0, dropped = 0;
+	int k = 0, dropped = 0, given_up = 0;
 	for (int reads = 0; reads <= 4; reads++)
 		for (int caster = 0; caster < 2; caster++)
 			for (int projective = 0; projective < 2; projective++)
 				for (int limit = 0; limit <= 8; limit += 8)
-					for (int cover = 0; cover < 2; cover++) {
+					for (int cover = 0; cover <= LX_MAX_COVERS; cover++) {
 						struct lx_main_variant v = {.maps = 4, .reads = reads,
 									    .faces = caster ? LX_FACES_CASTER : LX_FACES_TOWARD,
 									    .path = LX_DEPTH_HIGHP, .projective = projective,
-									    .cover = cover, .max_varyings = limit};
+									    .covers = cover, .max_varyings = limit};
 						lx_main_defines(&v, defines, sizeof defines);
 						if (projective)
 							strncat(defines, "#define LX_PROJECTIVE 1\n", sizeof defines - strlen(defines) - 1);
 						bool edges = strstr(defines, "LX_EDGES") != NULL,
 						     plane = strstr(defines, "LX_FACE_PLANE") != NULL;
-						/* the cover is never given up: it decides shadows, not their cost */
-						assert_true((strstr(defines, "LX_COVER") != NULL) == (bool)cover);
+						/* the first cover is never given up: it decides shadows, not their
+						 * cost; the second only where nothing else is left to give */
+						int covers = lx_main_covers(&v);
+						assert_true((strstr(defines, "LX_COVER 1") != NULL) == (cover > 0));
+						assert_true((strstr(defines, "LX_COVER2") != NULL) == (covers > 1));
+						if (covers < cover)
+							assert_true(limit && !edges && !plane &&
+								    lx_main_varyings(reads, false, false, projective, cover) > limit);
+						else
+							assert_int_equal(covers, cover);
+						given_up += covers < cover;
 						int n = vertex_varyings(dir, defines, k++);
-						assert_int_equal(n, lx_main_varyings(reads, edges, plane, projective, cover));
+						assert_int_equal(n, lx_main_varyings(reads, edges, plane, projective, covers));
 						if (limit)
 							assert_true(n <= limit);
 						else
 							assert_true(edges == (reads > 0) && plane == (caster && reads > 0));
 						dropped += limit && reads > 0 && (!edges || plane != (bool)caster);
 					}
-	print_message("%d variants' varyings counted; under 8, %d gave up edges or the face plane\n", k, dropped);
+	print_message("%d variants' varyings counted; under 8, %d gave up edges or the face plane, %d a second cover\n", k,
+		      dropped, given_up);
 	assert_true(dropped > 0);
+	assert_int_equal(given_up, 2); /* 4 maps read, a projective light, two covers: 9, caster or not */
 	char cmd[128];
 	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
 	assert_int_equal(system(cmd), 0);

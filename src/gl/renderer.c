@@ -23,6 +23,7 @@ struct main_program {
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
 	GLint cover;                 /* LX_COVER variants: a plane's cover matrix (plane_cover.h) */
+	GLint cover2;                /* LX_COVER2 variants: a second plane's */
 };
 
 /* How a main-pass variant shades: 0 the decision; else 1 + 4 projective + 2 added (an
@@ -60,7 +61,8 @@ struct draw {
 	enum lx_faces faces; /* its faces' side of the light, which picks the variant */
 	enum draw_kind kind;
 	int first, count;
-	bool cover; /* tests the plane covers.of[object] (its matrix cover[that plane]) */
+	bool cover; /* tests the planes covers.of[object] and .second[object] (their matrices
+		     * cover[that plane]) */
 };
 
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
@@ -115,15 +117,15 @@ struct lx_renderer {
 	GLuint shadow_prog, clear_prog, clear_vbo;
 	GLint shadow_light_clip, shadow_pancake;
 	/* main-pass variants, built when first used: [shading][filter][faces][how many maps a
-	 * draw reads][with a plane's cover test] (whichever maps: a draw puts theirs in the
-	 * first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
+	 * draw reads][how many planes' covers it tests] (whichever maps: a draw puts theirs in
+	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
-	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][2];
+	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][LX_MAX_COVERS + 1];
 	/* this light pass's plane over each object whose front the light sees (-1: none), and
 	 * each plane's cover matrix as the shader takes it (lx_plane_covers) */
 	struct lx_plane_covers covers;
 	float cover[LX_MAX_PLANES][16];
-	bool may_cover; /* some frame may draw with a cover test (lx_scene_may_need_cover) */
+	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -177,19 +179,19 @@ static bool framebuffer(GLuint *fbo, GLuint color_tex, GLuint depth_tex, GLuint 
 
 /* The main-pass variant for a shading, faces, maps read and filter, on this GPU. */
 static struct lx_main_variant variant_of(const struct lx_renderer *r, int shading, enum lx_faces faces, int reads,
-					 enum lx_filter filter, bool cover)
+					 enum lx_filter filter, int covers)
 {
 	return (struct lx_main_variant){.maps = r->d.map_count, .reads = reads, .decision = shading == SHADING_DECISION,
 					.faces = faces, .path = r->d.depth, .filtered = filter != LX_FILTER_NONE,
-					.projective = shading_bit(shading, SHADING_PROJECTIVE), .cover = cover,
+					.projective = shading_bit(shading, SHADING_PROJECTIVE), .covers = covers,
 					.max_varyings = r->d.caps->max_varying_vectors};
 }
 
 static bool main_program(struct main_program *p, const struct lx_renderer *r, int shading, enum lx_faces faces,
-			 int reads, enum lx_filter filter, bool cover, char *err, size_t errlen)
+			 int reads, enum lx_filter filter, int covers, char *err, size_t errlen)
 {
 	char defines[400];
-	struct lx_main_variant v = variant_of(r, shading, faces, reads, filter, cover);
+	struct lx_main_variant v = variant_of(r, shading, faces, reads, filter, covers);
 	lx_main_defines(&v, defines, sizeof defines);
 	static const char *const shading_define[3] = {"#define LX_LIGHT_COLOR 1\n", "#define LX_AMBIENT 0.0\n",
 						      "#define LX_PROJECTIVE 1\n"};
@@ -218,6 +220,7 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
 	p->cover = lx_gl.GetUniformLocation(p->prog, "u_cover");
+	p->cover2 = lx_gl.GetUniformLocation(p->prog, "u_cover2");
 	return true;
 }
 
@@ -244,12 +247,31 @@ static void face_plane_fits(const struct lx_renderer *r)
 {
 	for (int i = 0; face_plane(r) && r->d.map_count > 0 && i < r->d.light_count; i++) {
 		struct lx_main_variant v =
-			variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE, false);
+			variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE, 0);
 		if (!lx_main_face_plane(&v)) {
 			fprintf(stderr,
 				"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has "
 				"%d: such casters are compared at their pixels' depth\n",
-				v.reads, lx_main_varyings(v.reads, false, true, v.projective, false), v.max_varyings);
+				v.reads, lx_main_varyings(v.reads, false, true, v.projective, lx_main_covers(&v)), v.max_varyings);
+			return;
+		}
+	}
+}
+
+/* A scene with objects under two lit fronts on a GPU whose varyings cannot hold the
+ * second's test for a draw reading every map in some light's pass: one line saying so;
+ * those draws test the first front only (lx_main_covers), and the second's shadow on
+ * them is lost where it falls outside the first's. */
+static void covers_fit(const struct lx_renderer *r)
+{
+	for (int i = 0; r->max_covers > 1 && i < r->d.light_count; i++) {
+		struct lx_main_variant v =
+			variant_of(r, light_shading(r, i), LX_FACES_TOWARD, r->d.map_count, LX_FILTER_NONE, r->max_covers);
+		if (lx_main_covers(&v) < r->max_covers) {
+			fprintf(stderr,
+				"lixel: an object under two lit planes read with %d maps needs %d varying vectors for both "
+				"planes' shadows, this GPU has %d: only the first plane's shadow is tested there\n",
+				v.reads, lx_main_varyings(v.reads, false, false, v.projective, r->max_covers), v.max_varyings);
 			return;
 		}
 	}
@@ -267,7 +289,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
 			struct main_program *p = &r->variant[shading][filter][faces][reads][0];
-			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, false, err, errlen))
+			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, 0, err, errlen))
 				return false;
 		}
 	}
@@ -521,7 +543,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	}
 	r->d = *d;
 	r->objects = d->meshes->count;
-	r->may_cover = d->map_count > 0 && lx_scene_may_need_cover(d->scene, d->meshes);
+	r->max_covers = d->map_count > 0 ? lx_scene_covers_needed(d->scene, d->meshes) : 0;
 	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
@@ -536,7 +558,7 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	for (int i = 0; i < d->light_count && ok; i++)
 		ok = renderer_beam(r, i, err, errlen);
 	if (ok)
-		face_plane_fits(r);
+		face_plane_fits(r), covers_fit(r);
 	if (!ok || !renderer_programs(r, err, errlen) || !renderer_buffers(r, err, errlen) ||
 	    !renderer_targets(r, err, errlen)) {
 		lx_renderer_destroy(r);
@@ -816,18 +838,18 @@ static int maps_in(unsigned mask)
  * built when first used; when it cannot be (cannot happen once the variants built at
  * the start compiled), the one that tests each face and reads every map, *mask every map. */
 static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask,
-				       bool cover)
+				       int covers)
 {
 	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !face_plane(r)))
 		faces = LX_FACES_TOWARD;
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
-	cover = cover && r->d.map_count > 0 && faces != LX_FACES_AWAY;
+	covers = r->d.map_count > 0 && faces != LX_FACES_AWAY ? covers : 0;
 	int reads = maps_in(*mask);
-	struct main_program *p = &r->variant[shading][r->filter][faces][reads][cover];
+	struct main_program *p = &r->variant[shading][r->filter][faces][reads][covers];
 	if (!p->prog) {
 		char err[1024];
-		if (!main_program(p, r, shading, faces, reads, r->filter, cover, err, sizeof err)) {
+		if (!main_program(p, r, shading, faces, reads, r->filter, covers, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
 			*mask = (1u << r->d.map_count) - 1;
 			p = &r->variant[shading][r->filter][r->d.map_count > 0 ? LX_FACES_TESTED : LX_FACES_TOWARD]
@@ -1052,24 +1074,28 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
 	return span;
 }
 
-/* Plane id's spans cut by the shadow the lit front over it throws on it
- * (lx_plane_cover_image): inside it, a pixel and a row in, drawn in that shadow
+/* Plane id's spans cut by the shadow each lit front over it throws on it
+ * (lx_plane_cover_image): inside one, a pixel and a row in, drawn in that shadow
  * (COVERED_SPAN: the floor under a table without a lookup), along its edges with the
- * test (COVER_SPAN), elsewhere as before. With no shadow to give (it reaches behind the
- * eye), or short of room, every span tests it. Returns the spans. */
+ * tests (COVER_SPAN: every front over the plane), elsewhere as before. With a shadow not
+ * to give (it reaches behind the eye), or short of room, every span tests them. Returns
+ * the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	struct lx_poly w;
-	struct span *to = span == r->seen ? r->spans : r->seen;
-	int n = lx_plane_cover_image(f, r->covers.of[id], id, &w)
-			? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
-			: -1;
-	if (n >= 0) {
-		*ns = n;
-		return to;
+	const int front[LX_MAX_COVERS] = {r->covers.of[id], r->covers.second[id]};
+	for (int c = 0; c < LX_MAX_COVERS && front[c] >= 0; c++) {
+		struct lx_poly w;
+		struct span *to = span == r->seen ? r->spans : r->seen;
+		int n = lx_plane_cover_image(f, front[c], id, &w)
+				? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
+				: -1;
+		if (n < 0) {
+			for (int i = 0; i < *ns; i++)
+				span[i].mask |= COVER_SPAN;
+			return span;
+		}
+		*ns = n, span = to;
 	}
-	for (int i = 0; i < *ns; i++)
-		span[i].mask |= COVER_SPAN;
 	return span;
 }
 
@@ -1287,7 +1313,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 				to_float(&r->covers.m[p], r->cover[p]);
 	} else /* without maps (method none) nothing is shadowed, by planes neither */
 		for (int id = 0; id < r->objects; id++)
-			r->covers.of[id] = -1;
+			r->covers.of[id] = r->covers.second[id] = -1;
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -1355,6 +1381,8 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform1f(p->object_id, (float)id);
 	if (d->cover && p->cover >= 0)
 		lx_gl.UniformMatrix4fv(p->cover, 1, GL_FALSE, r->cover[r->covers.of[id]]);
+	if (d->cover && p->cover2 >= 0)
+		lx_gl.UniformMatrix4fv(p->cover2, 1, GL_FALSE, r->cover[r->covers.second[id]]);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1506,13 +1534,15 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	struct main_program *p = NULL;
 	unsigned current = 0;
 	enum lx_faces faces = LX_FACES_TOWARD;
-	bool culling = false, cover = false; /* as pass_state left it */
+	bool culling = false; /* as pass_state left it */
+	int covers = 0;
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
-		if (!p || d->mask != current || d->faces != faces || d->cover != cover) {
-			current = d->mask, faces = d->faces, cover = d->cover;
+		int dc = d->cover ? lx_plane_cover_count(&r->covers, d->object) : 0;
+		if (!p || d->mask != current || d->faces != faces || dc != covers) {
+			current = d->mask, faces = d->faces, covers = dc;
 			unsigned reads = current;
-			struct main_program *v = variant_for(r, shading, faces, &reads, cover);
+			struct main_program *v = variant_for(r, shading, faces, &reads, covers);
 			if (v != p)
 				use_program(r, v, &u);
 			p = v;
@@ -1548,7 +1578,7 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	for (int faces = 0; faces < face_rules(r); faces++)
 		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : r->d.map_count); reads++)
-			for (int cover = 0; cover <= (r->may_cover && faces != LX_FACES_AWAY); cover++) {
+			for (int cover = 0; cover <= (faces != LX_FACES_AWAY ? r->max_covers : 0); cover++) {
 				unsigned mask = (1u << reads) - 1;
 				struct main_program *p = variant_for(r, shading, (enum lx_faces)faces, &mask, cover);
 				use_program(r, p, &u);

@@ -1,4 +1,5 @@
 #include "shader_text.h"
+#include "plane_cover.h"
 #include "embedded.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -115,22 +116,30 @@ const char *lx_shadow_defines(enum lx_depth_precision path)
 					  : NULL;
 }
 
-int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective, bool cover)
+int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective, int covers)
 {
-	return 2 + reads * (1 + edges) + (face_plane ? (reads + 1) / 2 : 0) + projective + cover;
+	return 2 + reads * (1 + edges) + (face_plane ? (reads + 1) / 2 : 0) + projective + covers;
 }
 
 static bool varyings_fit(const struct lx_main_variant *v, int n) { return v->max_varyings <= 0 || n <= v->max_varyings; }
 
-bool lx_main_cover(const struct lx_main_variant *v)
+/* The rows n covers take: a vec4 each, their floats beside the light's direction and
+ * the normal (two vec3s), and one more row when a face test's float makes three. */
+static int cover_rows(const struct lx_main_variant *v, int n) { return n + (n > 1 && v->faces == LX_FACES_TESTED); }
+
+int lx_main_covers(const struct lx_main_variant *v)
 {
-	return v->cover && v->maps > 0 && v->faces != LX_FACES_AWAY;
+	if (v->maps <= 0 || v->faces == LX_FACES_AWAY || v->covers <= 0)
+		return 0;
+	int n = v->covers < LX_MAX_COVERS ? v->covers : LX_MAX_COVERS;
+	return n > 1 && !varyings_fit(v, lx_main_varyings(v->reads, false, false, v->projective, cover_rows(v, n))) ? 1 : n;
 }
 
 bool lx_main_face_plane(const struct lx_main_variant *v)
 {
 	return v->maps > 0 && v->reads > 0 && v->faces == LX_FACES_CASTER && v->path != LX_DEPTH_MEDIUMP &&
-	       !v->filtered && varyings_fit(v, lx_main_varyings(v->reads, false, true, v->projective, lx_main_cover(v)));
+	       !v->filtered &&
+	       varyings_fit(v, lx_main_varyings(v->reads, false, true, v->projective, cover_rows(v, lx_main_covers(v))));
 }
 
 void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len)
@@ -141,11 +150,12 @@ void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len)
 	bool plane = !away && lx_main_face_plane(v);
 	/* the served test on edge functions (main.vert), for both shaders alike; not on the
 	 * mediump path, whose fp16 test stays as it was */
-	bool cover = lx_main_cover(v);
+	int covers = lx_main_covers(v);
 	bool edges = reads > 0 && v->path != LX_DEPTH_MEDIUMP &&
-		     varyings_fit(v, lx_main_varyings(reads, true, plane, v->projective, cover));
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s%s", v->maps > 0,
-		 reads, v->maps > 0 && v->faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
+		     varyings_fit(v, lx_main_varyings(reads, true, plane, v->projective, cover_rows(v, covers)));
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s%s%s",
+		 v->maps > 0, reads, v->maps > 0 && v->faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
 		 v->decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "",
-		 plane ? "#define LX_FACE_PLANE 1\n" : "", cover ? "#define LX_COVER 1\n" : "");
+		 plane ? "#define LX_FACE_PLANE 1\n" : "", covers > 0 ? "#define LX_COVER 1\n" : "",
+		 covers > 1 ? "#define LX_COVER2 1\n" : "");
 }

@@ -24,24 +24,30 @@ enum lx_faces { LX_FACES_TOWARD, LX_FACES_TESTED, LX_FACES_AWAY, LX_FACES_CASTER
  * maps; the draw puts them in the first slots), the decision output, its faces (where the
  * method has maps; LX_FACES_AWAY reads none: main.frag), the depth path (LX_DEPTH_AUTO as
  * LX_DEPTH_HIGHP), a shadow filter (no face plane then), a projective light (one more
- * varying), a plane's cover test (LX_COVER, plane_cover.h: one more varying, where the
- * method has maps and the faces are not turned away), and the GPU's
- * GL_MAX_VARYING_VECTORS (0: no limit). */
+ * varying), the lit fronts' cover tests (LX_COVER and LX_COVER2, plane_cover.h: one more
+ * varying each, where the method has maps and the faces are not turned away), and the
+ * GPU's GL_MAX_VARYING_VECTORS (0: no limit). */
 struct lx_main_variant {
 	int maps, reads;
 	bool decision;
 	enum lx_faces faces;
 	enum lx_depth_precision path;
-	bool filtered, projective, cover;
+	bool filtered, projective;
+	int covers; /* 0 to LX_MAX_COVERS */
 	int max_varyings;
 };
 /* The varying vectors main.vert writes for a draw reading `reads` maps: the light's
  * direction and the normal, a point per map, with edges an edge vector per map, with a
- * face plane a slope (two numbers) per map, a projective light's point and a plane's
- * cover. Without edges and a face plane at most 8 (4 maps): every GPU holds it. */
-int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective, bool cover);
-/* Whether a variant tests a plane's cover (LX_COVER). */
-bool lx_main_cover(const struct lx_main_variant *v);
+ * face plane a slope (two numbers) per map, a projective light's point and each cover
+ * tested (`covers`: a row each; their floats go beside the two vec3s, and a face test's
+ * with two covers takes one more). Without edges and a face plane, with one cover, at
+ * most 8 (4 maps): every GPU holds it. */
+int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective, int covers);
+/* How many covers a variant tests (LX_COVER, LX_COVER2): none where it has no maps or its
+ * faces are turned away; the first is never given up (it decides shadows, not their
+ * cost), the second only where the varyings cannot hold it even without edges and a
+ * face plane (a draw reading 4 maps for a projective light on a GPU of 8). */
+int lx_main_covers(const struct lx_main_variant *v);
 /* Whether a variant draws casters' faces along their planes (LX_FACE_PLANE): faces
  * LX_FACES_CASTER, reading maps, off the mediump path, unfiltered, and within the
  * varyings (without edges, which give way first). */

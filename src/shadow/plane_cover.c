@@ -83,14 +83,20 @@ static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_cov
 	int np = f->scene->plane_count;
 	for (int p = 0; p < np; p++)
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
-	for (int id = objects; id < f->object_count; id++)
-		out->of[id] = -1;
-	for (int id = 0; id < objects; id++) {
-		out->of[id] = -1;
-		for (int p = 0; p < np && out->of[id] < 0; p++)
+	for (int id = 0; id < f->object_count; id++) {
+		out->of[id] = out->second[id] = -1;
+		for (int p = 0; p < np && id < objects && out->second[id] < 0; p++)
 			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
-				out->of[id] = p;
+				*(out->of[id] < 0 ? &out->of[id] : &out->second[id]) = p;
 	}
+}
+
+int lx_plane_cover_count(const struct lx_plane_covers *c, int id) { return (c->of[id] >= 0) + (c->second[id] >= 0); }
+
+bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
+{
+	return (c->of[id] >= 0 && lx_plane_cover_shadows(&c->m[c->of[id]], x)) ||
+	       (c->second[id] >= 0 && lx_plane_cover_shadows(&c->m[c->second[id]], x));
 }
 
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }
@@ -129,24 +135,27 @@ bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly
 	return win->n >= 3;
 }
 
-bool lx_scene_may_need_cover(const struct lx_scene *s, const struct lx_scene_meshes *m)
+int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshes *m)
 {
-	int n = lx_scene_object_count(s);
-	for (int p = 0; p < s->plane_count; p++) {
-		const struct lx_plane *pl = &s->planes[p];
-		vec3 nrm = v3_cross(pl->edge1, pl->edge2);
-		double touch = LX_COVER_TOUCH * v3_len(nrm) * (v3_len(pl->edge1) + v3_len(pl->edge2));
-		for (int id = 0; id < n && id < m->count; id++) {
-			vec3 lo = m->mesh[id].bmin, hi = m->mesh[id].bmax;
-			if (id >= s->plane_count) { /* its box over its bounce (lx_caster_bottom) */
-				const struct lx_caster *c = &s->casters[id - s->plane_count];
-				lo = v3_add(lo, v3(c->x, fmin(c->low, c->high), c->z));
-				hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
-			}
-			for (int k = 0; id != p && k < 8; k++)
-				if (v3_dot(nrm, v3_sub(v3_box_corner(lo, hi, k), pl->corner)) < -touch)
-					return true;
+	int n = lx_scene_object_count(s), most = 0;
+	for (int id = 0; id < n && id < m->count; id++) {
+		vec3 lo = m->mesh[id].bmin, hi = m->mesh[id].bmax;
+		if (id >= s->plane_count) { /* its box over its bounce (lx_caster_bottom) */
+			const struct lx_caster *c = &s->casters[id - s->plane_count];
+			lo = v3_add(lo, v3(c->x, fmin(c->low, c->high), c->z));
+			hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
 		}
+		int beyond = 0;
+		for (int p = 0; p < s->plane_count; p++) {
+			const struct lx_plane *pl = &s->planes[p];
+			vec3 nrm = v3_cross(pl->edge1, pl->edge2);
+			double touch = LX_COVER_TOUCH * v3_len(nrm) * (v3_len(pl->edge1) + v3_len(pl->edge2));
+			bool reaches = false;
+			for (int k = 0; id != p && k < 8 && !reaches; k++)
+				reaches = v3_dot(nrm, v3_sub(v3_box_corner(lo, hi, k), pl->corner)) < -touch;
+			beyond += reaches;
+		}
+		most = beyond > most ? beyond : most;
 	}
-	return false;
+	return most < LX_MAX_COVERS ? most : LX_MAX_COVERS;
 }

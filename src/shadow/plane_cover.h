@@ -35,15 +35,26 @@ bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out);
  * shader decides it (main.frag, LX_COVER): the CPU's mirror, in double. */
 bool lx_plane_cover_shadows(const mat4 *m, vec3 x);
 
+/* The most lit fronts the main pass tests over one object (LX_COVER, LX_COVER2): two
+ * shelves stacked over the floor. A third front over the same object is not tested: its
+ * shadow there is lost, where it falls outside the first two's. */
+#define LX_MAX_COVERS 2
+
 /* A frame's covers: each plane's matrix where its front is lit (lx_plane_cover_matrix),
- * and for each object the plane whose lit front may shadow it (some of its box lies
- * beyond it from the light, and the light's rays to that part cross the parallelogram's
- * bounds; the first such plane), -1 for none. */
+ * and for each object the planes whose lit fronts may shadow it (some of its box lies
+ * beyond one from the light, and the light's rays to that part cross the parallelogram's
+ * bounds): of[] the first such plane, second[] the next, -1 for none. */
 struct lx_plane_covers {
 	bool lit[LX_MAX_PLANES];
 	mat4 m[LX_MAX_PLANES];
 	int of[LX_MAX_PLANES + LX_MAX_CASTERS];
+	int second[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
+/* How many fronts the main pass tests over object id (0 to LX_MAX_COVERS). */
+int lx_plane_cover_count(const struct lx_plane_covers *c, int id);
+/* Whether world point x of object id lies in the shadow of a front the main pass tests
+ * over it, as the shader decides it. */
+bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x);
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
 /* The same with of[] found for the planes alone (-1 for the casters): what a plane map
  * leaves to the cover test (method_plane.c). */
@@ -57,10 +68,11 @@ void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers 
  * the test along its edges, and as before elsewhere. */
 bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win);
 
-/* Whether any frame of the scene's animation may need a cover test: some object's box,
- * anywhere on its path, reaches beyond a plane's plane on the side its back faces (for
- * a light that lights its front). The renderer builds the cover's variants at the start
- * only then (a warmed renderer builds nothing later). */
-bool lx_scene_may_need_cover(const struct lx_scene *s, const struct lx_scene_meshes *m);
+/* How many covers any frame of the scene's animation may test over one object (0 to
+ * LX_MAX_COVERS): the most planes' planes some object's box, anywhere on its path,
+ * reaches beyond on the side their back faces (for a light that lights their fronts).
+ * The renderer builds the cover's variants at the start only for those (a warmed
+ * renderer builds nothing later). */
+int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshes *m);
 
 #endif
