@@ -234,9 +234,15 @@ void main()
 #else
 	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
 #ifdef LX_FACE_PLANE
+#ifdef LX_FORCE_MEDIUMP
+	// fp16 cannot tell where in its lixel a point of a wide atlas lies: the face's
+	// nearest depth over half a lixel each way, which holds the lixel's centre
+	p.z -= 0.5 * (abs(slope.x) * u_texel.z + abs(slope.y) * u_texel.w);
+#else
 	// the face's depth at the centre of the lixel read, where nearer the light
 	vec2 off = (floor(p.xy * u_texel.xy) + 0.5) * u_texel.zw - p.xy;
 	p.z += min(dot(slope, off), 0.0);
+#endif
 #endif
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
 #endif

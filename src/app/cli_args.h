@@ -85,7 +85,8 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"  --caster-depth D     face (default: a caster's pixel compared along its face's plane\n" \
 	"                       at the centre of the lixel read, never further from the light:\n" \
 	"                       no acne where a coarse map meets the caster's silhouette, for\n" \
-	"                       more work per lookup; highp paths, unfiltered, else point) or\n" \
+	"                       more work per lookup; on the mediump path the face's nearest\n" \
+	"                       depth over half a lixel each way; unfiltered, else point) or\n" \
 	"                       point (at its own depth)\n" \
 	"  --depth-slots N      the atlas cleared once every N frames, 1 to 64 (default 8):\n" \
 	"                       each frame's maps written into their own Nth of the depth range,\n" \

@@ -141,9 +141,9 @@ struct lx_renderer {
 /* The depth path's two departures from 24-bit codes in RGBA8. */
 static bool mediump(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_MEDIUMP; }
 static bool depth_texture(const struct lx_renderer *r) { return r->d.depth == LX_DEPTH_TEXTURE; }
-/* Casters' faces drawn with LX_FACES_CASTER: --caster-depth face, off the mediump path
- * (else as LX_FACES_TOWARD). */
-static bool face_plane(const struct lx_renderer *r) { return r->d.caster_face_depth && !mediump(r); }
+/* Casters' faces drawn with LX_FACES_CASTER: --caster-depth face (else as
+ * LX_FACES_TOWARD). */
+static bool face_plane(const struct lx_renderer *r) { return r->d.caster_face_depth; }
 
 static void to_float(const mat4 *m, float out[16])
 {

@@ -137,8 +137,7 @@ int lx_main_covers(const struct lx_main_variant *v)
 
 bool lx_main_face_plane(const struct lx_main_variant *v)
 {
-	return v->maps > 0 && v->reads > 0 && v->faces == LX_FACES_CASTER && v->path != LX_DEPTH_MEDIUMP &&
-	       !v->filtered &&
+	return v->maps > 0 && v->reads > 0 && v->faces == LX_FACES_CASTER && !v->filtered &&
 	       varyings_fit(v, lx_main_varyings(v->reads, false, true, v->projective, cover_rows(v, lx_main_covers(v))));
 }
 

@@ -49,8 +49,9 @@ int lx_main_varyings(int reads, bool edges, bool face_plane, bool projective, in
  * face plane (a draw reading 4 maps for a projective light on a GPU of 8). */
 int lx_main_covers(const struct lx_main_variant *v);
 /* Whether a variant draws casters' faces along their planes (LX_FACE_PLANE): faces
- * LX_FACES_CASTER, reading maps, off the mediump path, unfiltered, and within the
- * varyings (without edges, which give way first). */
+ * LX_FACES_CASTER, reading maps, unfiltered, and within the varyings (without edges,
+ * which give way first); on the mediump path the face's nearest depth over half a lixel
+ * each way (main.frag). */
 bool lx_main_face_plane(const struct lx_main_variant *v);
 /* The main pass's defines for a variant: besides the above, where it reads maps off the
  * mediump path and the varyings hold them, the served test on edge functions (LX_EDGES;
