@@ -121,8 +121,9 @@ struct lx_renderer {
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][LX_MAX_COVERS + 1];
-	/* this light pass's plane over each object whose front the light sees (-1: none), and
-	 * each plane's cover matrix as the shader takes it (lx_plane_covers) */
+	/* this light pass's planes over each object whose fronts the light sees (covers.of
+	 * and covers.second, -1: none), and each plane's cover matrix as the shader takes it
+	 * (lx_plane_covers) */
 	struct lx_plane_covers covers;
 	float cover[LX_MAX_PLANES][16];
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
