@@ -559,13 +559,13 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 			/* the table top covers its slab wherever the light is above it; nothing in the
 			 * default scene lies beyond a lit front */
 			for (int id = 0; id < f->object_count; id++) {
-				int p = cov.of[id];
+				int p = cov.of[id][0];
 				bool slab = sc == 1 && id == np && (f->light.directional ? f->light.direction.y < 0 : f->light.position.y > 0.75);
 				if (slab ? p != 0 : sc == 0 && p != -1)
 					fail_msg("%s scene, %s: object %d covered by plane %d", sc ? "table" : "default",
 						 lx_configs[c].name, id, p);
 				extra += p >= 0;
-				assert_int_equal(cov.second[id], -1); /* no object here lies under two fronts */
+				assert_int_equal(cov.of[id][1], -1); /* no object here lies under two fronts */
 				/* and none of an uncovered object's points is in a plane's shadow */
 				for (int q = 0; q < np && p < 0; q++)
 					for (int k = 0; q != id && k < 300 && cov.lit[q]; k++) {
@@ -631,12 +631,12 @@ static void two_fronts_over_an_object_are_both_tested(void **state)
 	lx_plane_covers(f, &cov);
 	int box = f->scene->plane_count;
 	assert_int_equal(lx_plane_cover_count(&cov, 0), 2); /* the floor */
-	assert_int_equal(cov.of[0], 1);
-	assert_int_equal(cov.second[0], 2);
+	assert_int_equal(cov.of[0][0], 1);
+	assert_int_equal(cov.of[0][1], 2);
 	assert_int_equal(lx_plane_cover_count(&cov, 1), 1); /* the lower shelf, under the upper */
-	assert_int_equal(cov.of[1], 2);
+	assert_int_equal(cov.of[1][0], 2);
 	assert_int_equal(lx_plane_cover_count(&cov, 2), 0);
-	assert_int_equal(cov.of[box], 1); /* the box: the upper shelf's rays to it pass the lower one */
+	assert_int_equal(cov.of[box][0], 1); /* the box: the upper shelf's rays to it pass the lower one */
 	uint64_t seed = 0x5e1f5e1full;
 	long upper_only = 0, shadowed = 0;
 	const struct lx_plane *fl = &f->scene->planes[0];

@@ -466,7 +466,7 @@ static void a_lit_fronts_shadow_is_left_to_its_test(void **state)
 	struct lx_plane_covers cv;
 	lx_plane_covers(&s.frame, &cv);
 	struct lx_poly img;
-	assert_int_equal(cv.of[0], 1); /* the shelf over the floor */
+	assert_int_equal(cv.of[0][0], 1); /* the shelf over the floor */
 	assert_true(lx_plane_cover_image(&s.frame, 1, 0, &img));
 	vec2 mid = {0, 0};
 	for (int k = 0; k < img.n; k++)

@@ -22,8 +22,7 @@ struct main_program {
 	GLint face_tex;     /* LX_FACE_PLANE variants: the maps' inverse transposes (main.vert) */
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
-	GLint cover;                 /* LX_COVER variants: a plane's cover matrix (plane_cover.h) */
-	GLint cover2;                /* LX_COVER2 variants: a second plane's */
+	GLint cover[LX_MAX_COVERS];  /* LX_COVER, LX_COVER2 variants: planes' cover matrices (plane_cover.h) */
 };
 
 /* How a main-pass variant shades: 0 the decision; else 1 + 4 projective + 2 added (an
@@ -61,7 +60,7 @@ struct draw {
 	enum lx_faces faces; /* its faces' side of the light, which picks the variant */
 	enum draw_kind kind;
 	int first, count;
-	bool cover; /* tests the planes covers.of[object] and .second[object] (their matrices
+	int covers; /* tests the first `covers` planes of covers.of[object] (their matrices
 		     * cover[that plane]) */
 };
 
@@ -121,9 +120,8 @@ struct lx_renderer {
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][LX_MAX_COVERS + 1];
-	/* this light pass's planes over each object whose fronts the light sees (covers.of
-	 * and covers.second, -1: none), and each plane's cover matrix as the shader takes it
-	 * (lx_plane_covers) */
+	/* this light pass's planes over each object whose fronts the light sees (covers.of),
+	 * and each plane's cover matrix as the shader takes it (lx_plane_covers) */
 	struct lx_plane_covers covers;
 	float cover[LX_MAX_PLANES][16];
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
@@ -220,8 +218,8 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
-	p->cover = lx_gl.GetUniformLocation(p->prog, "u_cover");
-	p->cover2 = lx_gl.GetUniformLocation(p->prog, "u_cover2");
+	p->cover[0] = lx_gl.GetUniformLocation(p->prog, "u_cover");
+	p->cover[1] = lx_gl.GetUniformLocation(p->prog, "u_cover2");
 	return true;
 }
 
@@ -1083,11 +1081,10 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
  * the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	const int front[LX_MAX_COVERS] = {r->covers.of[id], r->covers.second[id]};
-	for (int c = 0; c < LX_MAX_COVERS && front[c] >= 0; c++) {
+	for (int c = 0; c < LX_MAX_COVERS && r->covers.of[id][c] >= 0; c++) {
 		struct lx_poly w;
 		struct span *to = span == r->seen ? r->spans : r->seen;
-		int n = lx_plane_cover_image(f, front[c], id, &w)
+		int n = lx_plane_cover_image(f, r->covers.of[id][c], id, &w)
 				? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
 				: -1;
 		if (n < 0) {
@@ -1152,20 +1149,20 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
-		bool cover = r->covers.of[id] >= 0; /* small on the screen: the whole of it */
+		int covers = lx_plane_cover_count(&r->covers, id); /* small on the screen: the whole of it */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, cover};
+			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, covers};
 			return n;
 		}
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing, cover};
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing, covers};
 		if (r->facing_count - first - facing > 0)
 			out[n++] = r->d.lookup_everywhere
 					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, first + facing,
-							   r->facing_count - first - facing, cover}
+							   r->facing_count - first - facing, covers}
 					   : (struct draw){id, 0, LX_FACES_AWAY, INDEXED, first + facing,
-							   r->facing_count - first - facing, false};
+							   r->facing_count - first - facing, 0};
 		return n;
 	}
 	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
@@ -1187,7 +1184,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
-	if (!away && r->covers.of[id] >= 0)
+	if (!away && r->covers.of[id][0] >= 0)
 		span = cover_spans(r, f, id, span, &ns);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
@@ -1203,7 +1200,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
 			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
-						 r->piece_vertices - first, (m & COVER_SPAN) != 0};
+						 r->piece_vertices - first,
+						 m & COVER_SPAN ? lx_plane_cover_count(&r->covers, id) : 0};
 	}
 	return n;
 }
@@ -1314,7 +1312,8 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 				to_float(&r->covers.m[p], r->cover[p]);
 	} else /* without maps (method none) nothing is shadowed, by planes neither */
 		for (int id = 0; id < r->objects; id++)
-			r->covers.of[id] = r->covers.second[id] = -1;
+			for (int c = 0; c < LX_MAX_COVERS; c++)
+				r->covers.of[id][c] = -1;
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -1380,10 +1379,9 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
-	if (d->cover && p->cover >= 0)
-		lx_gl.UniformMatrix4fv(p->cover, 1, GL_FALSE, r->cover[r->covers.of[id]]);
-	if (d->cover && p->cover2 >= 0)
-		lx_gl.UniformMatrix4fv(p->cover2, 1, GL_FALSE, r->cover[r->covers.second[id]]);
+	for (int c = 0; c < d->covers; c++)
+		if (p->cover[c] >= 0) /* -1: a variant short of varyings tests fewer (lx_main_covers) */
+			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, r->cover[r->covers.of[id][c]]);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1539,9 +1537,8 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	int covers = 0;
 	for (int k = 0; k < n; k++) {
 		const struct draw *d = &r->draws[k];
-		int dc = d->cover ? lx_plane_cover_count(&r->covers, d->object) : 0;
-		if (!p || d->mask != current || d->faces != faces || dc != covers) {
-			current = d->mask, faces = d->faces, covers = dc;
+		if (!p || d->mask != current || d->faces != faces || d->covers != covers) {
+			current = d->mask, faces = d->faces, covers = d->covers;
 			unsigned reads = current;
 			struct main_program *v = variant_for(r, shading, faces, &reads, covers);
 			if (v != p)

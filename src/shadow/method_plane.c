@@ -698,7 +698,7 @@ static void covered_part(const struct lx_frame *f, const struct lx_plane_covers 
 {
 	struct lx_poly img;
 	out->n = 0;
-	if (!lx_plane_cover_image(f, cv->of[i], i, &img)) /* of[i] -1: no front over it */
+	if (!lx_plane_cover_image(f, cv->of[i][0], i, &img)) /* -1: no front over it */
 		return;
 	*out = img;
 	for (int k = 0; k < img.n && out->n >= 3; k++) { /* counter-clockwise: inside on the left */

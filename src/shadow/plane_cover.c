@@ -84,19 +84,29 @@ static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_cov
 	for (int p = 0; p < np; p++)
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
 	for (int id = 0; id < f->object_count; id++) {
-		out->of[id] = out->second[id] = -1;
-		for (int p = 0; p < np && id < objects && out->second[id] < 0; p++)
+		int n = 0;
+		for (int p = 0; p < np && id < objects && n < LX_MAX_COVERS; p++)
 			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
-				*(out->of[id] < 0 ? &out->of[id] : &out->second[id]) = p;
+				out->of[id][n++] = p;
+		for (; n < LX_MAX_COVERS; n++)
+			out->of[id][n] = -1;
 	}
 }
 
-int lx_plane_cover_count(const struct lx_plane_covers *c, int id) { return (c->of[id] >= 0) + (c->second[id] >= 0); }
+int lx_plane_cover_count(const struct lx_plane_covers *c, int id)
+{
+	int n = 0;
+	while (n < LX_MAX_COVERS && c->of[id][n] >= 0)
+		n++;
+	return n;
+}
 
 bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
 {
-	return (c->of[id] >= 0 && lx_plane_cover_shadows(&c->m[c->of[id]], x)) ||
-	       (c->second[id] >= 0 && lx_plane_cover_shadows(&c->m[c->second[id]], x));
+	for (int k = 0; k < LX_MAX_COVERS && c->of[id][k] >= 0; k++)
+		if (lx_plane_cover_shadows(&c->m[c->of[id][k]], x))
+			return true;
+	return false;
 }
 
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }

@@ -43,12 +43,11 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x);
 /* A frame's covers: each plane's matrix where its front is lit (lx_plane_cover_matrix),
  * and for each object the planes whose lit fronts may shadow it (some of its box lies
  * beyond one from the light, and the light's rays to that part cross the parallelogram's
- * bounds): of[] the first such plane, second[] the next, -1 for none. */
+ * bounds): of[id][0], of[id][1], ... in the planes' order, -1 after the last. */
 struct lx_plane_covers {
 	bool lit[LX_MAX_PLANES];
 	mat4 m[LX_MAX_PLANES];
-	int of[LX_MAX_PLANES + LX_MAX_CASTERS];
-	int second[LX_MAX_PLANES + LX_MAX_CASTERS];
+	int of[LX_MAX_PLANES + LX_MAX_CASTERS][LX_MAX_COVERS];
 };
 /* How many fronts the main pass tests over object id (0 to LX_MAX_COVERS). */
 int lx_plane_cover_count(const struct lx_plane_covers *c, int id);
@@ -56,7 +55,7 @@ int lx_plane_cover_count(const struct lx_plane_covers *c, int id);
  * over it, as the shader decides it. */
 bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x);
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
-/* The same with of[] found for the planes alone (-1 for the casters): what a plane map
+/* The same with of[] found for the planes alone (none for the casters): what a plane map
  * leaves to the cover test (method_plane.c). */
 void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);
 
