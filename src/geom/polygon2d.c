@@ -5,14 +5,6 @@
 
 static double cross(vec2 o, vec2 a, vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-static int cmp_vec2(const void *pa, const void *pb)
-{
-	const vec2 *a = pa, *b = pb;
-	if (a->x != b->x)
-		return a->x < b->x ? -1 : 1;
-	return (a->y > b->y) - (a->y < b->y);
-}
-
 /* Points that need more than LX_POLY_MAX vertices: a polygon of LX_POLY_DOP sides, each a
  * supporting line of the points at an evenly spaced angle, which holds them all (a
  * superset, never a subset: dropping vertices would cut the wanted region). */
@@ -55,6 +47,27 @@ static bool same_point(vec2 a, vec2 b, double tol)
 	return d <= 1e-12 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y)) || d <= tol;
 }
 
+/* Whether a comes after b in x, then y (the monotone chain's order). */
+static bool after(vec2 a, vec2 b) { return a.x > b.x || (a.x == b.x && a.y > b.y); }
+
+/* Sorts p by x, then y. Shell sort (Ciura's gaps): the few hundred points a call gets
+ * sort in place without qsort's call per comparison; this runs several times a frame,
+ * most often on a box's 8 corners, which the last gap (insertion) sorts alone. */
+static void sort_points(vec2 *p, int m)
+{
+	static const int gaps[] = {701, 301, 132, 57, 23, 10, 4, 1};
+	for (size_t g = 0; g < sizeof gaps / sizeof gaps[0]; g++) {
+		int gap = gaps[g];
+		for (int i = gap; i < m; i++) {
+			vec2 t = p[i];
+			int j = i;
+			for (; j >= gap && after(p[j - gap], t); j -= gap)
+				p[j] = p[j - gap];
+			p[j] = t;
+		}
+	}
+}
+
 bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 {
 	out->n = 0;
@@ -68,26 +81,20 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 		dop(pts, n, out);
 		return false;
 	}
+	/* the finite points, and their extent in y */
 	int m = 0;
+	double ylo = INFINITY, yhi = -INFINITY;
 	for (int i = 0; i < n; i++)
-		if (isfinite(pts[i].x) && isfinite(pts[i].y))
+		if (isfinite(pts[i].x) && isfinite(pts[i].y)) {
 			p[m++] = pts[i];
+			ylo = pts[i].y < ylo ? pts[i].y : ylo, yhi = pts[i].y > yhi ? pts[i].y : yhi;
+		}
 	if (m == 0) {
 		if (p != stack)
 			free(p);
 		return true;
 	}
-	/* Shell sort (Ciura's gaps): the few hundred points here sort in place without qsort's
-	 * call per comparison; this runs several times per frame */
-	static const int gaps[] = {701, 301, 132, 57, 23, 10, 4, 1};
-	for (size_t g = 0; g < sizeof gaps / sizeof gaps[0]; g++)
-		for (int i = gaps[g]; i < m; i++) {
-			vec2 t = p[i];
-			int j = i;
-			for (; j >= gaps[g] && cmp_vec2(&p[j - gaps[g]], &t) > 0; j -= gaps[g])
-				p[j] = p[j - gaps[g]];
-			p[j] = t;
-		}
+	sort_points(p, m);
 	/* Points the same but for rounding (a flat box's corners come in pairs; a sphere's
 	 * outline sends two points down each ray) turn any way, and kept, they let a vertex
 	 * that is no corner stay and leave an edge of length about 0, which points anywhere:
@@ -95,9 +102,6 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	 * its own size (and a thousand-trillionth of the points' extent, for those near 0) of
 	 * the last one kept is skipped. A tolerance on the turns instead, scaled by the
 	 * extent squared, cut real corners when a point lay near the light's plane, far out. */
-	double ylo = p[0].y, yhi = p[0].y;
-	for (int i = 1; i < m; i++)
-		ylo = fmin(ylo, p[i].y), yhi = fmax(yhi, p[i].y);
 	double floor_tol = 1e-15 * fmax(p[m - 1].x - p[0].x, yhi - ylo);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
