@@ -1,7 +1,7 @@
 /* The coverage check shared by the method tests: every shadow that can fall on a
  * visible receiver is captured. For caster points c (sampled in the casters' shapes) and
  * receiver points r beyond c on the same light ray inside the view frustum and the
- * scene box (on a plane, or in a caster's box), the map that serves r
+ * scene box (on a plane, or on another caster: visible_lit_point), the map that serves r
  * (lx_shadow_select_map for r's object, the shader's choice) holds c
  * on the same lixel with -1 <= depth(c) <= depth(r) <= 1 (a map that declares pancaking
  * clamps depth(c) to -1 as its shadow pass does). With the light at the eye
@@ -77,14 +77,22 @@ static void check_pair(const struct lx_shadow_result *res, const struct lx_plane
 	assert_near(pc.x / pc.w, pr.x / pr.w, 1e-6); /* same ray, same lixel */
 }
 
+/* A round caster's axis point nearest p (a sphere's centre; on a cylinder's or cone's axis
+ * at p's height) and the shape's radius there. */
+static double round_reach(const struct lx_frame *f, int id, vec3 p, vec3 *axis)
+{
+	const struct lx_caster *cs = &f->scene->casters[id - f->scene->plane_count];
+	vec3 o = f->offset[id];
+	*axis = cs->shape == LX_SPHERE ? v3(o.x, o.y + cs->size.x, o.z) : v3(o.x, p.y, o.z);
+	return cs->shape == LX_SPHERE ? cs->size.x : caster_radius_at(f, id, p.y);
+}
+
 /* A point of caster id's exact shape (its mesh lies inside it), drawn in its box: inside
  * it, or every other one on its surface, where the footprints' outlines are tightest
  * (lx_frame_object_outline). False when 64 draws found none. */
 static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 *out)
 {
 	const struct lx_caster *cs = &f->scene->casters[id - f->scene->plane_count];
-	vec3 o = f->offset[id];
-	double r = cs->size.x;
 	bool surface = test_rand(seed) < 0.5;
 	for (int tries = 0; tries < 64; tries++) {
 		vec3 c = v3(f->bmin[id].x + test_rand(seed) * (f->bmax[id].x - f->bmin[id].x),
@@ -94,10 +102,10 @@ static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 
 			*out = c;
 			return true;
 		}
-		vec3 axis = cs->shape == LX_SPHERE ? v3(o.x, o.y + r, o.z) : v3(o.x, c.y, o.z);
+		vec3 axis;
+		double reach = round_reach(f, id, c, &axis);
 		vec3 d = v3_sub(c, axis);
 		double len = v3_len(d);
-		double reach = cs->shape == LX_SPHERE ? r : caster_radius_at(f, id, c.y);
 		if (!(len <= reach) || !(len > 1e-9))
 			continue;
 		*out = surface ? v3_add(axis, v3_scale(d, reach / len)) : c;
@@ -106,9 +114,48 @@ static bool caster_point(const struct lx_frame *f, int id, uint64_t *seed, vec3 
 	return false;
 }
 
+/* The point of caster id a lookup serves where the ray from c along dir, past c, reaches
+ * r in its box: of a round caster, r where it lies in the shape (its box's corners are
+ * none of it); of a box wholly beyond the near plane, the point where the ray enters it
+ * through a face turned towards the eye (the renderer culls the faces turned away, and a
+ * face turned away from the light reads no map); of a box the near plane cuts, whose
+ * inner faces show, r. False where there is none: outside the shape, or the entry is
+ * hidden or lies before c. */
+static bool visible_lit_point(const struct lx_frame *f, int id, vec3 c, vec3 dir, vec3 *r)
+{
+	if (f->scene->casters[id - f->scene->plane_count].shape != LX_BOX) {
+		vec3 axis;
+		double reach = round_reach(f, id, *r, &axis);
+		return v3_len(v3_sub(*r, axis)) <= reach;
+	}
+	for (int k = 0; k < 8; k++)
+		if (!(v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), f->view.eye), f->view.dir) > f->view.near))
+			return true;
+	double lo[3] = {f->bmin[id].x, f->bmin[id].y, f->bmin[id].z}, hi[3] = {f->bmax[id].x, f->bmax[id].y, f->bmax[id].z};
+	double o[3] = {c.x, c.y, c.z}, d[3] = {dir.x, dir.y, dir.z}, t_in = -INFINITY;
+	int axis = -1;
+	for (int a = 0; a < 3; a++) {
+		if (!(fabs(d[a]) > 1e-12))
+			continue; /* parallel to these faces: it enters through another */
+		double t = ((d[a] > 0 ? lo[a] : hi[a]) - o[a]) / d[a];
+		if (t > t_in)
+			t_in = t, axis = a;
+	}
+	if (axis < 0 || !(t_in > 1e-9))
+		return false;
+	vec3 e = v3_add(c, v3_scale(dir, t_in));
+	double n[3] = {0, 0, 0};
+	n[axis] = d[axis] > 0 ? -1 : 1; /* the entry face's outward normal */
+	if (!(v3_dot(v3(n[0], n[1], n[2]), v3_sub(f->view.eye, e)) > 0) || !in_receivers(f, e))
+		return false;
+	*r = e;
+	return true;
+}
+
 /* Returns the number of caster/receiver pairs checked; fails the test on the first miss.
- * Receivers are the points of the planes' parallelograms and of the casters' boxes, each
- * looked up in the maps its object reads (lx_shadow_receiver_maps). */
+ * Receivers are the points of the planes' parallelograms and the other casters' points a
+ * lookup serves (visible_lit_point), each looked up in the maps its object reads
+ * (lx_shadow_receiver_maps). */
 static long check_coverage(const struct lx_frame *f, const struct lx_shadow_result *res, int plane_count,
 			   uint64_t *seed, int samples, const char *what)
 {
@@ -146,7 +193,8 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 					if (r.x >= f->bmin[o].x && r.x <= f->bmax[o].x && r.y >= f->bmin[o].y && r.y <= f->bmax[o].y &&
 					    r.z >= f->bmin[o].z && r.z <= f->bmax[o].z)
 						on = o;
-				if (on < 0)
+				/* a caster is convex: it never shadows its own lit faces */
+				if (on < 0 || on == id || !visible_lit_point(f, on, c, dir, &r))
 					continue;
 				check_pair(res, NULL, on, c, r, what);
 				checked++;

@@ -601,6 +601,54 @@ static void only_what_the_scene_requires(void **state)
 	lx_meshes_free(&s.meshes);
 }
 
+/* Where caster id's box centre lies in map m's clip square (x, y), false behind its light. */
+static bool box_centre_in_map(const struct setup *s, int m, int id, double *x, double *y)
+{
+	vec4 c = m4_mul_point(&s->res.maps[m].light_clip, v3_scale(v3_add(s->frame.bmin[id], s->frame.bmax[id]), 0.5));
+	if (!(c.w > 0))
+		return false;
+	*x = c.x / c.w, *y = c.y / c.w;
+	return true;
+}
+
+/* The fallback's lixels go only where a caster may be shadowed by another: the table
+ * seen from close to the floor, the ball and the cone float over it in view, in no other
+ * object's shadow (their own lit faces need no lixel), so the fallback's square leaves
+ * them out and holds the legs, which the slab shadows; and still holds every shadow. */
+static void fallback_serves_only_what_needs_it(void **state)
+{
+	(void)state;
+	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_table(&s.scene);
+	lx_config_apply(lx_config_find("floor-close"), &s.scene);
+	assert_true(build(&s, "plane", 1024, 1024, 0));
+	int np = s.scene.plane_count, fb = np < 2 ? np : 2, left_out = 0, held = 0;
+	assert_true(s.res.maps[fb].rendered);
+	for (int id = np; id < s.frame.object_count; id++) {
+		enum lx_shape shape = s.scene.casters[id - np].shape;
+		double x, y;
+		bool inside = box_centre_in_map(&s, fb, id, &x, &y) && fabs(x) <= 1 && fabs(y) <= 1;
+		if (shape == LX_SPHERE || shape == LX_CONE) {
+			if (inside)
+				fail_msg("the %s's centre lies in the fallback at (%g, %g)", lx_shape_name(shape), x, y);
+			left_out++;
+		} else if (shape == LX_BOX && s.frame.bmax[id].y < 0.71) { /* a leg */
+			if (!inside)
+				fail_msg("leg %d's centre lies outside the fallback at (%g, %g)", id, x, y);
+			held++;
+		}
+	}
+	assert_int_equal(left_out, 2);
+	assert_int_equal(held, 4);
+	uint64_t seed = 5;
+	long pairs = check_coverage(&s.frame, &s.res, np, &seed, 200, "table, floor-close");
+	print_message("table, floor-close: the ball and the cone left out of the fallback, the 4 legs in; %ld pairs covered\n",
+		      pairs);
+	assert_true(pairs > 500);
+	lx_meshes_free(&s.meshes);
+}
+
 static void polygon_difference(void **state)
 {
 	(void)state;
@@ -954,6 +1002,7 @@ int main(void)
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),
 		cmocka_unit_test(only_what_the_scene_requires),
+		cmocka_unit_test(fallback_serves_only_what_needs_it),
 		cmocka_unit_test(polygon_difference),
 	};
 	return cmocka_run_group_tests_name("plane", tests, NULL, NULL);

@@ -177,7 +177,9 @@ static double mismatch_pct_of(const char *method, const struct lx_scene *scene, 
 }
 
 /* Chessboard distance from each pixel to the nearest reference edge of light l (a pixel
- * whose 4-neighbour differs in visible object or shadow state), capped at `cap`. */
+ * whose 4-neighbour differs in visible object or shadow state), capped at `cap`. A pixel
+ * on the image's border counts as one: its neighbour past the border is out of sight,
+ * and a shadow's edge there (half a pixel out, on the paper's bad case) is still an edge. */
 static void edge_distance(const struct lx_render_report *r, int l, uint8_t *dist, int cap)
 {
 	const uint8_t *ref_shadow = r->ref_shadow + (size_t)l * W * H;
@@ -188,8 +190,10 @@ static void edge_distance(const struct lx_render_report *r, int l, uint8_t *dist
 			static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
 			for (int k = 0; k < 4; k++) {
 				int nx = x + dx[k], ny = y + dy[k];
-				if (nx < 0 || ny < 0 || nx >= W || ny >= H)
+				if (nx < 0 || ny < 0 || nx >= W || ny >= H) {
+					edge = true;
 					continue;
+				}
 				long j = (long)ny * W + nx;
 				edge |= r->ref_object[j] != r->ref_object[i] || ref_shadow[j] != ref_shadow[i];
 			}
@@ -1016,7 +1020,7 @@ struct face_sweep {
 	struct decisions *dc;
 	uint8_t *ref_sh;
 	int16_t *ref_obj;
-	long lit, wrong[2], legs[2];
+	long lit, wrong[2], on_plane_map[2];
 };
 
 static void face_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
@@ -1044,8 +1048,8 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
 		struct lx_mismatch mm;
 		lx_mismatch_compare(s->ref_obj, s->ref_sh, dc->obj[k], dc->sh[k], n, &mm);
 		s->wrong[k] += mm.false_shadow + mm.missing_shadow;
-		if (!strcmp(scene, "table") && !strcmp(method, "plane") && !strcmp(config, "floor-close"))
-			s->legs[k] = mm.false_shadow + mm.missing_shadow;
+		if (!strcmp(scene, "table") && !strcmp(method, "plane") && !strcmp(config, "directional"))
+			s->on_plane_map[k] = mm.false_shadow + mm.missing_shadow;
 	}
 }
 
@@ -1053,9 +1057,9 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
  * plane at the centre of the lixel read, moved only towards the light, can only light a
  * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
  * before); over every method and standard configuration of both built-in scenes it
- * decides fewer pixels otherwise than the exact reference does, and it takes the acne
- * off the table's legs seen from close to the floor (there they read the floor's map at
- * a few pixels per lixel). */
+ * decides fewer pixels otherwise than the exact reference does, so too on the table under
+ * a directional light with plane-optimal maps, where the ball and the cone read the
+ * table's map. */
 static void caster_faces_compare_along_their_planes(void **state)
 {
 	(void)state;
@@ -1067,11 +1071,11 @@ static void caster_faces_compare_along_their_planes(void **state)
 	long shadowed = 0;
 	sweep_pairs(&dc, &(struct pair_sweep){w, h, face_setup, face_frame, &s}, &shadowed);
 	print_message("face against point: %ld casters' pixels lit that point shadowed; %ld against %ld pixels decided "
-		      "otherwise than the exact reference; the table from close to the floor, plane: %ld against %ld\n",
-		      s.lit, s.wrong[0], s.wrong[1], s.legs[0], s.legs[1]);
+		      "otherwise than the exact reference; the table under a directional light, plane: %ld against %ld\n",
+		      s.lit, s.wrong[0], s.wrong[1], s.on_plane_map[0], s.on_plane_map[1]);
 	assert_true(s.lit > 0);
 	assert_true(s.wrong[0] < s.wrong[1]);
-	assert_true(s.legs[0] < s.legs[1]);
+	assert_true(s.on_plane_map[0] < s.on_plane_map[1]);
 	free(s.ref_sh), free(s.ref_obj);
 	decisions_free(&dc);
 }

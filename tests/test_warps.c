@@ -156,7 +156,7 @@ static void psm_branches(void **state)
 			s.scene.light.position = cases[i].light;
 		assert_true(build(&s, "psm", 320, 240, 0.3));
 		uint64_t seed = i + 7;
-		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 200, cases[i].what);
+		long n = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 400, cases[i].what);
 		print_message("%-40s variant %d, %ld pairs, %s\n", cases[i].what, s.res.variant, n,
 			      s.res.warning_count ? s.res.warnings[0] : "no warning");
 		assert_int_equal(s.res.variant, cases[i].variant);

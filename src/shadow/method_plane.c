@@ -1268,21 +1268,129 @@ static bool box_out_of_view(const struct lx_view *v, vec3 lo, vec3 hi)
 	return false;
 }
 
+/* The box's faces turned to both the eye and the light, as corner index triples: a face's
+ * corner and its two edges' far ends. slack > 0 keeps too the faces within that share of
+ * their distance of edge-on (to the eye or the light), whose side rounding may flip.
+ * Returns the count. */
+static int box_faces(const struct lx_frame *f, const vec3 *c, double slack, int (*faces)[3])
+{
+	static const int face[6][3] = {{0, 2, 4}, {1, 5, 3}, {0, 4, 1}, {2, 3, 6}, {0, 1, 2}, {4, 6, 5}};
+	static const double normal[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+	const struct lx_light *L = &f->light;
+	int n = 0;
+	for (int i = 0; i < 6; i++) {
+		vec3 nrm = v3(normal[i][0], normal[i][1], normal[i][2]);
+		vec3 mid = v3_scale(v3_add(c[face[i][1]], c[face[i][2]]), 0.5);
+		vec3 to_light = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, mid);
+		vec3 to_eye = v3_sub(f->view.eye, mid);
+		if (v3_dot(nrm, to_eye) > -slack * v3_len(to_eye) && v3_dot(nrm, to_light) > -slack * v3_len(to_light))
+			memcpy(faces[n++], face[i], sizeof face[i]);
+	}
+	return n;
+}
+
+/* Whether the whole box lies beyond the view's near plane: then each of its faces turned
+ * away from the eye is hidden behind one turned towards it (the renderer culls them). */
+static bool box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi)
+{
+	for (int k = 0; k < 8; k++)
+		if (!(v3_dot(v3_sub(v3_box_corner(lo, hi, k), v->eye), v->dir) > v->near))
+			return false;
+	return true;
+}
+
+/* The points whose hull holds what of caster id reads the fallback: of a box wholly beyond
+ * the near plane, the corners of its faces turned to both the eye and the light (a face
+ * turned away from the light is in its own shadow and reads no map, main.frag; one turned
+ * away from the eye is hidden); else its outline (a round caster's curved side, or a box
+ * the near plane cuts, whose inner faces show through the cut). A table's slab seen from
+ * below gives its lit sides only, not its underside's whole shadow. */
+static int fallback_points(const struct lx_frame *f, int id, vec3 *x)
+{
+	if (f->scene->casters[id - f->scene->plane_count].shape != LX_BOX || !box_beyond_near(&f->view, f->bmin[id], f->bmax[id]))
+		return lx_frame_object_outline(f, id, true, x);
+	vec3 c[8];
+	int faces[6][3], n = 0;
+	for (int k = 0; k < 8; k++)
+		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	unsigned used = 0;
+	for (int i = 0, nf = box_faces(f, c, 1e-9, faces); i < nf; i++) /* a face's fourth corner: o ^ u ^ v */
+		used |= 1u << faces[i][0] | 1u << faces[i][1] | 1u << faces[i][2] | 1u << (faces[i][0] ^ faces[i][1] ^ faces[i][2]);
+	for (int k = 0; k < 8; k++)
+		if (used >> k & 1)
+			x[n++] = c[k];
+	return n;
+}
+
+/* Bounds on G (x0, y0, x1, y1). */
+struct g_bounds {
+	double b[4];
+};
+
+static bool g_overlap(const struct g_bounds *a, const struct g_bounds *b)
+{
+	return a->b[0] <= b->b[2] && b->b[0] <= a->b[2] && a->b[1] <= b->b[3] && b->b[1] <= a->b[3];
+}
+
+/* What each object that casts onto the receivers can shadow: its outline's bounds on G
+ * (all of G where a point cannot be charted: a caster reaching behind the point light). */
+static void casters_bounds(const struct lx_frame *f, const struct lx_light_space *ls, struct g_bounds *bounds)
+{
+	for (int id = 0; id < f->object_count; id++) {
+		if (!(ls->casting >> id & 1))
+			continue;
+		vec3 x[LX_OUTLINE_POINTS];
+		struct g_bounds *r = &bounds[id];
+		*r = (struct g_bounds){{INFINITY, INFINITY, -INFINITY, -INFINITY}};
+		for (int k = 0, m = lx_frame_object_outline(f, id, true, x); k < m; k++) {
+			vec2 g;
+			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, &g)) {
+				*r = (struct g_bounds){{-INFINITY, -INFINITY, INFINITY, INFINITY}};
+				break;
+			}
+			r->b[0] = fmin(r->b[0], g.x), r->b[1] = fmin(r->b[1], g.y);
+			r->b[2] = fmax(r->b[2], g.x), r->b[3] = fmax(r->b[3], g.y);
+		}
+	}
+}
+
+/* Whether another object's shadow can reach receiver id, whose points' bounds on G are
+ * own: a ray from the light to a point it shadows passes through the other one, so their
+ * images on G meet. A caster is convex: it never shadows its own lit faces. */
+static bool shadowed_by_other(const struct lx_frame *f, const struct lx_light_space *ls, const struct g_bounds *cast,
+			      int id, const struct g_bounds *own)
+{
+	for (int c = 0; c < f->object_count; c++)
+		if (c != id && (ls->casting >> c & 1) && g_overlap(&cast[c], own))
+			return true;
+	return false;
+}
+
 /* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
- * casters in view, by their outlines (their surfaces are receivers no plane map serves),
+ * casters in view that another object's shadow can reach, by the corners of their faces
+ * the fallback serves (fallback_points; their surfaces are receivers no plane map serves),
  * and the visible part of each plane that needs it, within what the casters cover. False
  * when a point cannot be charted on G (a receiver behind the point light). */
 static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *in_view,
 			    const bool *needs, struct lx_poly *want)
 {
 	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
+	struct g_bounds cast[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int n = 0;
+	casters_bounds(f, ls, cast);
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		vec3 x[LX_OUTLINE_POINTS];
-		int m = in_view[id] ? lx_frame_object_outline(f, id, true, x) : 0;
-		for (int k = 0; k < m; k++)
-			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, &pts[n++]))
+		int m = in_view[id] ? fallback_points(f, id, x) : 0;
+		struct g_bounds own = {{INFINITY, INFINITY, -INFINITY, -INFINITY}};
+		for (int k = 0; k < m; k++) {
+			vec2 *g = &pts[n + k];
+			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, g))
 				return false;
+			own.b[0] = fmin(own.b[0], g->x), own.b[1] = fmin(own.b[1], g->y);
+			own.b[2] = fmax(own.b[2], g->x), own.b[3] = fmax(own.b[3], g->y);
+		}
+		if (m > 0 && shadowed_by_other(f, ls, cast, id, &own))
+			n += m; /* else no shadow but its own can fall on it: no lixel needed */
 	}
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		struct lx_poly win;
@@ -1316,24 +1424,6 @@ static bool box_image(const mat4 *m, const vec3 *c, double sx, double sy, bool d
 		out[k] = (vec2){d.x / d.w * sx, d.y / d.w * sy};
 	}
 	return true;
-}
-
-/* The box's faces turned to both the eye and the light, as corner index triples: a face's
- * corner and its two edges' far ends. Returns the count. */
-static int box_faces(const struct lx_frame *f, const vec3 *c, int (*faces)[3])
-{
-	static const int face[6][3] = {{0, 2, 4}, {1, 5, 3}, {0, 4, 1}, {2, 3, 6}, {0, 1, 2}, {4, 6, 5}};
-	static const double normal[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
-	const struct lx_light *L = &f->light;
-	int n = 0;
-	for (int i = 0; i < 6; i++) {
-		vec3 nrm = v3(normal[i][0], normal[i][1], normal[i][2]);
-		vec3 mid = v3_scale(v3_add(c[face[i][1]], c[face[i][2]]), 0.5);
-		vec3 to_light = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, mid);
-		if (v3_dot(nrm, v3_sub(f->view.eye, mid)) > 0 && v3_dot(nrm, to_light) > 0)
-			memcpy(faces[n++], face[i], sizeof face[i]);
-	}
-	return n;
 }
 
 /* The smaller singular value of the 2x2 matrix (a b; c d). */
@@ -1377,7 +1467,7 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
  * sphere over a floor seen from a millimetre above it: the floor map is three lixels
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
  * its faces at least the fallback's lixels per pixel in their worst direction, then the
- * fallback (which covers every caster in view). */
+ * fallback (which covers every caster in view another's shadow can reach). */
 static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_view,
 			       struct lx_shadow_result *out)
 {
@@ -1394,7 +1484,7 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 			c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
 		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
-		int nf = box_faces(f, c, faces);
+		int nf = box_faces(f, c, 0, faces);
 		double dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
 		if (!(dfb > 0))
 			continue;
