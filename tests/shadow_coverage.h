@@ -128,9 +128,8 @@ static bool visible_lit_point(const struct lx_frame *f, int id, vec3 c, vec3 dir
 		double reach = round_reach(f, id, *r, &axis);
 		return v3_len(v3_sub(*r, axis)) <= reach;
 	}
-	for (int k = 0; k < 8; k++)
-		if (!(v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), f->view.eye), f->view.dir) > f->view.near))
-			return true;
+	if (!lx_view_box_beyond_near(&f->view, f->bmin[id], f->bmax[id]))
+		return true;
 	double lo[3] = {f->bmin[id].x, f->bmin[id].y, f->bmin[id].z}, hi[3] = {f->bmax[id].x, f->bmax[id].y, f->bmax[id].z};
 	double o[3] = {c.x, c.y, c.z}, d[3] = {dir.x, dir.y, dir.z}, t_in = -INFINITY;
 	int axis = -1;

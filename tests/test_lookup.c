@@ -609,10 +609,6 @@ static void lit_plane_fronts_shadow_what_lies_beyond(void **state)
 	}
 }
 
-#ifndef LX_TEST_DATA
-#define LX_TEST_DATA "tests/data"
-#endif
-
 /* Two shelves stacked over the floor (tests/data/two-shelves.scene): the floor gets both
  * fronts' tests, and a point of it is in their shadows exactly where the light's ray
  * crosses either shelf; part of the upper shelf's shadow falls outside the lower one's,
@@ -621,9 +617,7 @@ static void two_fronts_over_an_object_are_both_tested(void **state)
 {
 	(void)state;
 	struct setup s;
-	char err[256];
-	if (!lx_scene_load(LX_TEST_DATA "/two-shelves.scene", &s.scene, err, sizeof err))
-		fail_msg("%s", err);
+	test_scene_load("two-shelves.scene", &s.scene);
 	assert_true(build(&s, "none", W, H, 0));
 	const struct lx_frame *f = &s.frame;
 	assert_int_equal(lx_scene_covers_needed(&s.scene, &s.meshes), 2);

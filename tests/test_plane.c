@@ -13,10 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef LX_TEST_DATA
-#define LX_TEST_DATA "tests/data"
-#endif
-
 static vec4 row(const mat4 *m, int r) { return (vec4){m->m[r], m->m[4 + r], m->m[8 + r], m->m[12 + r]}; }
 static double dot4(vec4 a, vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
 
@@ -455,10 +451,8 @@ static void a_lit_fronts_shadow_is_left_to_its_test(void **state)
 	(void)state;
 	uint64_t seed = 5;
 	struct setup s;
-	char err[256];
 	memset(&s, 0, sizeof s);
-	if (!lx_scene_load(LX_TEST_DATA "/shelf.scene", &s.scene, err, sizeof err))
-		fail_msg("%s", err);
+	test_scene_load("shelf.scene", &s.scene);
 	assert_true(build(&s, "plane", 640, 480, 0));
 	coverage_left_to_cover = 0;
 	long pairs = check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 400, "shelf");

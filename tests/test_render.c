@@ -20,9 +20,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#ifndef LX_TEST_DATA
-#define LX_TEST_DATA "tests/data"
-#endif
 
 static const char *const platforms[] = {"osmesa", "egl"};
 enum { W = 320, H = 240 };
@@ -533,9 +530,7 @@ static void a_shelf_shadows_the_floor_without_a_caster(void **state)
 	(void)state;
 	static const char *const methods[] = {"uniform", "tsm", "plane"};
 	struct lx_scene shelf;
-	char err[256];
-	if (!lx_scene_load(LX_TEST_DATA "/shelf.scene", &shelf, err, sizeof err))
-		fail_msg("%s", err);
+	test_scene_load("shelf.scene", &shelf);
 	for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++) {
 		struct lx_render_report r;
 		run_sized(methods[k], &shelf, 320, 240, &r);
@@ -558,9 +553,7 @@ static void two_shelves_shadow_the_floor_both(void **state)
 	(void)state;
 	static const char *const methods[] = {"uniform", "lispsm", "plane"};
 	struct lx_scene sh;
-	char err[256];
-	if (!lx_scene_load(LX_TEST_DATA "/two-shelves.scene", &sh, err, sizeof err))
-		fail_msg("%s", err);
+	test_scene_load("two-shelves.scene", &sh);
 	for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++) {
 		struct lx_render_report r;
 		run_sized(methods[k], &sh, 320, 240, &r);

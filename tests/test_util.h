@@ -6,7 +6,14 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <cmocka.h>
+#include "scene.h"
+
+/* The tests' data files, from the repository's top (where make runs them). */
+#ifndef LX_TEST_DATA
+#define LX_TEST_DATA "tests/data"
+#endif
 
 #define assert_near(a, b, eps)                                                                          \
 	do {                                                                                            \
@@ -22,6 +29,15 @@ static inline double test_rand(uint64_t *s)
 	*s ^= *s >> 7;
 	*s ^= *s << 17;
 	return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/* Scene file `name` of LX_TEST_DATA into *s; the test fails with the parser's line. */
+static inline void test_scene_load(const char *name, struct lx_scene *s)
+{
+	char path[512], err[256];
+	snprintf(path, sizeof path, "%s/%s", LX_TEST_DATA, name);
+	if (!lx_scene_load(path, s, err, sizeof err))
+		fail_msg("%s", err);
 }
 
 #endif

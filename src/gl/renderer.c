@@ -218,8 +218,9 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
-	p->cover[0] = lx_gl.GetUniformLocation(p->prog, "u_cover");
-	p->cover[1] = lx_gl.GetUniformLocation(p->prog, "u_cover2");
+	static const char *const cover_name[LX_MAX_COVERS] = {"u_cover", "u_cover2"}; /* main.vert */
+	for (int c = 0; c < LX_MAX_COVERS; c++)
+		p->cover[c] = lx_gl.GetUniformLocation(p->prog, cover_name[c]);
 	return true;
 }
 
@@ -1142,6 +1143,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			bool decision, struct draw *out, int n)
 {
 	unsigned mask = r->lookup.reads[id]; /* lx_shadow_receiver_maps, prepared by frame_draws */
+	int covers = lx_plane_cover_count(&r->covers, id); /* a caster, small on the screen, tests
+							    * them all over; a plane along their shadows' edges */
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
 			mask = lx_lookup_maps(&r->lookup, id, mask);
@@ -1149,7 +1152,6 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			mask = 0; /* no shadow can fall on it */
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
-		int covers = lx_plane_cover_count(&r->covers, id); /* small on the screen: the whole of it */
 		int first = r->facing_count, facing = sides ? sort_by_facing(r, f, id) : -1;
 		if (facing < 0) {
 			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, covers};
@@ -1184,7 +1186,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (r->d.lookup_everywhere)
 		for (int i = 0; i < ns; i++)
 			span[i].mask = mask;
-	if (!away && r->covers.of[id][0] >= 0)
+	if (!away && covers > 0)
 		span = cover_spans(r, f, id, span, &ns);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
@@ -1200,8 +1202,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
 			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
-						 r->piece_vertices - first,
-						 m & COVER_SPAN ? lx_plane_cover_count(&r->covers, id) : 0};
+						 r->piece_vertices - first, m & COVER_SPAN ? covers : 0};
 	}
 	return n;
 }
@@ -1360,12 +1361,7 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
  * the near plane cuts shows its inner faces through the cut (the horizon view's did). */
 static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
 {
-	if (id < plane_count)
-		return false;
-	for (int k = 0; k < 8; k++)
-		if (!(v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), f->view.eye), f->view.dir) > f->view.near))
-			return false;
-	return true;
+	return id >= plane_count && lx_view_box_beyond_near(&f->view, f->bmin[id], f->bmax[id]);
 }
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or

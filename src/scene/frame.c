@@ -367,6 +367,14 @@ int lx_frame_object_outline(const struct lx_frame *f, int id, bool image_only, v
 	return 8;
 }
 
+bool lx_view_box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi)
+{
+	for (int k = 0; k < 8; k++)
+		if (!(v3_dot(v3_sub(v3_box_corner(lo, hi, k), v->eye), v->dir) > v->near))
+			return false;
+	return true;
+}
+
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8])
 {
 	static const double cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};

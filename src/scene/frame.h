@@ -50,6 +50,10 @@ struct lx_frame {
 /* The view frustum's corners in world space: the near face (0-3), then the far face
  * (4-7), in the same winding, as lx_frustum_box_points takes them. */
 void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8]);
+/* Whether all of box [lo, hi] lies beyond the view's near plane: then each of a closed
+ * convex mesh's faces turned away from the eye is hidden behind one turned towards it
+ * (the main pass culls them); one the near plane cuts shows its inner faces. */
+bool lx_view_box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi);
 
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
 		    int width, int height, char *err, size_t errlen);

@@ -178,8 +178,18 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 		ncasters++;
 		vec3 x[LX_OUTLINE_POINTS];
 		int k = lx_frame_object_outline(f, id, false, x);
-		for (int j = 0; j < k; j++)
-			q[npoints++] = m4_mul_point(&ls->view, x[j]);
+		double *b = ls->caster_g[id];
+		b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
+		for (int j = 0; j < k; j++) {
+			vec2 g;
+			double depth;
+			q[npoints] = m4_mul_point(&ls->view, x[j]);
+			if (!project_view(ls, q[npoints++], &g, &depth)) { /* behind the light: anywhere */
+				b[0] = b[1] = -INFINITY, b[2] = b[3] = INFINITY;
+				continue;
+			}
+			b[0] = fmin(b[0], g.x), b[1] = fmin(b[1], g.y), b[2] = fmax(b[2], g.x), b[3] = fmax(b[3], g.y);
+		}
 	}
 	n = project_points(ls, q, npoints, pts, &dlo, &dhi);
 	ls->casters_unbounded = n < npoints; /* a caster reaching behind the light projects everywhere */
@@ -188,6 +198,16 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	/* Nothing casts, no receiver is in front of the light, or every caster lies beyond
 	 * every receiver: no shadow can fall in the view. */
 	ls->empty = ncasters == 0 || !(ls->zfar > -INFINITY) || ls->znear > ls->zfar;
+}
+
+bool lx_light_space_shadowed_by_other(const struct lx_light_space *ls, int object_count, int id, const double own[4])
+{
+	for (int c = 0; c < object_count; c++) {
+		const double *b = ls->caster_g[c];
+		if (c != id && (ls->casting >> c & 1) && b[0] <= own[2] && own[0] <= b[2] && b[1] <= own[3] && own[1] <= b[3])
+			return true;
+	}
+	return false;
 }
 
 double lx_light_space_front(const struct lx_light_space *ls, const struct lx_frame *f, vec4 X)

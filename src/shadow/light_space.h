@@ -21,6 +21,9 @@ struct lx_light_space {
 	double znear, zfar;     /* casters' minimum depth, receivers' maximum depth */
 	double size;            /* scene diagonal */
 	unsigned long long casting; /* bit id: object id can cast onto the receivers (a conservative test) */
+	/* for each object that casts (bit in casting), its outline's bounds on G (x0, y0, x1,
+	 * y1): what it can shadow; all of G where part of it lies behind the point light */
+	double caster_g[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	int receiver_count;     /* the receiver volume's vertices, world space */
 	vec3 receiver_pts[LX_CONVEX_MAX_POINTS];
 };
@@ -42,6 +45,10 @@ bool lx_shadows_hidden(const struct lx_frame *f);
  * and lit, f->lit_min and lit_max); returns
  * the count, at most LX_CONVEX_MAX_POINTS. */
 int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts);
+/* Whether an object that casts, other than id, may shadow a receiver of id whose points'
+ * bounds on G are own (x0, y0, x1, y1): a ray from the light to a point it shadows passes
+ * through that object, so their images on G meet (caster_g). */
+bool lx_light_space_shadowed_by_other(const struct lx_light_space *ls, int object_count, int id, const double own[4]);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'
  * bounds (planes only where their back face is lit). */
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);

@@ -1289,16 +1289,6 @@ static int box_faces(const struct lx_frame *f, const vec3 *c, double slack, int 
 	return n;
 }
 
-/* Whether the whole box lies beyond the view's near plane: then each of its faces turned
- * away from the eye is hidden behind one turned towards it (the renderer culls them). */
-static bool box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi)
-{
-	for (int k = 0; k < 8; k++)
-		if (!(v3_dot(v3_sub(v3_box_corner(lo, hi, k), v->eye), v->dir) > v->near))
-			return false;
-	return true;
-}
-
 /* The points whose hull holds what of caster id reads the fallback: of a box wholly beyond
  * the near plane, the corners of its faces turned to both the eye and the light (a face
  * turned away from the light is in its own shadow and reads no map, main.frag; one turned
@@ -1307,7 +1297,7 @@ static bool box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi)
  * below gives its lit sides only, not its underside's whole shadow. */
 static int fallback_points(const struct lx_frame *f, int id, vec3 *x)
 {
-	if (f->scene->casters[id - f->scene->plane_count].shape != LX_BOX || !box_beyond_near(&f->view, f->bmin[id], f->bmax[id]))
+	if (f->scene->casters[id - f->scene->plane_count].shape != LX_BOX || !lx_view_box_beyond_near(&f->view, f->bmin[id], f->bmax[id]))
 		return lx_frame_object_outline(f, id, true, x);
 	vec3 c[8];
 	int faces[6][3], n = 0;
@@ -1322,50 +1312,6 @@ static int fallback_points(const struct lx_frame *f, int id, vec3 *x)
 	return n;
 }
 
-/* Bounds on G (x0, y0, x1, y1). */
-struct g_bounds {
-	double b[4];
-};
-
-static bool g_overlap(const struct g_bounds *a, const struct g_bounds *b)
-{
-	return a->b[0] <= b->b[2] && b->b[0] <= a->b[2] && a->b[1] <= b->b[3] && b->b[1] <= a->b[3];
-}
-
-/* What each object that casts onto the receivers can shadow: its outline's bounds on G
- * (all of G where a point cannot be charted: a caster reaching behind the point light). */
-static void casters_bounds(const struct lx_frame *f, const struct lx_light_space *ls, struct g_bounds *bounds)
-{
-	for (int id = 0; id < f->object_count; id++) {
-		if (!(ls->casting >> id & 1))
-			continue;
-		vec3 x[LX_OUTLINE_POINTS];
-		struct g_bounds *r = &bounds[id];
-		*r = (struct g_bounds){{INFINITY, INFINITY, -INFINITY, -INFINITY}};
-		for (int k = 0, m = lx_frame_object_outline(f, id, true, x); k < m; k++) {
-			vec2 g;
-			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, &g)) {
-				*r = (struct g_bounds){{-INFINITY, -INFINITY, INFINITY, INFINITY}};
-				break;
-			}
-			r->b[0] = fmin(r->b[0], g.x), r->b[1] = fmin(r->b[1], g.y);
-			r->b[2] = fmax(r->b[2], g.x), r->b[3] = fmax(r->b[3], g.y);
-		}
-	}
-}
-
-/* Whether another object's shadow can reach receiver id, whose points' bounds on G are
- * own: a ray from the light to a point it shadows passes through the other one, so their
- * images on G meet. A caster is convex: it never shadows its own lit faces. */
-static bool shadowed_by_other(const struct lx_frame *f, const struct lx_light_space *ls, const struct g_bounds *cast,
-			      int id, const struct g_bounds *own)
-{
-	for (int c = 0; c < f->object_count; c++)
-		if (c != id && (ls->casting >> c & 1) && g_overlap(&cast[c], own))
-			return true;
-	return false;
-}
-
 /* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
  * casters in view that another object's shadow can reach, by the corners of their faces
  * the fallback serves (fallback_points; their surfaces are receivers no plane map serves),
@@ -1375,22 +1321,21 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 			    const bool *needs, struct lx_poly *want)
 {
 	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
-	struct g_bounds cast[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int n = 0;
-	casters_bounds(f, ls, cast);
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		vec3 x[LX_OUTLINE_POINTS];
 		int m = in_view[id] ? fallback_points(f, id, x) : 0;
-		struct g_bounds own = {{INFINITY, INFINITY, -INFINITY, -INFINITY}};
+		double own[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 		for (int k = 0; k < m; k++) {
 			vec2 *g = &pts[n + k];
 			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, g))
 				return false;
-			own.b[0] = fmin(own.b[0], g->x), own.b[1] = fmin(own.b[1], g->y);
-			own.b[2] = fmax(own.b[2], g->x), own.b[3] = fmax(own.b[3], g->y);
+			own[0] = fmin(own[0], g->x), own[1] = fmin(own[1], g->y), own[2] = fmax(own[2], g->x), own[3] = fmax(own[3], g->y);
 		}
-		if (m > 0 && shadowed_by_other(f, ls, cast, id, &own))
-			n += m; /* else no shadow but its own can fall on it: no lixel needed */
+		/* a convex caster never shadows its own lit faces: with no other shadow reaching
+		 * it, it needs no lixel */
+		if (m > 0 && lx_light_space_shadowed_by_other(ls, f->object_count, id, own))
+			n += m;
 	}
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		struct lx_poly win;
