@@ -671,6 +671,74 @@ static bool holds_all(const struct lx_poly *p, const vec2 *pts, int n)
 	return true;
 }
 
+/* A plane map's hole (method_plane.c, cover_hole): the part of the cover's shadow moved in
+ * by a margin (lx_poly_inset), and a rectangle inside that (lx_poly_inner_rect). Random
+ * convex polygons: the inset lies inside by the margin (its corners at least d from every
+ * edge), the rectangle's corners inside, and it is near the one a finer search finds; a
+ * triangle, a rotated square, a flat or empty polygon, and an inset past the middle. */
+static void polygon_inset_and_inner_rectangle(void **state)
+{
+	(void)state;
+	uint64_t seed = 17;
+	double worst = 1;
+	int fats = 0;
+	for (int t = 0; t < 500; t++) {
+		vec2 pts[12];
+		int n = 3 + (int)(test_rand(&seed) * 9);
+		for (int k = 0; k < n; k++)
+			pts[k] = (vec2){400 * test_rand(&seed) - 200, 300 * test_rand(&seed)};
+		struct lx_poly p, in;
+		lx_poly_hull(pts, n, &p);
+		if (p.n < 3)
+			continue;
+		double d = 5 * test_rand(&seed);
+		lx_poly_inset(&p, d, &in);
+		for (int k = 0; k < in.n; k++)
+			for (int i = 0; i < p.n; i++) {
+				vec2 a = p.v[i], b = p.v[(i + 1) % p.n];
+				double len = hypot(b.x - a.x, b.y - a.y);
+				assert_true(((b.x - a.x) * (in.v[k].y - a.y) - (b.y - a.y) * (in.v[k].x - a.x)) / len > d - 1e-6);
+			}
+		/* found at least where p holds a disc 1.5 levels' spacing across (a square with
+		 * two levels in it); in a thinner sliver it may find none */
+		double r[4], x0, y0, x1, y1;
+		lx_poly_bounds(&p, &x0, &y0, &x1, &y1);
+		struct lx_poly fat;
+		lx_poly_inset(&p, 1.5 * (y1 - y0) / 15, &fat);
+		if (!lx_poly_inner_rect(&p, 16, r)) {
+			if (fat.n >= 3)
+				fail_msg("polygon %d: no rectangle inside (area %g)", t, lx_poly_area(&p));
+			continue;
+		}
+		vec2 c[4] = {{r[0], r[1]}, {r[2], r[1]}, {r[2], r[3]}, {r[0], r[3]}};
+		assert_true(r[2] > r[0] && r[3] > r[1] && holds_all(&p, c, 4));
+		double fine[4]; /* against a search on four times as many levels */
+		assert_true(lx_poly_inner_rect(&p, 64, fine));
+		if (fat.n >= 3)
+			worst = fmin(worst, (r[2] - r[0]) * (r[3] - r[1]) / ((fine[2] - fine[0]) * (fine[3] - fine[1]))), fats++;
+	}
+	print_message("500 random convex polygons: in the %d not thin, the rectangle is at least %.2f of the one found "
+		      "on 64 levels\n",
+		      fats, worst);
+	assert_true(fats > 250 && worst > 0.6);
+	struct lx_poly tri = {3, {{0, 0}, {4, 0}, {0, 4}}}, diamond = {4, {{0, -1}, {1, 0}, {0, 1}, {-1, 0}}};
+	double r[4];
+	assert_true(lx_poly_inner_rect(&tri, 16, r)); /* the best is 2 x 2, half the triangle */
+	assert_near((r[2] - r[0]) * (r[3] - r[1]), 4, 0.1);
+	assert_true(lx_poly_inner_rect(&diamond, 17, r)); /* the square on the diagonals' middles */
+	assert_near((r[2] - r[0]) * (r[3] - r[1]), 1, 1e-6);
+	struct lx_poly flat = {3, {{0, 0}, {1, 0}, {2, 0}}}, empty = {0}, out;
+	assert_false(lx_poly_inner_rect(&flat, 16, r));
+	assert_false(lx_poly_inner_rect(&empty, 16, r));
+	assert_false(lx_poly_inner_rect(&tri, 1, r));
+	lx_poly_inset(&diamond, 0.8, &out); /* the inscribed circle's radius is 0.707 */
+	assert_int_equal(out.n, 0);
+	lx_poly_inset(&tri, 0.5, &tri); /* in place */
+	assert_int_equal(tri.n, 3);
+	assert_near(tri.v[0].x, 0.5, 1e-9);
+	assert_near(tri.v[0].y, 0.5, 1e-9);
+}
+
 /* No silent cap: a hull of more than LX_POLY_MAX vertices, or a cut that would add the
  * 65th, becomes a polygon around all of it (before, the extra vertices were dropped and
  * the region shrank). */
@@ -998,6 +1066,7 @@ int main(void)
 		cmocka_unit_test(only_what_the_scene_requires),
 		cmocka_unit_test(fallback_serves_only_what_needs_it),
 		cmocka_unit_test(polygon_difference),
+		cmocka_unit_test(polygon_inset_and_inner_rectangle),
 	};
 	return cmocka_run_group_tests_name("plane", tests, NULL, NULL);
 }

@@ -44,5 +44,13 @@ bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
  * the last row decide. */
 bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, int *x0, int *x1);
 void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1, double *y1);
+/* Convex counter-clockwise p moved in by d (every edge by d along its inner normal) into
+ * out (may be p): empty (n = 0) when nothing is left. */
+void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out);
+/* An axis-aligned rectangle r (x0, y0, x1, y1) inside convex p, the largest of those
+ * whose bottom and top lie on `levels` heights evenly spread over p's: a convex polygon
+ * holds, at every height between two, what its sections at those two share. False when
+ * none has area (levels < 2, or p is flat). */
+bool lx_poly_inner_rect(const struct lx_poly *p, int levels, double r[4]);
 
 #endif

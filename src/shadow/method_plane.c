@@ -14,6 +14,7 @@
  * are dense enough for it, then the fallback. */
 #include "light_space.h"
 #include "plane_cover.h"
+#include "lookup_region.h"
 #include "plane_optimal.h"
 #include <math.h>
 #include <string.h>
@@ -134,6 +135,7 @@ struct plane_chart {
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
+	int cover;              /* the plane whose lit front that is, or -1 */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
@@ -700,13 +702,7 @@ static void covered_part(const struct lx_frame *f, const struct lx_plane_covers 
 	out->n = 0;
 	if (!lx_plane_cover_image(f, cv->of[i][0], i, &img)) /* -1: no front over it */
 		return;
-	*out = img;
-	for (int k = 0; k < img.n && out->n >= 3; k++) { /* counter-clockwise: inside on the left */
-		vec2 p = img.v[k], q = img.v[(k + 1) % img.n];
-		double nx = -(q.y - p.y), ny = q.x - p.x, len = sqrt(nx * nx + ny * ny);
-		if (len > 0) /* the hull leaves no edge of length 0; a guard all the same */
-			lx_poly_clip_halfplane(out, nx, ny, -(nx * p.x + ny * p.y) - COVER_INSET * len, out);
-	}
+	lx_poly_inset(&img, COVER_INSET, out); /* a hull: counter-clockwise */
 	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0))
 		out->n = 0; /* thinner than the inset: nothing to leave out */
 }
@@ -1145,11 +1141,49 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	return fit_depth(f, ls, ch, b, depth, out, P);
 }
 
+/* Lixels of a hole's margin (cover_hole): a lookup reads up to LX_LOOKUP_MARGIN_MEDIUMP
+ * lixels from its ray's own (fp16 texture coordinates), a filter one more (pcf3x3's
+ * reach), and one to spare. */
+#define HOLE_MARGIN (LX_LOOKUP_MARGIN_MEDIUMP + 2.0)
+/* Smaller holes save less fill than their draws cost. */
+#define HOLE_MIN_LIXELS 1024.0
+
+/* The piece's hole: a rectangle of lixels, HOLE_MARGIN in from the part of the plane the
+ * cover test shadows (ch->covered, itself COVER_INSET pixels in from that shadow), so that
+ * every ray a lookup there serves meets the plane in the front's shadow. Such a ray
+ * crosses the front's parallelogram before it reaches the plane: a receiver on it beyond
+ * the front is in the front's shadow, which the main pass tests over it (when every
+ * object that needs the test gets it: lx_plane_cover_complete), and one on the light's
+ * side cannot be shadowed by what lies wholly beyond the front. So the shadow pass need
+ * not draw such casters there (object_holes; on the table, the slab's underside
+ * filled most of the floor's map). Empty when there is none worth it. */
+static void cover_hole(const struct plane_chart *ch, const struct plane_fit *ft, const mat4 *ak, struct lx_shadow_map *mp)
+{
+	mp->hole[0] = mp->hole[1] = mp->hole[2] = mp->hole[3] = 0;
+	if (ch->covered.n < 3)
+		return;
+	vec2 pts[LX_POLY_MAX];
+	for (int k = 0; k < ch->covered.n; k++) { /* window -> lixels (A_l is affine in x, y) */
+		vec2 v = ch->covered.v[k];
+		pts[k].x = (ak->m[0] * v.x + ak->m[4] * v.y + ak->m[12] + 1) * 0.5 * ft->w;
+		pts[k].y = (ak->m[1] * v.x + ak->m[5] * v.y + ak->m[13] + 1) * 0.5 * ft->h;
+	}
+	struct lx_poly in, box = {4, {{ft->ox, ft->oy}, {ft->uw, ft->oy}, {ft->uw, ft->vh}, {ft->ox, ft->vh}}};
+	lx_poly_hull(pts, ch->covered.n, &in); /* counter-clockwise again, mirrored or not */
+	lx_poly_inset(&in, HOLE_MARGIN, &in);
+	lx_poly_intersect(&in, &box, &in);
+	double r[4];
+	if (!lx_poly_inner_rect(&in, 16, r) || (r[2] - r[0]) * (r[3] - r[1]) < HOLE_MIN_LIXELS)
+		return;
+	mp->hole[0] = 2 * r[0] / ft->w - 1, mp->hole[1] = 2 * r[1] / ft->h - 1; /* w, h >= 1 */
+	mp->hole[2] = 2 * r[2] / ft->w - 1, mp->hole[3] = 2 * r[3] / ft->h - 1;
+}
+
 /* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
  * lixel budget, with each piece's reach on the screen. */
 static void build_plane_map(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
-			    const mat4 *depth, int i, long budget, double max_lpp, struct lx_shadow_map *map,
-			    struct lx_shadow_map *second)
+			    const mat4 *depth, int i, long budget, double max_lpp, bool draw_covered,
+			    struct lx_shadow_map *map, struct lx_shadow_map *second)
 {
 	struct plane_fit fit[PIECES_MAX];
 	fit_plane(ch, pc, &atlas->regions[map->region], atlas, budget, max_lpp, fit);
@@ -1170,6 +1204,10 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
+		if (draw_covered)
+			mp->hole[0] = mp->hole[2] = 0;
+		else
+			cover_hole(ch, ft, &ak, mp);
 		/* the piece's rectangle back in window coordinates (undo mirror and twist): its
 		 * bounding box is where the plane's shadows in this piece can fall */
 		mp->has_screen = true;
@@ -1443,6 +1481,25 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 	}
 }
 
+/* The objects each plane map with a hole (cover_hole) need not draw there: those wholly
+ * beyond the front whose shadow the hole lies in, when the main pass tests that front
+ * over every object that needs it. */
+static void holed_objects(const struct lx_frame *f, const struct lx_plane_covers *cv, const struct plane_chart *ch,
+			  const bool *ok, int np, int piece_of, struct lx_shadow_result *out)
+{
+	for (int i = 0; i < np; i++) {
+		unsigned maps = 0;
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+			if ((m == i || (m == np + 1 && piece_of == i)) && out->maps[m].hole[2] > out->maps[m].hole[0])
+				maps |= 1u << m;
+		if (!ok[i] || !maps || !lx_plane_cover_complete(f, cv, ch[i].cover))
+			continue;
+		for (int id = 0; id < f->object_count; id++)
+			if (lx_plane_cover_beyond(cv, ch[i].cover, f->bmin[id], f->bmax[id]))
+				out->object_holes[id] |= maps;
+	}
+}
+
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
@@ -1466,8 +1523,9 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	struct lx_plane_covers covers;
-	lx_plane_covers_of_planes(f, &covers);
+	lx_plane_covers(f, &covers);
 	for (int i = 0; i < np; i++) {
+		ch[i].cover = covers.of[i][0];
 		covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
@@ -1480,8 +1538,9 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	plane_budgets(atlas, o, ch, pc, ok, np, budget);
 	for (int i = 0; i < np; i++)
 		if (ok[i])
-			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i],
-					piece_of == i ? &out->maps[np + 1] : NULL);
+			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp,
+					o->plane_draw_covered, &out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL);
+	holed_objects(f, &covers, ch, ok, np, piece_of, out);
 	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
 	bool needs[LX_MAX_PLANES] = {false};

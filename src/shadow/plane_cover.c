@@ -77,15 +77,14 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
 	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
 }
 
-/* The covers, of[] for objects [0, objects). */
-static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 {
 	int np = f->scene->plane_count;
 	for (int p = 0; p < np; p++)
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
 	for (int id = 0; id < f->object_count; id++) {
 		int n = 0;
-		for (int p = 0; p < np && id < objects && n < LX_MAX_COVERS; p++)
+		for (int p = 0; p < np && n < LX_MAX_COVERS; p++)
 			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
 				out->of[id][n++] = p;
 		for (; n < LX_MAX_COVERS; n++)
@@ -109,12 +108,33 @@ bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
 	return false;
 }
 
-void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }
-
-void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out)
+bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
 {
-	covers_of(f, f->scene->plane_count, out);
+	if (p < 0 || p >= f->scene->plane_count || !c->lit[p])
+		return false;
+	for (int id = 0; id < f->object_count; id++) {
+		int n = lx_plane_cover_count(c, id);
+		bool tested = false;
+		for (int k = 0; k < n; k++)
+			tested |= c->of[id][k] == p;
+		/* of[] takes the planes in order while there is room: one left out came later */
+		if (!tested && id != p && n == LX_MAX_COVERS && p > c->of[id][n - 1] &&
+		    beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+			return false;
+	}
+	return true;
 }
+
+bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
+{
+	if (p < 0 || p >= LX_MAX_PLANES || !c->lit[p])
+		return false;
+	for (int k = 0; k < 8; k++)
+		if (!(m4_mul_point(&c->m[p], v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH))
+			return false;
+	return true;
+}
+
 
 bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win)
 {
