@@ -643,6 +643,129 @@ static void fallback_serves_only_what_needs_it(void **state)
 	lx_meshes_free(&s.meshes);
 }
 
+/* A plane map's hole (method_plane.c, cover_hole) and the objects left out of it. On the
+ * table under the overhead light the floor's map leaves the slab and the four legs out of
+ * at least half its lixels, and nothing else. Over every configuration of the table and
+ * the shelf scenes, two sizes and a bouncing second: every point sampled on rays through a
+ * hole (over the map's depths) and in the objects' boxes where their rays fall in one lies
+ * on the light's side of the front or in its shadow as the cover test decides, every
+ * object left out lies beyond the front, and every object some of whose box lies beyond
+ * the front tests it. A third shelf
+ * over the two of two-shelves.scene: the floor and the box under all three test only two
+ * (LX_MAX_COVERS), so the top one's front is not complete. */
+static void holes_leave_out_only_what_the_cover_decides(void **state)
+{
+	(void)state;
+	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_table(&s.scene);
+	lx_config_apply(lx_config_find("overhead"), &s.scene);
+	assert_true(build(&s, "plane", 1024, 1024, 0));
+	const struct lx_shadow_map *fl = &s.res.maps[1];
+	assert_true(fl->rendered && fl->plane == 1);
+	double share = (fl->hole[2] - fl->hole[0]) * (fl->hole[3] - fl->hole[1]) / 4;
+	print_message("table, overhead: the floor's hole holds %.0f%% of its map\n", 100 * share);
+	assert_true(share > 0.5);
+	for (int id = 2; id < s.frame.object_count; id++) /* slab and legs: 2-6 */
+		assert_int_equal(!!(s.res.object_holes[id] & 2u), id <= 6);
+	lx_meshes_free(&s.meshes);
+
+	static const char *const scenes[] = {"table", "shelf.scene", "two-shelves.scene"};
+	uint64_t seed = 21;
+	long in_hole = 0, beyond = 0, frames = 0;
+	for (int sc = 0; sc < 3; sc++)
+		for (int c = 0; c <= lx_config_count; c++)
+			for (int z = 0; z < 2; z++) {
+				memset(&s, 0, sizeof s);
+				if (sc == 0)
+					lx_scene_table(&s.scene);
+				else
+					test_scene_load(scenes[sc], &s.scene);
+				if (c < lx_config_count)
+					lx_config_apply(&lx_configs[c], &s.scene);
+				if (!build(&s, "plane", z ? 1024 : 320, z ? 1024 : 240, c < lx_config_count ? 0 : 1.0))
+					continue;
+				struct lx_plane_covers cv;
+				lx_plane_covers(&s.frame, &cv);
+				frames++;
+				for (int m = 0; m < s.res.map_count; m++) {
+					const struct lx_shadow_map *mp = &s.res.maps[m];
+					if (!mp->rendered || !(mp->hole[2] > mp->hole[0]))
+						continue;
+					int p = -1; /* the front: the first over the map's plane */
+					struct lx_plane_covers own;
+					lx_plane_covers_of_planes(&s.frame, &own);
+					p = own.of[mp->plane][0];
+					assert_true(p >= 0);
+					/* rays through the hole, at depths over the map's range: beyond the front,
+					 * in its shadow */
+					mat4 inv;
+					assert_true(m4_invert(&mp->light_clip, &inv));
+					for (int k = 0; k < 2000; k++) {
+						vec4 q = {mp->hole[0] + (mp->hole[2] - mp->hole[0]) * test_rand(&seed),
+							  mp->hole[1] + (mp->hole[3] - mp->hole[1]) * test_rand(&seed), 2 * test_rand(&seed) - 1, 1};
+						vec4 h = m4_mul_v4(&inv, q);
+						if (!(fabs(h.w) > 1e-12))
+							continue;
+						vec3 x = v3(h.x / h.w, h.y / h.w, h.z / h.w);
+						in_hole++;
+						if (!(m4_mul_point(&cv.m[p], x).w > 0))
+							continue;
+						beyond++;
+						if (!lx_plane_cover_shadows(&cv.m[p], x))
+							fail_msg("%s, %s, map %d: a ray through the hole at (%g, %g) meets a point beyond plane "
+								 "%d outside its shadow",
+								 scenes[sc], c < lx_config_count ? lx_configs[c].name : "bouncing", m, q.x, q.y,
+								 p);
+					}
+					for (int id = 0; id < s.frame.object_count; id++) {
+						bool tests = false;
+						for (int k = 0; k < LX_MAX_COVERS; k++)
+							tests |= cv.of[id][k] == p;
+						if (s.res.object_holes[id] & 1u << m)
+							assert_true(lx_plane_cover_beyond(&cv, p, s.frame.bmin[id], s.frame.bmax[id]));
+						for (int k = 0; k < 300; k++) {
+							vec3 lo = s.frame.bmin[id], hi = s.frame.bmax[id];
+							vec3 x = v3(lo.x + (hi.x - lo.x) * test_rand(&seed), lo.y + (hi.y - lo.y) * test_rand(&seed),
+								    lo.z + (hi.z - lo.z) * test_rand(&seed));
+							vec4 q = m4_mul_point(&mp->light_clip, x);
+							if (!(q.w > 0) || q.x / q.w < mp->hole[0] || q.x / q.w > mp->hole[2] ||
+							    q.y / q.w < mp->hole[1] || q.y / q.w > mp->hole[3])
+								continue;
+							in_hole++;
+							if (!(m4_mul_point(&cv.m[p], x).w > 0))
+								continue; /* on the light's side: nothing beyond shadows it */
+							beyond++;
+							if (!lx_plane_cover_shadows(&cv.m[p], x) || !tests)
+								fail_msg("%s, %s, map %d: a point of object %d in the hole, beyond plane %d, "
+									 "is %s",
+									 scenes[sc], c < lx_config_count ? lx_configs[c].name : "bouncing", m,
+									 id, p, tests ? "not in its shadow" : "not tested");
+						}
+					}
+				}
+				lx_meshes_free(&s.meshes);
+			}
+	print_message("%ld frames: %ld sampled points in holes, %ld of them beyond the front, all in its shadow\n",
+		      frames, in_hole, beyond);
+	assert_true(in_hole > 50000 && beyond > 20000);
+
+	memset(&s, 0, sizeof s);
+	test_scene_load("two-shelves.scene", &s.scene);
+	struct lx_plane *top = &s.scene.planes[s.scene.plane_count++];
+	*top = s.scene.planes[2];
+	top->corner.y = 2.0;
+	assert_true(lx_meshes_build(&s.scene, &s.meshes));
+	char err[256];
+	assert_true(lx_frame_setup(&s.frame, &s.scene, &s.meshes, 0, 320, 240, err, sizeof err));
+	struct lx_plane_covers cv;
+	lx_plane_covers_of_planes(&s.frame, &cv);
+	assert_true(lx_plane_cover_complete(&s.frame, &cv, 1) && lx_plane_cover_complete(&s.frame, &cv, 2));
+	assert_false(lx_plane_cover_complete(&s.frame, &cv, 3));
+	assert_true(lx_plane_cover_complete(&s.frame, &cv, 0)); /* nothing lies beyond the floor */
+	lx_meshes_free(&s.meshes);
+}
+
 static void polygon_difference(void **state)
 {
 	(void)state;
@@ -1067,6 +1190,7 @@ int main(void)
 		cmocka_unit_test(fallback_serves_only_what_needs_it),
 		cmocka_unit_test(polygon_difference),
 		cmocka_unit_test(polygon_inset_and_inner_rectangle),
+		cmocka_unit_test(holes_leave_out_only_what_the_cover_decides),
 	};
 	return cmocka_run_group_tests_name("plane", tests, NULL, NULL);
 }

@@ -1523,7 +1523,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
 	int piece_of = -1;
 	struct lx_plane_covers covers;
-	lx_plane_covers(f, &covers);
+	lx_plane_covers_of_planes(f, &covers);
 	for (int i = 0; i < np; i++) {
 		ch[i].cover = covers.of[i][0];
 		covered_part(f, &covers, i, &ch[i].covered);

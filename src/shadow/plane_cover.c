@@ -77,19 +77,36 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
 	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
 }
 
-void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
+/* Object id's of[]: the lit fronts whose shadow may fall on its box, in the planes' order,
+ * LX_MAX_COVERS at most. */
+static void object_covers(const struct lx_frame *f, const struct lx_plane_covers *c, int id, int *of)
 {
-	int np = f->scene->plane_count;
-	for (int p = 0; p < np; p++)
+	int n = 0;
+	for (int p = 0; p < f->scene->plane_count && n < LX_MAX_COVERS; p++)
+		if (p != id && c->lit[p] && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+			of[n++] = p;
+	for (; n < LX_MAX_COVERS; n++)
+		of[n] = -1;
+}
+
+/* The covers, of[] for objects [0, objects) (none for the rest). */
+static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
+{
+	for (int p = 0; p < f->scene->plane_count; p++)
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
-	for (int id = 0; id < f->object_count; id++) {
-		int n = 0;
-		for (int p = 0; p < np && n < LX_MAX_COVERS; p++)
-			if (p != id && out->lit[p] && beyond_meets(&out->m[p], f->bmin[id], f->bmax[id]))
-				out->of[id][n++] = p;
-		for (; n < LX_MAX_COVERS; n++)
-			out->of[id][n] = -1;
-	}
+	for (int id = 0; id < f->object_count; id++)
+		if (id < objects)
+			object_covers(f, out, id, out->of[id]);
+		else
+			for (int n = 0; n < LX_MAX_COVERS; n++)
+				out->of[id][n] = -1;
+}
+
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }
+
+void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out)
+{
+	covers_of(f, f->scene->plane_count, out);
 }
 
 int lx_plane_cover_count(const struct lx_plane_covers *c, int id)
@@ -108,18 +125,33 @@ bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
 	return false;
 }
 
+/* Whether box [lo, hi] reaches beyond lit front p, a corner of it: a superset of
+ * beyond_meets, 8 products. */
+static bool reaches_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
+{
+	for (int k = 0; k < 8; k++)
+		if (m4_mul_point(&c->m[p], v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH)
+			return true;
+	return false;
+}
+
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
 {
 	if (p < 0 || p >= f->scene->plane_count || !c->lit[p])
 		return false;
 	for (int id = 0; id < f->object_count; id++) {
-		int n = lx_plane_cover_count(c, id);
+		/* an object beyond at most LX_MAX_COVERS fronts gets every one it needs */
+		int beyond = 0;
+		for (int q = 0; q < f->scene->plane_count; q++)
+			beyond += q != id && c->lit[q] && reaches_beyond(c, q, f->bmin[id], f->bmax[id]);
+		if (beyond <= LX_MAX_COVERS || id == p)
+			continue;
+		int of[LX_MAX_COVERS];
+		object_covers(f, c, id, of);
 		bool tested = false;
-		for (int k = 0; k < n; k++)
-			tested |= c->of[id][k] == p;
-		/* of[] takes the planes in order while there is room: one left out came later */
-		if (!tested && id != p && n == LX_MAX_COVERS && p > c->of[id][n - 1] &&
-		    beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+		for (int k = 0; k < LX_MAX_COVERS; k++)
+			tested |= of[k] == p;
+		if (!tested && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
 			return false;
 	}
 	return true;

@@ -57,12 +57,15 @@ bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x);
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
 /* Whether every object the main pass must test p's front over does test it: some of
  * whose box lies beyond it with rays crossing its bounds (false where LX_MAX_COVERS
- * fronts over an object left p's out). */
+ * fronts over an object left p's out). c: lit[] and m[] (of[] is not read). */
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p);
 /* Whether box [lo, hi] lies wholly beyond p's lit front from the light (every corner's
  * h.w > LX_COVER_TOUCH): nothing of it can shadow a point on the light's side of the
  * plane. False where p's front is not lit. */
 bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi);
+/* The same with of[] found for the planes alone (none for the casters): what a plane map
+ * leaves to the cover test (method_plane.c). */
+void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);
 
 /* The shadow plane p's parallelogram throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in
