@@ -123,7 +123,7 @@ struct lx_renderer {
 	/* this light pass's planes over each object whose fronts the light sees (covers.of),
 	 * and each plane's cover matrix as the shader takes it (lx_plane_covers) */
 	struct lx_plane_covers covers;
-	float cover[LX_MAX_PLANES][16];
+	float cover[LX_MAX_FRONTS][16];
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
@@ -269,8 +269,8 @@ static void covers_fit(const struct lx_renderer *r)
 			variant_of(r, light_shading(r, i), LX_FACES_TOWARD, r->d.map_count, LX_FILTER_NONE, r->max_covers);
 		if (lx_main_covers(&v) < r->max_covers) {
 			fprintf(stderr,
-				"lixel: an object under two lit planes read with %d maps needs %d varying vectors for both "
-				"planes' shadows, this GPU has %d: only the first plane's shadow is tested there\n",
+				"lixel: an object under two lit fronts (planes or flat boxes) read with %d maps needs %d varying "
+				"vectors for both fronts' shadows, this GPU has %d: only the first front's shadow is tested there\n",
 				v.reads, lx_main_varyings(v.reads, false, false, v.projective, r->max_covers), v.max_varyings);
 			return;
 		}
@@ -1124,7 +1124,7 @@ static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f,
 	for (int c = 0; c < LX_MAX_COVERS && r->covers.of[id][c] >= 0; c++) {
 		struct lx_poly w;
 		struct span *to = span == r->seen ? r->spans : r->seen;
-		int n = lx_plane_cover_image(f, r->covers.of[id][c], id, &w)
+		int n = lx_plane_cover_image(f, &r->covers, r->covers.of[id][c], id, &w)
 				? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
 				: -1;
 		if (n < 0) {
@@ -1347,7 +1347,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_frame_draw_order(f, order);
 	if (r->d.map_count > 0) {
 		lx_plane_covers(f, &r->covers);
-		for (int p = 0; p < r->d.scene->plane_count; p++)
+		for (int p = 0; p < r->covers.count; p++)
 			if (r->covers.lit[p])
 				to_float(&r->covers.m[p], r->cover[p]);
 	} else /* without maps (method none) nothing is shadowed, by planes neither */

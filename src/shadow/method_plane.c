@@ -696,15 +696,21 @@ static void reach_foot(struct plane_chart *ch, const struct reach *r)
  * reads; the inset keeps the map under the test's rounding, fp16 varyings included).
  * Empty where no front covers the plane or its shadow has no image. */
 #define COVER_INSET 4.0
-static void covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
+static int covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
 {
-	struct lx_poly img;
+	int front = -1;
+	double best = 1.0; /* thinner than the inset: nothing to leave out */
 	out->n = 0;
-	if (!lx_plane_cover_image(f, cv->of[i][0], i, &img)) /* -1: no front over it */
-		return;
-	lx_poly_inset(&img, COVER_INSET, out); /* a hull: counter-clockwise */
-	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0))
-		out->n = 0; /* thinner than the inset: nothing to leave out */
+	for (int k = 0; k < LX_MAX_COVERS && cv->of[i][k] >= 0; k++) {
+		struct lx_poly img, in;
+		if (!lx_plane_cover_image(f, cv, cv->of[i][k], i, &img))
+			continue;
+		lx_poly_inset(&img, COVER_INSET, &in); /* a hull: counter-clockwise */
+		double area = in.n >= 3 ? fabs(lx_poly_area(&in)) : 0;
+		if (area > best)
+			best = area, *out = in, front = cv->of[i][k];
+	}
+	return front;
 }
 
 /* With a cover over the plane, the wanted rectangle shrinks to the footprints' bounds
@@ -1175,6 +1181,7 @@ static void cover_hole(const struct plane_chart *ch, const struct plane_fit *ft,
 	double r[4];
 	if (!lx_poly_inner_rect(&in, 16, r) || (r[2] - r[0]) * (r[3] - r[1]) < HOLE_MIN_LIXELS)
 		return;
+	mp->hole_front = ch->cover;
 	mp->hole[0] = 2 * r[0] / ft->w - 1, mp->hole[1] = 2 * r[1] / ft->h - 1; /* w, h >= 1 */
 	mp->hole[2] = 2 * r[2] / ft->w - 1, mp->hole[3] = 2 * r[3] / ft->h - 1;
 }
@@ -1204,6 +1211,7 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
+		mp->hole_front = -1;
 		if (draw_covered)
 			mp->hole[0] = mp->hole[2] = 0;
 		else
@@ -1525,8 +1533,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	struct lx_plane_covers covers;
 	lx_plane_covers_of_planes(f, &covers);
 	for (int i = 0; i < np; i++) {
-		ch[i].cover = covers.of[i][0];
-		covered_part(f, &covers, i, &ch[i].covered);
+		ch[i].cover = covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;

@@ -9,17 +9,17 @@ static void set_row(mat4 *m, int r, vec4 a)
 	m->m[r] = a.x, m->m[4 + r] = a.y, m->m[8 + r] = a.z, m->m[12 + r] = a.w;
 }
 
-bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out)
+/* The cover matrix of parallelogram c + s e1 + t e2 (s, t in [0, 1]), lit on the side
+ * e1 x e2 points to (lx_plane_cover_matrix). */
+static bool front_matrix(const struct lx_light *light, vec3 c, vec3 e1, vec3 e2, mat4 *out)
 {
-	if (p < 0 || p >= f->scene->plane_count)
-		return false;
-	const struct lx_plane *pl = &f->scene->planes[p]; /* planes do not move: their offset is 0 */
-	vec3 c = pl->corner, e1 = pl->edge1, e2 = pl->edge2, n = v3_cross(e1, e2);
+	vec3 n = v3_cross(e1, e2);
 	double nn = v3_dot(n, n), size = v3_len(e1) + v3_len(e2);
 	if (!(nn > 0))
-		return false; /* no parallelogram (the scene parser refuses one) */
+		return false; /* no parallelogram (the scene parser refuses one; a box has none flat) */
 	/* pi . L: the light's distance in front of the plane, or a directional light's cosine */
-	vec4 pi = lx_plane_equation(pl), L = lx_light_point(&f->light);
+	vec3 un = v3_scale(n, 1 / sqrt(nn)); /* nn > 0 */
+	vec4 pi = {un.x, un.y, un.z, -v3_dot(un, c)}, L = lx_light_point(light);
 	vec3 lv = v3(L.x, L.y, L.z);
 	double k = v4_dot(pi, L), reach = L.w != 0 ? v3_len(v3_sub(lv, c)) + size : v3_len(lv);
 	if (!(k > LX_COVER_GRAZING * reach))
@@ -36,6 +36,44 @@ bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out)
 	 * in the parallelogram's size, > 0): LX_COVER_TOUCH is a share of either */
 	double g = -1 / (L.w != 0 ? k : k * size);
 	set_row(out, 3, (vec4){g * pi.x, g * pi.y, g * pi.z, g * pi.w});
+	return true;
+}
+
+bool lx_plane_cover_matrix(const struct lx_frame *f, int p, mat4 *out)
+{
+	if (p < 0 || p >= f->scene->plane_count)
+		return false;
+	const struct lx_plane *pl = &f->scene->planes[p]; /* planes do not move: their offset is 0 */
+	return front_matrix(&f->light, pl->corner, pl->edge1, pl->edge2, out);
+}
+
+static double v3_at(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
+static vec3 v3_along(int a, double t) { return a == 0 ? v3(t, 0, 0) : a == 1 ? v3(0, t, 0) : v3(0, 0, t); }
+
+/* The axis along which box [lo, hi] is flat (LX_SLAB_FLATNESS), or -1. */
+static int thin_axis(vec3 lo, vec3 hi)
+{
+	double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+	int a = ext[0] <= ext[1] && ext[0] <= ext[2] ? 0 : ext[1] <= ext[2] ? 1 : 2;
+	return ext[a] * LX_SLAB_FLATNESS <= fmin(ext[(a + 1) % 3], ext[(a + 2) % 3]) ? a : -1;
+}
+
+bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2)
+{
+	const struct lx_scene *s = f->scene;
+	if (id < s->plane_count || id >= f->object_count || s->casters[id - s->plane_count].shape != LX_BOX)
+		return false;
+	vec3 lo = f->bmin[id], hi = f->bmax[id];
+	double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+	int a = thin_axis(lo, hi), b = (a + 1) % 3, d = (a + 2) % 3;
+	if (a < 0)
+		return false; /* not flat: its faces' tests would shadow little beyond the maps' */
+	/* the broad face away from the light, facing it: e_b x e_d runs along +a */
+	vec4 L = lx_light_point(&f->light);
+	bool above = L.w != 0 ? v3_at(v3(L.x, L.y, L.z), a) > (v3_at(lo, a) + v3_at(hi, a)) / 2 : v3_at(v3(L.x, L.y, L.z), a) > 0;
+	vec3 eb = v3_along(b, ext[b]), ed = v3_along(d, ext[d]);
+	*c = above ? lo : v3_add(lo, v3_along(a, ext[a]));
+	*e1 = above ? eb : ed, *e2 = above ? ed : eb;
 	return true;
 }
 
@@ -77,23 +115,40 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
 	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
 }
 
-/* Object id's of[]: the lit fronts whose shadow may fall on its box, in the planes' order,
- * LX_MAX_COVERS at most. */
+/* Object id's of[]: the lit fronts whose shadow may fall on its box, in the fronts'
+ * order, LX_MAX_COVERS at most; never its own. */
 static void object_covers(const struct lx_frame *f, const struct lx_plane_covers *c, int id, int *of)
 {
 	int n = 0;
-	for (int p = 0; p < f->scene->plane_count && n < LX_MAX_COVERS; p++)
-		if (p != id && c->lit[p] && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+	for (int p = 0; p < c->count && n < LX_MAX_COVERS; p++)
+		if (c->owner[p] != id && c->lit[p] && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
 			of[n++] = p;
 	for (; n < LX_MAX_COVERS; n++)
 		of[n] = -1;
 }
 
-/* The covers, of[] for objects [0, objects) (none for the rest). */
+/* The fronts (the planes', then the flat boxes'), of[] for objects [0, objects) (none
+ * for the rest). */
 static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
 {
-	for (int p = 0; p < f->scene->plane_count; p++)
+	int np = f->scene->plane_count;
+	out->count = 0;
+	for (int p = 0; p < np && p < LX_MAX_FRONTS; p++) {
+		lx_frame_plane_corners(f, p, out->corner[p]);
+		out->owner[p] = p;
 		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
+		out->count++;
+	}
+	for (int id = np; id < f->object_count && out->count < LX_MAX_FRONTS; id++) {
+		vec3 c, e1, e2;
+		if (!lx_slab_front(f, id, &c, &e1, &e2))
+			continue;
+		int p = out->count++;
+		vec3 *pc = out->corner[p];
+		pc[0] = c, pc[1] = v3_add(c, e1), pc[2] = v3_add(pc[1], e2), pc[3] = v3_add(c, e2);
+		out->owner[p] = id;
+		out->lit[p] = front_matrix(&f->light, c, e1, e2, &out->m[p]);
+	}
 	for (int id = 0; id < f->object_count; id++)
 		if (id < objects)
 			object_covers(f, out, id, out->of[id]);
@@ -137,14 +192,14 @@ static bool reaches_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3
 
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
 {
-	if (p < 0 || p >= f->scene->plane_count || !c->lit[p])
+	if (p < 0 || p >= c->count || !c->lit[p])
 		return false;
 	for (int id = 0; id < f->object_count; id++) {
 		/* an object beyond at most LX_MAX_COVERS fronts gets every one it needs */
 		int beyond = 0;
-		for (int q = 0; q < f->scene->plane_count; q++)
-			beyond += q != id && c->lit[q] && reaches_beyond(c, q, f->bmin[id], f->bmax[id]);
-		if (beyond <= LX_MAX_COVERS || id == p)
+		for (int q = 0; q < c->count; q++)
+			beyond += c->owner[q] != id && c->lit[q] && reaches_beyond(c, q, f->bmin[id], f->bmax[id]);
+		if (beyond <= LX_MAX_COVERS || id == c->owner[p])
 			continue;
 		int of[LX_MAX_COVERS];
 		object_covers(f, c, id, of);
@@ -159,7 +214,7 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 
 bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
 {
-	if (p < 0 || p >= LX_MAX_PLANES || !c->lit[p])
+	if (p < 0 || p >= c->count || !c->lit[p])
 		return false;
 	for (int k = 0; k < 8; k++)
 		if (!(m4_mul_point(&c->m[p], v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH))
@@ -168,13 +223,13 @@ bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3
 }
 
 
-bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win)
+bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int p, int q,
+			  struct lx_poly *win)
 {
 	win->n = 0;
-	if (p < 0 || q < 0 || p >= f->scene->plane_count || q >= f->scene->plane_count || p == q)
+	if (p < 0 || q < 0 || p >= cv->count || q >= f->scene->plane_count || cv->owner[p] == q)
 		return false;
-	vec3 pc[4];
-	lx_frame_plane_corners(f, p, pc);
+	const vec3 *pc = cv->corner[p];
 	vec4 pi = lx_plane_equation(&f->scene->planes[q]), L = lx_light_point(&f->light);
 	double k = v4_dot(pi, L);
 	vec2 pts[4];
@@ -208,6 +263,10 @@ int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshe
 			hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
 		}
 		int beyond = 0;
+		for (int c = 0; c < s->caster_count; c++) /* a flat box's front: whichever face, any light */
+			beyond += s->plane_count + c != id && s->casters[c].shape == LX_BOX &&
+				  s->plane_count + c < m->count &&
+				  thin_axis(m->mesh[s->plane_count + c].bmin, m->mesh[s->plane_count + c].bmax) >= 0;
 		for (int p = 0; p < s->plane_count; p++) {
 			const struct lx_plane *pl = &s->planes[p];
 			vec3 nrm = v3_cross(pl->edge1, pl->edge2);

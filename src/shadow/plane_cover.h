@@ -40,13 +40,32 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x);
  * shadow there is lost, where it falls outside the first two's. */
 #define LX_MAX_COVERS 2
 
-/* A frame's covers: each plane's matrix where its front is lit (lx_plane_cover_matrix),
- * and for each object the planes whose lit fronts may shadow it (some of its box lies
- * beyond one from the light, and the light's rays to that part cross the parallelogram's
- * bounds): of[id][0], of[id][1], ... in the planes' order, -1 after the last. */
+/* A flat box (a table's slab, a shelf board: its thinnest side at most 1/LX_SLAB_FLATNESS
+ * of each other) has a front too: its broad face turned away from the light, as a
+ * parallelogram lit on the side towards the light. A ray from a point beyond it that
+ * crosses that face passes through the box, so the test is exact there, as a plane's
+ * is: under a table it decides the slab's whole shadow but for rays that enter and leave
+ * by its thin sides, where the maps decide it (on the table seen from close to the floor
+ * the band the slab's sides throw on the legs was the maps' worst error). The first
+ * LX_MAX_SLAB_FRONTS flat boxes have one. */
+#define LX_SLAB_FLATNESS 8.0
+#define LX_MAX_SLAB_FRONTS 4
+#define LX_MAX_FRONTS (LX_MAX_PLANES + LX_MAX_SLAB_FRONTS)
+/* Box caster id's front in frame f, when it is flat: corner c and edges e1, e2 (e1 x e2
+ * towards the light's side). */
+bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2);
+
+/* A frame's covers: its fronts, the planes' (front p is plane p) then the flat boxes',
+ * each one's owner, corners and matrix where it is lit (lx_plane_cover_matrix), and for
+ * each object the fronts that may shadow it (some of its box lies beyond one from the
+ * light, and the light's rays to that part cross the parallelogram's bounds; never its
+ * own): of[id][0], of[id][1], ... in the fronts' order, -1 after the last. */
 struct lx_plane_covers {
-	bool lit[LX_MAX_PLANES];
-	mat4 m[LX_MAX_PLANES];
+	int count;
+	int owner[LX_MAX_FRONTS];
+	vec3 corner[LX_MAX_FRONTS][4];
+	bool lit[LX_MAX_FRONTS];
+	mat4 m[LX_MAX_FRONTS];
 	int of[LX_MAX_PLANES + LX_MAX_CASTERS][LX_MAX_COVERS];
 };
 /* How many fronts the main pass tests over object id (0 to LX_MAX_COVERS). */
@@ -67,13 +86,14 @@ bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3
  * leaves to the cover test (method_plane.c). */
 void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);
 
-/* The shadow plane p's parallelogram throws on plane q's plane, as the eye sees it: a
+/* The shadow front p's parallelogram (cv's) throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in
  * p's cover, and outside which none is. False when there is none to give (the shadow
  * reaches behind the eye, or runs off to infinity): then anywhere. A plane as large on
  * the screen as a floor is drawn in its own shadow inside it (no lookup, no test), with
  * the test along its edges, and as before elsewhere. */
-bool lx_plane_cover_image(const struct lx_frame *f, int p, int q, struct lx_poly *win);
+bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int p, int q,
+			  struct lx_poly *win);
 
 /* How many covers any frame of the scene's animation may test over one object (0 to
  * LX_MAX_COVERS): the most planes' planes some object's box, anywhere on its path,

@@ -153,6 +153,7 @@ int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_s
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {
 	m->plane = -1;
+	m->hole_front = -1; /* and no hole (hole[] 0) */
 	m->bounds[0] = m->bounds[1] = -1;
 	m->bounds[2] = m->bounds[3] = 1;
 }

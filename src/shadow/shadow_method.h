@@ -39,6 +39,7 @@ struct lx_shadow_map {
 	 * pixels in a lit front's shadow read, which the cover test decides there
 	 * (method_plane.c, cover_hole). */
 	double hole[4];
+	int hole_front; /* the lit front (plane_cover.h) whose shadow the hole lies in, or -1 */
 };
 
 /* PSM's kinds of light in post-perspective space (lx_shadow_result.variant) */
