@@ -1,4 +1,4 @@
-/* What a plane of interest's lit front shadows, GL-free.
+/* What a plane of interest's lit front shadows, and a flat box's (below), GL-free.
  *
  * The shadow pass draws back faces only (second-depth maps: a lit face never compares
  * against itself), and a plane's mesh is one quad facing along edge1 x edge2. Lit on that
@@ -97,7 +97,8 @@ bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers
 
 /* How many covers any frame of the scene's animation may test over one object (0 to
  * LX_MAX_COVERS): the most planes' planes some object's box, anywhere on its path,
- * reaches beyond on the side their back faces (for a light that lights their fronts).
+ * reaches beyond on the side their back faces (for a light that lights their fronts),
+ * and every flat box but itself (whose front may face any way, as the light moves).
  * The renderer builds the cover's variants at the start only for those (a warmed
  * renderer builds nothing later). */
 int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshes *m);
