@@ -691,26 +691,25 @@ static void reach_foot(struct plane_chart *ch, const struct reach *r)
 }
 
 /* Where the cover test (plane_cover.h) shadows plane i exactly: the image of the shadow
- * of the lit front the renderer tests over it, in window coordinates, COVER_INSET pixels
- * in from its edges (a lixel there decides nothing, the test shadows the pixel whatever it
- * reads; the inset keeps the map under the test's rounding, fp16 varyings included).
- * Empty where no front covers the plane or its shadow has no image. */
+ * of the first lit front the renderer tests over it (a plane's where one is: the table
+ * top, over which the slab lies, so that the slab is left out of the hole), in window
+ * coordinates, COVER_INSET pixels in from its edges (a lixel there decides nothing, the
+ * test shadows the pixel whatever it reads; the inset keeps the map under the test's
+ * rounding, fp16 varyings included). Empty, and -1 returned, where no front covers the
+ * plane or its shadow has no image; else the front. */
 #define COVER_INSET 4.0
 static int covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
 {
-	int front = -1;
-	double best = 1.0; /* thinner than the inset: nothing to leave out */
+	struct lx_poly img;
 	out->n = 0;
-	for (int k = 0; k < LX_MAX_COVERS && cv->of[i][k] >= 0; k++) {
-		struct lx_poly img, in;
-		if (!lx_plane_cover_image(f, cv, cv->of[i][k], i, &img))
-			continue;
-		lx_poly_inset(&img, COVER_INSET, &in); /* a hull: counter-clockwise */
-		double area = in.n >= 3 ? fabs(lx_poly_area(&in)) : 0;
-		if (area > best)
-			best = area, *out = in, front = cv->of[i][k];
+	if (!lx_plane_cover_image(f, cv, cv->of[i][0], i, &img)) /* -1: no front over it */
+		return -1;
+	lx_poly_inset(&img, COVER_INSET, out); /* a hull: counter-clockwise */
+	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0)) {
+		out->n = 0; /* thinner than the inset: nothing to leave out */
+		return -1;
 	}
-	return front;
+	return cv->of[i][0];
 }
 
 /* With a cover over the plane, the wanted rectangle shrinks to the footprints' bounds
