@@ -715,6 +715,17 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
 	lx_gl.DepthRangef((float)lo, (float)hi);
 }
 
+/* Whether a triangle's plane (object space, homogeneous, any scale) is `front`'s (unit
+ * normal, offset): a flat box's face that its front's test decides (front_faces). */
+static bool in_front(const vec4 *pl, const vec4 *front)
+{
+	double nn = sqrt(pl->x * pl->x + pl->y * pl->y + pl->z * pl->z);
+	if (!(nn > 0))
+		return false; /* a triangle of no area, never kept anyway */
+	double c = (pl->x * front->x + pl->y * front->y + pl->z * front->z) / nn;
+	return fabs(fabs(c) - 1) < 1e-9 && fabs(pl->w / nn - (c > 0 ? front->w : -front->w)) < 1e-5;
+}
+
 /* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
  * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
  * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
@@ -725,7 +736,7 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
-			    int m, int id)
+			    int m, int id, const vec4 *front)
 {
 	mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t); /* the object's */
 	to_float(&lc, r->kept[light][m][id].light_clip);
@@ -735,11 +746,36 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	const vec4 *plane = r->shadow_plane[id];
 	const unsigned short *index = r->shadow_index[id];
 	for (int t = 0; t < n && r->kept_count + 3 <= r->kept_room; t++) /* room: every triangle, map and light */
-		if (v4_dot(centre, plane[t]) < tolerance) {
+		if (v4_dot(centre, plane[t]) < tolerance && !(front && in_front(&plane[t], front))) {
 			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
 			r->kept_count += 3;
 		}
 	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
+}
+
+/* A flat box's face that is a front (plane_cover.h) is left out of every map when the
+ * main pass tests that front over every object that needs it (lx_plane_cover_complete):
+ * a ray from the light that leaves the box through it shadows only what lies beyond it,
+ * which its test shadows exactly. The maps keep the box's other faces, for the rays that
+ * leave by its sides. Else the maps hold the slab's underside at their resolution, a row
+ * or two past the test's exact edge on the table's legs (false shadow), and filled the
+ * floor's map under the table. front[id]: the face's plane in object id's space, has[id]. */
+static void front_faces(const struct lx_frame *f, vec4 *front, bool *has)
+{
+	struct lx_plane_covers cv;
+	lx_plane_covers_of_planes(f, &cv);
+	for (int id = 0; id < f->object_count; id++)
+		has[id] = false;
+	for (int p = f->scene->plane_count; p < cv.count; p++) {
+		int id = cv.owner[p];
+		if (!cv.lit[p] || !lx_plane_cover_complete(f, &cv, p))
+			continue;
+		const vec3 *q = cv.corner[p];
+		vec3 n, c = v3_sub(q[0], f->offset[id]); /* object space */
+		if (!v3_normalize(v3_cross(v3_sub(q[1], q[0]), v3_sub(q[3], q[0])), &n))
+			continue; /* no face: lit it is not */
+		front[id] = (vec4){n.x, n.y, n.z, -v3_dot(n, c)}, has[id] = true;
+	}
 }
 
 /* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
@@ -752,11 +788,14 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
 		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
+		vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
+		bool has[LX_MAX_PLANES + LX_MAX_CASTERS];
+		front_faces(f[i], front, has);
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
-					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id);
+					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id, has[id] ? &front[id] : NULL);
 		}
 	}
 	/* left bound for the draws (nothing else of the pass binds an index buffer) */
