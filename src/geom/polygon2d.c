@@ -338,28 +338,3 @@ void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out)
 	if (out->n < 3)
 		out->n = 0;
 }
-
-#define INNER_LEVELS_MAX 64
-bool lx_poly_inner_rect(const struct lx_poly *p, int levels, double r[4])
-{
-	double x0, y0, x1, y1, lo[INNER_LEVELS_MAX], hi[INNER_LEVELS_MAX], y[INNER_LEVELS_MAX], best = 0;
-	levels = levels < INNER_LEVELS_MAX ? levels : INNER_LEVELS_MAX;
-	if (p->n < 3 || levels < 2)
-		return false;
-	lx_poly_bounds(p, &x0, &y0, &x1, &y1);
-	if (!(y1 > y0))
-		return false;
-	/* the levels a hair inside the extremes, where a section is a point or an edge */
-	for (int k = 0; k < levels; k++) {
-		y[k] = y0 + (y1 - y0) * (1e-9 + (1 - 2e-9) * k / (levels - 1)); /* levels >= 2 */
-		if (!cross_section(p, y[k], &lo[k], &hi[k]))
-			lo[k] = INFINITY, hi[k] = -INFINITY;
-	}
-	for (int a = 0; a < levels; a++)
-		for (int b = a + 1; b < levels; b++) {
-			double l = fmax(lo[a], lo[b]), h = fmin(hi[a], hi[b]), area = (h - l) * (y[b] - y[a]);
-			if (h > l && area > best)
-				best = area, r[0] = l, r[1] = y[a], r[2] = h, r[3] = y[b];
-		}
-	return best > 0;
-}

@@ -47,10 +47,5 @@ void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1,
 /* Convex counter-clockwise p moved in by d (every edge by d along its inner normal) into
  * out (may be p): empty (n = 0) when nothing is left. */
 void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out);
-/* An axis-aligned rectangle r (x0, y0, x1, y1) inside convex p, the largest of those
- * whose bottom and top lie on `levels` heights evenly spread over p's: a convex polygon
- * holds, at every height between two, what its sections at those two share. False when
- * none has area (levels < 2, or p is flat). */
-bool lx_poly_inner_rect(const struct lx_poly *p, int levels, double r[4]);
 
 #endif

@@ -716,7 +716,8 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
 }
 
 /* Whether a triangle's plane (object space, homogeneous, any scale) is `front`'s (unit
- * normal, offset): a flat box's face that its front's test decides (front_faces). */
+ * normal, offset): a flat box's face that its front's test decides
+ * (lx_slab_faces_left_out). */
 static bool in_front(const vec4 *pl, const vec4 *front)
 {
 	double nn = sqrt(pl->x * pl->x + pl->y * pl->y + pl->z * pl->z);
@@ -753,31 +754,6 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
 }
 
-/* A flat box's face that is a front (plane_cover.h) is left out of every map when the
- * main pass tests that front over every object that needs it (lx_plane_cover_complete):
- * a ray from the light that leaves the box through it shadows only what lies beyond it,
- * which its test shadows exactly. The maps keep the box's other faces, for the rays that
- * leave by its sides. Else the maps hold the slab's underside at their resolution, a row
- * or two past the test's exact edge on the table's legs (false shadow), and filled the
- * floor's map under the table. front[id]: the face's plane in object id's space, has[id]. */
-static void front_faces(const struct lx_frame *f, vec4 *front, bool *has)
-{
-	struct lx_plane_covers cv;
-	lx_plane_covers_of_planes(f, &cv);
-	for (int id = 0; id < f->object_count; id++)
-		has[id] = false;
-	for (int p = f->scene->plane_count; p < cv.count; p++) {
-		int id = cv.owner[p];
-		if (!cv.lit[p] || !lx_plane_cover_complete(f, &cv, p))
-			continue;
-		const vec3 *q = cv.corner[p];
-		vec3 n, c = v3_sub(q[0], f->offset[id]); /* object space */
-		if (!v3_normalize(v3_cross(v3_sub(q[1], q[0]), v3_sub(q[3], q[0])), &n))
-			continue; /* no face: lit it is not */
-		front[id] = (vec4){n.x, n.y, n.z, -v3_dot(n, c)}, has[id] = true;
-	}
-}
-
 /* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
  * lookup can read, lx_lookup_caster_maps) and the triangles each keeps, uploaded at once. */
 static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
@@ -790,7 +766,7 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
 		bool has[LX_MAX_PLANES + LX_MAX_CASTERS];
-		front_faces(f[i], front, has);
+		lx_slab_faces_left_out(f[i], front, has);
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			for (int m = 0; m < res[i]->map_count; m++)
@@ -804,41 +780,10 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 			 GL_STREAM_DRAW);
 }
 
-/* Object id's triangles that light `light`'s map m keeps. */
-static void draw_kept(const struct lx_renderer *r, int light, int m, int id)
+/* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its region. */
+static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_shadow_map *map, int light, int m,
+		     const unsigned *drawn)
 {
-	lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, r->kept[light][m][id].light_clip);
-	lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
-	lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
-	lx_gl.DrawElements(GL_TRIANGLES, r->kept[light][m][id].count, GL_UNSIGNED_SHORT,
-			   (const void *)((size_t)r->kept[light][m][id].first * sizeof(unsigned short)));
-}
-
-/* Region g less map's hole (whole lixels inside it) as up to four scissor rectangles
- * (x0, y0, x1, y1) around it: the rows below and above, the columns left and right. */
-static int around_hole(const struct lx_region *g, const struct lx_shadow_map *map, int (*band)[4])
-{
-	int x0 = g->x + (int)ceil((map->hole[0] + 1) * 0.5 * g->w), y0 = g->y + (int)ceil((map->hole[1] + 1) * 0.5 * g->h);
-	int x1 = g->x + (int)floor((map->hole[2] + 1) * 0.5 * g->w), y1 = g->y + (int)floor((map->hole[3] + 1) * 0.5 * g->h);
-	x0 = x0 > g->x ? x0 : g->x, y0 = y0 > g->y ? y0 : g->y;
-	x1 = x1 < g->x + g->w ? x1 : g->x + g->w, y1 = y1 < g->y + g->h ? y1 : g->y + g->h;
-	if (x1 <= x0 || y1 <= y0)
-		return 0;
-	int n = 0, cand[4][4] = {{g->x, g->y, g->x + g->w, y0}, {g->x, y1, g->x + g->w, g->y + g->h},
-				 {g->x, y0, x0, y1}, {x1, y0, g->x + g->w, y1}};
-	for (int k = 0; k < 4; k++)
-		if (cand[k][2] > cand[k][0] && cand[k][3] > cand[k][1])
-			memcpy(band[n++], cand[k], sizeof cand[k]);
-	return n;
-}
-
-/* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its
- * region; those its hole leaves out (lx_shadow_result.object_holes) around the hole,
- * scissored (on llvmpipe the slab under the table filled 0.3-0.4 ms of the floor's map). */
-static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_shadow_result *res, int light,
-		     int m, const unsigned *drawn)
-{
-	const struct lx_shadow_map *map = &res->maps[m];
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
 		return;
@@ -848,24 +793,16 @@ static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const stru
 	 * near plane would drag the depth of the triangle's visible part past the far
 	 * plane (a caster beside a table under a grazing light lost its shadow) */
 	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
-	int band[4][4], nb = around_hole(g, map, band), holed[LX_MAX_PLANES + LX_MAX_CASTERS], nh = 0;
 	for (int id = 0; id < r->objects; id++) {
-		if (!(drawn[id] & 1u << m) || r->kept[light][m][id].count == 0)
+		int count = r->kept[light][m][id].count;
+		if (!(drawn[id] & 1u << m) || count == 0)
 			continue; /* no fill and no vertices for what no lookup reads */
-		if (nb > 0 && res->object_holes[id] & 1u << m)
-			holed[nh++] = id;
-		else
-			draw_kept(r, light, m, id);
+		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, r->kept[light][m][id].light_clip);
+		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
+		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
+		lx_gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT,
+				   (const void *)((size_t)r->kept[light][m][id].first * sizeof(unsigned short)));
 	}
-	if (nh == 0)
-		return;
-	lx_gl.Enable(GL_SCISSOR_TEST);
-	for (int k = 0; k < nb; k++) {
-		lx_gl.Scissor(band[k][0], band[k][1], band[k][2] - band[k][0], band[k][3] - band[k][1]);
-		for (int j = 0; j < nh; j++)
-			draw_kept(r, light, m, holed[j]);
-	}
-	lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
@@ -897,7 +834,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.DepthFunc(GL_LESS);
 	for (int i = 0; i < n; i++)
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, r->d.lights[f[i]->light_index].atlas, res[i], i, m, drawn[i]);
+			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], i, m, drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }

@@ -14,7 +14,6 @@
  * are dense enough for it, then the fallback. */
 #include "light_space.h"
 #include "plane_cover.h"
-#include "lookup_region.h"
 #include "plane_optimal.h"
 #include <math.h>
 #include <string.h>
@@ -135,7 +134,6 @@ struct plane_chart {
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
-	int cover;              /* the plane whose lit front that is, or -1 */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
@@ -692,24 +690,20 @@ static void reach_foot(struct plane_chart *ch, const struct reach *r)
 
 /* Where the cover test (plane_cover.h) shadows plane i exactly: the image of the shadow
  * of the first lit front the renderer tests over it (a plane's where one is: the table
- * top, over which the slab lies, so that the slab is left out of the hole), in window
- * coordinates, COVER_INSET pixels in from its edges (a lixel there decides nothing, the
- * test shadows the pixel whatever it reads; the inset keeps the map under the test's
- * rounding, fp16 varyings included). Empty, and -1 returned, where no front covers the
- * plane or its shadow has no image; else the front. */
+ * top), in window coordinates, COVER_INSET pixels in from its edges (a lixel there
+ * decides nothing, the test shadows the pixel whatever it reads; the inset keeps the map
+ * under the test's rounding, fp16 varyings included). Empty where no front covers the
+ * plane or its shadow has no image. */
 #define COVER_INSET 4.0
-static int covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
+static void covered_part(const struct lx_frame *f, const struct lx_plane_covers *cv, int i, struct lx_poly *out)
 {
 	struct lx_poly img;
 	out->n = 0;
 	if (!lx_plane_cover_image(f, cv, cv->of[i][0], i, &img)) /* -1: no front over it */
-		return -1;
+		return;
 	lx_poly_inset(&img, COVER_INSET, out); /* a hull: counter-clockwise */
-	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0)) {
+	if (out->n < 3 || !(fabs(lx_poly_area(out)) > 1.0))
 		out->n = 0; /* thinner than the inset: nothing to leave out */
-		return -1;
-	}
-	return cv->of[i][0];
 }
 
 /* With a cover over the plane, the wanted rectangle shrinks to the footprints' bounds
@@ -1146,50 +1140,11 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	return fit_depth(f, ls, ch, b, depth, out, P);
 }
 
-/* Lixels of a hole's margin (cover_hole): a lookup reads up to LX_LOOKUP_MARGIN_MEDIUMP
- * lixels from its ray's own (fp16 texture coordinates), a filter one more (pcf3x3's
- * reach), and one to spare. */
-#define HOLE_MARGIN (LX_LOOKUP_MARGIN_MEDIUMP + 2.0)
-/* Smaller holes save less fill than their draws cost. */
-#define HOLE_MIN_LIXELS 1024.0
-
-/* The piece's hole: a rectangle of lixels, HOLE_MARGIN in from the part of the plane the
- * cover test shadows (ch->covered, itself COVER_INSET pixels in from that shadow), so that
- * every ray a lookup there serves meets the plane in the front's shadow. Such a ray
- * crosses the front's parallelogram before it reaches the plane: a receiver on it beyond
- * the front is in the front's shadow, which the main pass tests over it (when every
- * object that needs the test gets it: lx_plane_cover_complete), and one on the light's
- * side cannot be shadowed by what lies wholly beyond the front. So the shadow pass need
- * not draw such casters there (object_holes; on the table, the slab's underside
- * filled most of the floor's map). Empty when there is none worth it. */
-static void cover_hole(const struct plane_chart *ch, const struct plane_fit *ft, const mat4 *ak, struct lx_shadow_map *mp)
-{
-	mp->hole[0] = mp->hole[1] = mp->hole[2] = mp->hole[3] = 0;
-	if (ch->covered.n < 3)
-		return;
-	vec2 pts[LX_POLY_MAX];
-	for (int k = 0; k < ch->covered.n; k++) { /* window -> lixels (A_l is affine in x, y) */
-		vec2 v = ch->covered.v[k];
-		pts[k].x = (ak->m[0] * v.x + ak->m[4] * v.y + ak->m[12] + 1) * 0.5 * ft->w;
-		pts[k].y = (ak->m[1] * v.x + ak->m[5] * v.y + ak->m[13] + 1) * 0.5 * ft->h;
-	}
-	struct lx_poly in, box = {4, {{ft->ox, ft->oy}, {ft->uw, ft->oy}, {ft->uw, ft->vh}, {ft->ox, ft->vh}}};
-	lx_poly_hull(pts, ch->covered.n, &in); /* counter-clockwise again, mirrored or not */
-	lx_poly_inset(&in, HOLE_MARGIN, &in);
-	lx_poly_intersect(&in, &box, &in);
-	double r[4];
-	if (!lx_poly_inner_rect(&in, 16, r) || (r[2] - r[0]) * (r[3] - r[1]) < HOLE_MIN_LIXELS)
-		return;
-	mp->hole_front = ch->cover;
-	mp->hole[0] = 2 * r[0] / ft->w - 1, mp->hole[1] = 2 * r[1] / ft->h - 1; /* w, h >= 1 */
-	mp->hole[2] = 2 * r[2] / ft->w - 1, mp->hole[3] = 2 * r[3] / ft->h - 1;
-}
-
 /* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
  * lixel budget, with each piece's reach on the screen. */
 static void build_plane_map(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
-			    const mat4 *depth, int i, long budget, double max_lpp, bool draw_covered,
-			    struct lx_shadow_map *map, struct lx_shadow_map *second)
+			    const mat4 *depth, int i, long budget, double max_lpp, struct lx_shadow_map *map,
+			    struct lx_shadow_map *second)
 {
 	struct plane_fit fit[PIECES_MAX];
 	fit_plane(ch, pc, &atlas->regions[map->region], atlas, budget, max_lpp, fit);
@@ -1210,11 +1165,6 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		mp->w = ft->w, mp->h = ft->h;
 		mp->plane = i;
 		mp->rendered = true;
-		mp->hole_front = -1;
-		if (draw_covered)
-			mp->hole[0] = mp->hole[2] = 0;
-		else
-			cover_hole(ch, ft, &ak, mp);
 		/* the piece's rectangle back in window coordinates (undo mirror and twist): its
 		 * bounding box is where the plane's shadows in this piece can fall */
 		mp->has_screen = true;
@@ -1488,25 +1438,6 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 	}
 }
 
-/* The objects each plane map with a hole (cover_hole) need not draw there: those wholly
- * beyond the front whose shadow the hole lies in, when the main pass tests that front
- * over every object that needs it. */
-static void holed_objects(const struct lx_frame *f, const struct lx_plane_covers *cv, const struct plane_chart *ch,
-			  const bool *ok, int np, int piece_of, struct lx_shadow_result *out)
-{
-	for (int i = 0; i < np; i++) {
-		unsigned maps = 0;
-		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
-			if ((m == i || (m == np + 1 && piece_of == i)) && out->maps[m].hole[2] > out->maps[m].hole[0])
-				maps |= 1u << m;
-		if (!ok[i] || !maps || !lx_plane_cover_complete(f, cv, ch[i].cover))
-			continue;
-		for (int id = 0; id < f->object_count; id++)
-			if (lx_plane_cover_beyond(cv, ch[i].cover, f->bmin[id], f->bmax[id]))
-				out->object_holes[id] |= maps;
-	}
-}
-
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
@@ -1532,7 +1463,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	struct lx_plane_covers covers;
 	lx_plane_covers_of_planes(f, &covers);
 	for (int i = 0; i < np; i++) {
-		ch[i].cover = covered_part(f, &covers, i, &ch[i].covered);
+		covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;
@@ -1545,8 +1476,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	for (int i = 0; i < np; i++)
 		if (ok[i])
 			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp,
-					o->plane_draw_covered, &out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL);
-	holed_objects(f, &covers, ch, ok, np, piece_of, out);
+					&out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL);
 	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
 	bool needs[LX_MAX_PLANES] = {false};

@@ -212,16 +212,22 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 	return true;
 }
 
-bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
+void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has)
 {
-	if (p < 0 || p >= c->count || !c->lit[p])
-		return false;
-	for (int k = 0; k < 8; k++)
-		if (!(m4_mul_point(&c->m[p], v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH))
-			return false;
-	return true;
+	struct lx_plane_covers cv;
+	lx_plane_covers_of_planes(f, &cv);
+	for (int id = 0; id < f->object_count; id++)
+		has[id] = false;
+	for (int p = f->scene->plane_count; p < cv.count; p++) {
+		int id = cv.owner[p];
+		const vec3 *q = cv.corner[p];
+		vec3 n, c = v3_sub(q[0], f->offset[id]); /* object space */
+		if (!cv.lit[p] || !lx_plane_cover_complete(f, &cv, p) ||
+		    !v3_normalize(v3_cross(v3_sub(q[1], q[0]), v3_sub(q[3], q[0])), &n))
+			continue;
+		front[id] = (vec4){n.x, n.y, n.z, -v3_dot(n, c)}, has[id] = true;
+	}
 }
-
 
 bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int p, int q,
 			  struct lx_poly *win)

@@ -78,10 +78,15 @@ void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
  * whose box lies beyond it with rays crossing its bounds (false where LX_MAX_COVERS
  * fronts over an object left p's out). c: lit[] and m[] (of[] is not read). */
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p);
-/* Whether box [lo, hi] lies wholly beyond p's lit front from the light (every corner's
- * h.w > LX_COVER_TOUCH): nothing of it can shadow a point on the light's side of the
- * plane. False where p's front is not lit. */
-bool lx_plane_cover_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi);
+/* The flat boxes' faces the maps leave out: a face that is a lit front, when the main
+ * pass tests that front over every object that needs it (lx_plane_cover_complete). A ray
+ * from the light that leaves the box through it shadows only what lies beyond it, which
+ * its test shadows exactly; the maps keep the box's other faces, for the rays that leave
+ * by its sides. Drawn, the maps held the slab's underside at their resolution, a row or
+ * two past the test's exact edge on the table's legs (false shadow), and its fill under
+ * the table. has[id]: object id has such a face, front[id] its plane in the object's own
+ * space (unit normal n, n . x + w = 0). */
+void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has);
 /* The same with of[] found for the planes alone (none for the casters): what a plane map
  * leaves to the cover test (method_plane.c). */
 void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);

@@ -85,8 +85,6 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 			o->plane_max_lpp = -1;
 		else if (!strcmp(opt, "onepiece"))
 			o->plane_one_piece = true;
-		else if (!strcmp(opt, "drawcovered"))
-			o->plane_draw_covered = true;
 		else if (!strcmp(opt, "similar") || !strcmp(opt, "stretch"))
 			o->plane_similar = opt[1] == 'i';
 		else if (!strcmp(opt, "corner") || !strcmp(opt, "edges"))
@@ -94,7 +92,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
 			o->plane_max_lpp = lpp;
 		else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, drawcovered, similar, stretch, corner, edges, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, uncapped, onepiece, similar, stretch, corner, edges, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
 				 spec, opt, LX_MAX_LIGHTS, LX_DEPTH_SLOTS_MAX);
 			return NULL;
 		}
@@ -153,7 +151,6 @@ int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_s
 void lx_shadow_map_full(struct lx_shadow_map *m)
 {
 	m->plane = -1;
-	m->hole_front = -1; /* and no hole (hole[] 0) */
 	m->bounds[0] = m->bounds[1] = -1;
 	m->bounds[2] = m->bounds[3] = 1;
 }
@@ -246,10 +243,6 @@ void lx_shadow_map_turn(struct lx_shadow_map *m)
 	}
 	double b[4] = {-m->bounds[3], m->bounds[0], -m->bounds[1], m->bounds[2]};
 	memcpy(m->bounds, b, sizeof b);
-	if (m->hole[2] > m->hole[0]) { /* turned as the bounds (none stays none) */
-		double h[4] = {-m->hole[3], m->hole[0], -m->hole[1], m->hole[2]};
-		memcpy(m->hole, h, sizeof h);
-	}
 	int w = m->w;
 	m->w = m->h;
 	m->h = w;

@@ -34,12 +34,6 @@ struct lx_shadow_map {
 	 * pass draws the plane without a lookup outside its maps' rectangles. */
 	bool has_screen;
 	double screen[4];
-	/* Where the objects of lx_shadow_result.object_holes need not be drawn: region clip
-	 * bounds (x0, y0, x1, y1), empty (x0 >= x1) for none. A plane map's lixels that only
-	 * pixels in a lit front's shadow read, which the cover test decides there
-	 * (method_plane.c, cover_hole). */
-	double hole[4];
-	int hole_front; /* the lit front (plane_cover.h) whose shadow the hole lies in, or -1 */
 };
 
 /* PSM's kinds of light in post-perspective space (lx_shadow_result.variant) */
@@ -54,8 +48,6 @@ struct lx_shadow_result {
 	/* Per object, the maps it reads (a bit mask), where the method chose them; 0: the
 	 * rule of lx_shadow_receiver_maps. */
 	unsigned object_maps[LX_MAX_PLANES + LX_MAX_CASTERS];
-	/* Per object, the maps whose hole it is not drawn in (a bit mask; 0: drawn whole). */
-	unsigned object_holes[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
 
 /* Lixel budgets: each map holds budget x budget lixels. */
@@ -68,8 +60,6 @@ struct lx_method_options {
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
 	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
-	bool plane_draw_covered; /* plane maps: the casters beyond a lit front drawn over its
-				  * shadow too, where the cover test decides (no holes) */
 	bool plane_similar;   /* plane maps: square lixels (an exact similarity) even short of a
 			       * lixel per pixel, never stretched along a plane's shadow edges */
 	bool plane_corner;    /* plane maps: short of a lixel per pixel, lixels counted from the
