@@ -105,6 +105,30 @@ varying float v_beyond; // parallelogram's edge functions, and > 0 beyond it
 #ifdef LX_COVER2
 varying vec4 v_cover2; // a second one's
 varying float v_beyond2;
+// 1.0 where the two are one flat box's bottom and top (plane_cover.h): a ray that crosses
+// neither may still pass through the box, in by one thin side and out by another
+uniform float u_cover_pair;
+
+// Whether (x, y) / z lies in the unit square, from the edge functions (x, y, z - x, z - y)
+// of h: the division only where they do not decide it exactly.
+vec2 cover_point(vec4 e)
+{
+	return e.xy / (e.xy + e.zw);
+}
+
+// Whether segment a-b, its ends outside the unit square, meets it (lx_slab_sides_shadow):
+// their bounds overlap, and the square's corners are not all on one side of its line.
+float crosses_square(vec2 a, vec2 b)
+{
+	vec2 d = b - a;
+	float e0 = d.y * a.x - d.x * a.y;
+	vec4 e = vec4(e0) + vec4(0.0, -d.y, d.x, d.x - d.y);
+	bool apart = any(greaterThan(min(a, b), vec2(1.0))) || any(lessThan(max(a, b), vec2(0.0)));
+	bool ends_in = all(greaterThanEqual(a, vec2(0.0))) && all(lessThanEqual(a, vec2(1.0))) ||
+		       all(greaterThanEqual(b, vec2(0.0))) && all(lessThanEqual(b, vec2(1.0)));
+	bool sides = min(min(e.x, e.y), min(e.z, e.w)) <= 0.0 && max(max(e.x, e.y), max(e.z, e.w)) >= 0.0;
+	return float(!apart && !ends_in && sides);
+}
 #endif
 #endif
 varying vec3 v_to_light; // towards the light, not normalised
@@ -253,6 +277,10 @@ void main()
 	shadowed = max(shadowed, float(all(greaterThanEqual(v_cover, vec4(0.0)))) * float(v_beyond > 0.0));
 #ifdef LX_COVER2
 	shadowed = max(shadowed, float(all(greaterThanEqual(v_cover2, vec4(0.0)))) * float(v_beyond2 > 0.0));
+	// beyond the bottom, the ray crosses the two faces' planes at these points of their
+	// shared coordinates; between them it runs inside the box's thickness
+	shadowed = max(shadowed, u_cover_pair * float(v_beyond > 0.0 && v_beyond2 > 0.0) *
+				     crosses_square(cover_point(v_cover), cover_point(v_cover2)));
 #endif
 #endif
 #if LX_FACE_TEST

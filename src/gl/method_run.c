@@ -65,7 +65,11 @@ int lx_method_run_init(struct lx_method_run *mr, const char *name, const struct 
 		rd.lights[i].image = mr->lights[i].image.rgba ? &mr->lights[i].image : NULL;
 	}
 	mr->renderer = lx_renderer_create(&rd, err, errlen);
-	return mr->renderer ? 0 : 1;
+	if (!mr->renderer)
+		return 1;
+	for (int i = 0; i < mr->light_count; i++) /* what the main pass can test decides what the maps keep */
+		mr->lights[i].options.keep_flat_boxes = lx_renderer_covers_short(mr->renderer);
+	return 0;
 }
 
 void lx_method_run_warm(struct lx_method_run *mr) { lx_renderer_warm(mr->renderer); }

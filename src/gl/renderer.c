@@ -23,6 +23,7 @@ struct main_program {
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
 	GLint cover[LX_MAX_COVERS];  /* LX_COVER, LX_COVER2 variants: planes' cover matrices (plane_cover.h) */
+	GLint cover_pair;            /* LX_COVER2: whether the two are a flat box's bottom and top (main.frag) */
 };
 
 /* How a main-pass variant shades: 0 the decision; else 1 + 4 projective + 2 added (an
@@ -125,6 +126,7 @@ struct lx_renderer {
 	struct lx_plane_covers covers;
 	float cover[LX_MAX_FRONTS][16];
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
+	bool covers_short; /* some draw tests fewer (covers_fit): the maps keep every face */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
 	float bias_uniform;
 	/* Depth slots: the depth range cut into `slots` slots, each frame's shadow pass writing
@@ -221,6 +223,7 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	static const char *const cover_name[LX_MAX_COVERS] = {"u_cover", "u_cover2"}; /* main.vert */
 	for (int c = 0; c < LX_MAX_COVERS; c++)
 		p->cover[c] = lx_gl.GetUniformLocation(p->prog, cover_name[c]);
+	p->cover_pair = lx_gl.GetUniformLocation(p->prog, "u_cover_pair");
 	return true;
 }
 
@@ -261,9 +264,11 @@ static void face_plane_fits(const struct lx_renderer *r)
 /* A scene with objects under two lit fronts on a GPU whose varyings cannot hold the
  * second's test for a draw reading every map in some light's pass: one line saying so;
  * those draws test the first front only (lx_main_covers), and the second's shadow on
- * them is lost where it falls outside the first's. */
-static void covers_fit(const struct lx_renderer *r)
+ * them is lost where it falls outside the first's, and the maps keep the flat boxes' faces
+ * that the fronts' tests would otherwise decide (lx_slab_faces_left_out). */
+static void covers_fit(struct lx_renderer *r)
 {
+	r->covers_short = false;
 	for (int i = 0; r->max_covers > 1 && i < r->d.light_count; i++) {
 		struct lx_main_variant v =
 			variant_of(r, light_shading(r, i), LX_FACES_TOWARD, r->d.map_count, LX_FILTER_NONE, r->max_covers);
@@ -272,6 +277,7 @@ static void covers_fit(const struct lx_renderer *r)
 				"lixel: an object under two lit fronts (planes or flat boxes) read with %d maps needs %d varying "
 				"vectors for both fronts' shadows, this GPU has %d: only the first front's shadow is tested there\n",
 				v.reads, lx_main_varyings(v.reads, false, false, v.projective, r->max_covers), v.max_varyings);
+			r->covers_short = true;
 			return;
 		}
 	}
@@ -765,10 +771,12 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
-		bool has[LX_MAX_PLANES + LX_MAX_CASTERS];
-		lx_slab_faces_left_out(f[i], front, has);
+		bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
+		lx_slab_faces_left_out(f[i], front, has, whole);
 		for (int id = 0; id < r->objects; id++) {
-			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			has[id] &= !r->covers_short, whole[id] &= has[id];
+			/* a flat box whose fronts' tests decide its whole shadow casts nothing here */
+			drawn[i][id] = whole[id] ? 0 : lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
 					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id, has[id] ? &front[id] : NULL);
@@ -1393,6 +1401,8 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	for (int c = 0; c < d->covers; c++)
 		if (p->cover[c] >= 0) /* -1: a variant short of varyings tests fewer (lx_main_covers) */
 			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, r->cover[r->covers.of[id][c]]);
+	if (p->cover_pair >= 0)
+		lx_gl.Uniform1f(p->cover_pair, d->covers > 1 && r->covers.paired[id] ? 1.0f : 0.0f);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1732,6 +1742,8 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 }
 
 int lx_renderer_depth_slots(const struct lx_renderer *r) { return r->slots; }
+
+bool lx_renderer_covers_short(const struct lx_renderer *r) { return r->covers_short; }
 
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r)
 {

@@ -77,6 +77,9 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r);
 /* The depth slots taken: 1 (the regions cleared every frame) or the desc's depth_slots. */
 int lx_renderer_depth_slots(const struct lx_renderer *r);
+/* Whether some draw of the main pass cannot test two fronts (a GPU short of varyings):
+ * then the maps keep every face of the flat boxes (lx_method_options.keep_flat_boxes). */
+bool lx_renderer_covers_short(const struct lx_renderer *r);
 /* Every main-pass variant this renderer may draw with (each count of maps read, each light's
  * pass, each filter set up so far) built and drawn once, a triangle of no area each: a
  * driver compiles a program for the state it is drawn with the first time, which costs a

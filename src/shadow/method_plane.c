@@ -134,6 +134,8 @@ struct plane_chart {
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
+	const bool *unmapped;   /* per object: no face of it in the maps, the fronts' tests decide
+				 * its whole shadow (lx_slab_faces_left_out) */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
@@ -222,8 +224,8 @@ static void caster_outlines(const struct lx_frame *f, const struct plane_chart *
 	int np = 0;
 	*nc = 0;
 	for (int id = 0; id < f->object_count; id++) {
-		if (!lx_object_can_cast(f, id))
-			continue;
+		if (!lx_object_can_cast(f, id) || ch->unmapped[id])
+			continue; /* none of it in the maps: the fronts' tests decide its shadow */
 		vec3 x[LX_OUTLINE_POINTS];
 		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
@@ -851,6 +853,18 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, long own_
 	}
 }
 
+/* What a plane's two pieces gain over its one rectangle: the share of a lixel per pixel
+ * its budget gives, up to one (past one, lixels no longer decide more pixels); a piece that
+ * gains nothing there still saves area, counted as a little. */
+static double piece_gain(const struct plane_chart *ch, const struct plane_pieces *pc, long budget)
+{
+	double whole[4] = {ch->x0, ch->y0, ch->x1, ch->y1};
+	double one = rect_area(whole), two = rect_area(pc->r[0]) + rect_area(pc->r[1]);
+	if (!(two > 0) || !(one > 0))
+		return 0;
+	return fmin(1, (double)budget / two) - fmin(1, (double)budget / one) + 1e-9 * (one - two) / one;
+}
+
 /* A_l's scales and translation for one piece: u = (sx, sy) * (R p - (x0, y0)) + (ox, oy),
  * in a map of w x h lixels whose used part is [ox, uw] x [oy, vh]; sx = sy but for a
  * stretched map (chart_stretch). */
@@ -1459,19 +1473,34 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	struct plane_pieces pc[PLANE_MAPS];
 	mat4 depth[PLANE_MAPS];
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
-	int piece_of = -1;
 	struct lx_plane_covers covers;
-	lx_plane_covers_of_planes(f, &covers);
+	lx_plane_covers(f, &covers);
+	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], unmapped[LX_MAX_PLANES + LX_MAX_CASTERS];
+	lx_slab_faces_left_out_of(f, &covers, front, has, unmapped);
+	for (int id = 0; id < f->object_count; id++)
+		unmapped[id] &= !o->keep_flat_boxes;
+	long own = (long)o->plane_lixels * o->plane_lixels;
+	int two = -1; /* the plane that takes the atlas's one spare piece: where it gains most */
+	double most = -1;
 	for (int i = 0; i < np; i++) {
+		ch[i].unmapped = unmapped;
 		covered_part(f, &covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;
-		plane_pieces(&ch[i], piece_free, (long)o->plane_lixels * o->plane_lixels, &pc[i]);
+		plane_pieces(&ch[i], piece_free, own, &pc[i]);
 		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
-		if (ok[i] && pc[i].n > 1)
-			piece_free = false, piece_of = i;
+		double gain = ok[i] && pc[i].n > 1 ? piece_gain(&ch[i], &pc[i], own) : -1;
+		if (gain > most)
+			most = gain, two = i;
 	}
+	for (int i = 0; i < np; i++)
+		if (ok[i] && pc[i].n > 1 && i != two) { /* one rectangle after all */
+			plane_pieces(&ch[i], false, own, &pc[i]);
+			ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
+		}
+	int piece_of = two;
 	plane_budgets(atlas, o, ch, pc, ok, np, budget);
 	for (int i = 0; i < np; i++)
 		if (ok[i])

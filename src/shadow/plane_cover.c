@@ -58,7 +58,7 @@ static int thin_axis(vec3 lo, vec3 hi)
 	return ext[a] * LX_SLAB_FLATNESS <= fmin(ext[(a + 1) % 3], ext[(a + 2) % 3]) ? a : -1;
 }
 
-bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2)
+bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2, vec3 *t)
 {
 	const struct lx_scene *s = f->scene;
 	if (id < s->plane_count || id >= f->object_count || s->casters[id - s->plane_count].shape != LX_BOX)
@@ -74,6 +74,7 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
 	vec3 eb = v3_along(b, ext[b]), ed = v3_along(d, ext[d]);
 	*c = above ? lo : v3_add(lo, v3_along(a, ext[a]));
 	*e1 = above ? eb : ed, *e2 = above ? ed : eb;
+	*t = v3_along(a, above ? ext[a] : -ext[a]);
 	return true;
 }
 
@@ -116,52 +117,95 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
 }
 
 /* Object id's of[]: the lit fronts whose shadow may fall on its box, in the fronts'
- * order, LX_MAX_COVERS at most; never its own. */
-static void object_covers(const struct lx_frame *f, const struct lx_plane_covers *c, int id, int *of)
+ * order, LX_MAX_COVERS at most; never its own. And whether they pair. */
+static void object_covers(const struct lx_frame *f, const struct lx_plane_covers *c, int id, int *of, bool *paired)
 {
 	int n = 0;
 	for (int p = 0; p < c->count && n < LX_MAX_COVERS; p++)
 		if (c->owner[p] != id && c->lit[p] && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
 			of[n++] = p;
-	for (; n < LX_MAX_COVERS; n++)
-		of[n] = -1;
+	for (int k = n; k < LX_MAX_COVERS; k++)
+		of[k] = -1;
+	*paired = n == 2 && (c->top[of[1]] == of[0] || c->top[of[0]] == of[1]);
 }
 
-/* The fronts (the planes', then the flat boxes'), of[] for objects [0, objects) (none
- * for the rest). */
-static void covers_of(const struct lx_frame *f, int objects, struct lx_plane_covers *out)
+/* Front p: parallelogram c, e1, e2 of object `owner`, lit towards the light. */
+static void set_front(struct lx_plane_covers *out, int p, int owner, const struct lx_light *light, vec3 c, vec3 e1,
+		      vec3 e2)
+{
+	vec3 *pc = out->corner[p];
+	pc[0] = c, pc[1] = v3_add(c, e1), pc[2] = v3_add(pc[1], e2), pc[3] = v3_add(c, e2);
+	out->owner[p] = owner, out->top[p] = -1;
+	out->lit[p] = front_matrix(light, c, e1, e2, &out->m[p]);
+}
+
+/* The lit plane front lying on a flat box's top face (bottom front c, e1, e2, thickness
+ * t towards the light), or -1: its parallelogram is the top face's, moved at most
+ * |t| / LX_SLAB_FLATNESS further towards the light (the table top, 1 mm over its slab).
+ * Then the bottom takes that plane's corner and edges, moved down to its own plane, so
+ * that the two fronts' coordinates are one (the pair's test, lx_slab_sides_shadow). */
+static int plane_on_top(const struct lx_plane_covers *cv, int np, vec3 *c, vec3 *e1, vec3 *e2, vec3 t)
+{
+	double th = v3_len(t), tol = 1e-6 * (v3_len(*e1) + v3_len(*e2) + th); /* meshes hold floats */
+	if (!(th > 0))
+		return -1;
+	vec3 u = v3_scale(t, 1 / th), top = v3_add(*c, t); /* th > 0 */
+	vec3 face[4] = {top, v3_add(top, *e1), v3_add(v3_add(top, *e1), *e2), v3_add(top, *e2)};
+	for (int q = 0; q < np; q++) {
+		const vec3 *pc = cv->corner[q];
+		double gap = v3_dot(v3_sub(pc[0], top), u);
+		if (!cv->lit[q] || gap < -tol || gap > th / LX_SLAB_FLATNESS + tol)
+			continue;
+		int matched = 0;
+		for (int i = 0; i < 4; i++) {
+			vec3 x = v3_sub(pc[i], v3_scale(u, gap)); /* onto the top face's plane */
+			for (int j = 0; j < 4; j++)
+				if (v3_len(v3_sub(x, face[j])) <= tol) {
+					matched++;
+					break;
+				}
+		}
+		if (matched < 4)
+			continue;
+		*c = v3_sub(pc[0], v3_scale(u, gap + th));
+		*e1 = v3_sub(pc[1], pc[0]), *e2 = v3_sub(pc[3], pc[0]);
+		return q;
+	}
+	return -1;
+}
+
+void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 {
 	int np = f->scene->plane_count;
-	out->count = 0;
-	for (int p = 0; p < np && p < LX_MAX_FRONTS; p++) {
-		lx_frame_plane_corners(f, p, out->corner[p]);
-		out->owner[p] = p;
-		out->lit[p] = lx_plane_cover_matrix(f, p, &out->m[p]);
+	out->count = out->slabs = 0;
+	for (int p = 0; p < np && p < LX_MAX_PLANES; p++) {
+		vec3 pc[4];
+		lx_frame_plane_corners(f, p, pc);
+		set_front(out, p, p, &f->light, pc[0], v3_sub(pc[1], pc[0]), v3_sub(pc[3], pc[0]));
 		out->count++;
 	}
-	for (int id = np; id < f->object_count && out->count < LX_MAX_FRONTS; id++) {
-		vec3 c, e1, e2;
-		if (!lx_slab_front(f, id, &c, &e1, &e2))
+	vec3 thick[LX_MAX_SLAB_FRONTS];
+	for (int id = np; id < f->object_count && out->slabs < LX_MAX_SLAB_FRONTS; id++) {
+		vec3 c, e1, e2, t;
+		if (!lx_slab_front(f, id, &c, &e1, &e2, &t))
 			continue;
-		int p = out->count++;
-		vec3 *pc = out->corner[p];
-		pc[0] = c, pc[1] = v3_add(c, e1), pc[2] = v3_add(pc[1], e2), pc[3] = v3_add(c, e2);
-		out->owner[p] = id;
-		out->lit[p] = front_matrix(&f->light, c, e1, e2, &out->m[p]);
+		int p = out->count++, on_top = plane_on_top(out, np, &c, &e1, &e2, t);
+		thick[out->slabs++] = t;
+		set_front(out, p, id, &f->light, c, e1, e2);
+		out->top[p] = out->lit[p] ? on_top : -1;
+	}
+	for (int k = 0; k < out->slabs; k++) { /* the tops no plane lies on, after every bottom */
+		int p = np + k;
+		if (!out->lit[p] || out->top[p] >= 0)
+			continue;
+		const vec3 *pc = out->corner[p];
+		int q = out->count++;
+		set_front(out, q, out->owner[p], &f->light, v3_add(pc[0], thick[k]), v3_sub(pc[1], pc[0]),
+			  v3_sub(pc[3], pc[0]));
+		out->top[p] = out->lit[q] ? q : -1;
 	}
 	for (int id = 0; id < f->object_count; id++)
-		if (id < objects)
-			object_covers(f, out, id, out->of[id]);
-		else
-			for (int n = 0; n < LX_MAX_COVERS; n++)
-				out->of[id][n] = -1;
-}
-
-void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out) { covers_of(f, f->object_count, out); }
-
-void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out)
-{
-	covers_of(f, f->scene->plane_count, out);
+		object_covers(f, out, id, out->of[id], &out->paired[id]);
 }
 
 int lx_plane_cover_count(const struct lx_plane_covers *c, int id)
@@ -172,12 +216,29 @@ int lx_plane_cover_count(const struct lx_plane_covers *c, int id)
 	return n;
 }
 
+static bool in_unit(double x, double y) { return x >= 0 && x <= 1 && y >= 0 && y <= 1; }
+
+bool lx_slab_sides_shadow(const mat4 *top, const mat4 *bottom, vec3 x)
+{
+	vec4 hb = m4_mul_point(bottom, x), ht = m4_mul_point(top, x);
+	if (!(hb.w > 0) || !(ht.w > 0) || !(hb.z > 0) || !(ht.z > 0))
+		return false; /* not beyond the bottom (beyond it, h.z >= 1 for both) */
+	double ax = hb.x / hb.z, ay = hb.y / hb.z, bx = ht.x / ht.z, by = ht.y / ht.z; /* z > 0 */
+	if (in_unit(ax, ay) || in_unit(bx, by) || fmin(ax, bx) > 1 || fmax(ax, bx) < 0 || fmin(ay, by) > 1 ||
+	    fmax(ay, by) < 0)
+		return false;
+	/* the square's corners on both sides of the segment's line, or on it */
+	double dx = bx - ax, dy = by - ay, e0 = dy * ax - dx * ay;
+	double e1 = e0 - dy, e2 = e0 + dx, e3 = e0 + dx - dy;
+	return fmin(fmin(e0, e1), fmin(e2, e3)) <= 0 && fmax(fmax(e0, e1), fmax(e2, e3)) >= 0;
+}
+
 bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
 {
 	for (int k = 0; k < LX_MAX_COVERS && c->of[id][k] >= 0; k++)
 		if (lx_plane_cover_shadows(&c->m[c->of[id][k]], x))
 			return true;
-	return false;
+	return c->paired[id] && lx_slab_sides_shadow(&c->m[c->of[id][0]], &c->m[c->of[id][1]], x);
 }
 
 /* Whether box [lo, hi] reaches beyond lit front p, a corner of it: a superset of
@@ -202,7 +263,8 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 		if (beyond <= LX_MAX_COVERS || id == c->owner[p])
 			continue;
 		int of[LX_MAX_COVERS];
-		object_covers(f, c, id, of);
+		bool paired;
+		object_covers(f, c, id, of, &paired);
 		bool tested = false;
 		for (int k = 0; k < LX_MAX_COVERS; k++)
 			tested |= of[k] == p;
@@ -212,20 +274,50 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 	return true;
 }
 
-void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has)
+/* Whether every object whose box reaches below bottom front p's top (with rays crossing
+ * the top's bounds) tests the pair, and has no corner between the two faces' planes,
+ * where the bottom's test is off. */
+static bool pair_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
+{
+	int t = c->top[p];
+	if (t < 0 || !c->lit[p] || !c->lit[t])
+		return false;
+	for (int id = 0; id < f->object_count; id++) {
+		if (id == c->owner[p] || id == c->owner[t] || !beyond_meets(&c->m[t], f->bmin[id], f->bmax[id]))
+			continue;
+		if (!c->paired[id] || (c->of[id][0] != p && c->of[id][1] != p))
+			return false;
+		for (int k = 0; k < 8; k++) {
+			vec3 x = v3_box_corner(f->bmin[id], f->bmax[id], k);
+			if (m4_mul_point(&c->m[p], x).w < -LX_COVER_TOUCH && m4_mul_point(&c->m[t], x).w > LX_COVER_TOUCH)
+				return false;
+		}
+	}
+	return true;
+}
+
+void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has, bool *whole)
 {
 	struct lx_plane_covers cv;
-	lx_plane_covers_of_planes(f, &cv);
+	lx_plane_covers(f, &cv);
+	lx_slab_faces_left_out_of(f, &cv, front, has, whole);
+}
+
+void lx_slab_faces_left_out_of(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
+			       bool *whole)
+{
 	for (int id = 0; id < f->object_count; id++)
-		has[id] = false;
-	for (int p = f->scene->plane_count; p < cv.count; p++) {
-		int id = cv.owner[p];
-		const vec3 *q = cv.corner[p];
+		has[id] = whole[id] = false;
+	int np = f->scene->plane_count;
+	for (int p = np; p < np + cv->slabs; p++) {
+		int id = cv->owner[p];
+		const vec3 *q = cv->corner[p];
 		vec3 n, c = v3_sub(q[0], f->offset[id]); /* object space */
-		if (!cv.lit[p] || !lx_plane_cover_complete(f, &cv, p) ||
+		if (!cv->lit[p] || !lx_plane_cover_complete(f, cv, p) ||
 		    !v3_normalize(v3_cross(v3_sub(q[1], q[0]), v3_sub(q[3], q[0])), &n))
 			continue;
 		front[id] = (vec4){n.x, n.y, n.z, -v3_dot(n, c)}, has[id] = true;
+		whole[id] = pair_complete(f, cv, p);
 	}
 }
 
@@ -269,10 +361,10 @@ int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshe
 			hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
 		}
 		int beyond = 0;
-		for (int c = 0; c < s->caster_count; c++) /* a flat box's front: whichever face, any light */
-			beyond += s->plane_count + c != id && s->casters[c].shape == LX_BOX &&
+		for (int c = 0; c < s->caster_count; c++) /* a flat box's two fronts, any light */
+			beyond += 2 * (s->plane_count + c != id && s->casters[c].shape == LX_BOX &&
 				  s->plane_count + c < m->count &&
-				  thin_axis(m->mesh[s->plane_count + c].bmin, m->mesh[s->plane_count + c].bmax) >= 0;
+				  thin_axis(m->mesh[s->plane_count + c].bmin, m->mesh[s->plane_count + c].bmax) >= 0);
 		for (int p = 0; p < s->plane_count; p++) {
 			const struct lx_plane *pl = &s->planes[p];
 			vec3 nrm = v3_cross(pl->edge1, pl->edge2);

@@ -41,33 +41,45 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x);
 #define LX_MAX_COVERS 2
 
 /* A flat box (a table's slab, a shelf board: its thinnest side at most 1/LX_SLAB_FLATNESS
- * of each other) has a front too: its broad face turned away from the light, as a
- * parallelogram lit on the side towards the light. A ray from a point beyond it that
- * crosses that face passes through the box, so the test is exact there, as a plane's
- * is: under a table it decides the slab's whole shadow but for rays that enter and leave
- * by its thin sides, where the maps decide it (on the table seen from close to the floor
- * the band the slab's sides throw on the legs was the maps' worst error). The first
- * LX_MAX_SLAB_FRONTS flat boxes have one. */
+ * of each other) has two fronts: its bottom, the broad face turned away from the light,
+ * and its top, the broad face towards it, each as a parallelogram lit on the side towards
+ * the light. A ray from a point beyond the bottom that crosses either face passes through
+ * the box, so each test is exact where it shadows; tested together (a pair, below) they
+ * also take the rays that enter and leave by the thin sides, and then the box's whole
+ * shadow is exact. Where a plane lies on the top face (the table top, 1 mm over its slab)
+ * that plane's front is the top: the two make one prism, with a gap only a nearly level
+ * ray could pass. The first LX_MAX_SLAB_FRONTS flat boxes have fronts. */
 #define LX_SLAB_FLATNESS 8.0
 #define LX_MAX_SLAB_FRONTS 4
-#define LX_MAX_FRONTS (LX_MAX_PLANES + LX_MAX_SLAB_FRONTS)
-/* Box caster id's front in frame f, when it is flat: corner c and edges e1, e2 (e1 x e2
- * towards the light's side). */
-bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2);
+#define LX_MAX_FRONTS (LX_MAX_PLANES + 2 * LX_MAX_SLAB_FRONTS)
+/* Box caster id's bottom front in frame f, when it is flat: corner c and edges e1, e2
+ * (e1 x e2 towards the light's side), and t, its thickness towards the light (the top
+ * face is c + t, e1, e2). */
+bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2, vec3 *t);
 
-/* A frame's covers: its fronts, the planes' (front p is plane p) then the flat boxes',
- * each one's owner, corners and matrix where it is lit (lx_plane_cover_matrix), and for
- * each object the fronts that may shadow it (some of its box lies beyond one from the
- * light, and the light's rays to that part cross the parallelogram's bounds; never its
- * own): of[id][0], of[id][1], ... in the fronts' order, -1 after the last. */
+/* A frame's covers: its fronts, the planes' (front p is plane p), then the flat boxes'
+ * bottoms, then the tops of those with no plane lying on them; each one's owner, corners
+ * and matrix where it is lit (lx_plane_cover_matrix); for a bottom, the front on its
+ * top's side (top, else -1): fronts [plane count, plane count + slabs) are the bottoms. For each object, the fronts that may shadow it (some of its
+ * box lies beyond one from the light, and the light's rays to that part cross the
+ * parallelogram's bounds; never its own): of[id][0], of[id][1], ... in the fronts' order,
+ * -1 after the last; paired[id] where those two are one flat box's bottom and top. */
 struct lx_plane_covers {
-	int count;
+	int count, slabs;
 	int owner[LX_MAX_FRONTS];
+	int top[LX_MAX_FRONTS];
 	vec3 corner[LX_MAX_FRONTS][4];
 	bool lit[LX_MAX_FRONTS];
 	mat4 m[LX_MAX_FRONTS];
 	int of[LX_MAX_PLANES + LX_MAX_CASTERS][LX_MAX_COVERS];
+	bool paired[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
+/* Whether world point x beyond bottom front `bottom` has its ray to the light pass through
+ * the box between it and its top front `top` (their matrices) by the box's thin sides:
+ * the ray's crossings of the two faces' planes, in their shared coordinates, span a
+ * segment that meets the unit square while neither end lies in it (each end inside is
+ * its own front's test). As the shader decides it (main.frag, u_cover_pair). */
+bool lx_slab_sides_shadow(const mat4 *top, const mat4 *bottom, vec3 x);
 /* How many fronts the main pass tests over object id (0 to LX_MAX_COVERS). */
 int lx_plane_cover_count(const struct lx_plane_covers *c, int id);
 /* Whether world point x of object id lies in the shadow of a front the main pass tests
@@ -78,18 +90,22 @@ void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
  * whose box lies beyond it with rays crossing its bounds (false where LX_MAX_COVERS
  * fronts over an object left p's out). c: lit[] and m[] (of[] is not read). */
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p);
-/* The flat boxes' faces the maps leave out: a face that is a lit front, when the main
- * pass tests that front over every object that needs it (lx_plane_cover_complete). A ray
- * from the light that leaves the box through it shadows only what lies beyond it, which
- * its test shadows exactly; the maps keep the box's other faces, for the rays that leave
- * by its sides. Drawn, the maps held the slab's underside at their resolution, a row or
- * two past the test's exact edge on the table's legs (false shadow), and its fill under
- * the table. has[id]: object id has such a face, front[id] its plane in the object's own
- * space (unit normal n, n . x + w = 0). */
-void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has);
-/* The same with of[] found for the planes alone (none for the casters): what a plane map
- * leaves to the cover test (method_plane.c). */
-void lx_plane_covers_of_planes(const struct lx_frame *f, struct lx_plane_covers *out);
+/* The flat boxes' faces the maps leave out. A face that is a lit bottom front, when the
+ * main pass tests that front over every object that needs it (lx_plane_cover_complete):
+ * a ray that leaves the box through it shadows only what lies beyond it, which its test
+ * shadows exactly; drawn, the maps held the slab's underside at their resolution, a row
+ * or two past the test's exact edge on the table's legs, and its fill under the table.
+ * The whole box, when every object whose box reaches below its top (with rays crossing the
+ * top's bounds) tests the pair and has nothing between the two faces' planes: its shadow
+ * is then the pair's, exact to the pixel, and the maps' band along its edges (a lixel of
+ * false shadow past them, the worst error on the table seen near the wall) is gone with
+ * its footprint from the planes' wanted regions. has[id]: object id has such a face,
+ * front[id] its plane in the object's own space (unit normal n, n . x + w = 0); whole[id]:
+ * none of it is drawn. */
+void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has, bool *whole);
+/* The same from the frame's covers (lx_plane_covers). */
+void lx_slab_faces_left_out_of(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
+			       bool *whole);
 
 /* The shadow front p's parallelogram (cv's) throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in

@@ -67,6 +67,10 @@ struct lx_method_options {
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
+	/* Set by the renderer, not the user: some draw of the main pass cannot test two
+	 * fronts (a GPU short of varyings), so the maps keep every face of the flat boxes and
+	 * their footprints stay in the wanted regions (lx_slab_faces_left_out). */
+	bool keep_flat_boxes;
 	/* The main pass (every method): a caster's face compared along its plane at the centre
 	 * of the lixel read (--caster-depth face, main.frag's LX_FACE_PLANE: no acne where a
 	 * coarse map meets its silhouette, for a few ALU operations per lookup), not at the
