@@ -139,9 +139,7 @@ grep -q '"atlas": \[1982, 624\]' "$tmp/b-fixed.json" && grep -q '"atlas": \[2048
 expect_bad "region shape" render --region-shape round $out
 expect_bad "budget split" render --budget-split half $out
 expect_bad "max lpp" render --plane-max-lpp 0 $out
-"$lixel" render --method plane/corner --scene table --config facing --size 160x120 --frames 1 --out "$tmp/c.png" >/dev/null 2>&1 &&
-  "$lixel" render --method plane/edges --scene table --config facing --size 160x120 --frames 1 --out "$tmp/c.png" >/dev/null 2>&1 && ok ||
-  no "plane/corner and plane/edges were not taken"
+expect_bad "removed method option" render --method plane/corner $out
 expect_bad "method option" render --method plane/round $out
 expect_bad "bench method option" bench --methods uniform,plane/lpp-1 --frames 1
 expect_bad "zero budget" render --plane-lixels 0 $out

@@ -798,13 +798,6 @@ static void polygon_edges_inside(void **state)
 	struct lx_poly empty = {0};
 	lx_poly_edges_inside(&square, &empty, &dx, &dy);
 	assert_true(dx == 0 && dy == 0);
-	double t0, t1; /* one segment's part inside: across, along an edge, apart, either winding */
-	assert_true(lx_segment_inside(&right, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
-	assert_true(fabs(t0 - 0.5) < 1e-12 && fabs(t1 - 1) < 1e-12);
-	assert_true(lx_segment_inside(&cw, (vec2){0, 0}, (vec2){30, 0}, &t0, &t1));
-	assert_true(fabs(t0 - 5.0 / 30) < 1e-12 && fabs(t1 - 20.0 / 30) < 1e-12);
-	assert_false(lx_segment_inside(&far, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
-	assert_false(lx_segment_inside(&empty, (vec2){0, 0}, (vec2){10, 0}, &t0, &t1));
 }
 
 /* Where a point of plane `plane` lands in that plane's map's lixels (a piece's or the

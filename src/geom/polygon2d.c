@@ -171,7 +171,8 @@ double lx_poly_area(const struct lx_poly *p)
 	return 0.5 * s;
 }
 
-/* lx_segment_inside with b's winding given: side 1 counter-clockwise, -1 clockwise */
+/* The part [*t0, *t1] of segment p + t (q - p), t in [0, 1], inside convex b, whose
+ * winding is given: side 1 counter-clockwise, -1 clockwise; false when none of it is. */
 static bool segment_in(const struct lx_poly *b, double side, vec2 p, vec2 q, double *t0, double *t1)
 {
 	*t0 = 0, *t1 = 1;
@@ -187,12 +188,6 @@ static bool segment_in(const struct lx_poly *b, double side, vec2 p, vec2 q, dou
 			*t1 = fmin(*t1, f0 / (f0 - f1));
 	}
 	return *t1 > *t0;
-}
-
-bool lx_segment_inside(const struct lx_poly *b, vec2 p, vec2 q, double *t0, double *t1)
-{
-	*t0 = 0, *t1 = 1;
-	return b->n >= 3 && segment_in(b, lx_poly_area(b) < 0 ? -1 : 1, p, q, t0, t1);
 }
 
 void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, double *dx, double *dy)

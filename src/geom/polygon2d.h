@@ -33,9 +33,6 @@ double lx_poly_area(const struct lx_poly *p);
  * along x (*dx) and along y (*dy). An edge's length times its normal's x component is
  * its extent along y: these weigh how much of a's outline runs along each axis. */
 void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, double *dx, double *dy);
-/* The part of segment p + t (q - p), t in [0, 1], inside convex polygon b (either
- * winding): [*t0, *t1], and false when none of it is (or b has no area). */
-bool lx_segment_inside(const struct lx_poly *b, vec2 p, vec2 q, double *t0, double *t1);
 /* Strictly inside by more than eps (distance to every edge). */
 bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
 /* The pixels [*x0, *x1) whose centres, in every row of [y0, y1), lie inside p by more

@@ -117,8 +117,6 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 	return m;
 }
 
-/* The most level shadow edges a plane's phase is chosen from (level_edges). */
-#define LEVELS_MAX 32
 /* A plane's light image before A_l's scale: the plane-optimal camera, the visible
  * polygon, the wanted rays (window coordinates on the plane) turned by the twist, and
  * their bounding rectangle. */
@@ -139,11 +137,6 @@ struct plane_chart {
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
-	int levels;              /* level shadow edges in view (level_edges), turned */
-	struct level_edge {
-		bool row;        /* along the chart's x, at y = at (else along y, at x = at) */
-		double at, len;  /* pixels */
-	} level[LEVELS_MAX];
 };
 
 /* False when plane i gets no map this frame (warned where the user should know). */
@@ -202,16 +195,6 @@ static bool in_chart(const struct plane_chart *ch, const vec3 *x, int n, vec2 *p
 		pts[k] = in_front ? (vec2){h.x / h.w, h.y / h.w} : (vec2){0, 0};
 	}
 	return in_front;
-}
-
-/* Object id's box corners in the chart's light image (in v3_box_corner's order), as
- * in_chart. */
-static bool box_in_chart(const struct lx_frame *f, const struct plane_chart *ch, int id, vec2 pts[8])
-{
-	vec3 x[8];
-	for (int k = 0; k < 8; k++)
-		x[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-	return in_chart(ch, x, 8, pts);
 }
 
 /* The casters' outlines in the light image (lx_frame_object_outline's points, caster c's
@@ -294,38 +277,16 @@ static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
 		p->v[k] = chart_point(ch, p->v[k]);
 }
 
-/* Whether object id lies wholly on the light's side of plane i (touching it counts), so
- * that its shadow on the plane is its corners' shadows' hull. */
-static bool above_plane(const struct lx_frame *f, int i, int id)
-{
-	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
-	for (int k = 0; k < 8; k++)
-		if (v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) < -1e-6)
-			return false; /* the positive side is the lit one, turned to the light (the plane has a map) */
-	return true;
-}
-
-/* A box's (or a plane's) shadow is the hull of its corners' shadows, so its footprint's
- * edges are shadow edges, when it lies wholly on the light's side of plane i; a round
- * caster's box only bounds its shadow. */
-static bool exact_outline(const struct lx_frame *f, int i, int id)
-{
-	int caster = id - f->scene->plane_count;
-	return (caster < 0 || f->scene->casters[caster].shape == LX_BOX) && above_plane(f, i, id);
-}
-
 /* The footprint on plane i of object id when its corners' shadows do not all lie in front
  * of the eye (a light facing the camera throws shadows past it): the shadows' hull on the
- * plane, clipped to the near plane, in window coordinates. Bit e of *cut marks edge e as
- * the clip's (no shadow edge). FOOT_LEVEL when a corner lies level with a point light or
+ * plane, clipped to the near plane, in window coordinates. FOOT_LEVEL when a corner lies level with a point light or
  * beyond it (its shadow does not fall on the plane: the footprint is unbounded, or
  * nothing, caster_reach tells which), FOOT_EMPTY when nothing is left in front, FOOT_OPEN
  * when rounding leaves no bound. */
 enum foot { FOOT_POLYGON, FOOT_EMPTY, FOOT_OPEN, FOOT_LEVEL };
 #define FOOT_POINTS 35 /* a box's 8 corners, or a box cut by a plane: one vertex per triple of its 7 planes */
 /* footprint_clipped for the hull of any points (at most FOOT_POINTS). */
-static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, int np, struct lx_poly *out,
-			      unsigned *cut)
+static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, int np, struct lx_poly *out)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
 	const struct lx_light *L = &f->light;
@@ -354,7 +315,6 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 				in[nin++] = m4_mul_point(&f->view.view_proj, w[k]);
 				break;
 			}
-	*cut = 0;
 	for (int v = 0; v < nin; v++) { /* in front of the near plane: w + z >= 0 */
 		vec4 a = in[v], b = in[(v + 1) % nin];
 		double da = a.w + a.z, db = b.w + b.z;
@@ -362,8 +322,6 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 			h[m++] = a;
 		if ((da >= 0) != (db >= 0)) {
 			double t = da / (da - db); /* signs differ */
-			if (da >= 0)
-				*cut |= 1u << m; /* leaving: the edge to the next point is the clip's */
 			h[m++] = (vec4){a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
 		}
 	}
@@ -376,12 +334,12 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 	return out->n >= 3 ? FOOT_POLYGON : FOOT_EMPTY;
 }
 
-static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out)
 {
 	vec3 c[8];
 	for (int k = 0; k < 8; k++)
 		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-	return footprint_of(f, i, c, 8, out, cut);
+	return footprint_of(f, i, c, 8, out);
 }
 
 /* The distance from the origin to the convex polygon p (lx_poly_hull's winding; 0 inside
@@ -408,7 +366,7 @@ static double origin_distance(const struct lx_poly *p)
  * corner of the parallelogram from F, delta = r_min dl / (2 R) leaves those shadows
  * beyond 2 R. The box cut at dl - delta then bounds what falls on the plane. FOOT_OPEN
  * when the box meets the light's normal line (r_min 0). */
-static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out)
 {
 	const struct lx_plane *P = &f->scene->planes[i];
 	vec4 pi = lx_plane_equation(P);
@@ -439,7 +397,7 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 			   {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}, {-pi.x, -pi.y, -pi.z, level - pi.w}};
 	vec3 pts[FOOT_POINTS];
 	int n = lx_halfspace_vertices(cut_box, 7, pts, FOOT_POINTS);
-	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out, cut) : FOOT_EMPTY;
+	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out) : FOOT_EMPTY;
 	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
 }
 
@@ -450,9 +408,9 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
  * point light or beyond it, so that no ray from the light through it meets the plane);
  * one that straddles the light's level is bounded where its shadow falls on the plane's
  * parallelogram (straddling_reach), FOOT_OPEN where that fails. */
-static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out, unsigned *cut)
+static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx_poly *out)
 {
-	enum foot r = footprint_clipped(f, i, id, out, cut);
+	enum foot r = footprint_clipped(f, i, id, out);
 	if (r != FOOT_LEVEL)
 		return r;
 	if (f->light.directional)
@@ -461,160 +419,14 @@ static enum foot caster_reach(const struct lx_frame *f, int i, int id, struct lx
 	double dl = v4_dot_point(pi, f->light.position);
 	for (int k = 0; k < 8; k++)
 		if (dl - v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) > 1e-9 * (1 + fabs(dl)))
-			return straddling_reach(f, i, id, out, cut); /* one corner below the light, another not */
+			return straddling_reach(f, i, id, out); /* one corner below the light, another not */
 	return FOOT_EMPTY;
-}
-
-/* The footprints on plane i of the other planes that lie over it and whose lit side faces
- * the light: they cast nothing in lixel's maps (lx_object_can_cast: a caster under such a
- * plane casts its shadow), but they do shadow, and where the exact shadow's edge is
- * theirs (the table top 1 mm above its slab: its shadow reaches past the slab's by a
- * fraction of a pixel) that is the edge a lixel boundary should follow. */
-static int plane_feet(const struct lx_frame *f, int i, const struct plane_chart *ch, struct lx_poly *feet, bool *exact,
-		      unsigned *cuts, int room)
-{
-	int n = 0;
-	for (int id = 0; id < f->scene->plane_count && n < room; id++) {
-		if (id == i || lx_object_can_cast(f, id) || !above_plane(f, i, id))
-			continue;
-		vec2 pts[8];
-		cuts[n] = 0;
-		if (box_in_chart(f, ch, id, pts) ? lx_poly_hull(pts, 8, &feet[n]) && feet[n].n >= 3
-						 : footprint_clipped(f, i, id, &feet[n], &cuts[n]) == FOOT_POLYGON)
-			exact[n++] = true;
-	}
-	return n;
-}
-
-/* What can hide plane i from the eye (lx_frame_box_hides): each object's box corners in
- * the window and their bounds (x0, y0, x1, y1). The box's image bounds the object's, so
- * it over-states what is hidden. */
-struct hider {
-	vec2 corner[8];
-	double box[4];
-	int n; /* its image: the corners' hull, found when first needed (n < 0 until then) */
-	vec2 hull[8];
-};
-
-static int plane_hiders(const struct lx_frame *f, int i, struct hider *hide)
-{
-	int n = 0;
-	for (int id = 0; id < f->object_count; id++) {
-		struct hider *h = &hide[n];
-		if (!lx_frame_box_hides(f, id, i, h->corner))
-			continue;
-		h->n = -1;
-		h->box[0] = h->box[2] = h->corner[0].x, h->box[1] = h->box[3] = h->corner[0].y;
-		for (int k = 1; k < 8; k++) {
-			vec2 c = h->corner[k];
-			h->box[0] = c.x < h->box[0] ? c.x : h->box[0], h->box[1] = c.y < h->box[1] ? c.y : h->box[1];
-			h->box[2] = c.x > h->box[2] ? c.x : h->box[2], h->box[3] = c.y > h->box[3] ? c.y : h->box[3];
-		}
-		n++;
-	}
-	return n;
-}
-
-/* The part [*t0, *t1] of segment p + t (q - p) inside window box b; false when none is. */
-static bool segment_in_box(const double *b, vec2 p, vec2 q, double *t0, double *t1)
-{
-	double o[2] = {p.x, p.y}, d[2] = {q.x - p.x, q.y - p.y};
-	*t0 = 0, *t1 = 1;
-	if ((p.x < b[0] && q.x < b[0]) || (p.x > b[2] && q.x > b[2]) || (p.y < b[1] && q.y < b[1]) ||
-	    (p.y > b[3] && q.y > b[3]))
-		return false; /* apart: the usual case, without a division */
-	for (int a = 0; a < 2; a++) {
-		if (d[a] == 0) {
-			if (o[a] < b[a] || o[a] > b[a + 2])
-				return false;
-			continue;
-		}
-		double u = (b[a] - o[a]) / d[a], w = (b[a + 2] - o[a]) / d[a], lo = u < w ? u : w, hi = u < w ? w : u;
-		*t0 = lo > *t0 ? lo : *t0, *t1 = hi < *t1 ? hi : *t1;
-	}
-	return *t1 > *t0;
-}
-
-/* The part [*t0, *t1] of segment p + t (q - p) inside a hider's image; false when none
- * is. */
-static bool segment_in_image(struct hider *h, vec2 p, vec2 q, double *t0, double *t1)
-{
-	struct lx_poly hull;
-	if (h->n < 0) {
-		lx_poly_hull(h->corner, 8, &hull); /* at most 8 vertices: they are corners */
-		h->n = hull.n;
-		memcpy(h->hull, hull.v, (size_t)hull.n * sizeof(vec2));
-	} else {
-		hull.n = h->n;
-		memcpy(hull.v, h->hull, (size_t)h->n * sizeof(vec2));
-	}
-	return lx_segment_inside(&hull, p, q, t0, t1);
-}
-
-/* How much of [t0, t1] the n intervals (start, end pairs) leave uncovered. */
-static double uncovered(double t0, double t1, double (*iv)[2], int n)
-{
-	for (int a = 1; a < n; a++) /* by start: a few */
-		for (int b = a; b > 0 && iv[b][0] < iv[b - 1][0]; b--) {
-			double s0 = iv[b][0], s1 = iv[b][1];
-			iv[b][0] = iv[b - 1][0], iv[b][1] = iv[b - 1][1], iv[b - 1][0] = s0, iv[b - 1][1] = s1;
-		}
-	double left = 0, at = t0;
-	for (int a = 0; a < n && at < t1; a++) {
-		if (iv[a][0] > at)
-			left += fmin(iv[a][0], t1) - at;
-		at = fmax(at, iv[a][1]);
-	}
-	return left + fmax(0, t1 - at);
-}
-
-/* The level shadow edges in view: the edges of the exact footprints that run along a
- * pixel row (column) of the chart within LEVEL_SLOPE pixels, where they lie on the visible
- * plane, outside what hides it (plane_hiders) and outside the other footprints (there
- * both sides are in shadow). Where a lixel holds such an edge, the pixels on the far
- * side of it from the lixel's centre read the wrong side: fit_scaled's phase puts lixel
- * boundaries on them. Only on a grid of whole pixels (ch->on_grid). */
-#define LEVEL_SLOPE 0.1
-static void level_edges(const struct lx_frame *f, int i, const struct lx_poly *feet, const bool *exact,
-			const unsigned *cuts, int nfeet, struct plane_chart *ch)
-{
-	struct hider hide[LX_MAX_PLANES + LX_MAX_CASTERS];
-	double box[LX_MAX_PLANES + LX_MAX_CASTERS][4];
-	int nhide = -1; /* found on the first level edge */
-	for (int c = 0; c < nfeet; c++)
-		lx_poly_bounds(&feet[c], &box[c][0], &box[c][1], &box[c][2], &box[c][3]);
-	for (int c = 0; c < nfeet; c++) {
-		if (!exact[c])
-			continue;
-		for (int e = 0; e < feet[c].n && ch->levels < LEVELS_MAX; e++) {
-			vec2 p = feet[c].v[e], q = feet[c].v[(e + 1) % feet[c].n], cp = chart_point(ch, p), cq = chart_point(ch, q);
-			double dx = fabs(cq.x - cp.x), dy = fabs(cq.y - cp.y);
-			bool row = dy <= LEVEL_SLOPE && dx > dy, col = dx <= LEVEL_SLOPE && dy > dx;
-			double t0, t1;
-			if (!(row || col) || (cuts[c] >> e & 1) || !lx_segment_inside(&ch->win, p, q, &t0, &t1))
-				continue;
-			if (nhide < 0)
-				nhide = plane_hiders(f, i, hide);
-			double iv[2 * (LX_MAX_PLANES + LX_MAX_CASTERS)][2];
-			int n = 0;
-			for (int h = 0; h < nhide; h++) /* its box first, then its image */
-				n += segment_in_box(hide[h].box, p, q, &iv[n][0], &iv[n][1]) &&
-				     segment_in_image(&hide[h], p, q, &iv[n][0], &iv[n][1]);
-			for (int o = 0; o < nfeet; o++) /* its box first: most footprints lie apart */
-				n += o != c && segment_in_box(box[o], p, q, &iv[n][0], &iv[n][1]) &&
-				     lx_segment_inside(&feet[o], p, q, &iv[n][0], &iv[n][1]);
-			double len = uncovered(t0, t1, iv, n) * (row ? dx : dy);
-			if (len > 0.5)
-				ch->level[ch->levels++] = (struct level_edge){row, row ? (cp.y + cq.y) / 2 : (cp.x + cq.x) / 2, len};
-		}
-	}
 }
 
 /* A caster's clipped footprint (caster_reach), window coordinates: at most the hull of
  * its box's 8 corners' shadows cut by one plane. */
 struct reach {
 	enum foot kind;
-	unsigned cut;
 	int n;
 	vec2 v[LX_OUTLINE_POINTS];
 };
@@ -646,7 +458,7 @@ static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, cons
 			continue;
 		}
 		struct lx_poly fp;
-		reach[c].kind = caster_reach(f, i, ids[c], &fp, &reach[c].cut);
+		reach[c].kind = caster_reach(f, i, ids[c], &fp);
 		if (reach[c].kind == FOOT_POLYGON && fp.n > LX_OUTLINE_POINTS)
 			reach[c].kind = FOOT_OPEN; /* cannot happen: a box, cut once or not, has at most 13
 						    * corners, and the near plane's cut adds one */
@@ -727,7 +539,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 			const struct lx_method_options *o, struct lx_shadow_result *out, struct plane_chart *ch)
 {
 	bool twist = o->plane_twist || o->square_regions, similar = o->plane_similar;
-	ch->needs_fallback = false, ch->levels = 0;
+	ch->needs_fallback = false;
 	if (!chart_usable(f, ls, i, out, ch))
 		return false;
 	/* Wanted rays in this light image (window coordinates on the plane): the visible
@@ -753,21 +565,12 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	 * aspect (chart_stretch: from those that have one) */
 	ch->feet = 0;
 	double along_x = 0, along_y = 0;
-	struct lx_poly win = ch->win, feet[LX_MAX_PLANES + LX_MAX_CASTERS];
-	bool exact[LX_MAX_PLANES + LX_MAX_CASTERS];
-	unsigned cuts[LX_MAX_PLANES + LX_MAX_CASTERS];
-	int nfeet = 0;
-	bool levels = !o->plane_corner && ch->on_grid; /* level_edges */
+	struct lx_poly win = ch->win;
 	to_chart(ch, &win);
 	for (int c = 0; c < nc; c++) {
 		struct lx_poly one, on;
 		if (!whole[c]) {
-			bool foot = reach[c].kind == FOOT_POLYGON;
-			if (foot && levels && exact_outline(f, i, ids[c])) { /* for its level edges */
-				feet[nfeet] = reach_poly(&reach[c]);
-				cuts[nfeet] = reach[c].cut, exact[nfeet++] = true;
-			}
-			if (foot && bounded)
+			if (reach[c].kind == FOOT_POLYGON && bounded)
 				reach_foot(ch, &reach[c]);
 			continue;
 		}
@@ -775,12 +578,6 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
-		if (levels) {
-			exact[nfeet] = exact_outline(f, i, ids[c]);
-			cuts[nfeet] = 0;
-			feet[nfeet].n = one.n;
-			memcpy(feet[nfeet++].v, one.v, (size_t)one.n * sizeof(vec2));
-		}
 		if (bounded)
 			add_foot(ch, on);
 		if (similar)
@@ -793,10 +590,6 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	ch->along_x = along_x, ch->along_y = along_y;
 	if (bounded && ch->covered.n >= 3 && !feet_bound(ch))
 		return false; /* every shadow falls in the cover's: the test serves the plane */
-	if (levels) {
-		nfeet += plane_feet(f, i, ch, feet + nfeet, exact + nfeet, cuts + nfeet, LX_MAX_PLANES + LX_MAX_CASTERS - nfeet);
-		level_edges(f, i, feet, exact, cuts, nfeet, ch);
-	}
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
@@ -873,44 +666,6 @@ struct plane_fit {
 	int w, h;
 };
 
-/* Pixel centres (half-integers) in [lo, hi). */
-static double centres_in(double lo, double hi) { return fmax(0, ceil(hi - 0.5) - ceil(lo - 0.5)); }
-
-/* The pixels a grid of lixel boundaries at o + k h (h pixels apart) puts on the wrong side
- * of the level edges along the rows (row) or columns within [lo, hi], each weighed by its
- * edge's length: in the lixel holding an edge, those on the far side of it from the
- * lixel's centre. */
-static double phase_cost(const struct plane_chart *ch, bool row, double lo, double hi, double o, double h)
-{
-	double cost = 0;
-	for (int k = 0; k < ch->levels; k++) {
-		const struct level_edge *e = &ch->level[k];
-		if (e->row != row || e->at < lo || e->at > hi)
-			continue;
-		double b = o + floor((e->at - o) / h) * h, c = b + h / 2; /* h > 0 */
-		cost += e->len * (e->at < c ? centres_in(b, e->at) : centres_in(e->at, b + h));
-	}
-	return cost;
-}
-
-/* An unsnapped axis's origin: start, or moved back by less than a lixel (h pixels) so that
- * a lixel boundary falls on a level edge, whichever phase_cost counts least (start on a
- * tie). */
-static double level_phase(const struct plane_chart *ch, bool row, double lo, double hi, double start, double h)
-{
-	double best = start, least = phase_cost(ch, row, lo, hi, start, h);
-	for (int k = 0; k < ch->levels && least > 0; k++) {
-		const struct level_edge *e = &ch->level[k];
-		if (e->row != row || e->at < lo || e->at > hi)
-			continue;
-		double o = start - fmod(fmod(start - e->at, h) + h, h); /* in (start - h, start] */
-		double cost = phase_cost(ch, row, lo, hi, o, h);
-		if (cost < least)
-			least = cost, best = o;
-	}
-	return best;
-}
-
 /* fit_plane below a whole-number scale: scale s, stretched by a, shrunk until the pieces
  * hold no more than the budget and fit within the texture's side. */
 static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *pc, long budget, int side, double s,
@@ -946,8 +701,7 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 		int worst = 0;
 		double sx = cols ? 1 : rows ? s * s : s / a, sy = rows ? 1 : cols ? s * s : s * a;
 		for (int p = 0; p < pc->n; p++) {
-			double x0 = cols ? floor(pc->r[p][0]) : level_phase(ch, false, pc->r[p][0], pc->r[p][2], pc->r[p][0], 1 / sx);
-			double y0 = rows ? floor(pc->r[p][1]) : level_phase(ch, true, pc->r[p][1], pc->r[p][3], pc->r[p][1], 1 / sy);
+			double x0 = cols ? floor(pc->r[p][0]) : pc->r[p][0], y0 = rows ? floor(pc->r[p][1]) : pc->r[p][1];
 			double uw = sx * (pc->r[p][2] - x0), vh = sy * (pc->r[p][3] - y0);
 			int w = (int)ceil(uw), h = (int)ceil(vh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;

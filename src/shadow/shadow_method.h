@@ -62,8 +62,6 @@ struct lx_method_options {
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
 	bool plane_similar;   /* plane maps: square lixels (an exact similarity) even short of a
 			       * lixel per pixel, never stretched along a plane's shadow edges */
-	bool plane_corner;    /* plane maps: short of a lixel per pixel, lixels counted from the
-			       * wanted rectangle's corner, not moved onto the level shadow edges in view */
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
