@@ -1024,14 +1024,31 @@ struct pair_sweep {
 	void (*frame)(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
 		      long differ);
 	void *ctx;
+	bool thick; /* also the table with a thick top (thick_table) */
 };
+
+/* The table with a block for a top, 25 cm thick: no flat box, so its shadow is the maps'
+ * (the slab's pair of fronts decides the built-in table's exactly, and it is in no map),
+ * and the legs meet the block under it. */
+static void thick_table(struct lx_scene *s)
+{
+	lx_scene_table(s);
+	assert_true(s->casters[0].shape == LX_BOX && s->casters[1].shape == LX_BOX);
+	double bottom = 0.749 - 0.25;
+	s->casters[0].size.y = 0.25, s->casters[0].low = s->casters[0].high = bottom;
+	for (int c = 1; c <= 4; c++)
+		s->casters[c].size.y = bottom;
+}
 
 static void sweep_pairs(struct decisions *dc, const struct pair_sweep *p, long *shadowed)
 {
 	char err[512];
-	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++) {
+	for (const char *const *sn = (const char *const[]){"default", "table", p->thick ? "thick" : NULL, NULL}; *sn; sn++) {
 		struct lx_scene base;
-		assert_true(lx_scene_builtin(*sn, &base));
+		if (!strcmp(*sn, "thick"))
+			thick_table(&base);
+		else
+			assert_true(lx_scene_builtin(*sn, &base));
 		struct lx_scene_meshes meshes = {0};
 		assert_true(lx_meshes_build(&base, &meshes));
 		char list[128];
@@ -1094,7 +1111,7 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
 		struct lx_mismatch mm;
 		lx_mismatch_compare(s->ref_obj, s->ref_sh, dc->obj[k], dc->sh[k], n, &mm);
 		s->wrong[k] += mm.false_shadow + mm.missing_shadow;
-		if (!strcmp(scene, "table") && !strcmp(method, "plane") && !strcmp(config, "directional"))
+		if (!strcmp(scene, "thick") && !strcmp(method, "plane") && !strcmp(config, "directional"))
 			s->on_plane_map[k] = mm.false_shadow + mm.missing_shadow;
 	}
 }
@@ -1102,10 +1119,12 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
 /* --caster-depth face (the default) against point: a caster's face compared along its
  * plane at the centre of the lixel read, moved only towards the light, can only light a
  * pixel the pixel's own depth shadowed, and only on a caster (a plane is compared as
- * before); over every method and standard configuration of both built-in scenes it
- * decides fewer pixels otherwise than the exact reference does, so too on the table under
- * a directional light with plane-optimal maps, where the ball and the cone read the
- * table's map. */
+ * before); over every method and standard configuration of both built-in scenes and of
+ * the table with a thick top it decides fewer pixels otherwise than the exact reference
+ * does, so too on that table under a directional light with plane-optimal maps, where the
+ * ball and the cone read the table's map. (On the built-in table, whose slab is in no map
+ * since its pair of fronts decides its shadow, the two decide alike: the legs' tops no
+ * longer read a map under it.) */
 static void caster_faces_compare_along_their_planes(void **state)
 {
 	(void)state;
@@ -1115,9 +1134,9 @@ static void caster_faces_compare_along_their_planes(void **state)
 			       .ref_obj = malloc((size_t)w * h * sizeof(int16_t))};
 	assert_true(s.ref_sh && s.ref_obj);
 	long shadowed = 0;
-	sweep_pairs(&dc, &(struct pair_sweep){w, h, face_setup, face_frame, &s}, &shadowed);
+	sweep_pairs(&dc, &(struct pair_sweep){w, h, face_setup, face_frame, &s, true}, &shadowed);
 	print_message("face against point: %ld casters' pixels lit that point shadowed; %ld against %ld pixels decided "
-		      "otherwise than the exact reference; the table under a directional light, plane: %ld against %ld\n",
+		      "otherwise than the exact reference; the thick table under a directional light, plane: %ld against %ld\n",
 		      s.lit, s.wrong[0], s.wrong[1], s.on_plane_map[0], s.on_plane_map[1]);
 	assert_true(s.lit > 0);
 	assert_true(s.wrong[0] < s.wrong[1]);
@@ -1155,7 +1174,7 @@ static void eight_varyings_decide_alike(void **state)
 	small.max_varying_vectors = 8;
 	assert_true(dc.caps.max_varying_vectors > 10); /* llvmpipe's 32: the full set here */
 	long shadowed = 0;
-	sweep_pairs(&dc, &(struct pair_sweep){w, h, eight_setup, eight_frame, &small}, &shadowed);
+	sweep_pairs(&dc, &(struct pair_sweep){w, h, eight_setup, eight_frame, &small, false}, &shadowed);
 	print_message("every method and configuration with 8 varyings: the same decisions (%ld shadowed pixels)\n",
 		      shadowed);
 	assert_true(shadowed > 10000);

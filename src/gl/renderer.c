@@ -733,6 +733,18 @@ static bool in_front(const vec4 *pl, const vec4 *front)
 	return fabs(fabs(c) - 1) < 1e-9 && fabs(pl->w / nn - (c > 0 ? front->w : -front->w)) < 1e-5;
 }
 
+/* The flat boxes in no map (lx_slab_faces_left_out, unless a draw cannot test their
+ * pair) cast nothing a lookup could read: their shadow is the fronts' tests' alone. */
+static void leave_out_unmapped(struct lx_renderer *r, const struct lx_frame *f, const struct lx_plane_covers *cv)
+{
+	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
+	lx_slab_faces_left_out_of(f, cv, front, has, whole);
+	for (int id = 0; id < r->objects && !r->covers_short; id++)
+		if (whole[id])
+			lx_lookup_leave_out(&r->lookup, id);
+}
+
 /* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
  * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
  * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
@@ -1334,6 +1346,7 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 		for (int p = 0; p < r->covers.count; p++)
 			if (r->covers.lit[p])
 				to_float(&r->covers.m[p], r->cover[p]);
+		leave_out_unmapped(r, f, &r->covers);
 	} else /* without maps (method none) nothing is shadowed, by planes neither */
 		for (int id = 0; id < r->objects; id++)
 			for (int c = 0; c < LX_MAX_COVERS; c++)

@@ -308,6 +308,12 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 	}
 }
 
+void lx_lookup_leave_out(struct lx_lookup_volumes *v, int id)
+{
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
+		v->count[m][id] = -1;
+}
+
 /* Whether receiver object id may meet a volume: false only when one of its half-spaces
  * leaves every corner of the receiver's box (a plane's quad) outside, so all of it. A few
  * dot products: the test before receiver_in_volume's clipping, which costs a hundred
