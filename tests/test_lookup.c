@@ -661,6 +661,93 @@ static void two_fronts_over_an_object_are_both_tested(void **state)
 	lx_meshes_free(&s.meshes);
 }
 
+/* Whether the light's ray from x passes through box [lo, hi] (the slab method, in
+ * double); *near where it only grazes it, within a billionth. */
+static bool ray_hits_box(const struct lx_frame *f, vec3 lo, vec3 hi, vec3 x, bool *near)
+{
+	const struct lx_light *L = &f->light;
+	vec3 to = L->directional ? v3_scale(L->direction, -1) : v3_sub(L->position, x);
+	double o[3] = {x.x, x.y, x.z}, d[3] = {to.x, to.y, to.z}, b0[3] = {lo.x, lo.y, lo.z}, b1[3] = {hi.x, hi.y, hi.z};
+	double t0 = 0, t1 = L->directional ? 1e9 : 1;
+	*near = false;
+	for (int a = 0; a < 3; a++) {
+		if (d[a] == 0) {
+			*near |= fabs(o[a] - b0[a]) < 1e-9 || fabs(o[a] - b1[a]) < 1e-9;
+			if (o[a] < b0[a] || o[a] > b1[a])
+				return false;
+			continue;
+		}
+		double u = (b0[a] - o[a]) / d[a], w = (b1[a] - o[a]) / d[a]; /* d[a] != 0 */
+		t0 = fmax(t0, fmin(u, w)), t1 = fmin(t1, fmax(u, w));
+	}
+	*near |= fabs(t1 - t0) < 1e-9;
+	return t1 > t0;
+}
+
+/* A flat box's pair of fronts (plane_cover.h): over an object that tests both, a point is
+ * in their shadow exactly where the light's ray passes through the box or crosses the
+ * plane on its top. The table's slab and its top, for the floor and the legs, under every
+ * standard configuration's light and three more (low, level with the top, and a grazing
+ * directional light); some of those rays pass through the slab's thin sides only, which
+ * neither face's test alone shadows. */
+static void a_flat_box_pair_is_its_box(void **state)
+{
+	(void)state;
+	uint64_t seed = 0x51abull;
+	long shadowed = 0, sides = 0, points = 0;
+	const vec3 extra[3] = {{3.5, 0.9, 1.0}, {-2.5, 0.8, -1.5}, {0, 0, 0}};
+	for (int c = 0; c < lx_config_count + 3; c++) {
+		struct setup s;
+		lx_scene_table(&s.scene);
+		if (c < lx_config_count)
+			lx_config_apply(&lx_configs[c], &s.scene);
+		else if (c < lx_config_count + 2)
+			s.scene.light.position = extra[c - lx_config_count];
+		else
+			s.scene.light.directional = true, s.scene.light.direction = v3(-0.8, -0.15, -0.3);
+		assert_true(build(&s, "none", W, H, 0));
+		const struct lx_frame *f = &s.frame;
+		struct lx_plane_covers cov;
+		lx_plane_covers(f, &cov);
+		int np = f->scene->plane_count, slab = np;
+		for (int id = 1; id <= np + 4; id++) { /* the floor, then the slab (skipped) and the legs */
+			if (id == slab || !cov.paired[id])
+				continue;
+			int top = cov.of[id][0], bottom = cov.of[id][1];
+			assert_true(cov.top[bottom] == top && cov.owner[bottom] == slab && top == 0); /* the table top */
+			for (int k = 0; k < 2000; k++) {
+				vec3 lo = f->bmin[id], hi = f->bmax[id], x;
+				if (id == 1 && k % 2) { /* the floor around a slab corner's shadow: where the sides' rays fall */
+					vec3 cn = v3_box_corner(f->bmin[slab], f->bmax[slab], k / 2 % 8), L = f->light.position,
+					     d = f->light.direction;
+					vec3 sh = f->light.directional ? v3_sub(cn, v3_scale(d, cn.y / d.y)) /* d.y < 0 here */
+								       : v3_add(L, v3_scale(v3_sub(cn, L), L.y / (L.y - cn.y)));
+					x = v3(sh.x - 0.05 + 0.1 * test_rand(&seed), 0, sh.z - 0.05 + 0.1 * test_rand(&seed));
+				} else if (id == 1) /* the floor under and around the table */
+					x = v3(-3 + 6 * test_rand(&seed), 0, -3 + 6 * test_rand(&seed));
+				else
+					x = v3(lo.x + (hi.x - lo.x) * test_rand(&seed), lo.y + (hi.y - lo.y) * test_rand(&seed),
+					       lo.z + (hi.z - lo.z) * test_rand(&seed));
+				bool n1, n2;
+				bool box = ray_hits_box(f, f->bmin[slab], f->bmax[slab], x, &n1),
+				     plane = ray_crosses_front(f, &cov, top, x, &n2);
+				if (n1 || n2)
+					continue;
+				bool want = box || plane, got = lx_plane_covers_shadow(&cov, id, x);
+				if (got != want)
+					fail_msg("configuration %d, object %d, point (%g, %g, %g): the tests say %d, the box %d, the top %d",
+						 c, id, x.x, x.y, x.z, got, box, plane);
+				points++, shadowed += want;
+				sides += want && !lx_plane_cover_shadows(&cov.m[top], x) && !lx_plane_cover_shadows(&cov.m[bottom], x);
+			}
+		}
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("the table's pair: %ld points, %ld in the slab's or the top's shadow, %ld of them by rays through "
+		      "the slab's thin sides alone\n", points, shadowed, sides);
+	assert_true(shadowed > 1000 && sides > 10);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -671,6 +758,7 @@ int main(void)
 		cmocka_unit_test(casters_left_out_only_where_unread),
 		cmocka_unit_test(lit_plane_fronts_shadow_what_lies_beyond),
 		cmocka_unit_test(two_fronts_over_an_object_are_both_tested),
+		cmocka_unit_test(a_flat_box_pair_is_its_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
