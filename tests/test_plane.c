@@ -652,10 +652,11 @@ static void fallback_serves_only_what_needs_it(void **state)
  * then the pair's top: no plane lies under it); and none where a third front over one
  * object leaves the slab's out of some object's tests (a third shelf over
  * two-shelves.scene: the floor tests two fronts only). */
-static void faces_left_out(struct setup *s, vec4 *front, bool *has, bool *whole)
+static void faces_left_out(struct setup *s, vec4 *front, bool *has, bool *whole, struct lx_plane_covers *cv)
 {
 	assert_true(build(s, "none", 320, 240, 0));
 	lx_slab_faces_left_out(&s->frame, front, has, whole);
+	lx_plane_covers(&s->frame, cv);
 }
 
 static void slab_underside_left_out_of_maps(void **state)
@@ -669,7 +670,8 @@ static void slab_underside_left_out_of_maps(void **state)
 			s.scene.light.position = v3(2.0, 0.5, 2.5);
 		vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
 		bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-		faces_left_out(&s, front, has, whole);
+		struct lx_plane_covers cv;
+		faces_left_out(&s, front, has, whole, &cv);
 		int slab = s.scene.plane_count;
 		for (int id = 0; id < s.frame.object_count; id++) {
 			assert_int_equal(has[id], id == slab);
@@ -684,23 +686,32 @@ static void slab_underside_left_out_of_maps(void **state)
 		assert_near(front[slab].y * y + front[slab].w, 0, 1e-9);
 		/* the pair: above, the table top's plane (front 0) lies on the slab; below, the
 		 * slab's own underside, a front after the bottoms */
-		struct lx_plane_covers cv;
-		lx_plane_covers(&s.frame, &cv);
 		assert_int_equal(cv.slabs, 1);
 		assert_int_equal(cv.count, s.scene.plane_count + 1 + below);
 		assert_int_equal(cv.top[slab], below ? s.scene.plane_count + 1 : 0);
 		lx_meshes_free(&s.meshes);
 	}
+	/* the low light (x = 6 m, 1.6 m up): the two legs on its side see it through the
+	 * slab's bottom and thin side only, not its top, yet test the pair (their rays may
+	 * pass through the box), so the slab still leaves the maps */
 	struct setup s;
+	memset(&s, 0, sizeof s);
+	lx_scene_table(&s.scene);
+	lx_config_apply(lx_config_find("low"), &s.scene);
+	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
+	struct lx_plane_covers cv;
+	faces_left_out(&s, front, has, whole, &cv);
+	int np = s.scene.plane_count;
+	for (int leg = np + 1; leg <= np + 4; leg++)
+		assert_true(cv.paired[leg] && cv.of[leg][0] == 0 && cv.of[leg][1] == np);
+	assert_true(whole[np]);
+	lx_meshes_free(&s.meshes);
 	memset(&s, 0, sizeof s);
 	test_scene_load("two-shelves.scene", &s.scene);
 	s.scene.casters[s.scene.caster_count++] = (struct lx_caster){.shape = LX_BOX, .size = v3(1.6, 0.04, 1.0),
 		.x = 0, .z = -0.1, .low = 1.9, .high = 1.9, .period = 1, .color = v3(0.5, 0.5, 0.5)};
-	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
-	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-	faces_left_out(&s, front, has, whole);
-	struct lx_plane_covers cv;
-	lx_plane_covers(&s.frame, &cv);
+	faces_left_out(&s, front, has, whole, &cv);
 	/* the board above the shelves has a bottom front, and a top one (no plane lies on it) */
 	int bottom = s.scene.plane_count;
 	assert_int_equal(cv.slabs, 1);

@@ -78,11 +78,12 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
 	return true;
 }
 
-/* Whether the part of box [lo, hi] where h.w > LX_COVER_TOUCH has rays crossing inside the
- * parallelogram's bounds: that part is the box cut by the plane, whose corners are the
- * box's corners beyond it and its edges' crossings; the light's projection of it, the
- * hull of theirs (h.z >= 1 there, or 1 for a directional light). */
-static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
+/* Whether the part of box [lo, hi] where h.w > LX_COVER_TOUCH has rays crossing the
+ * plane inside r (u0, v0, u1, v1 in the parallelogram's coordinates): that part is the box
+ * cut by the plane, whose corners are the box's corners beyond it and its edges'
+ * crossings; the light's projection of it, the hull of theirs (h.z >= 1 there, or 1 for a
+ * directional light). */
+static bool beyond_meets_in(const mat4 *m, vec3 lo, vec3 hi, const double r[4])
 {
 	vec4 h[8];
 	for (int k = 0; k < 8; k++) {
@@ -107,7 +108,14 @@ static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
 			u0 = fmin(u0, x.x / x.z), u1 = fmax(u1, x.x / x.z);
 			v0 = fmin(v0, x.y / x.z), v1 = fmax(v1, x.y / x.z);
 		}
-	return u0 <= 1 && u1 >= 0 && v0 <= 1 && v1 >= 0;
+	return u0 <= r[2] && u1 >= r[0] && v0 <= r[3] && v1 >= r[1];
+}
+
+/* beyond_meets_in the parallelogram's own bounds. */
+static bool beyond_meets(const mat4 *m, vec3 lo, vec3 hi)
+{
+	static const double unit[4] = {0, 0, 1, 1};
+	return beyond_meets_in(m, lo, hi, unit);
 }
 
 bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
@@ -116,14 +124,42 @@ bool lx_plane_cover_shadows(const mat4 *m, vec3 x)
 	return h.w > 0 && h.x >= 0 && h.y >= 0 && h.x <= h.z && h.y <= h.z;
 }
 
+static bool listed(const int *of, int n, int p)
+{
+	for (int k = 0; k < n; k++)
+		if (of[k] == p)
+			return true;
+	return false;
+}
+
+/* Whether some of box [lo, hi] lies below flat box bottom p's top with rays that may pass
+ * through the box: crossing the top's plane within the box's outline there (the top, and
+ * the bottom's shadow on that plane: rays in and out by the thin sides included). */
+static bool meets_box(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
+{
+	return c->top[p] >= 0 && beyond_meets_in(&c->m[c->top[p]], lo, hi, c->outline[p]);
+}
+
 /* Object id's of[]: the lit fronts whose shadow may fall on its box, in the fronts'
- * order, LX_MAX_COVERS at most; never its own. And whether they pair. */
+ * order, LX_MAX_COVERS at most; never its own. A flat box's bottom whose box the object's
+ * rays may pass through comes with its top, where there is room for both (the pair
+ * decides every such ray; the bottom alone, only those that cross it). And whether they
+ * pair. */
 static void object_covers(const struct lx_frame *f, const struct lx_plane_covers *c, int id, int *of, bool *paired)
 {
 	int n = 0;
-	for (int p = 0; p < c->count && n < LX_MAX_COVERS; p++)
-		if (c->owner[p] != id && c->lit[p] && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+	vec3 lo = f->bmin[id], hi = f->bmax[id];
+	for (int p = 0; p < c->count && n < LX_MAX_COVERS; p++) {
+		if (c->owner[p] == id || !c->lit[p] || listed(of, n, p))
+			continue;
+		int t = c->top[p];
+		if (t >= 0 && c->owner[t] != id && (listed(of, n, t) || n + 2 <= LX_MAX_COVERS) && meets_box(c, p, lo, hi)) {
+			if (!listed(of, n, t))
+				of[n++] = t;
 			of[n++] = p;
+		} else if (beyond_meets(&c->m[p], lo, hi))
+			of[n++] = p;
+	}
 	for (int k = n; k < LX_MAX_COVERS; k++)
 		of[k] = -1;
 	*paired = n == 2 && (c->top[of[1]] == of[0] || c->top[of[0]] == of[1]);
@@ -174,6 +210,25 @@ static int plane_on_top(const struct lx_plane_covers *cv, int np, vec3 *c, vec3 
 	return -1;
 }
 
+/* Bottom p's box as the light sees it on its top's plane, in the top's coordinates: the
+ * bounds of the top (the unit square) and of the bottom's corners' shadows there (they lie
+ * beyond the top: h.z >= 1). No pair where they cannot be found. */
+static void box_outline(struct lx_plane_covers *c, int p)
+{
+	int t = c->top[p];
+	double *r = c->outline[p];
+	r[0] = r[1] = 0, r[2] = r[3] = 1;
+	for (int k = 0; t >= 0 && k < 4; k++) {
+		vec4 h = m4_mul_point(&c->m[t], c->corner[p][k]);
+		if (!(h.z > 0) || !(h.w > 0)) {
+			c->top[p] = -1;
+			return;
+		}
+		r[0] = fmin(r[0], h.x / h.z), r[1] = fmin(r[1], h.y / h.z); /* h.z > 0 */
+		r[2] = fmax(r[2], h.x / h.z), r[3] = fmax(r[3], h.y / h.z);
+	}
+}
+
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 {
 	int np = f->scene->plane_count;
@@ -204,6 +259,8 @@ void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 			  v3_sub(pc[3], pc[0]));
 		out->top[p] = out->lit[q] ? q : -1;
 	}
+	for (int p = np; p < np + out->slabs; p++) /* each pair's outline on its top's plane */
+		box_outline(out, p);
 	for (int id = 0; id < f->object_count; id++)
 		object_covers(f, out, id, out->of[id], &out->paired[id]);
 }
@@ -274,8 +331,10 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 	return true;
 }
 
-/* Whether every object whose box reaches below bottom front p's top (with rays crossing
- * the top's bounds) tests the pair, and has no corner between the two faces' planes,
+/* Whether every object whose box reaches below bottom front p's top, with rays that can
+ * pass through the box (crossing the top's plane within the bounds of the top and of the
+ * bottom's shadow on that plane: the box's outline from the light, rays through its thin
+ * sides included), tests the pair, and has no corner between the two faces' planes,
  * where the bottom's test is off. */
 static bool pair_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
 {
@@ -283,7 +342,7 @@ static bool pair_complete(const struct lx_frame *f, const struct lx_plane_covers
 	if (t < 0 || !c->lit[p] || !c->lit[t])
 		return false;
 	for (int id = 0; id < f->object_count; id++) {
-		if (id == c->owner[p] || id == c->owner[t] || !beyond_meets(&c->m[t], f->bmin[id], f->bmax[id]))
+		if (id == c->owner[p] || id == c->owner[t] || !meets_box(c, p, f->bmin[id], f->bmax[id]))
 			continue;
 		if (!c->paired[id] || (c->of[id][0] != p && c->of[id][1] != p))
 			return false;

@@ -60,10 +60,13 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
 /* A frame's covers: its fronts, the planes' (front p is plane p), then the flat boxes'
  * bottoms, then the tops of those with no plane lying on them; each one's owner, corners
  * and matrix where it is lit (lx_plane_cover_matrix); for a bottom, the front on its
- * top's side (top, else -1): fronts [plane count, plane count + slabs) are the bottoms. For each object, the fronts that may shadow it (some of its
- * box lies beyond one from the light, and the light's rays to that part cross the
- * parallelogram's bounds; never its own): of[id][0], of[id][1], ... in the fronts' order,
- * -1 after the last; paired[id] where those two are one flat box's bottom and top. */
+ * top's side (top, else -1) and the box's outline on that front's plane; fronts
+ * [plane count, plane count + slabs) are the bottoms. For each object, the fronts that
+ * may shadow it (some of its box lies beyond one from the light, and the light's rays to
+ * that part cross the parallelogram's bounds; never its own): of[id][0], of[id][1], ...
+ * in the fronts' order, -1 after the last; an object whose rays may pass through a flat
+ * box gets its bottom and top both where there is room; paired[id] where those two are
+ * one flat box's bottom and top. */
 struct lx_plane_covers {
 	int count, slabs;
 	int owner[LX_MAX_FRONTS];
@@ -71,6 +74,7 @@ struct lx_plane_covers {
 	vec3 corner[LX_MAX_FRONTS][4];
 	bool lit[LX_MAX_FRONTS];
 	mat4 m[LX_MAX_FRONTS];
+	double outline[LX_MAX_FRONTS][4]; /* a bottom's box on its top's plane, the top's coordinates' bounds */
 	int of[LX_MAX_PLANES + LX_MAX_CASTERS][LX_MAX_COVERS];
 	bool paired[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
