@@ -655,8 +655,10 @@ static void fallback_serves_only_what_needs_it(void **state)
 static void faces_left_out(struct setup *s, vec4 *front, bool *has, bool *whole, struct lx_plane_covers *cv)
 {
 	assert_true(build(s, "none", 320, 240, 0));
-	lx_slab_faces_left_out(&s->frame, front, has, whole);
 	lx_plane_covers(&s->frame, cv);
+	lx_slab_faces_left_out(&s->frame, cv, front, has, whole);
+	for (int id = 0; id < s->frame.object_count; id++) /* what lx_shadow_method_frame keeps */
+		assert_true(s->res.slab_out[id] == whole[id] && s->res.slab_face_out[id] == has[id]);
 }
 
 static void slab_underside_left_out_of_maps(void **state)

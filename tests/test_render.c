@@ -499,18 +499,27 @@ static void plane_matches_reference_and_wins(void **state)
  * through the 1 mm gap under it, which the top hides from the light (the exact reference
  * shadows it). The cover test (plane_cover.h) shadows it in every method: no pixel of the
  * slab the reference shadows is lit, where without the test a row of about 580 was. */
-/* Of the pixels showing objects lo..hi in the exact reference's shadow (the same object
- * in the render), how many the render lit; *shadowed counts them all. */
+/* Of the pixels showing objects lo..hi (the same object in the render) that the exact
+ * reference has shadowed (in_shadow) or lit, how many the render decided otherwise;
+ * *count counts them all. */
+static long against_reference(const struct lx_render_report *r, int lo, int hi, bool in_shadow, long *count)
+{
+	long wrong = 0, n = (long)r->width * r->height;
+	*count = 0;
+	for (long i = 0; i < n; i++)
+		if (r->ref_object[i] >= lo && r->ref_object[i] <= hi && r->object[i] == r->ref_object[i] &&
+		    !r->ref_shadow[i] == !in_shadow) {
+			(*count)++;
+			wrong += !r->shadow[i] != !r->ref_shadow[i];
+		}
+	return wrong;
+}
+
+/* Of the pixels showing objects lo..hi in the exact reference's shadow, how many the
+ * render lit; *shadowed counts them all. */
 static long lit_in_reference_shadow(const struct lx_render_report *r, int lo, int hi, long *shadowed)
 {
-	long lit = 0, n = (long)r->width * r->height;
-	*shadowed = 0;
-	for (long i = 0; i < n; i++)
-		if (r->ref_object[i] >= lo && r->ref_object[i] <= hi && r->object[i] == r->ref_object[i] && r->ref_shadow[i]) {
-			(*shadowed)++;
-			lit += !r->shadow[i];
-		}
-	return lit;
+	return against_reference(r, lo, hi, true, shadowed);
 }
 
 static void a_lit_plane_front_shadows_what_lies_under_it(void **state)
@@ -529,19 +538,6 @@ static void a_lit_plane_front_shadows_what_lies_under_it(void **state)
 		assert_int_equal(lit, 0);
 		lx_render_report_free(&r);
 	}
-}
-
-/* Pixels of objects [lo, hi] the exact reference has lit, drawn in shadow. */
-static long shadowed_in_reference_light(const struct lx_render_report *r, int lo, int hi, long *lit)
-{
-	long wrong = 0, n = (long)r->width * r->height;
-	*lit = 0;
-	for (long i = 0; i < n; i++)
-		if (r->ref_object[i] >= lo && r->ref_object[i] <= hi && r->object[i] == r->ref_object[i] && !r->ref_shadow[i]) {
-			(*lit)++;
-			wrong += r->shadow[i];
-		}
-	return wrong;
 }
 
 /* A flat box's pair of fronts (plane_cover.h) decides its whole shadow, and the slab is in
@@ -585,7 +581,7 @@ static void a_flat_box_pair_decides_its_shadow(void **state)
 			struct lx_render_report r;
 			run_sized(methods[k], &s, 512, 512, &r);
 			long shadowed, lit, missing = lit_in_reference_shadow(&r, 1, 1, &shadowed),
-					    false_shadow = shadowed_in_reference_light(&r, 1, 1, &lit);
+					    false_shadow = against_reference(&r, 1, 1, false, &lit);
 			print_message("the slab alone, %-11s 512x512, %-7s floor: %ld of %ld shadowed pixels lit, %ld of %ld lit "
 				      "ones shadowed\n", configs[c], methods[k], missing, shadowed, false_shadow, lit);
 			assert_true(shadowed > 100);

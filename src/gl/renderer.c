@@ -265,7 +265,7 @@ static void face_plane_fits(const struct lx_renderer *r)
  * second's test for a draw reading every map in some light's pass: one line saying so;
  * those draws test the first front only (lx_main_covers), and the second's shadow on
  * them is lost where it falls outside the first's, and the maps keep the flat boxes' faces
- * that the fronts' tests would otherwise decide (lx_slab_faces_left_out). */
+ * that the fronts' tests would otherwise decide (lx_method_options.keep_flat_boxes). */
 static void covers_fit(struct lx_renderer *r)
 {
 	r->covers_short = false;
@@ -723,7 +723,7 @@ static void begin_atlas_frame(struct lx_renderer *r, const struct lx_frame *cons
 
 /* Whether a triangle's plane (object space, homogeneous, any scale) is `front`'s (unit
  * normal, offset): a flat box's face that its front's test decides
- * (lx_slab_faces_left_out). */
+ * (lx_shadow_result.slab_front). */
 static bool in_front(const vec4 *pl, const vec4 *front)
 {
 	double nn = sqrt(pl->x * pl->x + pl->y * pl->y + pl->z * pl->z);
@@ -731,18 +731,6 @@ static bool in_front(const vec4 *pl, const vec4 *front)
 		return false; /* a triangle of no area, never kept anyway */
 	double c = (pl->x * front->x + pl->y * front->y + pl->z * front->z) / nn;
 	return fabs(fabs(c) - 1) < 1e-9 && fabs(pl->w / nn - (c > 0 ? front->w : -front->w)) < 1e-5;
-}
-
-/* The flat boxes in no map (lx_slab_faces_left_out, unless a draw cannot test their
- * pair) cast nothing a lookup could read: their shadow is the fronts' tests' alone. */
-static void leave_out_unmapped(struct lx_renderer *r, const struct lx_frame *f, const struct lx_plane_covers *cv)
-{
-	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
-	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-	lx_slab_faces_left_out_of(f, cv, front, has, whole);
-	for (int id = 0; id < r->objects && !r->covers_short; id++)
-		if (whole[id])
-			lx_lookup_leave_out(&r->lookup, id);
 }
 
 /* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
@@ -773,7 +761,9 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 }
 
 /* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
- * lookup can read, lx_lookup_caster_maps) and the triangles each keeps, uploaded at once. */
+ * lookup can read, lx_lookup_caster_maps; none for a flat box in no map) and the
+ * triangles each keeps (a flat box's face its front decides left out, res->slab_front),
+ * uploaded at once. */
 static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
 			 int n, unsigned drawn[][LX_MAX_PLANES + LX_MAX_CASTERS])
 {
@@ -782,16 +772,12 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
 		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
-		vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
-		bool has[LX_MAX_PLANES + LX_MAX_CASTERS], whole[LX_MAX_PLANES + LX_MAX_CASTERS];
-		lx_slab_faces_left_out(f[i], front, has, whole);
 		for (int id = 0; id < r->objects; id++) {
-			has[id] &= !r->covers_short, whole[id] &= has[id];
-			/* a flat box whose fronts' tests decide its whole shadow casts nothing here */
-			drawn[i][id] = whole[id] ? 0 : lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
-					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id, has[id] ? &front[id] : NULL);
+					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
+							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL);
 		}
 	}
 	/* left bound for the draws (nothing else of the pass binds an index buffer) */
@@ -1342,11 +1328,10 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	lx_frame_draw_order(f, order);
 	if (r->d.map_count > 0) {
-		lx_plane_covers(f, &r->covers);
+		r->covers = res->covers; /* the method's (lx_shadow_method_frame) */
 		for (int p = 0; p < r->covers.count; p++)
 			if (r->covers.lit[p])
 				to_float(&r->covers.m[p], r->cover[p]);
-		leave_out_unmapped(r, f, &r->covers);
 	} else /* without maps (method none) nothing is shadowed, by planes neither */
 		for (int id = 0; id < r->objects; id++)
 			for (int c = 0; c < LX_MAX_COVERS; c++)

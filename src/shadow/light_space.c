@@ -319,8 +319,7 @@ bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, d
 bool lx_uniform_map(const struct lx_frame *f, struct lx_light_space *ls, struct lx_shadow_result *out,
 		    const char *prefix, struct lx_uniform_fit *fit)
 {
-	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
-	struct lx_shadow_map *map = &out->maps[0];
+	struct lx_shadow_map *map = &out->maps[0]; /* the rest of out cleared by lx_shadow_method_frame */
 	out->map_count = 1;
 	*map = (struct lx_shadow_map){.region = 0, .rendered = false, .light_clip = m4_identity()};
 	lx_shadow_map_full(map);

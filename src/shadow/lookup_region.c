@@ -301,17 +301,12 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
 		v->margin[m][1] = margin_lixels * 2.0 / (g->h > 1 ? g->h : 1);
 		for (int c = 0; c < f->object_count; c++) {
 			int *np = &v->count[m][c];
-			*np = map->rendered ? caster_volume(f, map, c, v->margin[m], v->plane[m][c]) : -1;
+			/* a flat box in no map (its fronts' tests decide its shadow) casts nowhere */
+			*np = map->rendered && !res->slab_out[c] ? caster_volume(f, map, c, v->margin[m], v->plane[m][c]) : -1;
 			if (*np >= 0 && !add_plane(v->plane[m][c], np, near))
 				*np = -1;
 		}
 	}
-}
-
-void lx_lookup_leave_out(struct lx_lookup_volumes *v, int id)
-{
-	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++)
-		v->count[m][id] = -1;
 }
 
 /* Whether receiver object id may meet a volume: false only when one of its half-spaces

@@ -66,13 +66,10 @@ struct lx_lookup_volumes {
 };
 
 /* The volumes of a frame's rendered maps, each caster's image grown by margin_lixels
- * (LX_LOOKUP_MARGIN_*). frame and res must outlive v's use. */
+ * (LX_LOOKUP_MARGIN_*); none for a flat box in no map (res->slab_out), whose fronts'
+ * tests alone decide its shadow. frame and res must outlive v's use. */
 void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       double margin_lixels, struct lx_lookup_volumes *v);
-
-/* Object id casts into no map (a flat box whose fronts' tests decide its whole shadow,
- * lx_slab_faces_left_out): no lookup is drawn for its shadow. */
-void lx_lookup_leave_out(struct lx_lookup_volumes *v, int id);
 
 /* `within` cut into spans: with a lookup where one of the maps in `mask` could shadow a
  * pixel of receiver object `receiver`, without elsewhere. Per band of LX_LOOKUP_BAND rows,

@@ -133,7 +133,7 @@ struct plane_chart {
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
 	const bool *unmapped;   /* per object: no face of it in the maps, the fronts' tests decide
-				 * its whole shadow (lx_slab_faces_left_out) */
+				 * its whole shadow (lx_shadow_result.slab_out) */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
 	double foot[LX_MAX_PLANES + LX_MAX_CASTERS][4];
 	double along_x, along_y; /* the footprint outlines' extents (chart_stretch); 0 for square lixels */
@@ -1209,7 +1209,6 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
-	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
 	int np = f->scene->plane_count < PLANE_MAPS ? f->scene->plane_count : PLANE_MAPS;
 	out->map_count = atlas->count;
 	for (int i = 0; i < atlas->count; i++) {
@@ -1227,19 +1226,12 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	struct plane_pieces pc[PLANE_MAPS];
 	mat4 depth[PLANE_MAPS];
 	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
-	struct lx_plane_covers covers;
-	lx_plane_covers(f, &covers);
-	vec4 front[LX_MAX_PLANES + LX_MAX_CASTERS];
-	bool has[LX_MAX_PLANES + LX_MAX_CASTERS], unmapped[LX_MAX_PLANES + LX_MAX_CASTERS];
-	lx_slab_faces_left_out_of(f, &covers, front, has, unmapped);
-	for (int id = 0; id < f->object_count; id++)
-		unmapped[id] &= !o->keep_flat_boxes;
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	int two = -1; /* the plane that takes the atlas's one spare piece: where it gains most */
 	double most = -1;
 	for (int i = 0; i < np; i++) {
-		ch[i].unmapped = unmapped;
-		covered_part(f, &covers, i, &ch[i].covered);
+		ch[i].unmapped = out->slab_out;
+		covered_part(f, &out->covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (!ok[i])
 			continue;

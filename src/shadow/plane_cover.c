@@ -312,22 +312,10 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
 {
 	if (p < 0 || p >= c->count || !c->lit[p])
 		return false;
-	for (int id = 0; id < f->object_count; id++) {
-		/* an object beyond at most LX_MAX_COVERS fronts gets every one it needs */
-		int beyond = 0;
-		for (int q = 0; q < c->count; q++)
-			beyond += c->owner[q] != id && c->lit[q] && reaches_beyond(c, q, f->bmin[id], f->bmax[id]);
-		if (beyond <= LX_MAX_COVERS || id == c->owner[p])
-			continue;
-		int of[LX_MAX_COVERS];
-		bool paired;
-		object_covers(f, c, id, of, &paired);
-		bool tested = false;
-		for (int k = 0; k < LX_MAX_COVERS; k++)
-			tested |= of[k] == p;
-		if (!tested && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
-			return false;
-	}
+	for (int id = 0; id < f->object_count; id++)
+		if (id != c->owner[p] && !listed(c->of[id], LX_MAX_COVERS, p) &&
+		    reaches_beyond(c, p, f->bmin[id], f->bmax[id]) && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+			return false; /* it needs p's test and does not get it */
 	return true;
 }
 
@@ -355,15 +343,8 @@ static bool pair_complete(const struct lx_frame *f, const struct lx_plane_covers
 	return true;
 }
 
-void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has, bool *whole)
-{
-	struct lx_plane_covers cv;
-	lx_plane_covers(f, &cv);
-	lx_slab_faces_left_out_of(f, &cv, front, has, whole);
-}
-
-void lx_slab_faces_left_out_of(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
-			       bool *whole)
+void lx_slab_faces_left_out(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
+			    bool *whole)
 {
 	for (int id = 0; id < f->object_count; id++)
 		has[id] = whole[id] = false;

@@ -92,7 +92,7 @@ bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x);
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
 /* Whether every object the main pass must test p's front over does test it: some of
  * whose box lies beyond it with rays crossing its bounds (false where LX_MAX_COVERS
- * fronts over an object left p's out). c: lit[] and m[] (of[] is not read). */
+ * fronts over an object left p's out). c: the frame's covers (lx_plane_covers). */
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p);
 /* The flat boxes' faces the maps leave out. A face that is a lit bottom front, when the
  * main pass tests that front over every object that needs it (lx_plane_cover_complete):
@@ -105,11 +105,9 @@ bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_cov
  * false shadow past them, the worst error on the table seen near the wall) is gone with
  * its footprint from the planes' wanted regions. has[id]: object id has such a face,
  * front[id] its plane in the object's own space (unit normal n, n . x + w = 0); whole[id]:
- * none of it is drawn. */
-void lx_slab_faces_left_out(const struct lx_frame *f, vec4 *front, bool *has, bool *whole);
-/* The same from the frame's covers (lx_plane_covers). */
-void lx_slab_faces_left_out_of(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
-			       bool *whole);
+ * none of it is drawn. cv: the frame's covers (lx_plane_covers). */
+void lx_slab_faces_left_out(const struct lx_frame *f, const struct lx_plane_covers *cv, vec4 *front, bool *has,
+			    bool *whole);
 
 /* The shadow front p's parallelogram (cv's) throws on plane q's plane, as the eye sees it: a
  * convex quadrilateral in the window (pixels, GL's origin), where every point of q is in

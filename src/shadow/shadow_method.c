@@ -259,6 +259,10 @@ static void warped_build(const struct lx_shadow_method *m, const struct lx_frame
 void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_frame *f, struct lx_atlas *atlas,
 			    const struct lx_method_options *o, struct lx_shadow_result *out)
 {
+	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
+	lx_plane_covers(f, &out->covers);
+	if (!o->keep_flat_boxes)
+		lx_slab_faces_left_out(f, &out->covers, out->slab_front, out->slab_face_out, out->slab_out);
 	if (m->warp)
 		warped_build(m, f, out);
 	else

@@ -9,6 +9,7 @@
 #define LX_SHADOW_METHOD_H
 #include "atlas.h"
 #include "frame.h"
+#include "plane_cover.h"
 
 #define LX_MAX_MAPS 4
 #define LX_MAX_WARNINGS 8
@@ -48,6 +49,13 @@ struct lx_shadow_result {
 	/* Per object, the maps it reads (a bit mask), where the method chose them; 0: the
 	 * rule of lx_shadow_receiver_maps. */
 	unsigned object_maps[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* The frame's lit fronts and the ones each object tests (lx_plane_covers), and the
+	 * flat boxes' faces the maps leave out (lx_slab_faces_left_out; none with
+	 * keep_flat_boxes): found once a frame, before the method builds its maps, for it,
+	 * the shadow pass and the main pass. */
+	struct lx_plane_covers covers;
+	vec4 slab_front[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool slab_face_out[LX_MAX_PLANES + LX_MAX_CASTERS], slab_out[LX_MAX_PLANES + LX_MAX_CASTERS];
 };
 
 /* Lixel budgets: each map holds budget x budget lixels. */
@@ -67,7 +75,7 @@ struct lx_method_options {
 	bool lookup_everywhere;
 	/* Set by the renderer, not the user: some draw of the main pass cannot test two
 	 * fronts (a GPU short of varyings), so the maps keep every face of the flat boxes and
-	 * their footprints stay in the wanted regions (lx_slab_faces_left_out). */
+	 * their footprints stay in the wanted regions (lx_shadow_result.slab_out). */
 	bool keep_flat_boxes;
 	/* The main pass (every method): a caster's face compared along its plane at the centre
 	 * of the lixel read (--caster-depth face, main.frag's LX_FACE_PLANE: no acne where a
