@@ -226,7 +226,7 @@ static void random_extremes_warn_or_match(void **state)
 				lx_method_run_decision(&run[m], 0, px.rgba, px.obj, px.sh);
 				struct lx_mismatch mm;
 				struct lx_plane_report planes[LX_MAX_PLANES];
-				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, &pts, &mm, planes);
+				lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj, px.sh, NULL, &pts, &mm, planes);
 				lx_sampling_warnings(planes, sc.plane_count, lx_atlas_lixels(&run[m].lights[0].atlas), &run[m].lights[0].result);
 				frames++;
 				if (!finite_report(&run[m].lights[0].result, &mm, planes, sc.plane_count))
@@ -297,7 +297,7 @@ static void named_extremes_match(void **state)
 			struct lx_mismatch mm;
 			struct lx_plane_report planes[LX_MAX_PLANES];
 			lx_measure(&frame, &run[m].lights[0].atlas, &run[m].lights[0].result, px.ref_obj, px.ref_sh, px.obj,
-				   px.sh, &pts, &mm, planes);
+				   px.sh, NULL, &pts, &mm, planes);
 			print_message("%-24s %-8s mismatch %.4f%%, edge-on pixels %ld\n", what, methods[m], mm.mismatch_pct,
 				      mm.edge_on);
 			if (!(mm.mismatch_pct < limit))
@@ -325,7 +325,7 @@ static bool light_warns_or_matches(struct lx_method_run *run, int l, const struc
 	struct lx_mismatch mm;
 	struct lx_plane_report planes[LX_MAX_PLANES];
 	struct lx_shadow_result res = lm->result;
-	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, pts, &mm, planes);
+	lx_measure(&lm->frame, &lm->atlas, &res, px->ref_obj, ref_sh, px->obj, px->sh, NULL, pts, &mm, planes);
 	lx_sampling_warnings(planes, lm->frame.scene->plane_count, lx_atlas_lixels(&lm->atlas), &res);
 	if (!finite_report(&res, &mm, planes, lm->frame.scene->plane_count))
 		fail_msg("%s, light %d: a NaN or infinity in the matrices or the report", what, l + 1);

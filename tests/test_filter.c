@@ -264,7 +264,7 @@ static double worst_m(const struct lx_frame *f, const struct lx_method_run *run,
 	double worst = 1;
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		struct lx_plane_sampling ps;
-		if (lx_plane_sampling(f, &run->lights[0].atlas, &run->lights[0].result, p, px->ref_obj, NULL, &ps))
+		if (lx_plane_sampling(f, &run->lights[0].atlas, &run->lights[0].result, p, px->ref_obj, NULL, NULL, &ps))
 			worst = fmax(worst, ps.m_max);
 	}
 	return worst;

@@ -149,7 +149,7 @@ static int check_sampling(const struct setup *s, const char *what, int *stretche
 		if (!map->rendered || map->plane < 0)
 			continue;
 		struct lx_plane_sampling ps;
-		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, &ps))
+		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, NULL, &ps))
 			continue;
 		double k2 = map->lixel_scale * map->lixel_scale, st = map->lixel_stretch;
 		double aniso = fmax(st * st, 1 / (st * st));
@@ -360,8 +360,8 @@ static void shared_plane_points_give_the_same_figures(void **state)
 			assert_true(lx_plane_points_make(&s.frame, obj, &pts));
 			for (int p = 0; p < s.scene.plane_count; p++) {
 				struct lx_plane_sampling own, shared;
-				bool a = lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, NULL, &own);
-				bool b = lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, &pts, &shared);
+				bool a = lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, NULL, NULL, &own);
+				bool b = lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, &pts, NULL, &shared);
 				assert_int_equal(a, b);
 				if (memcmp(&own, &shared, sizeof own))
 					fail_msg("%s, configuration %s, plane %d: the shared points change the figures (%ld against %ld pixels)",
@@ -369,7 +369,7 @@ static void shared_plane_points_give_the_same_figures(void **state)
 				for (long i = 0; a && i < (long)w * h; i++)
 					if (obj[i] == p && pts.on[i]) { /* drop one pixel of the plane */
 						pts.on[i] = 0;
-						assert_true(lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, &pts, &shared) ||
+						assert_true(lx_plane_sampling(&s.frame, &s.atlas, &s.res, p, obj, &pts, NULL, &shared) ||
 							    own.pixels == 1);
 						assert_true(shared.pixels + shared.unserved + shared.degenerate ==
 							    own.pixels + own.unserved + own.degenerate - 1);

@@ -808,6 +808,37 @@ static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 	assert_true(pct[0] < 0.5 * pct[1]);
 }
 
+/* The default view at 1024x1024 (issue 9): every pixel of the floor and of the wall that
+ * reads a map gets at least a lixel. The sampling counts only pixels that ran a lookup:
+ * no shadow can fall on the wall where it is seen, it gets no map, and its pixels read
+ * none, though the fallback's rectangle holds some of them (at 0.06 lixels a pixel when
+ * they were counted). */
+static void default_view_planes_get_a_lixel_per_pixel(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_render_report r;
+	run_sized("plane", &s, 1024, 1024, &r);
+	const struct lx_light_report *lr = &r.light[0];
+	long n = 1024L * 1024, wall_looked = 0, wall_ref_shadowed = 0;
+	for (long i = 0; i < n; i++)
+		if (r.ref_object[i] == 1)
+			wall_looked += r.looked[i], wall_ref_shadowed += r.ref_shadow[i];
+	const struct lx_plane_sampling *floor = &lr->planes[0].s, *wall = &lr->planes[1].s;
+	print_message("default 1024x1024: floor %ld of %ld pixels read a map, lpp %.4g-%.4g; wall %ld pixels, "
+		      "%ld looked up, %ld in the reference's shadow\n",
+		      floor->pixels, floor->seen, floor->lpp_min, floor->lpp_max, wall->seen, wall_looked, wall_ref_shadowed);
+	assert_true(lr->planes[0].present && floor->pixels > 10000);
+	assert_true(floor->lpp_min >= 1 - 1e-9 && floor->m_max <= 1 + 1e-9);
+	assert_true(wall->seen > 100000);
+	/* the wall: any pixel that reads a map reads one with a lixel per pixel */
+	assert_true(!lr->planes[1].present || wall->lpp_min >= 1 - 1e-9);
+	assert_int_equal(wall->pixels + wall->no_lookup + wall->unserved + wall->degenerate, wall->seen);
+	assert_true(wall_ref_shadowed == 0 || wall_looked > 0); /* shadows on it: it is looked up */
+	lx_render_report_free(&r);
+}
+
 /* PSM, LiSPSM, XPSM and TSM under the same edge bound on every configuration. */
 static void warps_match_reference(void **state)
 {
@@ -1811,6 +1842,7 @@ int main(void)
 		cmocka_unit_test_teardown(plane_keeps_every_shadow, close_shared_platform),
 		cmocka_unit_test_teardown(stretched_maps_follow_long_shadows, close_shared_platform),
 		cmocka_unit_test_teardown(overlapping_pieces_give_a_lixel_per_pixel, close_shared_platform),
+		cmocka_unit_test_teardown(default_view_planes_get_a_lixel_per_pixel, close_shared_platform),
 		cmocka_unit_test_teardown(none_shadows_nothing, close_shared_platform),
 		cmocka_unit_test_teardown(lookup_region_changes_no_decision, close_shared_platform),
 		cmocka_unit_test_teardown(caster_faces_compare_along_their_planes, close_shared_platform),

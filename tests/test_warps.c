@@ -327,7 +327,7 @@ static void xpsm_samples_more_near_the_viewer(void **state)
 				top = y;
 		near[k] = lpp_at(&s, 0, w / 2, 0), far[k] = lpp_at(&s, 0, w / 2, top);
 		struct lx_plane_sampling ps;
-		assert_true(lx_plane_sampling(&s.frame, &s.atlas, &s.res, 0, NULL, NULL, &ps));
+		assert_true(lx_plane_sampling(&s.frame, &s.atlas, &s.res, 0, NULL, NULL, NULL, &ps));
 		m_max[k] = ps.m_max;
 		print_message("%-8s floor: lpp %.3f nearest the viewer, %.3f at its far end (row %d); m_max %.3f\n", names[k],
 			      near[k], far[k], top, m_max[k]);

@@ -158,13 +158,17 @@ static void print_planes(const struct lx_render_report *r, int l)
 		snprintf(who, sizeof who, "light %d ", l + 1);
 	for (int p = 0; p < r->plane_count; p++) {
 		const struct lx_plane_report *pr = &lr->planes[p];
-		if (!pr->present)
-			printf("%splane %s: not measured (not visible or no map serves it)\n", who, pr->name);
+		if (!pr->present && pr->s.seen > 0)
+			printf("%splane %s: %ld pixels seen, none measured: %ld ran no lookup (no shadow can fall there), "
+			       "%ld no map serves\n",
+			       who, pr->name, pr->s.seen, pr->s.no_lookup, pr->s.unserved);
+		else if (!pr->present)
+			printf("%splane %s: not in view\n", who, pr->name);
 		else
-			printf("%splane %s (%s map): %ld pixels, lpp median %.4g, m median %.4g, m max %.4g, aniso max %.4g, "
-			       "lixels used %.0f\n",
-			       who, pr->name, plane_map_name(lr, pr), pr->s.pixels, pr->s.lpp_median, pr->s.m_median, pr->s.m_max,
-			       pr->s.aniso_max, pr->s.lixels_used);
+			printf("%splane %s (%s map): %ld of its %ld pixels read a map, lpp median %.4g, m median %.4g, "
+			       "m max %.4g, aniso max %.4g, lixels used %.0f\n",
+			       who, pr->name, plane_map_name(lr, pr), pr->s.pixels, pr->s.seen, pr->s.lpp_median,
+			       pr->s.m_median, pr->s.m_max, pr->s.aniso_max, pr->s.lixels_used);
 	}
 }
 
@@ -202,14 +206,20 @@ static void json_planes(struct lx_json *j, const struct lx_render_report *r, int
 	lx_json_object(j);
 	for (int p = 0; p < r->plane_count; p++) {
 		const struct lx_plane_report *pr = &lr->planes[p];
-		if (!pr->present)
+		if (!pr->present && pr->s.seen == 0)
 			continue;
 		lx_json_key(j, pr->name);
 		lx_json_object(j);
 		/* the figures are of the plane's own map, or of whichever map serves each pixel */
 		lx_json_key(j, "map");
-		lx_json_string(j, plane_map_name(lr, pr));
-		lx_json_key(j, "pixels"), lx_json_int(j, pr->s.pixels);
+		lx_json_string(j, pr->present ? plane_map_name(lr, pr) : "none");
+		lx_json_key(j, "pixels"), lx_json_int(j, pr->s.pixels); /* those that read a map */
+		lx_json_key(j, "pixels_seen"), lx_json_int(j, pr->s.seen);
+		lx_json_key(j, "pixels_no_lookup"), lx_json_int(j, pr->s.no_lookup);
+		if (!pr->present) { /* seen, but no pixel of it reads a map */
+			lx_json_end(j);
+			continue;
+		}
 		lx_json_key(j, "lpp_median"), lx_json_number(j, pr->s.lpp_median);
 		lx_json_key(j, "m_median"), lx_json_number(j, pr->s.m_median);
 		lx_json_key(j, "m_max"), lx_json_number(j, pr->s.m_max);

@@ -94,6 +94,12 @@ void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter fil
 		visibility[i] = filter == LX_FILTER_NONE ? (rgba[i * 4] > 127 ? 0 : 255) : rgba[i * 4 + 3];
 }
 
+void lx_decision_looked_up(const uint8_t *rgba, long pixels, uint8_t *looked)
+{
+	for (long i = 0; i < pixels; i++)
+		looked[i] = rgba[i * 4 + 2] > 127;
+}
+
 void lx_method_run_free(struct lx_method_run *mr)
 {
 	lx_renderer_destroy(mr->renderer);
@@ -196,12 +202,13 @@ bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, ui
 
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
-		const struct lx_plane_points *pts, struct lx_mismatch *mismatch, struct lx_plane_report *planes)
+		const uint8_t *looked, const struct lx_plane_points *pts, struct lx_mismatch *mismatch,
+		struct lx_plane_report *planes)
 {
 	lx_mismatch_compare(ref_object, ref_shadow, object, shadow, (long)f->view.width * f->view.height, mismatch);
 	for (int p = 0; p < f->scene->plane_count; p++) {
 		snprintf(planes[p].name, sizeof planes[p].name, "%s", f->scene->planes[p].name);
-		planes[p].present = lx_plane_sampling(f, atlas, res, p, ref_object, pts, &planes[p].s);
+		planes[p].present = lx_plane_sampling(f, atlas, res, p, ref_object, pts, looked, &planes[p].s);
 	}
 }
 

@@ -85,11 +85,16 @@ bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, ui
  * decision image rgba that lx_method_run_decision left with filter `filter`: the
  * filtered variants write it in alpha, NEAREST's is 0 or 255 by the decision. */
 void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter filter, uint8_t *visibility);
-/* The mismatch against the reference, and each plane's sampling figures; pts, when not
- * NULL, the frame's plane points (lx_plane_points_make) shared by the methods measured. */
+/* 1 where the pixel ran a shadow lookup, from the same decision image. */
+void lx_decision_looked_up(const uint8_t *rgba, long pixels, uint8_t *looked);
+/* The mismatch against the reference, and each plane's sampling figures over the pixels
+ * that read a map (looked, lx_decision_looked_up; NULL: every pixel a map's bounds hold);
+ * pts, when not NULL, the frame's plane points (lx_plane_points_make) shared by the
+ * methods measured. */
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		const int16_t *ref_object, const uint8_t *ref_shadow, const int16_t *object, const uint8_t *shadow,
-		const struct lx_plane_points *pts, struct lx_mismatch *mismatch, struct lx_plane_report *planes);
+		const uint8_t *looked, const struct lx_plane_points *pts, struct lx_mismatch *mismatch,
+		struct lx_plane_report *planes);
 
 /* A plane whose median lixel spans more than this many pixels has shadows too coarse to
  * pass unremarked: a good map gives it 1 to 3; PSM with a random point light over the table

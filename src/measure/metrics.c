@@ -234,8 +234,8 @@ void lx_plane_points_free(struct lx_plane_points *pts)
 
 /* pts: each pixel's point where ref_object names a plane (stride 1 only), else NULL. */
 static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		     int plane, const int16_t *ref_object, const struct lx_plane_points *pts, int stride,
-		     struct lx_plane_sampling *out)
+		     int plane, const int16_t *ref_object, const struct lx_plane_points *pts, const uint8_t *looked,
+		     int stride, struct lx_plane_sampling *out)
 {
 	memset(out, 0, sizeof(*out));
 	out->map = -1;
@@ -268,6 +268,11 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 				continue;
 			if (pts ? !pts->on[i] : !on_plane(f, &gram, eq, x, y, &p))
 				continue;
+			out->seen++;
+			if (looked && !looked[i]) {
+				out->no_lookup++;
+				continue;
+			} /* no lookup ran: the pixel reads no map */
 			if (pts)
 				p = pts->p[i];
 			int m = lx_shadow_select_map(res, plane, p);
@@ -303,14 +308,14 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 }
 
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts, const uint8_t *looked,
 		       struct lx_plane_sampling *out)
 {
-	return sampling(f, atlas, res, plane, ref_object, pts, 1, out);
+	return sampling(f, atlas, res, plane, ref_object, pts, looked, 1, out);
 }
 
 bool lx_plane_sampling_sparse(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 			      int plane, int stride, struct lx_plane_sampling *out)
 {
-	return sampling(f, atlas, res, plane, NULL, NULL, stride < 1 ? 1 : stride, out);
+	return sampling(f, atlas, res, plane, NULL, NULL, NULL, stride < 1 ? 1 : stride, out);
 }

@@ -37,7 +37,9 @@ double lx_soft_error(const int16_t *ref_object, const uint8_t *ref_shadow, const
 
 struct lx_plane_sampling {
 	int map;         /* the map the figures are of: the plane's own map, else -1 (each pixel's serving map) */
-	long pixels;     /* pixels of the plane the figures cover */
+	long seen;       /* pixels that see the plane */
+	long no_lookup;  /* of those, pixels that ran no shadow lookup: they read no map */
+	long pixels;     /* pixels of the plane the figures cover: those that read a map */
 	long unserved;   /* pixels of the plane no map serves, or (own map) another map serves */
 	long degenerate; /* pixels skipped: the map's projection is singular there */
 	double lpp_median, lpp_min, lpp_max, m_median, m_max, aniso_max;
@@ -54,14 +56,16 @@ bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, s
 void lx_plane_points_free(struct lx_plane_points *pts);
 /* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the
  * pixels whose visible object (ref_object, or every pixel that sees the plane's
- * parallelogram when ref_object is NULL) is that plane. If a map is optimal for the
+ * parallelogram when ref_object is NULL) is that plane and, when looked is not NULL,
+ * that ran a shadow lookup (looked[i] nonzero, lx_decision_looked_up): a pixel where no
+ * shadow can fall reads no map, and no lixel serves it. If a map is optimal for the
  * plane, the figures cover the pixels that map serves; otherwise each pixel counts
  * with the map that serves it (lx_shadow_select_map). pts, when not NULL, holds those
  * pixels' points (lx_plane_points_make of the same frame and ref_object), worked out once
  * for every method measured; the figures are the same either way. False when no pixel
  * counts. */
 bool lx_plane_sampling(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
-		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts,
+		       int plane, const int16_t *ref_object, const struct lx_plane_points *pts, const uint8_t *looked,
 		       struct lx_plane_sampling *out);
 /* The same figures on every stride-th pixel in x and y of the plane's parallelogram
  * (casters not hidden): cheap enough for a live overlay. */
