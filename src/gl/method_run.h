@@ -32,10 +32,13 @@ struct lx_method_run {
 	struct lx_depth_choice depth;   /* the depth path taken, and how */
 	int width, height;
 	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
+	bool setup_again;      /* lx_method_run_frame times the set-up a second time (the bench) */
 };
 
 struct lx_frame_times {
 	double setup_us;  /* CPU time building the light matrices (every light's) */
+	double setup_again_us; /* with setup_again: the same work done again at once, on copies,
+				* the CPU awake; the frame does not pay it. NAN otherwise. */
 	double shadow_ms; /* shadow passes, glFinish'ed */
 	double main_ms;   /* main pass (every light's), glFinish'ed */
 	double frame_ms;  /* all three */
