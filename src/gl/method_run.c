@@ -234,17 +234,18 @@ void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const st
 void lx_sampling_warnings(const struct lx_plane_report *planes, int n, long map_lixels, struct lx_shadow_result *res)
 {
 	double used = 0;
-	bool any = false;
+	bool coarse = false; /* some plane's pixels read less than a lixel each (median) */
 	for (int p = 0; p < n; p++) {
 		if (!planes[p].present)
 			continue;
-		any = true;
+		coarse |= planes[p].s.lpp_median < 1;
 		used += planes[p].s.lixels_used;
 		if (planes[p].s.m_median > LX_COARSE_PIXELS_PER_LIXEL)
 			lx_shadow_warn(res, "plane %s: one lixel spans %.0f pixels (median): its shadows are that coarse there",
 				       planes[p].name, planes[p].s.m_median);
 	}
-	if (any && map_lixels > 0 && used < LX_LOW_BUDGET_USE * map_lixels)
+	/* few pixels reading the maps at a lixel or more each is a small shadow, not a coarse one */
+	if (coarse && map_lixels > 0 && used < LX_LOW_BUDGET_USE * map_lixels)
 		lx_shadow_warn(res, "only %.2f%% of the maps' %ld lixels fall on the visible planes: their shadows are coarse",
 			       100 * used / map_lixels, map_lixels);
 }

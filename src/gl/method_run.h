@@ -104,7 +104,8 @@ void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const st
  * gave 9, its shadows 1.7% wrong, which 16 let pass unwarned. */
 #define LX_COARSE_PIXELS_PER_LIXEL 8.0
 /* Budget use below this share of the maps' lixels (the visible planes' lixels used over
- * all the maps hold) is a map spent almost wholly off the screen. */
+ * all the maps hold), where a plane's pixels read less than a lixel each, is a map spent
+ * almost wholly off the screen. */
 #define LX_LOW_BUDGET_USE 0.01
 /* The measured figures' warnings, added to the result's: planes sampled that coarsely,
  * and budget use that low. */

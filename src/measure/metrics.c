@@ -269,10 +269,10 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 			if (pts ? !pts->on[i] : !on_plane(f, &gram, eq, x, y, &p))
 				continue;
 			out->seen++;
-			if (looked && !looked[i]) {
+			if (looked && !looked[i]) { /* no lookup ran: the pixel reads no map */
 				out->no_lookup++;
 				continue;
-			} /* no lookup ran: the pixel reads no map */
+			}
 			if (pts)
 				p = pts->p[i];
 			int m = lx_shadow_select_map(res, plane, p);
