@@ -469,9 +469,30 @@ static void scale_changes_nothing(void **state)
 	pixels_free(&px);
 }
 
+/* The budget-use warning: few of the maps' lixels on the planes' reading pixels warns only
+ * where those pixels read less than a lixel each (a small shadow read densely is fine). */
+static void budget_warning_only_where_coarse(void **state)
+{
+	(void)state;
+	struct lx_plane_report planes[2] = {{.name = "floor", .present = true}, {.name = "wall", .present = false}};
+	planes[0].s = (struct lx_plane_sampling){.pixels = 1000, .lpp_median = 1, .m_median = 1, .lixels_used = 1000};
+	struct lx_shadow_result res = {0};
+	lx_sampling_warnings(planes, 2, 261384, &res);
+	assert_int_equal(res.warning_count, 0);
+	planes[0].s.lpp_median = 0.5, planes[0].s.m_median = 1.4;
+	lx_sampling_warnings(planes, 2, 261384, &res);
+	assert_int_equal(res.warning_count, 1);
+	assert_non_null(strstr(res.warnings[0], "only 0.38% of the maps' 261384 lixels"));
+	res.warning_count = 0;
+	planes[0].s.lixels_used = 10000; /* 3.8%: not low */
+	lx_sampling_warnings(planes, 2, 261384, &res);
+	assert_int_equal(res.warning_count, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(budget_warning_only_where_coarse),
 		cmocka_unit_test(scale_changes_nothing),
 		cmocka_unit_test(random_extremes_warn_or_match),
 		cmocka_unit_test(named_extremes_match),
