@@ -146,9 +146,9 @@ static void main_passes(struct lx_method_run *mr)
 }
 
 /* The set-up once more, right after the frame's own, into copies that nothing reads:
- * after the previous frame's glFinish the CPU has slept and the frame's set-up runs on
- * cold caches, at about twice the time of the same work done again at once. Returns
- * the repeat's time in us. */
+ * after the previous frame's glFinish the CPU has slept, and the frame's set-up takes
+ * 1.5 to 1.9 times as long as the same work done again at once (results.md's runs).
+ * Returns the repeat's time in us. */
 static double setup_again_us(const struct lx_method_run *mr, const struct lx_frame *f)
 {
 	double t0 = now_ms();
