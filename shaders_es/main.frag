@@ -62,6 +62,12 @@ uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bo
                                  // x1, y1), empty when not rendered (else main.vert's)
 #endif
 uniform float u_bias;            // in depth codes
+#ifdef LX_FORCE_MEDIUMP
+// fp16 holds a coordinate of a 2048-wide atlas to about a texel, and the divide below
+// loses as much again: main.vert's coordinates are taken from each map's centre, exact
+// in fp16 (u_origin), so the divide works on small numbers; the sum is rounded once.
+uniform vec2 u_origin[LX_READS];
+#endif
 #ifdef LX_FACE_PLANE
 uniform vec4 u_texel; // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
 varying vec4 v_slope01; // d depth / d (s, t) of the face in maps 0 (xy) and 1 (zw)
@@ -188,6 +194,9 @@ void main()
 	vec2 slope = vec2(0.0); /* the served map's */
 #endif
 	float found = 0.0, s;
+#ifdef LX_FORCE_MEDIUMP
+	vec2 origin = vec2(0.0); /* the served map's */
+#endif
 #if LX_FILTER > 0
 	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
 #endif
@@ -198,6 +207,9 @@ void main()
 	s = served(q, v_shadow0.w, u_region[0]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FORCE_MEDIUMP
+	origin = s > 0.5 ? u_origin[0] : origin;
+#endif
 #ifdef LX_FACE_PLANE
 	slope = s > 0.5 ? v_slope01.xy : slope;
 #endif
@@ -213,6 +225,9 @@ void main()
 	s = served(q, v_shadow1.w, u_region[1]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FORCE_MEDIUMP
+	origin = s > 0.5 ? u_origin[1] : origin;
+#endif
 #ifdef LX_FACE_PLANE
 	slope = s > 0.5 ? v_slope01.zw : slope;
 #endif
@@ -229,6 +244,9 @@ void main()
 	s = served(q, v_shadow2.w, u_region[2]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FORCE_MEDIUMP
+	origin = s > 0.5 ? u_origin[2] : origin;
+#endif
 #ifdef LX_FACE_PLANE
 	slope = s > 0.5 ? v_slope23.xy : slope;
 #endif
@@ -245,6 +263,9 @@ void main()
 	s = served(q, v_shadow3.w, u_region[3]) * (1.0 - found);
 #endif
 	p = s > 0.5 ? q : p; /* a select: mix() would carry a NaN q (w <= 0) over */
+#ifdef LX_FORCE_MEDIUMP
+	origin = s > 0.5 ? u_origin[3] : origin;
+#endif
 #ifdef LX_FACE_PLANE
 	slope = s > 0.5 ? v_slope23.zw : slope;
 #endif
@@ -252,6 +273,9 @@ void main()
 	box = s > 0.5 ? u_clamp[3] : box;
 #endif
 	found += s;
+#endif
+#ifdef LX_FORCE_MEDIUMP
+	p.xy += origin;
 #endif
 #if LX_FILTER > 0
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */

@@ -20,6 +20,7 @@ struct main_program {
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
 	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
 	GLint face_tex;     /* LX_FACE_PLANE variants: the maps' inverse transposes (main.vert) */
+	GLint origin;       /* the mediump path: each map's centre, its coordinates' origin (main.frag) */
 	GLint light_color;           /* a coloured or projective light's colour (-1 in other variants) */
 	GLint beam, beam_tex, range; /* a projective light's (-1 in other variants) */
 	GLint cover[LX_MAX_COVERS];  /* LX_COVER, LX_COVER2 variants: planes' cover matrices (plane_cover.h) */
@@ -220,6 +221,7 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->clamp = lx_gl.GetUniformLocation(p->prog, "u_clamp");
 	p->texel = lx_gl.GetUniformLocation(p->prog, "u_texel");
 	p->face_tex = lx_gl.GetUniformLocation(p->prog, "u_face_tex");
+	p->origin = lx_gl.GetUniformLocation(p->prog, "u_origin");
 	static const char *const cover_name[LX_MAX_COVERS] = {"u_cover", "u_cover2"}; /* main.vert */
 	for (int c = 0; c < LX_MAX_COVERS; c++)
 		p->cover[c] = lx_gl.GetUniformLocation(p->prog, cover_name[c]);
@@ -1232,6 +1234,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 struct main_uniforms {
 	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
 	float face[LX_MAX_MAPS][16]; /* tex's inverse transposes, for planes (LX_FACE_PLANE) */
+	float origin[LX_MAX_MAPS][2]; /* the mediump path: what tex's s and t are taken from */
 	float light_color[3];
 	float beam[16], range[3]; /* a projective light's */
 	GLuint beam_tex;          /* its image, else 0 */
@@ -1248,6 +1251,22 @@ static void plane_matrix(const mat4 *m, float out[16])
 	for (int c = 0; c < 4; c++)
 		for (int k = 0; k < 4; k++)
 			out[c * 4 + k] = (float)inv.m[k * 4 + c];
+}
+
+/* The mediump path's origin of a map's texture coordinates: its region's centre, rounded
+ * to a multiple of 2^-11, which fp16 holds exactly below 1 (11 significant bits), and t's
+ * s and t rows taken from it (s - o q). main.frag divides the smaller numbers that gives
+ * and adds the origin back: one rounding of the sum, where the divide of the whole
+ * coordinate had cost up to a texel of the 1982-wide atlas. */
+static void map_origin(const struct lx_atlas *atlas, int region, mat4 *t, double o[2])
+{
+	double st[4];
+	lx_region_to_texture(atlas, region, st); /* the region's centre: s = st[1], t = st[3] */
+	for (int a = 0; a < 2; a++) {
+		o[a] = round(st[1 + 2 * a] * 2048) / 2048;
+		for (int c = 0; c < 4; c++)
+			t->m[c * 4 + a] -= o[a] * t->m[c * 4 + 3];
+	}
 }
 
 /* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q), the
@@ -1267,6 +1286,10 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 		if (map->rendered) /* depth d -> the slot's lo + (hi - lo) d, as the shadow pass wrote it */
 			for (int c = 0; c < 4; c++)
 				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
+		double o[2] = {0, 0};
+		if (mediump(r) && map->rendered)
+			map_origin(atlas, map->region, &t, o);
+		u->origin[m][0] = (float)o[0], u->origin[m][1] = (float)o[1];
 		to_float(&t, tex[m]);
 		if (face_plane(r))
 			plane_matrix(&t, u->face[m]);
@@ -1281,10 +1304,10 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 		}
 		double st[4]; /* region clip space -> atlas texture space */
 		lx_region_to_texture(atlas, map->region, st);
-		region[m][0] = (float)(st[1] + st[0] * map->bounds[0]);
-		region[m][1] = (float)(st[3] + st[2] * map->bounds[1]);
-		region[m][2] = (float)(st[1] + st[0] * map->bounds[2]);
-		region[m][3] = (float)(st[3] + st[2] * map->bounds[3]);
+		region[m][0] = (float)(st[1] + st[0] * map->bounds[0] - o[0]);
+		region[m][1] = (float)(st[3] + st[2] * map->bounds[1] - o[1]);
+		region[m][2] = (float)(st[1] + st[0] * map->bounds[2] - o[0]);
+		region[m][3] = (float)(st[3] + st[2] * map->bounds[3] - o[1]);
 	}
 }
 
@@ -1426,10 +1449,12 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 		     unsigned mask)
 {
 	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4], face[LX_MAX_MAPS][16];
+	float origin[LX_MAX_MAPS][2];
 	int n = 0;
 	for (int m = 0; m < r->d.map_count; m++)
 		if (mask & 1u << m) {
 			memcpy(tex[n], u->tex[m], sizeof tex[n]);
+			memcpy(origin[n], u->origin[m], sizeof origin[n]);
 			if (p->face_tex >= 0)
 				memcpy(face[n], u->face[m], sizeof face[n]);
 			memcpy(region[n], u->region[m], sizeof region[n]);
@@ -1442,6 +1467,8 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 		lx_gl.Uniform4fv(p->clamp, n, clamp[0]);
 	if (p->face_tex >= 0)
 		lx_gl.UniformMatrix4fv(p->face_tex, n, GL_FALSE, face[0]);
+	if (p->origin >= 0)
+		lx_gl.Uniform2fv(p->origin, n, origin[0]);
 }
 
 /* A program's uniforms for a frame, set when the program changes (a uniform the variant
