@@ -85,6 +85,15 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
  * directional light). */
 static bool beyond_meets_in(const mat4 *m, vec3 lo, vec3 hi, const double r[4])
 {
+	/* no corner beyond the plane (a box above a floor or a table top): nothing beyond it;
+	 * h.w as m4_mul_point gives it, so the answer is the loop's below */
+	bool beyond = false;
+	for (int k = 0; k < 8 && !beyond; k++) {
+		vec3 c = v3_box_corner(lo, hi, k);
+		beyond = m->m[3] * c.x + m->m[7] * c.y + m->m[11] * c.z + m->m[15] * 1.0 - LX_COVER_TOUCH > 0;
+	}
+	if (!beyond)
+		return false;
 	vec4 h[8];
 	for (int k = 0; k < 8; k++) {
 		h[k] = m4_mul_point(m, v3_box_corner(lo, hi, k));
