@@ -64,7 +64,7 @@ for platform in osmesa egl; do
     for key in '"method": "uniform"' "\"platform\": \"$platform\"" '"renderer"' '"size": \[96, 64\]' '"lixels": 262144' \
         '"maps": \[{"name": "uniform"' '"rendered": true' '"frame_ms"' '"setup_us"' '"warnings"' '"mismatch_pct"' \
         '"false_shadow_pct"' '"missing_shadow_pct"' '"compared_pixels"' '"planes": {"floor": {"map": "serving", "pixels"' \
-        '"lpp_median"' '"m_median"' '"m_max"' '"aniso_max"'; do
+        '"pixels_seen": [0-9]*, "pixels_no_lookup": [0-9]*, "lpp_median"' '"m_median"' '"m_max"' '"aniso_max"'; do
       grep -q "$key" "$tmp/json" && ok || no "$platform: JSON lacks $key"
     done
     grep -qiE 'nan|inf' "$tmp/json" && no "$platform: JSON holds NaN or Infinity" || ok
@@ -196,7 +196,8 @@ if "$lixel" bench --size 64x48 --frames 1 --warmup 0 --json --csv "$tmp/b.csv" -
     >"$tmp/bench.json" 2>"$tmp/bench.err"; then
   ok
   for key in '"size": \[64, 48\]' '"configs": \["default", "overhead"' '"animation"\]' '"results": \[{"method": "none", "filter": "none", "config": "default", "frame_ms_median"' \
-      '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' '"mismatch_pct"' '"m_max": {' \
+      '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' \
+      '"setup_again_us": [0-9.e+-]*, "lookup_pct"' '"mismatch_pct"' '"m_max": {' \
       '"summary": \[{"method": "none", "filter": "none", "frame_ms_median": [0-9.e-]*, "frame_ms_mean": [0-9.e-]*, "depth_slots": 8, "ratio_none": 1, "ratio_uniform"' \
       '"mismatch_median"' '"mismatch_worst"' '"soft_error_pct"' '"soft_error_median"' '"light_size_deg": 0.5'; do
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"

@@ -5,7 +5,10 @@ views for a given seed), rendered once per method with `lixel render --measure -
 prints, per scene, each method's mean and median mismatch, how many views it is more than
 0.01 points worse than uniform on, and its worst such excess. Two renders run at a time.
 Usage: random-views.py LIXEL [--seed N] [--views N] [--size WxH] [--methods LIST] [--worst N]
+                       [--depth-precision P]
   LIXEL     the lixel binary (build/lixel)
+  --depth-precision  as lixel render takes it (auto, highp, mediump, texture; default:
+            lixel's own): mediump measures the fp16 path a Mali-400 takes
   --worst   also list, per scene and method, the N views it is furthest above uniform on,
             with the render options that give each view
   --methods comma-separated method specs as lixel render --method takes them (default
@@ -47,6 +50,7 @@ def main():
     ap.add_argument("--size", default="640x480")
     ap.add_argument("--methods", default="uniform,plane,plane/similar,plane/shared,plane/shared/similar")
     ap.add_argument("--worst", type=int, default=0)
+    ap.add_argument("--depth-precision", choices=("auto", "highp", "mediump", "texture"))
     a = ap.parse_args()
     methods = [m for m in a.methods.split(",") if m]
     if "uniform" not in methods:
@@ -60,7 +64,7 @@ def main():
         out = os.path.join(tmp, "%d-%s.png" % (k, method.replace("/", "-")))
         cmd = [a.lixel, "render", "--scene", scene, "--eye", triple(eye), "--at", triple(at), "--light", triple(light),
                "--time", "%g" % t, "--method", method, "--size", a.size, "--frames", "1", "--measure", "--json",
-               "--out", out]
+               "--out", out] + (["--depth-precision", a.depth_precision] if a.depth_precision else [])
         r = subprocess.run(cmd, capture_output=True, text=True, env=env)
         if os.path.exists(out):
             os.remove(out)
@@ -76,7 +80,8 @@ def main():
     pct = {}
     for (k, _, m), p in zip(jobs, got):
         pct.setdefault(m, {})[k] = p
-    print("random-views: seed %d, %d views, %s, `lixel render --measure`" % (a.seed, a.views, a.size))
+    print("random-views: seed %d, %d views, %s, `lixel render --measure%s`" %
+          (a.seed, a.views, a.size, " --depth-precision " + a.depth_precision if a.depth_precision else ""))
     for scene in ("default", "table"):
         ks = [k for k, v in enumerate(vs) if v[0] == scene and all(pct[m][k] is not None for m in methods)]
         print("%s scene: %d views" % (scene, len(ks)))
