@@ -1253,16 +1253,15 @@ static void plane_matrix(const mat4 *m, float out[16])
 			out[c * 4 + k] = (float)inv.m[k * 4 + c];
 }
 
-/* The mediump path's origin of a map's texture coordinates: its region's centre, rounded
- * to a multiple of 2^-11, which fp16 holds exactly below 1 (11 significant bits), and t's
- * s and t rows taken from it (s - o q). main.frag divides the smaller numbers that gives
- * and adds the origin back: one rounding of the sum, where the divide of the whole
- * coordinate had cost up to a texel of the 1982-wide atlas. */
-static void map_origin(const struct lx_atlas *atlas, int region, mat4 *t, double o[2])
+/* The mediump path's origin of a map's texture coordinates (st: its region's clip space
+ * -> texture, lx_region_to_texture): the region's centre, rounded to a multiple of
+ * 2^-11, which fp16 holds exactly below 1 (11 significant bits), and t's s and t rows
+ * taken from it (s - o q). main.frag divides the smaller numbers that gives and adds the
+ * origin back: one rounding of the sum, where the divide of the whole coordinate had
+ * cost up to a texel of the 1982-wide atlas. */
+static void map_origin(const double st[4], mat4 *t, double o[2])
 {
-	double st[4];
-	lx_region_to_texture(atlas, region, st); /* the region's centre: s = st[1], t = st[3] */
-	for (int a = 0; a < 2; a++) {
+	for (int a = 0; a < 2; a++) { /* the region's centre: s = st[1], t = st[3] */
 		o[a] = round(st[1 + 2 * a] * 2048) / 2048;
 		for (int c = 0; c < 4; c++)
 			t->m[c * 4 + a] -= o[a] * t->m[c * 4 + 3];
@@ -1286,9 +1285,10 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 		if (map->rendered) /* depth d -> the slot's lo + (hi - lo) d, as the shadow pass wrote it */
 			for (int c = 0; c < 4; c++)
 				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
-		double o[2] = {0, 0};
+		double o[2] = {0, 0}, st[4]; /* st: region clip space -> atlas texture space */
+		lx_region_to_texture(atlas, map->region, st);
 		if (mediump(r) && map->rendered)
-			map_origin(atlas, map->region, &t, o);
+			map_origin(st, &t, o);
 		u->origin[m][0] = (float)o[0], u->origin[m][1] = (float)o[1];
 		to_float(&t, tex[m]);
 		if (face_plane(r))
@@ -1302,8 +1302,6 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 			region[m][2] = region[m][3] = -1;
 			continue;
 		}
-		double st[4]; /* region clip space -> atlas texture space */
-		lx_region_to_texture(atlas, map->region, st);
 		region[m][0] = (float)(st[1] + st[0] * map->bounds[0] - o[0]);
 		region[m][1] = (float)(st[3] + st[2] * map->bounds[1] - o[1]);
 		region[m][2] = (float)(st[1] + st[0] * map->bounds[2] - o[0]);
