@@ -64,9 +64,10 @@ uniform vec4 u_region[LX_READS]; // the rays a map read serves: texture-space bo
 uniform float u_bias;            // in depth codes
 #ifdef LX_FORCE_MEDIUMP
 // fp16 holds a coordinate of a 2048-wide atlas to about a texel, and the divide below
-// loses as much again: main.vert's coordinates are taken from each map's centre, exact
-// in fp16 (u_origin), so the divide works on small numbers; the sum is rounded once.
-uniform vec2 u_origin[LX_READS];
+// loses as much again, and a code or two of a far depth: main.vert's coordinates are
+// taken from each map's centre and its far depth, exact in fp16 (u_origin), so the
+// divide works on small numbers; the sum is rounded once.
+uniform vec3 u_origin[LX_READS];
 #endif
 #ifdef LX_FACE_PLANE
 uniform vec4 u_texel; // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
@@ -195,7 +196,7 @@ void main()
 #endif
 	float found = 0.0, s;
 #ifdef LX_FORCE_MEDIUMP
-	vec2 origin = vec2(0.0); /* the served map's */
+	vec3 origin = vec3(0.0); /* the served map's */
 #endif
 #if LX_FILTER > 0
 	vec4 box = vec4(0.0); /* the served map's region, which its samples stay in */
@@ -275,7 +276,7 @@ void main()
 	found += s;
 #endif
 #ifdef LX_FORCE_MEDIUMP
-	p.xy += origin;
+	p += origin;
 #endif
 #if LX_FILTER > 0
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */

@@ -69,7 +69,6 @@
 	X(void, Uniform1f, (GLint, GLfloat))                                                 \
 	X(void, Uniform1i, (GLint, GLint))                                                   \
 	X(void, Uniform2f, (GLint, GLfloat, GLfloat))                                        \
-	X(void, Uniform2fv, (GLint, GLsizei, const GLfloat *))                               \
 	X(void, Uniform3f, (GLint, GLfloat, GLfloat, GLfloat))                               \
 	X(void, Uniform3fv, (GLint, GLsizei, const GLfloat *))                               \
 	X(void, Uniform4f, (GLint, GLfloat, GLfloat, GLfloat, GLfloat))                      \

@@ -1234,7 +1234,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 struct main_uniforms {
 	float view_proj[16], light[4], tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4];
 	float face[LX_MAX_MAPS][16]; /* tex's inverse transposes, for planes (LX_FACE_PLANE) */
-	float origin[LX_MAX_MAPS][2]; /* the mediump path: what tex's s and t are taken from */
+	float origin[LX_MAX_MAPS][3]; /* the mediump path: what tex's s, t and depth are taken from */
 	float light_color[3];
 	float beam[16], range[3]; /* a projective light's */
 	GLuint beam_tex;          /* its image, else 0 */
@@ -1255,17 +1255,22 @@ static void plane_matrix(const mat4 *m, float out[16])
 
 /* The mediump path's origin of a map's texture coordinates (st: its region's clip space
  * -> texture, lx_region_to_texture): the region's centre, rounded to a multiple of
- * 2^-11, which fp16 holds exactly below 1 (11 significant bits), and t's s and t rows
- * taken from it (s - o q). main.frag divides the smaller numbers that gives and adds the
- * origin back: one rounding of the sum, where the divide of the whole coordinate had
- * cost up to a texel of the 1982-wide atlas. */
-static void map_origin(const double st[4], mat4 *t, double o[2])
+ * 2^-11, which fp16 holds exactly below 1 (11 significant bits), and in depth the far
+ * end of the map's depths (hi), and t's rows taken from it (s - o q). main.frag divides
+ * the smaller numbers that gives and adds the origin back: one rounding of the sum,
+ * where the divide of the whole coordinate had cost up to a texel of the 1982-wide
+ * atlas, and a code or two of the 11-bit depth of a receiver far from the light (rows
+ * of lit pixels across shadows where caster and floor were that close in depth). */
+static void map_origin(const double st[4], double hi, mat4 *t, double o[3])
 {
 	for (int a = 0; a < 2; a++) { /* the region's centre: s = st[1], t = st[3] */
 		o[a] = round(st[1 + 2 * a] * 2048) / 2048;
 		for (int c = 0; c < 4; c++)
 			t->m[c * 4 + a] -= o[a] * t->m[c * 4 + 3];
 	}
+	o[2] = hi; /* 1 or a slot's end: exact in fp16 when a multiple of 2^-11, as slots' ends are */
+	for (int c = 0; c < 4; c++)
+		t->m[c * 4 + 2] -= o[2] * t->m[c * 4 + 3];
 }
 
 /* Per map, for the main pass: the texture matrix (world -> atlas s, t, depth, q), the
@@ -1285,11 +1290,12 @@ static void map_uniforms(const struct lx_renderer *r, const struct lx_atlas *atl
 		if (map->rendered) /* depth d -> the slot's lo + (hi - lo) d, as the shadow pass wrote it */
 			for (int c = 0; c < 4; c++)
 				t.m[c * 4 + 2] = (hi - lo) * t.m[c * 4 + 2] + lo * t.m[c * 4 + 3];
-		double o[2] = {0, 0}, st[4]; /* st: region clip space -> atlas texture space */
+		double o[3] = {0, 0, 0}, st[4]; /* st: region clip space -> atlas texture space */
 		lx_region_to_texture(atlas, map->region, st);
 		if (mediump(r) && map->rendered)
-			map_origin(st, &t, o);
-		u->origin[m][0] = (float)o[0], u->origin[m][1] = (float)o[1];
+			map_origin(st, hi, &t, o);
+		for (int a = 0; a < 3; a++)
+			u->origin[m][a] = (float)o[a];
 		to_float(&t, tex[m]);
 		if (face_plane(r))
 			plane_matrix(&t, u->face[m]);
@@ -1447,7 +1453,7 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 		     unsigned mask)
 {
 	float tex[LX_MAX_MAPS][16], region[LX_MAX_MAPS][4], clamp[LX_MAX_MAPS][4], face[LX_MAX_MAPS][16];
-	float origin[LX_MAX_MAPS][2];
+	float origin[LX_MAX_MAPS][3];
 	int n = 0;
 	for (int m = 0; m < r->d.map_count; m++)
 		if (mask & 1u << m) {
@@ -1466,7 +1472,7 @@ static void set_maps(const struct lx_renderer *r, const struct main_program *p, 
 	if (p->face_tex >= 0)
 		lx_gl.UniformMatrix4fv(p->face_tex, n, GL_FALSE, face[0]);
 	if (p->origin >= 0)
-		lx_gl.Uniform2fv(p->origin, n, origin[0]);
+		lx_gl.Uniform3fv(p->origin, n, origin[0]);
 }
 
 /* A program's uniforms for a frame, set when the program changes (a uniform the variant
