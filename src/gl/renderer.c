@@ -1268,7 +1268,7 @@ static void map_origin(const double st[4], double hi, mat4 *t, double o[3])
 		for (int c = 0; c < 4; c++)
 			t->m[c * 4 + a] -= o[a] * t->m[c * 4 + 3];
 	}
-	o[2] = hi; /* 1 or a slot's end: exact in fp16 when a multiple of 2^-11, as slots' ends are */
+	o[2] = hi; /* 1 here, exact in fp16: depth slots are the depth texture path's alone */
 	for (int c = 0; c < 4; c++)
 		t->m[c * 4 + 2] -= o[2] * t->m[c * 4 + 3];
 }
