@@ -654,11 +654,18 @@ static void fallback_serves_only_what_needs_it(void **state)
  * two-shelves.scene: the floor tests two fronts only). */
 static void faces_left_out(struct setup *s, vec4 *front, bool *has, bool *whole, struct lx_plane_covers *cv)
 {
-	assert_true(build(s, "none", 320, 240, 0));
+	assert_true(build(s, "none", 320, 240, 0)); /* no map: no front tested, no face left out */
+	for (int id = 0; id < s->frame.object_count; id++)
+		assert_true(s->res.covers.of[id][0] == -1 && !s->res.covers.paired[id] && !s->res.slab_out[id] &&
+			    !s->res.slab_face_out[id]);
+	assert_int_equal(s->res.covers.count, 0);
+	lx_meshes_free(&s->meshes);
+	assert_true(build(s, "uniform", 320, 240, 0));
 	lx_plane_covers(&s->frame, cv);
 	lx_slab_faces_left_out(&s->frame, cv, front, has, whole);
 	for (int id = 0; id < s->frame.object_count; id++) /* what lx_shadow_method_frame keeps */
 		assert_true(s->res.slab_out[id] == whole[id] && s->res.slab_face_out[id] == has[id]);
+	assert_int_equal(s->res.covers.count, cv->count);
 }
 
 static void slab_underside_left_out_of_maps(void **state)

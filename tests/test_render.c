@@ -152,15 +152,23 @@ static void run(const char *platform, const char *method, const struct lx_scene 
 	run_path(platform, method, scene, false, rep);
 }
 
-/* One measured frame of a method on OSMesa at a size of its own, at time 0. */
-static void run_sized(const char *method, const struct lx_scene *scene, int w, int h, struct lx_render_report *rep)
+/* One frame of a method on OSMesa at w x h, at `time`, on a depth path, measured or not
+ * (the decision is kept either way). */
+static void run_frame(const char *method, const struct lx_scene *scene, int w, int h, double time,
+		      enum lx_depth_precision path, bool measure, struct lx_render_report *rep)
 {
 	struct lx_render_job job = {.method = method, .platform = "osmesa", .scene = *scene, .width = w, .height = h,
-				    .timed_frames = 1, .measure = true, .keep_pixels = true,
-				    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2};
+				    .time = time, .timed_frames = 1, .measure = measure, .keep_pixels = true,
+				    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2, .depth_precision = path};
 	char err[512];
 	if (render_run_cached(&job, rep, err, sizeof err))
 		fail_msg("%s %dx%d: %s", method, w, h, err);
+}
+
+/* One measured frame of a method on OSMesa at a size of its own, at time 0. */
+static void run_sized(const char *method, const struct lx_scene *scene, int w, int h, struct lx_render_report *rep)
+{
+	run_frame(method, scene, w, h, 0, LX_DEPTH_AUTO, true, rep);
 }
 
 /* A method's mismatch (%) on the scene at w x h (run_sized). */
@@ -845,13 +853,7 @@ static long mediump_differs(const struct lx_scene *s, int w, int h, double time,
 {
 	struct lx_render_report r[2];
 	for (int k = 0; k < 2; k++) {
-		struct lx_render_job job = {.method = "plane", .platform = "osmesa", .scene = *s, .width = w,
-					    .height = h, .time = time, .timed_frames = 1, .keep_pixels = true,
-					    .bias_codes = LX_DEFAULT_BIAS_CODES, .reference_threads = 2,
-					    .depth_precision = k ? LX_DEPTH_MEDIUMP : LX_DEPTH_HIGHP};
-		char err[512];
-		if (render_run_cached(&job, &r[k], err, sizeof err))
-			fail_msg("plane, %s: %s", k ? "mediump" : "highp", err);
+		run_frame("plane", s, w, h, time, k ? LX_DEPTH_MEDIUMP : LX_DEPTH_HIGHP, false, &r[k]);
 		assert_non_null(r[k].shadow);
 	}
 	long differ = 0, n = (long)w * h;

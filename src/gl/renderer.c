@@ -122,9 +122,9 @@ struct lx_renderer {
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][LX_MAX_COVERS + 1];
-	/* this light pass's planes over each object whose fronts the light sees (covers.of),
-	 * and each plane's cover matrix as the shader takes it (lx_plane_covers) */
-	struct lx_plane_covers covers;
+	/* this light pass's fronts over each object (covers->of: the result's, which outlives
+	 * the pass), and each front's cover matrix as the shader takes it */
+	const struct lx_plane_covers *covers;
 	float cover[LX_MAX_FRONTS][16];
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
 	bool covers_short; /* some draw tests fewer (covers_fit): the maps keep every face */
@@ -1105,10 +1105,10 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
  * the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	for (int c = 0; c < LX_MAX_COVERS && r->covers.of[id][c] >= 0; c++) {
+	for (int c = 0; c < LX_MAX_COVERS && r->covers->of[id][c] >= 0; c++) {
 		struct lx_poly w;
 		struct span *to = span == r->seen ? r->spans : r->seen;
-		int n = lx_plane_cover_image(f, &r->covers, r->covers.of[id][c], id, &w)
+		int n = lx_plane_cover_image(f, r->covers, r->covers->of[id][c], id, &w)
 				? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
 				: -1;
 		if (n < 0) {
@@ -1166,7 +1166,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			bool decision, struct draw *out, int n)
 {
 	unsigned mask = r->lookup.reads[id]; /* lx_shadow_receiver_maps, prepared by frame_draws */
-	int covers = lx_plane_cover_count(&r->covers, id); /* a caster, small on the screen, tests
+	int covers = lx_plane_cover_count(r->covers, id); /* a caster, small on the screen, tests
 							    * them all over; a plane along their shadows' edges */
 	if (id >= r->d.scene->plane_count || !mask) {
 		if (!r->d.lookup_everywhere)
@@ -1354,15 +1354,10 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	lx_frame_draw_order(f, order);
-	if (r->d.map_count > 0) {
-		r->covers = res->covers; /* the method's (lx_shadow_method_frame) */
-		for (int p = 0; p < r->covers.count; p++)
-			if (r->covers.lit[p])
-				to_float(&r->covers.m[p], r->cover[p]);
-	} else /* without maps (method none) nothing is shadowed, by planes neither */
-		for (int id = 0; id < r->objects; id++)
-			for (int c = 0; c < LX_MAX_COVERS; c++)
-				r->covers.of[id][c] = -1;
+	r->covers = &res->covers; /* the method's (lx_shadow_method_frame); none without maps */
+	for (int p = 0; p < r->covers->count; p++)
+		if (r->covers->lit[p])
+			to_float(&r->covers->m[p], r->cover[p]);
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
@@ -1425,9 +1420,9 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform1f(p->object_id, (float)id);
 	for (int c = 0; c < d->covers; c++)
 		if (p->cover[c] >= 0) /* -1: a variant short of varyings tests fewer (lx_main_covers) */
-			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, r->cover[r->covers.of[id][c]]);
+			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, r->cover[r->covers->of[id][c]]);
 	if (p->cover_pair >= 0)
-		lx_gl.Uniform1f(p->cover_pair, d->covers > 1 && r->covers.paired[id] ? 1.0f : 0.0f);
+		lx_gl.Uniform1f(p->cover_pair, d->covers > 1 && r->covers->paired[id] ? 1.0f : 0.0f);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);

@@ -78,6 +78,16 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
 	return true;
 }
 
+/* Whether box [lo, hi] reaches beyond the front of cover matrix m, a corner of it (h.w >
+ * LX_COVER_TOUCH, as beyond_meets_in finds it): 8 products. */
+static bool reaches_beyond(const mat4 *m, vec3 lo, vec3 hi)
+{
+	for (int k = 0; k < 8; k++)
+		if (m4_mul_point(m, v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH)
+			return true;
+	return false;
+}
+
 /* Whether the part of box [lo, hi] where h.w > LX_COVER_TOUCH has rays crossing the
  * plane inside r (u0, v0, u1, v1 in the parallelogram's coordinates): that part is the box
  * cut by the plane, whose corners are the box's corners beyond it and its edges'
@@ -85,15 +95,8 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
  * directional light). */
 static bool beyond_meets_in(const mat4 *m, vec3 lo, vec3 hi, const double r[4])
 {
-	/* no corner beyond the plane (a box above a floor or a table top): nothing beyond it;
-	 * h.w as m4_mul_point gives it, so the answer is the loop's below */
-	bool beyond = false;
-	for (int k = 0; k < 8 && !beyond; k++) {
-		vec3 c = v3_box_corner(lo, hi, k);
-		beyond = m->m[3] * c.x + m->m[7] * c.y + m->m[11] * c.z + m->m[15] * 1.0 - LX_COVER_TOUCH > 0;
-	}
-	if (!beyond)
-		return false;
+	if (!reaches_beyond(m, lo, hi))
+		return false; /* a box above a floor or a table top: the loop below would find nothing */
 	vec4 h[8];
 	for (int k = 0; k < 8; k++) {
 		h[k] = m4_mul_point(m, v3_box_corner(lo, hi, k));
@@ -274,6 +277,16 @@ void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out)
 		object_covers(f, out, id, out->of[id], &out->paired[id]);
 }
 
+void lx_plane_covers_none(struct lx_plane_covers *out)
+{
+	out->count = out->slabs = 0;
+	for (int id = 0; id < LX_MAX_PLANES + LX_MAX_CASTERS; id++) {
+		for (int k = 0; k < LX_MAX_COVERS; k++)
+			out->of[id][k] = -1;
+		out->paired[id] = false;
+	}
+}
+
 int lx_plane_cover_count(const struct lx_plane_covers *c, int id)
 {
 	int n = 0;
@@ -307,23 +320,13 @@ bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
 	return c->paired[id] && lx_slab_sides_shadow(&c->m[c->of[id][0]], &c->m[c->of[id][1]], x);
 }
 
-/* Whether box [lo, hi] reaches beyond lit front p, a corner of it: a superset of
- * beyond_meets, 8 products. */
-static bool reaches_beyond(const struct lx_plane_covers *c, int p, vec3 lo, vec3 hi)
-{
-	for (int k = 0; k < 8; k++)
-		if (m4_mul_point(&c->m[p], v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH)
-			return true;
-	return false;
-}
-
 bool lx_plane_cover_complete(const struct lx_frame *f, const struct lx_plane_covers *c, int p)
 {
 	if (p < 0 || p >= c->count || !c->lit[p])
 		return false;
 	for (int id = 0; id < f->object_count; id++)
 		if (id != c->owner[p] && !listed(c->of[id], LX_MAX_COVERS, p) &&
-		    reaches_beyond(c, p, f->bmin[id], f->bmax[id]) && beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
+		    beyond_meets(&c->m[p], f->bmin[id], f->bmax[id]))
 			return false; /* it needs p's test and does not get it */
 	return true;
 }

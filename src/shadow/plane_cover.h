@@ -90,6 +90,9 @@ int lx_plane_cover_count(const struct lx_plane_covers *c, int id);
  * over it, as the shader decides it. */
 bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x);
 void lx_plane_covers(const struct lx_frame *f, struct lx_plane_covers *out);
+/* No front tested over any object: a method without maps shadows nothing, by fronts
+ * neither. */
+void lx_plane_covers_none(struct lx_plane_covers *out);
 /* Whether every object the main pass must test p's front over does test it: some of
  * whose box lies beyond it with rays crossing its bounds (false where LX_MAX_COVERS
  * fronts over an object left p's out). c: the frame's covers (lx_plane_covers). */

@@ -260,8 +260,11 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 			    const struct lx_method_options *o, struct lx_shadow_result *out)
 {
 	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
-	lx_plane_covers(f, &out->covers);
-	if (!o->keep_flat_boxes)
+	if (atlas->count == 0) /* no map (method none): nothing shadowed, by fronts neither */
+		lx_plane_covers_none(&out->covers);
+	else
+		lx_plane_covers(f, &out->covers);
+	if (atlas->count > 0 && !o->keep_flat_boxes)
 		lx_slab_faces_left_out(f, &out->covers, out->slab_front, out->slab_face_out, out->slab_out);
 	if (m->warp)
 		warped_build(m, f, out);

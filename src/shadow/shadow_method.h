@@ -49,10 +49,10 @@ struct lx_shadow_result {
 	/* Per object, the maps it reads (a bit mask), where the method chose them; 0: the
 	 * rule of lx_shadow_receiver_maps. */
 	unsigned object_maps[LX_MAX_PLANES + LX_MAX_CASTERS];
-	/* The frame's lit fronts and the ones each object tests (lx_plane_covers), and the
-	 * flat boxes' faces the maps leave out (lx_slab_faces_left_out; none with
-	 * keep_flat_boxes): found once a frame, before the method builds its maps, for it,
-	 * the shadow pass and the main pass. */
+	/* The frame's lit fronts and the ones each object tests (lx_plane_covers; none for a
+	 * method without maps), and the flat boxes' faces the maps leave out
+	 * (lx_slab_faces_left_out; none with keep_flat_boxes): found once a frame, before the
+	 * method builds its maps, for it, the shadow pass and the main pass. */
 	struct lx_plane_covers covers;
 	vec4 slab_front[LX_MAX_PLANES + LX_MAX_CASTERS];
 	bool slab_face_out[LX_MAX_PLANES + LX_MAX_CASTERS], slab_out[LX_MAX_PLANES + LX_MAX_CASTERS];
@@ -110,8 +110,9 @@ struct lx_shadow_method {
 	/* Region requests (at most LX_MAX_MAPS) for a scene; returns the count. NULL: one
 	 * square map of uniform_lixels, named after the method (the one-map methods). */
 	int (*regions)(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out);
-	/* Fills one map per region, in the order regions() gave them; resets *out first. A
-	 * map of a variable region says the lixels it wants this frame (w, h). */
+	/* Fills one map per region, in the order regions() gave them, into *out as
+	 * lx_shadow_method_frame cleared it (its covers found). A map of a variable region
+	 * says the lixels it wants this frame (w, h). */
 	void (*build)(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 		      struct lx_shadow_result *out);
 	/* Or, for a one-map method that warps the uniform map (PSM, LiSPSM, TSM, XPSM):
