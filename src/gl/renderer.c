@@ -121,7 +121,7 @@ struct lx_renderer {
 	 * draw reads][how many planes' covers it tests] (whichever maps: a draw puts theirs in
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
-	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_MAPS + 1][LX_MAX_COVERS + 1];
+	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_READS + 1][LX_MAX_COVERS + 1];
 	/* this light pass's fronts over each object (covers->of: the result's, which outlives
 	 * the pass), and each front's cover matrix as the shader takes it */
 	const struct lx_plane_covers *covers;
@@ -239,6 +239,9 @@ static bool light_coloured(const struct lx_light *l)
  * the first, LX_FACES_TOWARD, whose text is every rule's there (variant_for). */
 static int face_rules(const struct lx_renderer *r) { return r->d.map_count > 0 ? LX_FACES_COUNT : 1; }
 
+/* The most maps one draw reads: every map of the method, up to LX_MAX_READS. */
+static int most_reads(const struct lx_renderer *r) { return r->d.map_count < LX_MAX_READS ? r->d.map_count : LX_MAX_READS; }
+
 /* Light i's shaded variants' shading. */
 static int light_shading(const struct lx_renderer *r, int i)
 {
@@ -252,7 +255,7 @@ static void face_plane_fits(const struct lx_renderer *r)
 {
 	for (int i = 0; face_plane(r) && r->d.map_count > 0 && i < r->d.light_count; i++) {
 		struct lx_main_variant v =
-			variant_of(r, light_shading(r, i), LX_FACES_CASTER, r->d.map_count, LX_FILTER_NONE, 0);
+			variant_of(r, light_shading(r, i), LX_FACES_CASTER, most_reads(r), LX_FILTER_NONE, 0);
 		if (!lx_main_face_plane(&v)) {
 			fprintf(stderr,
 				"lixel: --caster-depth face: a caster reading %d maps needs %d varying vectors, this GPU has "
@@ -273,7 +276,7 @@ static void covers_fit(struct lx_renderer *r)
 	r->covers_short = false;
 	for (int i = 0; r->max_covers > 1 && i < r->d.light_count; i++) {
 		struct lx_main_variant v =
-			variant_of(r, light_shading(r, i), LX_FACES_TOWARD, r->d.map_count, LX_FILTER_NONE, r->max_covers);
+			variant_of(r, light_shading(r, i), LX_FACES_TOWARD, most_reads(r), LX_FILTER_NONE, r->max_covers);
 		if (lx_main_covers(&v) < r->max_covers) {
 			fprintf(stderr,
 				"lixel: an object under two lit fronts (planes or flat boxes) read with %d maps needs %d varying "
@@ -295,7 +298,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 		for (int faces = 0; faces < face_rules(r); faces++) {
 			if (faces == LX_FACES_CASTER && !face_plane(r))
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
-			int reads = faces == LX_FACES_AWAY ? 0 : r->d.map_count;
+			int reads = faces == LX_FACES_AWAY ? 0 : most_reads(r);
 			struct main_program *p = &r->variant[shading][filter][faces][reads][0];
 			if (!p->prog && !main_program(p, r, shading, (enum lx_faces)faces, reads, filter, 0, err, errlen))
 				return false;
@@ -859,7 +862,8 @@ static int maps_in(unsigned mask)
 /* The main-pass variant for a shading, a draw's faces and the maps it reads (none for
  * faces turned away; without maps, method none, there is one variant for every draw),
  * built when first used; when it cannot be (cannot happen once the variants built at
- * the start compiled), the one that tests each face and reads every map, *mask every map. */
+ * the start compiled), the one that tests each face and reads the most maps, *mask its
+ * maps and the first others. */
 static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask,
 				       int covers)
 {
@@ -868,15 +872,19 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
 	covers = r->d.map_count > 0 && faces != LX_FACES_AWAY ? covers : 0;
+	while (maps_in(*mask) > LX_MAX_READS) /* the methods keep within it (lx_shadow_method_frame) */
+		*mask &= ~(1u << (31 - __builtin_clz(*mask)));
 	int reads = maps_in(*mask);
 	struct main_program *p = &r->variant[shading][r->filter][faces][reads][covers];
 	if (!p->prog) {
 		char err[1024];
 		if (!main_program(p, r, shading, faces, reads, r->filter, covers, err, sizeof err)) {
 			fprintf(stderr, "lixel: %s\n", err);
-			*mask = (1u << r->d.map_count) - 1;
+			/* the draw's maps first, then others up to the most a draw reads */
+			for (int m = 0; m < r->d.map_count && maps_in(*mask) < most_reads(r); m++)
+				*mask |= 1u << m;
 			p = &r->variant[shading][r->filter][r->d.map_count > 0 ? LX_FACES_TESTED : LX_FACES_TOWARD]
-				       [r->d.map_count][0];
+				       [most_reads(r)][0];
 		}
 	}
 	return p;
@@ -1620,7 +1628,7 @@ static void warm_light(struct lx_renderer *r, int l, int shading)
 	lx_gl.ActiveTexture(GL_TEXTURE0);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	for (int faces = 0; faces < face_rules(r); faces++)
-		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : r->d.map_count); reads++)
+		for (int reads = 0; reads <= (faces == LX_FACES_AWAY ? 0 : most_reads(r)); reads++)
 			for (int cover = 0; cover <= (faces != LX_FACES_AWAY ? r->max_covers : 0); cover++) {
 				unsigned mask = (1u << reads) - 1;
 				struct main_program *p = variant_for(r, shading, (enum lx_faces)faces, &mask, cover);
@@ -1644,7 +1652,7 @@ void lx_renderer_warm(struct lx_renderer *r)
 	for (int f = 0; f < LX_FILTER_COUNT; f++)
 		for (int l = 0; l < r->d.light_count; l++) {
 			int shading = light_shading(r, l);
-			if (!r->variant[shading][f][LX_FACES_TOWARD][r->d.map_count][0].prog)
+			if (!r->variant[shading][f][LX_FACES_TOWARD][most_reads(r)][0].prog)
 				continue; /* a filter not set up (lx_renderer_set_filter): not drawn with */
 			r->filter = (enum lx_filter)f;
 			warm_light(r, l, shading);

@@ -11,7 +11,11 @@
 #include "frame.h"
 #include "plane_cover.h"
 
-#define LX_MAX_MAPS 4
+/* A method's maps in one frame (plane-optimal: two planes, the fallback and four spare
+ * pieces), of which one draw of the main pass reads at most LX_MAX_READS (main.vert's
+ * varyings; a plane reads its own pieces, a caster its few densest maps). */
+#define LX_MAX_MAPS 8
+#define LX_MAX_READS 4
 #define LX_MAX_WARNINGS 8
 #define LX_WARNING_MAX 160
 
