@@ -122,11 +122,18 @@ static void print_atlas(const struct lx_render_report *r)
 			       100 * lx_atlas_fill(&lr->atlas));
 		else
 			printf(" (%.0f%% filled)", 100 * lx_atlas_fill(&lr->atlas));
+		int idle = 0;
 		for (int i = 0; i < lr->result.map_count; i++) {
 			const struct lx_region *g = &lr->atlas.regions[lr->result.maps[i].region];
+			if (!lr->result.maps[i].rendered && g->variable && g->counted == 0) {
+				idle++; /* a spare piece no plane took this frame */
+				continue;
+			}
 			printf("; %s %dx%d at (%d, %d)%s", g->name, g->w, g->h, g->x, g->y,
 			       lr->result.maps[i].rendered ? "" : " (not rendered)");
 		}
+		if (idle > 0)
+			printf("; %d spare piece%s unused", idle, idle > 1 ? "s" : "");
 	}
 	if (r->depth_slots > 1)
 		printf("; cleared once every %d frames (depth slots)", r->depth_slots);

@@ -19,10 +19,12 @@
 #include <string.h>
 
 #define PLANE_MAPS 2
+#define PIECES_MAX 4   /* a plane's rectangles: its own region and up to three spare pieces */
+#define SPARE_PIECES 4 /* the atlas's spare regions, taken by the planes where they gain most */
 
 /* The regions: one per plane of interest (at most two), the fallback, and with fitted
- * shapes a second piece that one plane map may take when its casters' footprints form two
- * clusters apart (plane_pieces). */
+ * shapes the spare pieces that the plane maps take when their casters' footprints form
+ * clusters apart (plane_splits). */
 static int plane_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	int n = 0, planes = s->plane_count < PLANE_MAPS ? s->plane_count : PLANE_MAPS;
@@ -36,17 +38,22 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 	long fb_most = !o->square_regions && o->shared_budget && planes > 0 ? budget * planes + fb : 0;
 	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, fb_most, false};
 	if (!o->square_regions && planes > 0) {
-		/* a name no plane has: the regions' names must differ */
-		static const char *const names[] = {"piece", "second-piece", "piece-2", "plane-piece"};
-		const char *name = NULL;
-		for (int k = 0; k < 4 && !name; k++) {
-			bool taken = !strcmp(names[k], "fallback");
-			for (int i = 0; i < planes; i++)
-				taken |= !strcmp(s->planes[i].name, names[k]);
-			name = taken ? NULL : names[k];
+		/* the spare pieces (plane_build), under names no plane has: the regions' names
+		 * must differ */
+		static const char *const piece_names[][SPARE_PIECES] = {{"piece", "piece-2", "piece-3", "piece-4"},
+									 {"spare", "spare-2", "spare-3", "spare-4"},
+									 {"plane-piece", "plane-piece-2", "plane-piece-3", "plane-piece-4"}};
+		for (int p = 0; p < 3; p++) {
+			bool taken = false;
+			for (int k = 0; k < SPARE_PIECES; k++)
+				for (int i = 0; i < planes; i++)
+					taken |= !strcmp(s->planes[i].name, piece_names[p][k]);
+			if (taken)
+				continue;
+			for (int k = 0; k < SPARE_PIECES; k++)
+				out[n++] = (struct lx_region_request){piece_names[p][k], 1, 1, most, true};
+			break;
 		}
-		if (name)
-			out[n++] = (struct lx_region_request){name, 1, 1, most, true};
 	}
 	return n;
 }
@@ -594,30 +601,62 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 }
 
 /* The rectangles a plane's map is cut into: one around all the casters' footprints, or
- * two around two clusters of them when those cover much less (one similarity for both,
- * each rectangle its own region of the atlas). Clusters: the footprints sorted along x or
- * along y, split where the two bounding rectangles' areas add up least. The two may
+ * up to PIECES_MAX around clusters of them where those cover much less (one similarity
+ * for all, each rectangle its own region of the atlas: the plane's own and spare pieces,
+ * plane_build). Clusters: the footprints sorted along x or along y and split in two
+ * where the two bounding rectangles' areas add up least; and the footprints merged pair
+ * by pair, the pair whose bounding rectangle adds least first, down to one. Pieces may
  * overlap where the one rectangle holds more pixels than the plane's own budget has
- * lixels: the density they buy is worth drawing their overlap with both maps, of which a
+ * lixels: the density they buy is worth drawing their overlap with each map, of which a
  * pixel reads the first that serves it (each holds every caster over its rectangle, so
- * either decides it right). Where the one rectangle gets a lixel per pixel, they stay
+ * any decides it right). Where the one rectangle gets a lixel per pixel, they stay
  * apart. */
-#define PIECES_MAX 2
 struct plane_pieces {
 	int n;
 	double r[PIECES_MAX][4]; /* x0, y0, x1, y1 */
 };
 
+/* A plane's choices: by[k] the best k rectangles found (n 0: none), each choice covering
+ * a fifth less area than the best with fewer pieces (a piece costs a region's pass). */
+struct plane_splits {
+	struct plane_pieces by[PIECES_MAX + 1];
+};
+
 static double rect_area(const double *r) { return (r[2] - r[0] + 1) * (r[3] - r[1] + 1); }
 
-static void plane_pieces(const struct plane_chart *ch, bool allow_two, long own_budget, struct plane_pieces *pc)
+static double pieces_area(const struct plane_pieces *pc)
 {
-	pc->n = 1;
-	pc->r[0][0] = ch->x0, pc->r[0][1] = ch->y0, pc->r[0][2] = ch->x1, pc->r[0][3] = ch->y1;
-	if (!allow_two || ch->feet < 2)
+	double a = 0;
+	for (int k = 0; k < pc->n; k++)
+		a += rect_area(pc->r[k]);
+	return a;
+}
+
+static void rect_union(const double *a, const double *b, double *out)
+{
+	out[0] = fmin(a[0], b[0]), out[1] = fmin(a[1], b[1]), out[2] = fmax(a[2], b[2]), out[3] = fmax(a[3], b[3]);
+}
+
+/* More than two pixels apart along x or along y. */
+static bool rects_apart(const double *a, const double *b)
+{
+	return a[2] + 2 < b[0] || b[2] + 2 < a[0] || a[3] + 2 < b[1] || b[3] + 2 < a[1];
+}
+
+static void offer_pieces(struct plane_splits *sp, const double (*r)[4], int n)
+{
+	if (n < 2 || n > PIECES_MAX)
 		return;
-	double best = 0.8 * rect_area(pc->r[0]); /* two pieces only where they save a fifth or more */
-	bool overlap = rect_area(pc->r[0]) > (double)own_budget;
+	struct plane_pieces pc = {.n = n};
+	memcpy(pc.r, r, (size_t)n * sizeof r[0]);
+	if (sp->by[n].n == 0 || pieces_area(&pc) < pieces_area(&sp->by[n]))
+		sp->by[n] = pc;
+}
+
+/* Two clusters along x or y: the footprints sorted by their centres, cut where the two
+ * rectangles' areas add up least. */
+static void split_along_axes(const struct plane_chart *ch, bool overlap, struct plane_splits *sp)
+{
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	for (int axis = 0; axis < 2; axis++) {
 		for (int i = 0; i < ch->feet; i++)
@@ -631,31 +670,97 @@ static void plane_pieces(const struct plane_chart *ch, bool allow_two, long own_
 			}
 		for (int cut = 1; cut < ch->feet; cut++) {
 			double g[2][4] = {{INFINITY, INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, -INFINITY, -INFINITY}};
-			for (int i = 0; i < ch->feet; i++) {
-				double *r = g[i >= cut], *b = (double *)ch->foot[order[i]];
-				r[0] = fmin(r[0], b[0]), r[1] = fmin(r[1], b[1]), r[2] = fmax(r[2], b[2]), r[3] = fmax(r[3], b[3]);
-			}
-			bool apart = g[0][2] + 2 < g[1][0] || g[1][2] + 2 < g[0][0] || g[0][3] + 2 < g[1][1] || g[1][3] + 2 < g[0][1];
-			double a = rect_area(g[0]) + rect_area(g[1]);
-			if ((apart || overlap) && a < best) {
-				best = a;
-				pc->n = 2;
-				memcpy(pc->r, g, sizeof g);
-			}
+			for (int i = 0; i < ch->feet; i++)
+				rect_union(g[i >= cut], ch->foot[order[i]], g[i >= cut]);
+			if (overlap || rects_apart(g[0], g[1]))
+				offer_pieces(sp, g, 2);
 		}
 	}
 }
 
-/* What a plane's two pieces gain over its one rectangle: the share of a lixel per pixel
- * its budget gives, up to one (past one, lixels no longer decide more pixels); a piece that
- * gains nothing there still saves area, counted as a little. */
-static double piece_gain(const struct plane_chart *ch, const struct plane_pieces *pc, long budget)
+/* The footprints merged pair by pair, least added area first; each stage of PIECES_MAX
+ * rectangles or fewer whose pieces may stand as they are is a choice. */
+static void merge_feet(const struct plane_chart *ch, bool overlap, struct plane_splits *sp)
 {
-	double whole[4] = {ch->x0, ch->y0, ch->x1, ch->y1};
-	double one = rect_area(whole), two = rect_area(pc->r[0]) + rect_area(pc->r[1]);
+	double g[LX_MAX_PLANES + LX_MAX_CASTERS][4];
+	int n = ch->feet;
+	memcpy(g, ch->foot, (size_t)n * sizeof g[0]);
+	while (n > 1) {
+		bool stands = n <= PIECES_MAX;
+		for (int i = 0; i < n && stands && !overlap; i++)
+			for (int j = i + 1; j < n && stands; j++)
+				stands = rects_apart(g[i], g[j]);
+		if (stands)
+			offer_pieces(sp, (const double(*)[4])g, n);
+		int bi = 0, bj = 1;
+		double least = INFINITY;
+		for (int i = 0; i < n; i++)
+			for (int j = i + 1; j < n; j++) {
+				double u[4];
+				rect_union(g[i], g[j], u);
+				double added = rect_area(u) - rect_area(g[i]) - rect_area(g[j]);
+				if (added < least)
+					least = added, bi = i, bj = j;
+			}
+		rect_union(g[bi], g[bj], g[bi]);
+		memcpy(g[bj], g[n - 1], sizeof g[bj]);
+		n--;
+	}
+}
+
+/* A plane's choices of rectangles (plane_splits), up to `most` pieces. */
+static void plane_splits(const struct plane_chart *ch, int most, long own_budget, struct plane_splits *sp)
+{
+	memset(sp, 0, sizeof *sp);
+	sp->by[1].n = 1;
+	sp->by[1].r[0][0] = ch->x0, sp->by[1].r[0][1] = ch->y0, sp->by[1].r[0][2] = ch->x1, sp->by[1].r[0][3] = ch->y1;
+	if (most < 2 || ch->feet < 2)
+		return;
+	bool overlap = rect_area(sp->by[1].r[0]) > (double)own_budget;
+	split_along_axes(ch, overlap, sp);
+	merge_feet(ch, overlap, sp);
+	double kept = pieces_area(&sp->by[1]);
+	for (int k = 2; k <= PIECES_MAX; k++) {
+		if (k > most || sp->by[k].n == 0 || !(pieces_area(&sp->by[k]) < 0.8 * kept))
+			sp->by[k].n = 0; /* a fifth less area than the best with fewer, or not at all */
+		else
+			kept = pieces_area(&sp->by[k]);
+	}
+}
+
+/* What k pieces gain over j: the share of a lixel per pixel the budget gives, up to one
+ * (past one, lixels no longer decide more pixels); a choice that gains nothing there
+ * still saves area, counted as a little. */
+static double piece_gain(const struct plane_pieces *from, const struct plane_pieces *to, long budget)
+{
+	double one = pieces_area(from), two = pieces_area(to);
 	if (!(two > 0) || !(one > 0))
 		return 0;
 	return fmin(1, (double)budget / two) - fmin(1, (double)budget / one) + 1e-9 * (one - two) / one;
+}
+
+/* The spare pieces handed out one choice at a time to the plane whose next choice gains
+ * most per piece it takes; *take[i] the count plane i ends with. */
+static void share_pieces(const struct plane_splits *sp, const bool *ok, int np, int spare, long budget, int *take)
+{
+	for (int i = 0; i < np; i++)
+		take[i] = 1;
+	while (spare > 0) {
+		int best = -1, best_k = 0;
+		double most = -1;
+		for (int i = 0; i < np; i++)
+			for (int k = take[i] + 1; ok[i] && k <= PIECES_MAX && k - take[i] <= spare; k++) {
+				if (sp[i].by[k].n == 0)
+					continue;
+				double g = piece_gain(&sp[i].by[take[i]], &sp[i].by[k], budget) / (k - take[i]);
+				if (g > most)
+					most = g, best = i, best_k = k;
+			}
+		if (best < 0)
+			return;
+		spare -= best_k - take[best];
+		take[best] = best_k;
+	}
 }
 
 /* A_l's scales and translation for one piece: u = (sx, sy) * (R p - (x0, y0)) + (ox, oy),
@@ -908,16 +1013,16 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 	return fit_depth(f, ls, ch, b, depth, out, P);
 }
 
-/* Builds plane i's map (and its second piece's) from its chart, pieces, depth row and
- * lixel budget, with each piece's reach on the screen. */
+/* Builds plane i's map (and its spare pieces', more[0..]) from its chart, pieces, depth
+ * row and lixel budget, with each piece's reach on the screen. */
 static void build_plane_map(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
 			    const mat4 *depth, int i, long budget, double max_lpp, struct lx_shadow_map *map,
-			    struct lx_shadow_map *second)
+			    struct lx_shadow_map *const *more)
 {
 	struct plane_fit fit[PIECES_MAX];
 	fit_plane(ch, pc, &atlas->regions[map->region], atlas, budget, max_lpp, fit);
 	for (int k = 0; k < pc->n; k++) {
-		struct lx_shadow_map *mp = k == 0 ? map : second;
+		struct lx_shadow_map *mp = k == 0 ? map : more[k - 1];
 		const struct plane_fit *ft = &fit[k];
 		mat4 ak = piece_matrix(ch, ft), mk = m4_mul(&ak, &ch->cam.m);
 		for (int c = 0; c < 4; c++) /* the shared depth row */
@@ -1174,8 +1279,9 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
  * fallback; but seen from the eye a caster may be squeezed in it along some direction (a
  * sphere over a floor seen from a millimetre above it: the floor map is three lixels
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
- * its faces at least the fallback's lixels per pixel in their worst direction, then the
- * fallback (which covers every caster in view another's shadow can reach). */
+ * its faces at least the fallback's lixels per pixel in their worst direction (the
+ * densest three of them), then the fallback (which covers every caster in view another's
+ * shadow can reach). */
 static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_view,
 			       struct lx_shadow_result *out)
 {
@@ -1196,11 +1302,20 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 		double dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
 		if (!(dfb > 0))
 			continue;
-		unsigned mask = 1u << np;
+		/* the densest LX_MAX_READS - 1 of them (a draw reads at most LX_MAX_READS) */
+		double dens[LX_MAX_MAPS];
 		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 			const struct lx_shadow_map *pm = &out->maps[m];
-			if (pm->rendered && pm->plane >= 0 && box_density(pm, pm->w, pm->h, c, pix, faces, nf) >= dfb)
-				mask |= 1u << m;
+			dens[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
+		}
+		unsigned mask = 1u << np;
+		for (int k = 0; k < LX_MAX_READS - 1; k++) {
+			int best = -1;
+			for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+				if (!(mask & 1u << m) && dens[m] >= dfb && (best < 0 || dens[m] > dens[best]))
+					best = m;
+			if (best >= 0)
+				mask |= 1u << best;
 		}
 		out->object_maps[id] = mask;
 	}
@@ -1225,33 +1340,34 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	long budget[PLANE_MAPS];
 	struct plane_pieces pc[PLANE_MAPS];
 	mat4 depth[PLANE_MAPS];
-	bool piece_free = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece;
+	/* the atlas's spare pieces (plane_regions), for planes whose footprints cluster */
+	int spare = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece ? atlas->count - np - 1 : 0;
 	long own = (long)o->plane_lixels * o->plane_lixels;
-	int two = -1; /* the plane that takes the atlas's one spare piece: where it gains most */
-	double most = -1;
+	struct plane_splits sp[PLANE_MAPS];
 	for (int i = 0; i < np; i++) {
 		ch[i].unmapped = out->slab_out;
 		covered_part(f, &out->covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
+		if (ok[i])
+			plane_splits(&ch[i], spare > 0 ? 1 + (spare < PIECES_MAX - 1 ? spare : PIECES_MAX - 1) : 1, own, &sp[i]);
+	}
+	int take[PLANE_MAPS];
+	share_pieces(sp, ok, np, spare, own, take);
+	for (int i = 0; i < np; i++) {
 		if (!ok[i])
 			continue;
-		plane_pieces(&ch[i], piece_free, own, &pc[i]);
+		pc[i] = sp[i].by[take[i]];
+		/* no caster in front of a receiver there: no map (its pieces stay unused) */
 		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
-		double gain = ok[i] && pc[i].n > 1 ? piece_gain(&ch[i], &pc[i], own) : -1;
-		if (gain > most)
-			most = gain, two = i;
 	}
-	for (int i = 0; i < np; i++)
-		if (ok[i] && pc[i].n > 1 && i != two) { /* one rectangle after all */
-			plane_pieces(&ch[i], false, own, &pc[i]);
-			ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
-		}
-	int piece_of = two;
 	plane_budgets(atlas, o, ch, pc, ok, np, budget);
-	for (int i = 0; i < np; i++)
+	for (int i = 0, next = np + 1; i < np; i++) {
+		struct lx_shadow_map *more[PIECES_MAX - 1];
+		for (int k = 1; ok[i] && k < pc[i].n; k++)
+			more[k - 1] = &out->maps[next++];
 		if (ok[i])
-			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp,
-					&out->maps[i], piece_of == i ? &out->maps[np + 1] : NULL);
+			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i], more);
+	}
 	/* the fallback map: the receivers no plane map takes */
 	struct lx_shadow_map *fb = &out->maps[np];
 	bool needs[LX_MAX_PLANES] = {false};
