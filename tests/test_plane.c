@@ -217,7 +217,7 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 	}
 	print_message("%d configurations, %d plane maps checked (%d with a lixel or more for every pixel, %d stretched, "
 		      "%d spare pieces); at most %d maps read by one object\n", configs, maps, full, stretched, pieces, most_reads);
-	assert_true(configs >= 300 && maps >= 300 && full >= 100 && stretched >= 10 && pieces >= 100);
+	assert_true(configs >= 300 && maps >= 300 && full >= 100 && stretched >= 10 && pieces >= 30);
 }
 
 /* Shared budgets: a map keeps the scale its own budget gives when that covers what it
@@ -443,7 +443,7 @@ static void every_shadow_is_covered(void **state)
 			 s.scene.light.directional ? " dir" : "");
 		if (!wide)
 			total += check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 60, what);
-		fallback_used += s.res.maps[s.res.map_count - 1].rendered;
+		fallback_used += s.res.maps[s.scene.plane_count < 2 ? s.scene.plane_count : 2].rendered; /* after the planes' */
 		lx_meshes_free(&s.meshes);
 	}
 	print_message("%ld caster/receiver pairs covered; the fallback map ran in %d configurations\n", total, fallback_used);
@@ -865,7 +865,7 @@ static bool plane_lixel(const struct setup *s, int plane, vec3 p, double *u, dou
  * level as seen from the wall: its shadow there runs to the wall's horizon, and is
  * bounded where it falls on the wall's parallelogram (straddling_reach). With the light
  * inside the box's bounds nothing bounds its shadow, and the whole visible floor stays
- * wanted. Counted over the plane's pixel centres in view at 320x240 (hidden by a caster
+ * wanted. Counted over the plane's pixel centres in view at 1024x768 (hidden by a caster
  * or not, alike); every_shadow_is_covered and the sweep's random lights check that the
  * bounded maps still hold every shadow. */
 static void clipped_footprints_bound_the_planes(void **state)
@@ -883,17 +883,17 @@ static void clipped_footprints_bound_the_planes(void **state)
 		if (cases[i].config)
 			lx_config_apply(lx_config_find(cases[i].config), &s.scene);
 		else { /* the box's centre at time 0 */
-			assert_true(build(&s, "plane", 320, 240, 0));
+			assert_true(build(&s, "plane", 1024, 768, 0));
 			int box = s.scene.plane_count + 1;
 			s.scene.light.position = v3_scale(v3_add(s.frame.bmin[box], s.frame.bmax[box]), 0.5);
 			lx_meshes_free(&s.meshes);
 		}
-		assert_true(build(&s, "plane", 320, 240, 0));
+		assert_true(build(&s, "plane", 1024, 768, 0));
 		const struct lx_plane *P = &s.scene.planes[cases[i].plane];
 		vec4 eq = lx_plane_equation(P);
 		long seen = 0, served = 0;
-		for (int y = 0; y < 240; y++)
-			for (int x = 0; x < 320; x++) {
+		for (int y = 0; y < 768; y++)
+			for (int x = 0; x < 1024; x++) {
 				vec3 g;
 				double t, u, v;
 				if (!lx_window_on_plane(&s.frame.view, eq, x + 0.5, y + 0.5, &g, &t) || !(t > 0 && t < 1) ||
