@@ -517,6 +517,48 @@ static void a_lit_fronts_shadow_is_left_to_its_test(void **state)
 	assert_true(overlapping);
 }
 
+/* Random view 35 of the table (tools/random-views.py, seed 7) at 1024x768: the floor's
+ * shadows lie in five clusters across 934x521 pixels. One rectangle gives them a quarter
+ * of a lixel per pixel, stretched 4 to 1; the spare pieces give the floor three more
+ * rectangles at one scale near a lixel per pixel, within its budget, and the sampling
+ * checks hold on each. */
+static void scattered_shadows_take_pieces(void **state)
+{
+	(void)state;
+	double scale[2] = {0, 0};
+	int floor_maps[2] = {0, 0};
+	for (int whole = 0; whole < 2; whole++) {
+		struct setup s;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		o.plane_one_piece = whole;
+		memset(&s, 0, sizeof s);
+		lx_scene_table(&s.scene);
+		s.scene.camera.eye = v3(1.3444, 4.06765, -0.413802);
+		s.scene.camera.at = v3(1.06869, 0.079947, 0.4511);
+		s.scene.light.position = v3(-0.554718, 3.03491, 1.53064);
+		assert_true(build_with(&s, "plane", 1024, 768, 4.63335, &o));
+		long lixels = 0;
+		for (int m = 0; m < s.res.map_count; m++) {
+			const struct lx_shadow_map *map = &s.res.maps[m];
+			if (!map->rendered || map->plane != 1) /* the floor */
+				continue;
+			if (floor_maps[whole]++ && map->lixel_scale != scale[whole])
+				fail_msg("the floor's pieces at scales %.4f and %.4f", map->lixel_scale, scale[whole]);
+			scale[whole] = map->lixel_scale;
+			lixels += (long)map->w * map->h;
+		}
+		int stretched = 0;
+		check_sampling(&s, whole ? "view 35, one rectangle" : "view 35", &stretched);
+		print_message("view 35, %s: the floor in %d map%s at scale %.3f, %ld lixels\n",
+			      whole ? "one rectangle" : "pieces", floor_maps[whole], floor_maps[whole] > 1 ? "s" : "",
+			      scale[whole], lixels);
+		assert_true(lixels <= 350L * 350);
+		lx_meshes_free(&s.meshes);
+	}
+	assert_true(floor_maps[0] >= 3 && floor_maps[1] == 1);
+	assert_true(scale[0] > 0.9 && scale[1] < 0.6);
+}
+
 struct degenerate {
 	const char *what;
 	vec3 eye, at;
@@ -998,6 +1040,7 @@ int main(void)
 		cmocka_unit_test(maps_do_not_depend_on_the_frame_before),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),
+		cmocka_unit_test(scattered_shadows_take_pieces),
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),
 		cmocka_unit_test(only_what_the_scene_requires),

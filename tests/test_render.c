@@ -791,8 +791,8 @@ static void stretched_maps_follow_long_shadows(void **state)
  * table under the directional light, the floor's rectangle around the legs' shadows and
  * the cylinder's gives 0.75 lixels a pixel; two give a lixel per pixel: 0.0003% against
  * one rectangle's 0.0123% (before the slab left the maps, 0.0086% against 0.0264%, uniform
- * 0.0467%). Where the two pieces overlap, a pixel is drawn with both maps and reads the
- * first that serves it. */
+ * 0.0467%). Where pieces overlap, a pixel is drawn with each map and reads the first that
+ * serves it. */
 static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 {
 	(void)state;
@@ -807,10 +807,13 @@ static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 		pct[k] = r.mismatch.mismatch_pct;
 		assert_true(r.light[0].planes[1].present);
 		lpp[k] = r.light[0].planes[1].s.lpp_median;
-		assert_true(k == 1 || r.light[0].result.maps[3].rendered); /* the floor's second piece */
+		int floor_maps = 0;
+		for (int m = 0; m < r.light[0].result.map_count; m++)
+			floor_maps += r.light[0].result.maps[m].rendered && r.light[0].result.maps[m].plane == 1;
+		assert_true(k == 1 || floor_maps >= 2); /* the floor in pieces */
 		lx_render_report_free(&r);
 	}
-	print_message("table, directional light, 1024x1024: two pieces %.4f%% (floor lpp %.3f), one %.4f%% (lpp %.3f)\n",
+	print_message("table, directional light, 1024x1024: pieces %.4f%% (floor lpp %.3f), one %.4f%% (lpp %.3f)\n",
 		      pct[0], lpp[0], pct[1], lpp[1]);
 	assert_true(lpp[0] >= 1 && lpp[1] < 1);
 	assert_true(pct[0] < 0.5 * pct[1]);
