@@ -24,7 +24,7 @@
 
 /* The regions: one per plane of interest (at most two), the fallback, and with fitted
  * shapes the spare pieces that the plane maps take when their casters' footprints form
- * clusters apart (plane_splits). */
+ * clusters (plane_splits). */
 static int plane_regions(const struct lx_scene *s, const struct lx_method_options *o, struct lx_region_request *out)
 {
 	int n = 0, planes = s->plane_count < PLANE_MAPS ? s->plane_count : PLANE_MAPS;
