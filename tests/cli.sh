@@ -126,6 +126,16 @@ done
 "$lixel" render --scene table --plane-lixels 200 --fallback-lixels 64 --json --size 96x64 --frames 1 --out "$tmp/t.png" >"$tmp/json" 2>&1 &&
   n=$(map_lixels table "$tmp/json") && [ -n "$n" ] && [ "$n" -le 40000 ] && grep -q '"lixels": 84096' "$tmp/json" && ok ||
   no "table scene with budgets: $(cat "$tmp/json")"
+# the table's default view at 1024x1024: the floor's shadows in pieces, counted in the
+# planes' JSON, their lixels together at least those used
+"$lixel" render --scene table --size 1024x1024 --measure --json --frames 1 --out "$tmp/t.png" >"$tmp/json" 2>&1 &&
+  floor=$(grep -o '"floor": {[^}]*}' "$tmp/json" | head -n 1) &&
+  pieces=$(echo "$floor" | sed -n 's/.*"map_pieces": \([0-9]*\).*/\1/p') &&
+  lixels=$(echo "$floor" | sed -n 's/.*"map_lixels": \([0-9]*\).*/\1/p') &&
+  used=$(echo "$floor" | sed -n 's/.*"lixels_used": \([0-9.]*\).*/\1/p') &&
+  [ "$pieces" -ge 2 ] && [ "$pieces" -le 4 ] && [ "$lixels" -le 122500 ] &&
+  awk -v l="$lixels" -v u="$used" 'BEGIN { exit !(l >= u && u > 0) }' && ok ||
+  no "table, 1024x1024: the floor's pieces '$pieces', lixels '$lixels', used '$used': $(cat "$tmp/json")"
 # each two-word option's words both taken, to different effect: fixed budgets' atlas is
 # smaller than shared ones' (which must hold a map grown by what the others leave)
 for b in fixed shared; do

@@ -102,6 +102,22 @@ static void light_warning(const struct lx_render_report *r, int l, const char *w
 		snprintf(out, room, "light %d: %s", l + 1, strncmp(w, "light: ", 7) ? w : w + 7);
 }
 
+/* How many rectangles plane p's own map is cut into this frame (its region and the spare
+ * pieces it took), and the lixels they hold together in *lixels. */
+static int own_pieces(const struct lx_light_report *lr, int p, long *lixels)
+{
+	int n = 0;
+	*lixels = 0;
+	for (int i = 0; i < lr->result.map_count; i++) {
+		const struct lx_shadow_map *m = &lr->result.maps[i];
+		if (m->rendered && m->plane == p) {
+			const struct lx_region *g = &lr->atlas.regions[m->region];
+			n++, *lixels += (long)g->w * g->h;
+		}
+	}
+	return n;
+}
+
 /* The name of the map serving a plane's figures. */
 static const char *plane_map_name(const struct lx_light_report *lr, const struct lx_plane_report *pr)
 {
@@ -171,11 +187,17 @@ static void print_planes(const struct lx_render_report *r, int l)
 			       who, pr->name, pr->s.seen, pr->s.no_lookup, pr->s.unserved);
 		else if (!pr->present)
 			printf("%splane %s: not in view\n", who, pr->name);
-		else
-			printf("%splane %s (%s map): %ld of its %ld pixels read a map, lpp median %.4g, m median %.4g, "
+		else {
+			long lixels;
+			int pieces = pr->s.map >= 0 ? own_pieces(lr, p, &lixels) : 0;
+			char in[32] = "";
+			if (pieces > 1)
+				snprintf(in, sizeof in, " in %d pieces", pieces);
+			printf("%splane %s (%s map%s): %ld of its %ld pixels read a map, lpp median %.4g, m median %.4g, "
 			       "m max %.4g, aniso max %.4g, lixels used %.0f\n",
-			       who, pr->name, plane_map_name(lr, pr), pr->s.pixels, pr->s.seen, pr->s.lpp_median,
+			       who, pr->name, plane_map_name(lr, pr), in, pr->s.pixels, pr->s.seen, pr->s.lpp_median,
 			       pr->s.m_median, pr->s.m_max, pr->s.aniso_max, pr->s.lixels_used);
+		}
 	}
 }
 
@@ -234,9 +256,10 @@ static void json_planes(struct lx_json *j, const struct lx_render_report *r, int
 		lx_json_key(j, "lpp_spread"), lx_json_number(j, pr->s.lpp_min > 0 ? pr->s.lpp_max / pr->s.lpp_min : NAN);
 		lx_json_key(j, "degenerate_pixels"), lx_json_int(j, pr->s.degenerate);
 		lx_json_key(j, "lixels_used"), lx_json_number(j, pr->s.lixels_used);
-		if (pr->s.map >= 0) { /* budget use: of the plane's own map's lixels */
-			const struct lx_region *g = &lr->atlas.regions[lr->result.maps[pr->s.map].region];
-			lx_json_key(j, "map_lixels"), lx_json_int(j, (long)g->w * g->h);
+		if (pr->s.map >= 0) { /* budget use: of the plane's own map's lixels, all its pieces' */
+			long lixels;
+			lx_json_key(j, "map_pieces"), lx_json_int(j, own_pieces(lr, p, &lixels));
+			lx_json_key(j, "map_lixels"), lx_json_int(j, lixels);
 		}
 		lx_json_end(j);
 	}
