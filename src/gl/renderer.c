@@ -872,8 +872,10 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
 	covers = r->d.map_count > 0 && faces != LX_FACES_AWAY ? covers : 0;
-	while (maps_in(*mask) > LX_MAX_READS) /* the methods keep within it (lx_shadow_method_frame) */
-		*mask &= ~(1u << (31 - __builtin_clz(*mask)));
+	/* the methods keep within LX_MAX_READS (a plane reads its own pieces, a caster at most
+	 * four maps: choose_caster_maps; test_plane checks it): the last maps beyond it go */
+	for (int m = LX_MAX_MAPS - 1; m >= 0 && maps_in(*mask) > LX_MAX_READS; m--)
+		*mask &= ~(1u << m);
 	int reads = maps_in(*mask);
 	struct main_program *p = &r->variant[shading][r->filter][faces][reads][covers];
 	if (!p->prog) {
