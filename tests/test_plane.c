@@ -203,7 +203,11 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 		int n = check_sampling(&s, what, &stretched);
 		maps += n;
 		for (int id = 0; id < s.frame.object_count; id++) { /* what one draw of it reads (LX_MAX_READS) */
-			int reads = __builtin_popcount(lx_shadow_receiver_maps(&s.res, id));
+			/* the method's own choice, before lx_shadow_receiver_maps keeps the first four */
+			unsigned chosen = s.res.object_maps[id];
+			for (int m = 0; !chosen && m < s.res.map_count; m++)
+				chosen |= s.res.maps[m].rendered && s.res.maps[m].plane == id ? 1u << m : 0;
+			int reads = __builtin_popcount(chosen ? chosen : lx_shadow_receiver_maps(&s.res, id));
 			most_reads = reads > most_reads ? reads : most_reads;
 			if (reads > LX_MAX_READS)
 				fail_msg("%s: object %d reads %d maps", what, id, reads);
@@ -557,6 +561,23 @@ static void scattered_shadows_take_pieces(void **state)
 	}
 	assert_true(floor_maps[0] >= 3 && floor_maps[1] == 1);
 	assert_true(scale[0] > 0.9 && scale[1] < 0.6);
+}
+
+/* What one draw reads is at most LX_MAX_READS maps, the first of the set: a method that
+ * chose more (none does: scattered_shadows_take_pieces, the sweep) loses the last. */
+static void receiver_maps_keep_the_first_four(void **state)
+{
+	(void)state;
+	static struct lx_shadow_result r;
+	memset(&r, 0, sizeof r);
+	r.map_count = 8;
+	r.object_maps[3] = 0xF6u; /* maps 1, 2, 4, 5, 6 and 7 */
+	assert_int_equal(lx_shadow_receiver_maps(&r, 3), 0x36u);
+	for (int m = 0; m < 8; m++) /* object 0's own maps: all eight, a plane cut too far */
+		r.maps[m].rendered = true, r.maps[m].plane = 0;
+	assert_int_equal(lx_shadow_receiver_maps(&r, 0), 0x0Fu);
+	r.object_maps[5] = 0x81u;
+	assert_int_equal(lx_shadow_receiver_maps(&r, 5), 0x81u);
 }
 
 struct degenerate {
@@ -1041,6 +1062,7 @@ int main(void)
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),
 		cmocka_unit_test(scattered_shadows_take_pieces),
+		cmocka_unit_test(receiver_maps_keep_the_first_four),
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),
 		cmocka_unit_test(only_what_the_scene_requires),

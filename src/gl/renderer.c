@@ -74,9 +74,10 @@ struct draw {
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
-	/* a plane draws once per set of maps, with the cover test or without, and once in a
-	 * cover's shadow (object_draws); a caster at most twice */
-	struct draw draws[LX_MAX_PLANES * (2 * (1 << LX_MAX_MAPS) + 1) + 2 * LX_MAX_CASTERS];
+	/* a plane draws once per set of the maps it reads (at most LX_MAX_READS:
+	 * lx_shadow_receiver_maps), with the cover test or without, and once in a cover's
+	 * shadow (object_draws); a caster at most twice */
+	struct draw draws[LX_MAX_PLANES * (2 * (1 << LX_MAX_READS) + 1) + 2 * LX_MAX_CASTERS];
 	/* casters' triangles sorted by facing this frame, 16-bit indices into their meshes */
 	unsigned short *facing_index;
 	int facing_count, facing_room;
@@ -872,10 +873,6 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
 	covers = r->d.map_count > 0 && faces != LX_FACES_AWAY ? covers : 0;
-	/* the methods keep within LX_MAX_READS (a plane reads its own pieces, a caster at most
-	 * four maps: choose_caster_maps; test_plane checks it): the last maps beyond it go */
-	for (int m = LX_MAX_MAPS - 1; m >= 0 && maps_in(*mask) > LX_MAX_READS; m--)
-		*mask &= ~(1u << m);
 	int reads = maps_in(*mask);
 	struct main_program *p = &r->variant[shading][r->filter][faces][reads][covers];
 	if (!p->prog) {

@@ -695,20 +695,21 @@ static void merge_feet(const struct plane_chart *ch, struct plane_splits *sp)
 	}
 }
 
-/* A plane's choices of rectangles (plane_splits), up to `most` pieces. */
-static void plane_splits(const struct plane_chart *ch, int most, long own_budget, struct plane_splits *sp)
+/* A plane's choices of rectangles (plane_splits); none but the one rectangle without
+ * spare pieces to take. */
+static void plane_splits(const struct plane_chart *ch, bool spare, long own_budget, struct plane_splits *sp)
 {
 	memset(sp, 0, sizeof *sp);
 	sp->by[1].n = 1;
 	sp->by[1].r[0][0] = ch->x0, sp->by[1].r[0][1] = ch->y0, sp->by[1].r[0][2] = ch->x1, sp->by[1].r[0][3] = ch->y1;
 	/* within the budget at a lixel per pixel, no split gains (piece_gain) */
-	if (most < 2 || ch->feet < 2 || !(rect_area(sp->by[1].r[0]) > (double)own_budget))
+	if (!spare || ch->feet < 2 || !(rect_area(sp->by[1].r[0]) > (double)own_budget))
 		return;
 	split_along_axes(ch, sp);
 	merge_feet(ch, sp);
 	double kept = pieces_area(&sp->by[1]);
 	for (int k = 2; k <= PIECES_MAX; k++) {
-		if (k > most || sp->by[k].n == 0 || !(pieces_area(&sp->by[k]) < 0.8 * kept))
+		if (sp->by[k].n == 0 || !(pieces_area(&sp->by[k]) < 0.8 * kept))
 			sp->by[k].n = 0; /* a fifth less area than the best with fewer, or not at all */
 		else
 			kept = pieces_area(&sp->by[k]);
@@ -1344,7 +1345,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		covered_part(f, &out->covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (ok[i])
-			plane_splits(&ch[i], spare > 0 ? 1 + (spare < PIECES_MAX - 1 ? spare : PIECES_MAX - 1) : 1, own, &sp[i]);
+			plane_splits(&ch[i], spare > 0, own, &sp[i]); /* share_pieces keeps within the spare ones */
 	}
 	int take[PLANE_MAPS];
 	share_pieces(sp, ok, np, spare, own, take);

@@ -153,11 +153,21 @@ void lx_shadow_map_full(struct lx_shadow_map *m)
 	m->bounds[2] = m->bounds[3] = 1;
 }
 
+/* The first LX_MAX_READS maps of a set: the most one draw reads. */
+static unsigned first_reads(unsigned mask)
+{
+	unsigned kept = 0;
+	for (int i = 0, n = 0; i < LX_MAX_MAPS && n < LX_MAX_READS; i++)
+		if (mask & 1u << i)
+			kept |= 1u << i, n++;
+	return kept;
+}
+
 unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
 {
 	unsigned own = 0, shared = 0;
 	if (object >= 0 && object < LX_MAX_PLANES + LX_MAX_CASTERS && r->object_maps[object])
-		return r->object_maps[object];
+		return first_reads(r->object_maps[object]);
 	for (int i = 0; i < r->map_count && i < LX_MAX_MAPS; i++) {
 		const struct lx_shadow_map *m = &r->maps[i];
 		if (!m->rendered)
@@ -167,7 +177,7 @@ unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
 		else if (m->plane == object)
 			own |= 1u << i;
 	}
-	return own ? own : shared;
+	return first_reads(own ? own : shared);
 }
 
 int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p)

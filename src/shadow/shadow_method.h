@@ -165,7 +165,9 @@ void lx_shadow_map_full(struct lx_shadow_map *m);
  * with rendered maps of its own (map.plane == object) reads only those, since its pixels
  * are their receivers and where they do not serve no caster's shadow falls; every other
  * object reads the rendered maps that belong to no plane (the one map of a one-map
- * method, the plane method's fallback), unless the method chose its maps (object_maps). */
+ * method, the plane method's fallback), unless the method chose its maps (object_maps).
+ * At most the first LX_MAX_READS of them, the most one draw reads: the methods keep
+ * within it (a plane's pieces, choose_caster_maps), so that drops nothing. */
 unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object);
 /* The map the main pass would use for world point p of receiver object `object` (the
  * shader's choice, in double): the first of its maps that serves p, or -1. */
