@@ -33,7 +33,7 @@ static void check_layout(const struct lx_atlas *a, const struct lx_region_reques
 static void plane_optimal_layout(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"floor", 350, 350, 0, false}, {"wall", 350, 350, 0, false}, {"fallback", 128, 128, 0, false}};
+	struct lx_region_request req[] = {{"floor", 350, 350, 0, false, 0}, {"wall", 350, 350, 0, false, 0}, {"fallback", 128, 128, 0, false, 0}};
 	struct lx_atlas a;
 	char err[256];
 	assert_true(lx_atlas_layout(&a, req, 3, 1, 2048, err, sizeof err));
@@ -49,7 +49,7 @@ static void plane_optimal_layout(void **state)
 static void uniform_layout_has_its_guard(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"uniform", 512, 512, 0, false}};
+	struct lx_region_request req[] = {{"uniform", 512, 512, 0, false, 0}};
 	struct lx_atlas a;
 	char err[256];
 	assert_true(lx_atlas_layout(&a, req, 1, 1, 2048, err, sizeof err));
@@ -70,7 +70,7 @@ static void many_regions_and_guards(void **state)
 		int n = 1 + (int)(test_rand(&s) * LX_ATLAS_MAX_REGIONS);
 		for (int i = 0; i < n; i++) {
 			snprintf(names[i], sizeof names[i], "r%d", i);
-			req[i] = (struct lx_region_request){names[i], 1 + (int)(test_rand(&s) * 400), 1 + (int)(test_rand(&s) * 400), 0, false};
+			req[i] = (struct lx_region_request){names[i], 1 + (int)(test_rand(&s) * 400), 1 + (int)(test_rand(&s) * 400), 0, false, 0};
 		}
 		int guard = (int)(test_rand(&s) * 4);
 		struct lx_atlas a;
@@ -84,15 +84,19 @@ static void many_regions_and_guards(void **state)
 
 
 /* This frame's regions lie inside the texture, guard bands included, apart from each
- * other; a variable region holds at most its budget, within the longest side. */
+ * other; a variable region holds at most its budget (its limit alone, alone in the
+ * frame), within the longest side. */
 static void check_frame(const struct lx_atlas *a, const int *w, const int *h, bool exact)
 {
+	int placed = 0;
+	for (int i = 0; i < a->count; i++)
+		placed += a->regions[i].w > 0 && a->regions[i].h > 0;
 	for (int i = 0; i < a->count; i++) {
 		const struct lx_region *r = &a->regions[i];
 		if (r->w == 0 && r->h == 0)
 			continue;
 		if (r->variable) {
-			assert_true((long)r->w * r->h <= r->budget);
+			assert_true((long)r->w * r->h <= (placed == 1 && r->alone > 0 ? r->alone : r->budget));
 			assert_true(r->w <= a->max_side && r->h <= a->max_side);
 			assert_true(r->w >= r->h); /* laid landscape */
 			int ow = r->turned ? r->h : r->w, oh = r->turned ? r->w : r->h;
@@ -128,7 +132,7 @@ static void shape(long budget, double aspect, int *w, int *h)
 static void plane_budgets_fit_every_aspect(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"floor", 350, 350, 350 * 350, false}, {"wall", 350, 350, 350 * 350, false}, {"fallback", 128, 128, 0, false}};
+	struct lx_region_request req[] = {{"floor", 350, 350, 350 * 350, false, 0}, {"wall", 350, 350, 350 * 350, false, 0}, {"fallback", 128, 128, 0, false, 0}};
 	struct lx_atlas start;
 	char err[256];
 	assert_true(lx_atlas_layout(&start, req, 3, 1, 4096, err, sizeof err));
@@ -177,8 +181,8 @@ static void shared_budgets_fit(void **state)
 {
 	(void)state;
 	long pool = 2L * 350 * 350;
-	struct lx_region_request req[] = {{"floor", 350, 350, pool, false}, {"wall", 350, 350, pool, false},
-					  {"fallback", 128, 128, pool + 128 * 128, false}};
+	struct lx_region_request req[] = {{"floor", 350, 350, pool, false, 0}, {"wall", 350, 350, pool, false, 0},
+					  {"fallback", 128, 128, pool + 128 * 128, false, 0}};
 	struct lx_atlas start;
 	char err[256];
 	assert_true(lx_atlas_layout(&start, req, 3, 1, 2048, err, sizeof err));
@@ -203,7 +207,7 @@ static void shared_budgets_fit(void **state)
 static void a_frame_that_cannot_fit_shrinks(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100, false}, {"b", 100, 100, 100 * 100, false}};
+	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100, false, 0}, {"b", 100, 100, 100 * 100, false, 0}};
 	struct lx_atlas at;
 	char err[256];
 	assert_true(lx_atlas_layout(&at, req, 2, 1, 256, err, sizeof err));
@@ -218,24 +222,63 @@ static void a_frame_that_cannot_fit_shrinks(void **state)
 	assert_int_equal(at.regions[1].h, 0);
 }
 
+/* A variable region with a limit alone (plane-optimal's fallback with fixed budgets)
+ * takes up to it only in a frame where no other region is placed, else its budget; the
+ * layout lowers the limit to the square that fits the area alone, never growing the
+ * atlas for it; a limit on a fixed region, or below zero, is refused. */
+static void alone_takes_more(void **state)
+{
+	(void)state;
+	char err[256];
+	struct lx_region_request req[] = {{"a", 100, 100, 100 * 100, false, 0}, {"b", 50, 50, 50 * 50, false, 0}};
+	struct lx_atlas plain, at;
+	assert_true(lx_atlas_layout(&plain, req, 2, 1, 2048, err, sizeof err));
+	req[1].alone_lixels = 100000000; /* more than any texture holds */
+	assert_true(lx_atlas_layout(&at, req, 2, 1, 2048, err, sizeof err));
+	assert_int_equal(at.width, plain.width);
+	assert_int_equal(at.height, plain.height);
+	long side = (at.width < at.height ? at.width : at.height) - 2;
+	assert_int_equal(at.regions[1].alone, side * side);
+	int w[2] = {0, 4000}, h[2] = {0, 4000};
+	assert_int_equal(lx_atlas_pack(&at, w, h), 0); /* alone: as large as fits */
+	assert_int_equal(at.regions[1].w, side);
+	assert_int_equal(at.regions[1].h, side);
+	check_frame(&at, w, h, false);
+	w[0] = h[0] = 10; /* with another: its budget */
+	assert_int_equal(lx_atlas_pack(&at, w, h), 0);
+	assert_true((long)at.regions[1].w * at.regions[1].h <= 50 * 50);
+	check_frame(&at, w, h, false);
+	req[1].alone_lixels = 60 * 60; /* a limit that fits is kept */
+	assert_true(lx_atlas_layout(&at, req, 2, 1, 2048, err, sizeof err));
+	assert_int_equal(at.regions[1].alone, 60 * 60);
+	w[0] = h[0] = 0;
+	assert_int_equal(lx_atlas_pack(&at, w, h), 0);
+	assert_true((long)at.regions[1].w * at.regions[1].h <= 60 * 60 && at.regions[1].w * at.regions[1].h > 50 * 50);
+	struct lx_region_request fixed[] = {{"f", 10, 10, 0, false, 400}}, negative[] = {{"n", 10, 10, 100, false, -1}};
+	assert_false(lx_atlas_layout(&at, fixed, 1, 1, 2048, err, sizeof err));
+	assert_non_null(strstr(err, "'f'"));
+	assert_false(lx_atlas_layout(&at, negative, 1, 1, 2048, err, sizeof err));
+	assert_non_null(strstr(err, "'n'"));
+}
+
 static void size_limits_give_clear_errors(void **state)
 {
 	(void)state;
 	struct lx_atlas a;
 	char err[256];
-	struct lx_region_request big[] = {{"huge", 2048, 2048, 0, false}};
+	struct lx_region_request big[] = {{"huge", 2048, 2048, 0, false, 0}};
 	assert_false(lx_atlas_layout(&a, big, 1, 1, 2048, err, sizeof err)); /* the guard does not fit */
 	assert_non_null(strstr(err, "huge"));
 	assert_non_null(strstr(err, "2048"));
-	struct lx_region_request three[] = {{"a", 1100, 1100, 0, false}, {"b", 1100, 1100, 0, false}, {"c", 1100, 1100, 0, false}};
+	struct lx_region_request three[] = {{"a", 1100, 1100, 0, false, 0}, {"b", 1100, 1100, 0, false, 0}, {"c", 1100, 1100, 0, false, 0}};
 	assert_false(lx_atlas_layout(&a, three, 3, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "do not fit"));
 	assert_true(lx_atlas_layout(&a, three, 3, 1, 4096, err, sizeof err));
 	check_layout(&a, three, 3);
-	struct lx_region_request bad[] = {{"zero", 0, 10, 0, false}};
+	struct lx_region_request bad[] = {{"zero", 0, 10, 0, false, 0}};
 	assert_false(lx_atlas_layout(&a, bad, 1, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "zero"));
-	struct lx_region_request dup[] = {{"x", 10, 10, 0, false}, {"x", 10, 10, 0, false}};
+	struct lx_region_request dup[] = {{"x", 10, 10, 0, false, 0}, {"x", 10, 10, 0, false, 0}};
 	assert_false(lx_atlas_layout(&a, dup, 2, 1, 2048, err, sizeof err));
 	assert_non_null(strstr(err, "twice"));
 	/* no regions (method none): a valid 1x1 texture */
@@ -264,7 +307,8 @@ static void method_part(const char *method, const struct lx_method_options *o, s
 }
 
 /* With the default options: plane-optimal's variable floor and wall budgets of 350^2, its
- * 128^2 fallback and its four borrowed spare pieces; uniform's 512^2. */
+ * 128^2 fallback (all three budgets when alone) and its four borrowed spare pieces;
+ * uniform's 512^2. */
 static void real_part(enum part_kind kind, struct lx_atlas *a)
 {
 	method_part(kind == PART_PLANE ? "plane" : "uniform", &LX_METHOD_OPTIONS_DEFAULT, a);
@@ -272,7 +316,9 @@ static void real_part(enum part_kind kind, struct lx_atlas *a)
 		assert_int_equal(a->count, 7);
 		assert_true(a->regions[0].variable && a->regions[0].budget == 350 * 350);
 		assert_true(a->regions[1].variable && a->regions[1].budget == 350 * 350);
-		assert_true(!a->regions[2].variable && a->regions[2].w == 128 && a->regions[2].h == 128);
+		/* the fallback: 128^2, and in a frame without a plane map every lixel of the three */
+		assert_true(a->regions[2].variable && a->regions[2].budget == 128 * 128 && a->regions[2].w == 128 &&
+			    a->regions[2].h == 128 && a->regions[2].alone == 2 * 350 * 350 + 128 * 128);
 		for (int r = 3; r < 7; r++)
 			assert_true(a->regions[r].variable && a->regions[r].counted == 0);
 	} else {
@@ -477,19 +523,19 @@ static void variable_parts_side_by_side(void **state)
 	method_part("plane", &o, &alone[1]);
 	method_part("plane", &o, &alone[2]);
 	assert_int_equal(alone[1].width, 908);
-	assert_int_equal(alone[1].height, 298);
-	struct lx_region_request wide[] = {{"wide", 998, 594, 0, false}}; /* 1000 x twice 298 */
+	assert_int_equal(alone[1].height, 300);
+	struct lx_region_request wide[] = {{"wide", 998, 598, 0, false, 0}}; /* 1000 x twice 300 */
 	assert_true(lx_atlas_layout(&alone[0], wide, 1, 1, 2048, err, sizeof err));
 	for (int i = 0; i < 3; i++) {
 		part[i] = alone[i];
 		parts[i] = &part[i];
 	}
 	assert_true(lx_atlas_stack(parts, 3, 2048, err, sizeof err));
-	/* 1908x596 turned beats the best shelves, all in a column 1000x1192 */
+	/* 1908x600 turned beats the best shelves, all in a column 1000x1200 */
 	assert_int_equal(part[0].texture_width, 1908);
-	assert_int_equal(part[0].texture_height, 596);
+	assert_int_equal(part[0].texture_height, 600);
 	assert_true(part[0].x0 == 0 && part[0].y0 == 0);
-	assert_true(part[1].x0 == 1000 && part[1].y0 == 0 && part[2].x0 == 1000 && part[2].y0 == 298);
+	assert_true(part[1].x0 == 1000 && part[1].y0 == 0 && part[2].x0 == 1000 && part[2].y0 == 300);
 	check_stack(parts, 3);
 	assert_int_equal(pack_stacked_frames(alone, parts, 3), 81);
 }
@@ -537,7 +583,7 @@ static void stack_arrangements(void **state)
 	for (int i = 0; i < 4; i++)
 		assert_memory_equal(mixed2[i], mixed[i], sizeof again[i]);
 	/* tall parts: columns side by side beat one row or one column */
-	struct lx_region_request tall[] = {{"t", 98, 998, 0, false}};
+	struct lx_region_request tall[] = {{"t", 98, 998, 0, false, 0}};
 	struct lx_atlas t[3];
 	for (int i = 0; i < 3; i++)
 		assert_true(lx_atlas_layout(&t[i], tall, 1, 1, 4096, err, sizeof err));
@@ -548,7 +594,7 @@ static void stack_arrangements(void **state)
 	check_stack(three, 3);
 	/* one tall part and two half as tall: the best shelves give 100x2000, the turned
 	 * packing (a column of the two beside the tall one) the squarer 200x1000 */
-	struct lx_region_request half[] = {{"h", 98, 498, 0, false}};
+	struct lx_region_request half[] = {{"h", 98, 498, 0, false, 0}};
 	assert_true(lx_atlas_layout(&t[1], half, 1, 1, 4096, err, sizeof err));
 	assert_true(lx_atlas_layout(&t[2], half, 1, 1, 4096, err, sizeof err));
 	assert_true(lx_atlas_stack(three, 3, 4096, err, sizeof err));
@@ -558,8 +604,8 @@ static void stack_arrangements(void **state)
 	check_stack(three, 3);
 	/* 1000x200, 500x1000, 1000x500: no prefix of widths makes a shelf as wide as the widest
 	 * part (turned, 1000 tall); that shelf stacks the two wide parts beside the tall one */
-	struct lx_region_request sizes[3][1] = {{{"a", 998, 198, 0, false}}, {{"b", 498, 998, 0, false}},
-						 {{"c", 998, 498, 0, false}}};
+	struct lx_region_request sizes[3][1] = {{{"a", 998, 198, 0, false, 0}}, {{"b", 498, 998, 0, false, 0}},
+						 {{"c", 998, 498, 0, false, 0}}};
 	for (int i = 0; i < 3; i++)
 		assert_true(lx_atlas_layout(&t[i], sizes[i], 1, 1, 4096, err, sizeof err));
 	assert_true(lx_atlas_stack(three, 3, 4096, err, sizeof err));
@@ -600,7 +646,7 @@ static void stack_that_cannot_fit_fails(void **state)
 {
 	(void)state;
 	char err[512];
-	struct lx_region_request big[] = {{"big", 1998, 1998, 0, false}};
+	struct lx_region_request big[] = {{"big", 1998, 1998, 0, false, 0}};
 	struct lx_atlas b[4], before[4];
 	struct lx_atlas *parts[] = {&b[0], &b[1], &b[2], &b[3]};
 	for (int i = 0; i < 4; i++) {
@@ -679,6 +725,7 @@ int main(void)
 		cmocka_unit_test(shared_budgets_fit),
 		cmocka_unit_test(plane_pieces_fit),
 		cmocka_unit_test(a_frame_that_cannot_fit_shrinks),
+		cmocka_unit_test(alone_takes_more),
 		cmocka_unit_test(one_part_stays_alone),
 		cmocka_unit_test(stacked_parts_pack_apart),
 		cmocka_unit_test(variable_parts_side_by_side),

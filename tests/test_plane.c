@@ -563,6 +563,45 @@ static void scattered_shadows_take_pieces(void **state)
 	assert_true(scale[0] > 0.9 && scale[1] < 0.6);
 }
 
+/* With fixed budgets a frame without a plane map is a one-map frame: on random view 72 of
+ * the default scene (tools/random-views.py) no shadow in view falls on the floor or the
+ * wall, and the fallback, serving every shadow, takes all three budgets (511x511, as
+ * uniform's 512x512); the default view, which has a floor map, keeps it at 128x128, as
+ * does a density cap (there to spend less fill). */
+static void fallback_alone_takes_every_budget(void **state)
+{
+	(void)state;
+	for (int k = 0; k < 3; k++) {
+		struct setup s;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		if (k > 0) {
+			s.scene.camera.eye = v3(1.65294, 4.75918, 0.0246814);
+			s.scene.camera.at = v3(-0.31962, 0.255539, 0.896479);
+			s.scene.light.position = v3(-4.29707, 1.31104, -3.39865);
+		}
+		o.plane_max_lpp = k == 2 ? 1 : 0;
+		assert_true(build_with(&s, "plane", 1024, 768, k > 0 ? 1.96661 : 0, &o));
+		int plane_maps = 0, side = 0;
+		for (int m = 0; m < s.res.map_count; m++) {
+			const struct lx_shadow_map *map = &s.res.maps[m];
+			plane_maps += map->rendered && map->plane >= 0;
+			if (map->rendered && map->plane < 0) {
+				const struct lx_region *g = &s.atlas.regions[map->region];
+				assert_int_equal(g->w, g->h);
+				side = g->w;
+			}
+		}
+		print_message("%s: %d plane maps, the fallback %dx%d\n",
+			      k == 0 ? "default view" : k == 1 ? "view 72" : "view 72, at most 1 lixel per pixel", plane_maps, side,
+			      side);
+		assert_int_equal(plane_maps, k == 0 ? 1 : 0);
+		assert_int_equal(side, k == 1 ? 511 : 128);
+		lx_meshes_free(&s.meshes);
+	}
+}
+
 /* What one draw reads is at most LX_MAX_READS maps, the first of the set: a method that
  * chose more (none does: scattered_shadows_take_pieces, the sweep) loses the last. */
 static void receiver_maps_keep_the_first_four(void **state)
@@ -1062,6 +1101,7 @@ int main(void)
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),
 		cmocka_unit_test(scattered_shadows_take_pieces),
+		cmocka_unit_test(fallback_alone_takes_every_budget),
 		cmocka_unit_test(receiver_maps_keep_the_first_four),
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),

@@ -366,7 +366,7 @@ static void plane_homography_matches_projection(void **state)
 	struct lx_frame f;
 	char err[256];
 	scene_frame(lx_scene_default, &s, &m, &f, 200, 150);
-	struct lx_region_request req[] = {{"m", 300, 200, 0, false}};
+	struct lx_region_request req[] = {{"m", 300, 200, 0, false, 0}};
 	struct lx_atlas atlas;
 	assert_true(lx_atlas_layout(&atlas, req, 1, 1, 2048, err, sizeof err));
 	struct lx_shadow_map map = {.region = 0, .rendered = true};

@@ -149,7 +149,7 @@ static void registry_methods_build_or_warp(void **state)
 static void texture_matrix_lands_in_the_region(void **state)
 {
 	(void)state;
-	struct lx_region_request req[] = {{"a", 100, 50, 0, false}, {"b", 30, 70, 0, false}};
+	struct lx_region_request req[] = {{"a", 100, 50, 0, false, 0}, {"b", 30, 70, 0, false, 0}};
 	struct lx_atlas a;
 	char err[128];
 	assert_true(lx_atlas_layout(&a, req, 2, 1, 2048, err, sizeof err));

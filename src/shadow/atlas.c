@@ -148,6 +148,16 @@ static bool layout_variable(struct lx_atlas *a, int max_size)
 	a->width = width;
 	a->height = (int)height;
 	a->max_side = max_side;
+	/* a region alone takes at most the square that fits the area, guards included; the
+	 * area was sized without it, so it never grows the atlas */
+	long fits = (long)(width < height ? width : height) - 2L * g;
+	for (int i = 0; i < a->count; i++) {
+		struct lx_region *r = &a->regions[i];
+		if (r->alone > fits * fits)
+			r->alone = fits * fits;
+		if (r->alone <= r->budget)
+			r->alone = 0;
+	}
 	return true;
 }
 
@@ -177,8 +187,9 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 			snprintf(err, errlen, "atlas: region '%s' is %dx%d lixels, expected at least 1x1", req[i].name, req[i].w, req[i].h);
 			return false;
 		}
-		if (req[i].max_lixels < 0) {
-			snprintf(err, errlen, "atlas: region '%s' may hold %ld lixels, expected 0 (fixed) or more", req[i].name, req[i].max_lixels);
+		if (req[i].max_lixels < 0 || req[i].alone_lixels < 0 || (req[i].alone_lixels > 0 && req[i].max_lixels == 0)) {
+			snprintf(err, errlen, "atlas: region '%s' may hold %ld lixels (%ld alone), expected 0 (fixed) or more, and "
+				 "a limit alone only for a variable region", req[i].name, req[i].max_lixels, req[i].alone_lixels);
 			return false;
 		}
 		for (int j = 0; j < i; j++)
@@ -200,6 +211,7 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 		if (r->variable && r->budget < (long)r->w * r->h)
 			r->budget = (long)r->w * r->h;
 		r->counted = req[i].borrowed ? 0 : (long)req[i].w * req[i].h;
+		r->alone = req[i].alone_lixels > r->budget ? req[i].alone_lixels : 0;
 	}
 	atlas->count = count;
 	atlas->guard = guard;
@@ -248,9 +260,12 @@ int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
 		variable |= a->regions[i].variable;
 	if (!variable)
 		return 0; /* fixed regions keep the layout of the start */
-	int cw[LX_ATLAS_MAX_REGIONS], ch[LX_ATLAS_MAX_REGIONS];
+	int cw[LX_ATLAS_MAX_REGIONS], ch[LX_ATLAS_MAX_REGIONS], placed = 0;
+	for (int i = 0; i < a->count; i++)
+		placed += !a->regions[i].variable || (w[i] > 0 && h[i] > 0);
 	for (int i = 0; i < a->count; i++) {
 		struct lx_region *r = &a->regions[i];
+		long budget = placed == 1 && r->alone > 0 ? r->alone : r->budget;
 		if (!r->variable) {
 			/* a fixed region keeps its size (and its turn, if the start gave it one) */
 			cw[i] = r->turned ? r->h : r->w;
@@ -264,7 +279,7 @@ int lx_atlas_pack(struct lx_atlas *a, const int *w, const int *h)
 			cw[i] = a->max_side;
 		if (ch[i] > a->max_side)
 			ch[i] = a->max_side;
-		while ((long)cw[i] * ch[i] > r->budget) {
+		while ((long)cw[i] * ch[i] > budget) {
 			if (cw[i] >= ch[i])
 				cw[i]--;
 			else

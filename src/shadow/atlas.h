@@ -25,6 +25,8 @@ struct lx_region {
 	long budget;  /* the most lixels it may hold in a frame */
 	long counted; /* what it adds to the total budget: w x h as requested, 0 when borrowed */
 	bool variable; /* its shape changes per frame (else it is always its requested w x h) */
+	long alone;    /* a variable region's most lixels in a frame where no other region is
+			* placed (0: its budget then too): what fits in the atlas alone */
 	int w, h;     /* this frame's size in the texture, in lixels; 0 x 0 when not placed */
 	int x, y;     /* lower-left lixel in the texture (absolute: the atlas's origin included) */
 	bool turned;  /* placed a quarter turn from its map's own axes (w, h are the placed size) */
@@ -47,6 +49,8 @@ struct lx_region_request {
 			    it may hold up to this many lixels in one frame */
 	bool borrowed;   /* its lixels come out of other regions' budgets (a map's second
 			    piece, shared budgets): it adds nothing to the atlas's total */
+	long alone_lixels; /* a variable region's most in a frame where it is the only region
+			      placed (0: max_lixels); the layout lowers it to what fits alone */
 };
 
 /* Validates the requests and fixes the atlas's area, alone in its texture (origin 0, 0,
@@ -61,7 +65,8 @@ bool lx_atlas_layout(struct lx_atlas *atlas, const struct lx_region_request *req
 		     int guard, int max_size, char *err, size_t errlen);
 /* One frame's placement inside the atlas's own area (from its origin x0, y0): region i
  * becomes w[i] x h[i] lixels (0 x 0: not placed this frame, left at the origin; a fixed
- * region ignores its entry and keeps its size and place). Regions are turned to lie
+ * region ignores its entry and keeps its size and place; a variable region alone in the
+ * frame may hold up to its `alone` lixels). Regions are turned to lie
  * landscape and packed by height in shelves (next fit decreasing height), deterministic
  * for given sizes. Should a frame's shapes not fit, the variable regions shrink by 10%
  * until they do (a map's light matrix covers its region whatever its lixel count);

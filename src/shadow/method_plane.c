@@ -32,11 +32,15 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 	/* fitted maps vary their shape per frame; shared budgets let one take the others' rest */
 	long most = o->square_regions ? 0 : o->shared_budget ? budget * planes : budget;
 	for (int i = 0; i < planes; i++)
-		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most, false};
-	/* with shared budgets the fallback grows by what the plane maps leave (fallback_side) */
+		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most, false, 0};
+	/* with shared budgets the fallback grows by what the plane maps leave; with fixed
+	 * ones, in a frame without a plane map, it takes the planes' budgets too, as far as
+	 * the atlas holds it alone (fallback_side) */
 	long fb = (long)o->fallback_lixels * o->fallback_lixels;
-	long fb_most = !o->square_regions && o->shared_budget && planes > 0 ? budget * planes + fb : 0;
-	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, fb_most, false};
+	bool grows = !o->square_regions && planes > 0;
+	long fb_most = grows ? (o->shared_budget ? budget * planes + fb : fb) : 0;
+	long fb_alone = grows && !o->shared_budget && !(o->plane_max_lpp > 0) ? budget * planes + fb : 0;
+	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, fb_most, false, fb_alone};
 	if (!o->square_regions && planes > 0) {
 		/* the spare pieces (plane_build), under names no plane has: the regions' names
 		 * must differ */
@@ -51,7 +55,7 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 			if (taken)
 				continue;
 			for (int k = 0; k < SPARE_PIECES; k++)
-				out[n++] = (struct lx_region_request){piece_names[p][k], 1, 1, most, true};
+				out[n++] = (struct lx_region_request){piece_names[p][k], 1, 1, most, true, 0};
 			break;
 		}
 	}
@@ -1100,18 +1104,24 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 			budget[i] += (long)fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
-/* The fallback's side with shared budgets: its own lixels and what the plane maps leave
- * unused this frame (a map at a whole-number scale, or none), square. Under a density
- * cap it keeps its own: the cap is there to spend less fill. */
+/* The fallback's side, square: its own lixels, and with shared budgets what the plane
+ * maps leave unused this frame (a map at a whole-number scale, or none). With fixed
+ * budgets a frame without any plane map is a one-map frame: the fallback serves every
+ * receiver, and takes the planes' budgets too (as uniform does all of them), as far as
+ * the atlas holds it alone. Under a density cap it keeps its own: the cap is there to
+ * spend less fill. */
 static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_options *o, const struct lx_shadow_result *out,
 			 int np)
 {
 	if (o->plane_max_lpp > 0)
 		return o->fallback_lixels;
 	long own = (long)o->fallback_lixels * o->fallback_lixels, left = (long)np * o->plane_lixels * o->plane_lixels;
+	bool plane_maps = false;
 	for (int m = 0; m < out->map_count; m++)
 		if (m != np && out->maps[m].rendered && out->maps[m].plane >= 0)
-			left -= (long)out->maps[m].w * out->maps[m].h;
+			left -= (long)out->maps[m].w * out->maps[m].h, plane_maps = true;
+	if (!o->shared_budget && (plane_maps || atlas->regions[np].alone == 0))
+		return o->fallback_lixels;
 	long side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
 	side = side < o->fallback_lixels ? o->fallback_lixels : side;
 	return (int)(side < atlas->max_side ? side : atlas->max_side);
@@ -1385,7 +1395,8 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	}
 	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
 	/* its size this frame, before the atlas is packed (whose region still has the last
-	 * frame's): a fixed region's, or with shared budgets what the planes leave */
+	 * frame's): a fixed region's, or its own, with more where no plane map is drawn or
+	 * with shared budgets what the planes leave (fallback_side) */
 	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np);

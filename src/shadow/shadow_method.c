@@ -141,7 +141,7 @@ int lx_shadow_method_regions(const struct lx_shadow_method *m, const struct lx_s
 {
 	if (m->regions)
 		return m->regions(s, o, out);
-	out[0] = (struct lx_region_request){m->name, o->uniform_lixels, o->uniform_lixels, 0, false};
+	out[0] = (struct lx_region_request){m->name, o->uniform_lixels, o->uniform_lixels, 0, false, 0};
 	return 1;
 }
 
