@@ -227,14 +227,16 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 /* Shared budgets: a map keeps the scale its own budget gives when that covers what it
  * needs, and hands on the rest, which a map short of lpp 1 takes; the total stays within
  * the two plane budgets. Every standard configuration of both scenes at two sizes, against
- * fixed budgets. The default scene's light facing the camera at 1024x1024 is a case the
- * rest decides: the floor, short at scale 0.78 with its own budget, reaches 1 with the
- * wall's, which serves nothing there. */
+ * fixed budgets, under which only a map with nothing to serve hands its budget on: a map
+ * short of lpp 1 beside a plane without a map holds more than its own 350^2 either way.
+ * The default scene's light facing the camera at 1024x1024 is such a case: the floor,
+ * short at scale 0.78 with its own budget, reaches 1 with the wall's, which serves
+ * nothing there. */
 static void shared_budgets_hand_on_the_rest(void **state)
 {
 	(void)state;
 	static const int sizes[2][2] = {{1024, 1024}, {1920, 1080}};
-	int compared = 0, raised = 0, stretched = 0, short_alone = 0;
+	int compared = 0, raised = 0, stretched = 0, short_alone = 0, lent = 0;
 	bool facing_whole = false;
 	for (int k = 0; k < 4 * lx_config_count; k++) {
 		struct setup fx, sh;
@@ -263,25 +265,33 @@ static void shared_budgets_hand_on_the_rest(void **state)
 					 b->rendered ? b->lixel_scale : 0.0, a->lixel_scale);
 			raised += b->lixel_scale > a->lixel_scale;
 			compared++;
+			long own_held = 0; /* with fixed budgets: more than its own, only beside a plane without a map */
+			for (int q = 0; q < fx.res.map_count; q++)
+				own_held += fx.res.maps[q].rendered && fx.res.maps[q].plane == m ? (long)fx.res.maps[q].w * fx.res.maps[q].h : 0;
+			if (own_held > 350L * 350 && fx.res.maps[1 - m].rendered)
+				fail_msg("%s: plane map %d holds %ld lixels beside a plane with a map, with fixed budgets", what, m,
+					 own_held);
+			lent += own_held > 350L * 350;
 			if (a->lixel_scale < 1 && !fx.res.maps[1 - m].rendered) { /* the other's budget all spare */
 				short_alone++;
-				if (!(b->lixel_scale > a->lixel_scale))
-					fail_msg("%s: plane map %d short at scale %.4f got nothing of the other's budget", what, m,
-						 a->lixel_scale);
+				long held = 0;
+				for (int q = 0; q < fx.res.map_count; q++)
+					held += fx.res.maps[q].rendered && fx.res.maps[q].plane == m ? (long)fx.res.maps[q].w * fx.res.maps[q].h : 0;
+				if (!(held > 350L * 350))
+					fail_msg("%s: plane map %d short at scale %.4f beside a plane without a map holds %ld lixels, "
+						 "its own budget alone, with fixed budgets", what, m, a->lixel_scale, held);
 			}
 		}
 		if (total > 2L * 350 * 350)
 			fail_msg("%s: the plane maps hold %ld lixels, more than the two budgets", what, total);
 		check_sampling(&sh, what, &stretched);
-		if (!table && !strcmp(lx_configs[c].name, "facing") && z == 0) {
-			assert_true(fx.res.maps[0].lixel_scale < 1);
-			facing_whole = sh.res.maps[0].lixel_scale == 1.0;
-		}
+		if (!table && !strcmp(lx_configs[c].name, "facing") && z == 0)
+			facing_whole = fx.res.maps[0].lixel_scale == 1.0 && sh.res.maps[0].lixel_scale == 1.0;
 		lx_meshes_free(&fx.meshes);
 		lx_meshes_free(&sh.meshes);
 	}
-	print_message("%d plane maps compared, %d denser with shared budgets, %d of them short of a lixel per pixel beside "
-		      "a plane without a map\n", compared, raised, short_alone);
+	print_message("%d plane maps compared, %d denser with shared budgets; with fixed ones %d took the budget of a plane "
+		      "without a map, %d of them still short of a lixel per pixel\n", compared, raised, lent, short_alone);
 	assert_true(facing_whole);
 	/* the rest goes to the fallback (the table seen from close to the floor), but not under
 	 * a density cap, which is there to spend less fill */
@@ -302,7 +312,7 @@ static void shared_budgets_hand_on_the_rest(void **state)
 			assert_true(fb->w > 256 && fb->w == fb->h);
 		lx_meshes_free(&t.meshes);
 	}
-	assert_true(compared >= 3 * lx_config_count && short_alone >= 4 && raised >= short_alone);
+	assert_true(compared >= 3 * lx_config_count && lent >= 4 && short_alone >= 1 && raised >= 1);
 }
 
 /* A frame's maps do not depend on the frames before it: a build on an atlas that packed

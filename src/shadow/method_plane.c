@@ -1051,10 +1051,11 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 	}
 }
 
-/* Each plane map's lixels this frame: its own budget, and with shared budgets what the
- * others leave: the budgets of the maps that serve nothing this frame, and the rest of
- * each map whose whole-number scale (or the cap, or the texture's side) stops it short
- * of its budget. */
+/* Each plane map's lixels this frame: its own budget, and what the others leave: the
+ * budgets of the maps that serve nothing this frame (their plane out of view, facing
+ * away from the light, or with no shadow in view), and with shared budgets also the
+ * rest of each map whose whole-number scale (or the cap, or the texture's side) stops
+ * it short of its budget. */
 static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_options *o,
 			  const struct plane_chart *ch, const struct plane_pieces *pc, const bool *ok, int np,
 			  long *budget)
@@ -1062,7 +1063,7 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 	long own = (long)o->plane_lixels * o->plane_lixels, need[PLANE_MAPS];
 	for (int i = 0; i < np; i++)
 		budget[i] = atlas->regions[i].variable ? own : (long)atlas->regions[i].w * atlas->regions[i].h;
-	if (!o->shared_budget || o->square_regions)
+	if (o->square_regions)
 		return;
 	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
 	for (int i = 0; i < np; i++) {
@@ -1076,18 +1077,21 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 		}
 		need[i] = (long)ceil(density * area);
 	}
-	/* The budget of a map with nothing to serve this frame, and the lixels a map's fit
-	 * leaves unused, go to the maps that need more than their own (for lpp 1, or the
-	 * cap), in proportion to their shortfall. A map that needs less keeps the scale its
-	 * own budget gives: beyond lpp 1 its lixels still serve the casters that read it
-	 * (measured: handing those over cost accuracy on every view); only its rest moves. */
+	/* The budget of a map with nothing to serve this frame, and with shared budgets the
+	 * lixels a map's fit leaves unused, go to the maps that need more than their own
+	 * (for lpp 1, or the cap), in proportion to their shortfall. A map that needs less
+	 * keeps the scale its own budget gives: beyond lpp 1 its lixels still serve the
+	 * casters that read it (measured: handing those over cost accuracy on every view);
+	 * only its rest moves. With fixed budgets a map that serves keeps its own: a plane
+	 * without a map would leave its lixels idle (random views where the floor alone has
+	 * shadows, short of a lixel per pixel, and the wall none: plane_keeps_every_shadow). */
 	long spare = 0, short_by = 0;
 	for (int i = 0; i < np; i++) {
 		if (!ok[i]) {
 			spare += budget[i], budget[i] = 0;
 		} else if (need[i] > budget[i]) {
 			short_by += need[i] - budget[i];
-		} else {
+		} else if (o->shared_budget) {
 			struct plane_fit fit[PIECES_MAX];
 			long used = 0;
 			fit_plane(&ch[i], &pc[i], &atlas->regions[i], atlas, budget[i], o->plane_max_lpp, fit);
@@ -1102,6 +1106,54 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 	for (int i = 0; i < np; i++)
 		if (ok[i] && need[i] > budget[i])
 			budget[i] += (long)fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
+}
+
+/* A map that took another's budget (plane_budgets) may hold more lixels than its
+ * region: with fixed budgets each region holds its own plane's budget alone. A piece
+ * whose lixels could overflow its region is cut in two across its long side into one
+ * of the `free` spare pieces; with none left (or PIECES_MAX), the map's budget shrinks
+ * until its largest piece fits. "Could": fit_plane's lixels for a piece W x H pixels
+ * wide at lpp s^2 are at most s^2 W H + 3 s (W + H) + 1, its axes rounded up and
+ * stretched at most 3 to 1 (chart_stretch). The pieces' lixels together never pass the
+ * plane budgets' total, so the frame still packs (lx_atlas_layout's bound). */
+static double piece_lixels_most(const double *r, double s2)
+{
+	double w = ceil(r[2] - floor(r[0])) + 1, h = ceil(r[3] - floor(r[1])) + 1;
+	return s2 * w * h + 3 * sqrt(s2) * (w + h) + 1;
+}
+
+static void cut_to_regions(const struct lx_atlas *atlas, int np, const bool *ok, int free, struct plane_pieces *pc,
+			   long *budget)
+{
+	for (int i = 0; i < np; i++) {
+		long room = atlas->regions[i].budget; /* the spare pieces' are the same (plane_regions) */
+		for (int tries = 0; ok[i] && budget[i] > room && tries < 64; tries++) {
+			double total = 0, most = 0; /* the scale-1 areas, as fit_plane counts them */
+			int big = 0;
+			for (int k = 0; k < pc[i].n; k++) {
+				const double *r = pc[i].r[k];
+				total += (ceil(r[2] - floor(r[0])) + 1) * (ceil(r[3] - floor(r[1])) + 1);
+			}
+			double s2 = fmin(1, (double)budget[i] / total); /* lixels per pixel; total >= 1 */
+			for (int k = 0; k < pc[i].n; k++) {
+				double l = piece_lixels_most(pc[i].r[k], s2);
+				if (l > most)
+					most = l, big = k;
+			}
+			if (most <= room)
+				break;
+			if (free == 0 || pc[i].n == PIECES_MAX) { /* fewer lixels: most falls with them */
+				budget[i] = (long)(0.99 * (double)budget[i] * room / most);
+				continue;
+			}
+			double *r = pc[i].r[big], *cut = pc[i].r[pc[i].n++];
+			memcpy(cut, r, 4 * sizeof *r);
+			bool wide = r[2] - r[0] >= r[3] - r[1];
+			double mid = floor(0.5 * (r[wide ? 0 : 1] + r[wide ? 2 : 3]));
+			r[wide ? 2 : 3] = mid, cut[wide ? 0 : 1] = mid;
+			free--;
+		}
+	}
 }
 
 /* The fallback's side, square: its own lixels, and with shared budgets what the plane
@@ -1367,6 +1419,12 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
 	}
 	plane_budgets(atlas, o, ch, pc, ok, np, budget);
+	if (!o->shared_budget) { /* the regions hold their own budgets: shared ones hold all */
+		int free = spare;
+		for (int i = 0; i < np; i++)
+			free -= ok[i] ? pc[i].n - 1 : 0;
+		cut_to_regions(atlas, np, ok, free, pc, budget);
+	}
 	for (int i = 0, next = np + 1; i < np; i++) {
 		struct lx_shadow_map *more[PIECES_MAX - 1];
 		for (int k = 1; ok[i] && k < pc[i].n; k++)
