@@ -142,12 +142,18 @@ static void m33_zero_is_solved(void **state)
 static int check_sampling(const struct setup *s, const char *what, int *stretched)
 {
 	int checked = 0;
+	for (int k = 0; k < s->res.warning_count; k++) /* every map packed as sized: none shrunk */
+		if (strstr(s->res.warnings[k], "atlas:"))
+			fail_msg("%s: %s", what, s->res.warnings[k]);
 	for (int m = 0; m < s->res.map_count; m++) {
 		const struct lx_shadow_map *map = &s->res.maps[m];
 		if (!m4_finite(&map->light_clip))
 			fail_msg("%s: map %d has a non-finite matrix", what, m);
 		if (!map->rendered || map->plane < 0)
 			continue;
+		const struct lx_region *g = &s->atlas.regions[map->region];
+		if (g->w != map->w || g->h != map->h) /* the region holds the map's lixels (cut_to_regions) */
+			fail_msg("%s: map %d sized %dx%d, placed %dx%d", what, m, map->w, map->h, g->w, g->h);
 		struct lx_plane_sampling ps;
 		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, NULL, &ps))
 			continue;
