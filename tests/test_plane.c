@@ -219,7 +219,7 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 				fail_msg("%s: object %d reads %d maps", what, id, reads);
 		}
 		for (int m = 0; m < s.res.map_count; m++)
-			pieces += s.res.maps[m].rendered && m > s.scene.plane_count; /* the spare pieces */
+			pieces += s.res.maps[m].rendered && m >= s.scene.plane_count && m < s.res.map_count - 1; /* the spare pieces: between the planes' maps and the fallback */
 		for (int m = 0; m < s.res.map_count; m++)
 			full += s.res.maps[m].rendered && s.res.maps[m].plane >= 0 && s.res.maps[m].lixel_scale >= 1.0;
 		configs++;
@@ -310,7 +310,7 @@ static void shared_budgets_hand_on_the_rest(void **state)
 		lx_scene_table(&t.scene);
 		lx_config_apply(lx_config_find("floor-close"), &t.scene);
 		assert_true(build_with(&t, "plane", 1024, 1024, 0, &os));
-		const struct lx_shadow_map *fb = &t.res.maps[2];
+		const struct lx_shadow_map *fb = &t.res.maps[t.res.map_count - 1]; /* the fallback: read last */
 		assert_true(fb->rendered && fb->plane < 0);
 		if (capped)
 			assert_int_equal(fb->w, 128);
@@ -463,7 +463,7 @@ static void every_shadow_is_covered(void **state)
 			 s.scene.light.directional ? " dir" : "");
 		if (!wide)
 			total += check_coverage(&s.frame, &s.res, s.scene.plane_count, &seed, 60, what);
-		fallback_used += s.res.maps[s.scene.plane_count < 2 ? s.scene.plane_count : 2].rendered; /* after the planes' */
+		fallback_used += s.res.maps[s.res.map_count - 1].rendered; /* the last map (plane_build) */
 		lx_meshes_free(&s.meshes);
 	}
 	print_message("%ld caster/receiver pairs covered; the fallback map ran in %d configurations\n", total, fallback_used);
@@ -682,7 +682,7 @@ static void degenerate_configurations(void **state)
 		for (int k = 0; k < s.res.warning_count; k++)
 			snprintf(ws + strlen(ws), sizeof ws - strlen(ws), "%s%s", k ? "; " : "", s.res.warnings[k]);
 		print_message("%-44s maps %d%d%d  %s\n", cases[i].what, s.res.maps[0].rendered, s.res.maps[1].rendered,
-			      s.res.maps[2].rendered, ws[0] ? ws : "no warning");
+			      s.res.maps[s.res.map_count - 1].rendered, ws[0] ? ws : "no warning"); /* the fallback last */
 		if (cases[i].warning && !strstr(ws, cases[i].warning))
 			fail_msg("%s: expected a warning with \"%s\", got \"%s\"", cases[i].what, cases[i].warning, ws);
 		uint64_t seed = i + 1;
@@ -756,7 +756,7 @@ static void fallback_serves_only_what_needs_it(void **state)
 	lx_scene_table(&s.scene);
 	lx_config_apply(lx_config_find("floor-close"), &s.scene);
 	assert_true(build(&s, "plane", 1024, 1024, 0));
-	int np = s.scene.plane_count, fb = np < 2 ? np : 2, left_out = 0, held = 0;
+	int np = s.scene.plane_count, fb = s.res.map_count - 1, left_out = 0, held = 0; /* the fallback last */
 	assert_true(s.res.maps[fb].rendered);
 	for (int id = np; id < s.frame.object_count; id++) {
 		enum lx_shape shape = s.scene.casters[id - np].shape;

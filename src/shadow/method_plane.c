@@ -1170,7 +1170,7 @@ static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_op
 	long own = (long)o->fallback_lixels * o->fallback_lixels, left = (long)np * o->plane_lixels * o->plane_lixels;
 	bool plane_maps = false;
 	for (int m = 0; m < out->map_count; m++)
-		if (m != np && out->maps[m].rendered && out->maps[m].plane >= 0)
+		if (out->maps[m].rendered && out->maps[m].plane >= 0) /* the fallback's plane is -1 */
 			left -= (long)out->maps[m].w * out->maps[m].h, plane_maps = true;
 	if (!o->shared_budget && (plane_maps || atlas->regions[np].alone == 0))
 		return o->fallback_lixels;
@@ -1340,10 +1340,10 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
  * its faces at least the fallback's lixels per pixel in their worst direction (the
  * densest three of them), then the fallback (which covers every caster in view another's
  * shadow can reach). */
-static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_view,
+static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
 			       struct lx_shadow_result *out)
 {
-	const struct lx_shadow_map *fb = &out->maps[np];
+	const struct lx_shadow_map *fb = &out->maps[fbm];
 	if (!fb->rendered)
 		return;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
@@ -1366,7 +1366,7 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 			const struct lx_shadow_map *pm = &out->maps[m];
 			dens[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
 		}
-		unsigned mask = 1u << np;
+		unsigned mask = 1u << fbm;
 		for (int k = 0; k < LX_MAX_READS - 1; k++) {
 			int best = -1;
 			for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
@@ -1379,13 +1379,53 @@ static void choose_caster_maps(const struct lx_frame *f, int np, const bool *in_
 	}
 }
 
+/* The fallback map (map fbm, region np): the receivers no plane map takes, and the maps
+ * each caster reads. */
+static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
+			   const struct lx_light_space *ls, const struct plane_chart *ch, int np, int fbm,
+			   struct lx_shadow_result *out)
+{
+	struct lx_shadow_map *fb = &out->maps[fbm];
+	bool needs[LX_MAX_PLANES] = {false};
+	for (int i = 0; i < f->scene->plane_count; i++)
+		needs[i] = i >= np || (ch[i].needs_fallback && !out->maps[i].rendered);
+	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		in_view[id] = !box_out_of_view(&f->view, f->bmin[id], f->bmax[id]);
+	struct lx_poly want;
+	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
+	if (fallback_wanted(f, ls, in_view, needs, &want)) {
+		if (want.n < 3)
+			return; /* no receiver off the planes in view */
+		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
+	} else if (lx_light_space_wanted(ls, &want)) { /* not charted on G: all of C_tot */
+		if (want.n < 3)
+			return;
+		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
+	}
+	fb->rendered = lx_light_space_map(ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+	/* its size this frame, before the atlas is packed (whose region still has the last
+	 * frame's): a fixed region's, or its own, with more where no plane map is drawn or
+	 * with shared budgets what the planes leave (fallback_side) */
+	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
+	if (atlas->regions[np].variable)
+		fb->w = fb->h = fallback_side(atlas, o, out, np);
+	choose_caster_maps(f, fbm, in_view, out);
+}
+
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
 	int np = f->scene->plane_count < PLANE_MAPS ? f->scene->plane_count : PLANE_MAPS;
+	/* The maps in the order a receiver reads them, the first that serves a point deciding
+	 * it: the planes' own, their spare pieces, and last the fallback, which serves what
+	 * no plane map does (a caster reading a piece denser than the fallback must reach it
+	 * first: choose_caster_maps). Each in its region of plane_regions, the fallback's np. */
+	int fbm = atlas->count - 1;
 	out->map_count = atlas->count;
 	for (int i = 0; i < atlas->count; i++) {
-		out->maps[i] = (struct lx_shadow_map){.region = i, .rendered = false, .light_clip = m4_identity()};
+		out->maps[i] = (struct lx_shadow_map){.region = i < np ? i : i == fbm ? np : i + 1, .rendered = false,
+						      .light_clip = m4_identity()};
 		lx_shadow_map_full(&out->maps[i]);
 		out->maps[i].plane = i < np ? i : -1;
 	}
@@ -1425,40 +1465,14 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 			free -= ok[i] ? pc[i].n - 1 : 0;
 		cut_to_regions(atlas, np, ok, free, pc, budget);
 	}
-	for (int i = 0, next = np + 1; i < np; i++) {
+	for (int i = 0, next = np; i < np; i++) {
 		struct lx_shadow_map *more[PIECES_MAX - 1];
 		for (int k = 1; ok[i] && k < pc[i].n; k++)
 			more[k - 1] = &out->maps[next++];
 		if (ok[i])
 			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i], more);
 	}
-	/* the fallback map: the receivers no plane map takes */
-	struct lx_shadow_map *fb = &out->maps[np];
-	bool needs[LX_MAX_PLANES] = {false};
-	for (int i = 0; i < f->scene->plane_count; i++)
-		needs[i] = i >= np || (ch[i].needs_fallback && !out->maps[i].rendered);
-	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
-	for (int id = f->scene->plane_count; id < f->object_count; id++)
-		in_view[id] = !box_out_of_view(&f->view, f->bmin[id], f->bmax[id]);
-	struct lx_poly want;
-	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (fallback_wanted(f, &ls, in_view, needs, &want)) {
-		if (want.n < 3)
-			return; /* no receiver off the planes in view */
-		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
-	} else if (lx_light_space_wanted(&ls, &want)) { /* not charted on G: all of C_tot */
-		if (want.n < 3)
-			return;
-		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
-	}
-	fb->rendered = lx_light_space_map(&ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
-	/* its size this frame, before the atlas is packed (whose region still has the last
-	 * frame's): a fixed region's, or its own, with more where no plane map is drawn or
-	 * with shared budgets what the planes leave (fallback_side) */
-	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
-	if (atlas->regions[np].variable)
-		fb->w = fb->h = fallback_side(atlas, o, out, np);
-	choose_caster_maps(f, np, in_view, out);
+	build_fallback(f, atlas, o, &ls, ch, np, fbm, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",
