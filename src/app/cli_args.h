@@ -73,10 +73,12 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
 	"                       wanted region, the scale set by area) or square (the paper's)\n" \
-	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each) or shared (a\n" \
-	"                       map hands on what it leaves unused this frame, all of it\n" \
-	"                       when it serves nothing, to a map short of a lixel per pixel,\n" \
-	"                       the rest to the fallback unless --plane-max-lpp caps them)\n" \
+	"  --budget-split S     plane maps: fixed (default: 350^2 lixels each; a plane without\n" \
+	"                       a map this frame hands its budget to a map short of a lixel\n" \
+	"                       per pixel, and with no plane map the fallback takes them all)\n" \
+	"                       or shared (a map also hands on the rest its whole-number\n" \
+	"                       scale leaves, and what is left goes to the fallback unless\n" \
+	"                       --plane-max-lpp caps them)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
 	"                       default none: every lixel of the budget)\n" \
 	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \
