@@ -537,6 +537,22 @@ static void a_lit_fronts_shadow_is_left_to_its_test(void **state)
 	assert_true(overlapping);
 }
 
+/* A view of tools/random-views.py: its scene, eye, target, point light and time. */
+struct random_view {
+	bool table;
+	vec3 eye, at, light;
+	double time;
+};
+
+/* s emptied and set to view v (build_with then takes v->time). */
+static void random_view_scene(struct setup *s, const struct random_view *v)
+{
+	memset(s, 0, sizeof *s);
+	v->table ? lx_scene_table(&s->scene) : lx_scene_default(&s->scene);
+	s->scene.camera.eye = v->eye, s->scene.camera.at = v->at;
+	s->scene.light.position = v->light;
+}
+
 /* Random view 35 of the table (tools/random-views.py, seed 7) at 1024x768: the floor's
  * shadows lie in five clusters across 934x521 pixels. One rectangle gives them a quarter
  * of a lixel per pixel, stretched 4 to 1; the spare pieces give the floor three more
@@ -551,12 +567,10 @@ static void scattered_shadows_take_pieces(void **state)
 		struct setup s;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 		o.plane_one_piece = whole;
-		memset(&s, 0, sizeof s);
-		lx_scene_table(&s.scene);
-		s.scene.camera.eye = v3(1.3444, 4.06765, -0.413802);
-		s.scene.camera.at = v3(1.06869, 0.079947, 0.4511);
-		s.scene.light.position = v3(-0.554718, 3.03491, 1.53064);
-		assert_true(build_with(&s, "plane", 1024, 768, 4.63335, &o));
+		static const struct random_view v35 = {true, {1.3444, 4.06765, -0.413802}, {1.06869, 0.079947, 0.4511},
+						       {-0.554718, 3.03491, 1.53064}, 4.63335};
+		random_view_scene(&s, &v35);
+		assert_true(build_with(&s, "plane", 1024, 768, v35.time, &o));
 		long lixels = 0;
 		for (int m = 0; m < s.res.map_count; m++) {
 			const struct lx_shadow_map *map = &s.res.maps[m];
@@ -589,12 +603,10 @@ static void just_short_of_one_is_snapped(void **state)
 {
 	(void)state;
 	struct setup s;
-	memset(&s, 0, sizeof s);
-	lx_scene_table(&s.scene);
-	s.scene.camera.eye = v3(3.12422, 2.8079, 1.09659);
-	s.scene.camera.at = v3(1.38558, 0.357422, -2.65246);
-	s.scene.light.position = v3(-5.37498, 1.18244, 3.26935);
-	assert_true(build(&s, "plane", 1024, 768, 0.535772));
+	static const struct random_view v19 = {true, {3.12422, 2.8079, 1.09659}, {1.38558, 0.357422, -2.65246},
+					       {-5.37498, 1.18244, 3.26935}, 0.535772};
+	random_view_scene(&s, &v19);
+	assert_true(build(&s, "plane", 1024, 768, v19.time));
 	int floor_maps = 0, stretched = 0;
 	for (int m = 0; m < s.res.map_count; m++) {
 		const struct lx_shadow_map *map = &s.res.maps[m];
@@ -622,15 +634,16 @@ static void fallback_alone_takes_every_budget(void **state)
 	for (int k = 0; k < 3; k++) {
 		struct setup s;
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-		memset(&s, 0, sizeof s);
-		lx_scene_default(&s.scene);
-		if (k > 0) {
-			s.scene.camera.eye = v3(1.65294, 4.75918, 0.0246814);
-			s.scene.camera.at = v3(-0.31962, 0.255539, 0.896479);
-			s.scene.light.position = v3(-4.29707, 1.31104, -3.39865);
+		static const struct random_view v72 = {false, {1.65294, 4.75918, 0.0246814}, {-0.31962, 0.255539, 0.896479},
+						       {-4.29707, 1.31104, -3.39865}, 1.96661};
+		if (k > 0)
+			random_view_scene(&s, &v72);
+		else {
+			memset(&s, 0, sizeof s);
+			lx_scene_default(&s.scene);
 		}
 		o.plane_max_lpp = k == 2 ? 1 : 0;
-		assert_true(build_with(&s, "plane", 1024, 768, k > 0 ? 1.96661 : 0, &o));
+		assert_true(build_with(&s, "plane", 1024, 768, k > 0 ? v72.time : 0, &o));
 		int plane_maps = 0, side = 0;
 		for (int m = 0; m < s.res.map_count; m++) {
 			const struct lx_shadow_map *map = &s.res.maps[m];

@@ -672,6 +672,30 @@ static void paper_bad_case_is_measured(void **state)
 	free(dist);
 }
 
+/* A random view (tools/random-views.py) at 1024x768 and `time`: plane-optimal's mismatch
+ * within 0.01 points of uniform's (issue 9's bound). Returns the lixels of the first
+ * plane's maps. */
+static long plane_near_uniform(const struct lx_scene *s, double time, const char *what)
+{
+	double pct[2];
+	long floor_lixels = 0;
+	for (int m = 0; m < 2; m++) {
+		struct lx_render_report r;
+		run_frame(m ? "plane" : "uniform", s, 1024, 768, time, LX_DEPTH_AUTO, true, &r);
+		pct[m] = r.mismatch.mismatch_pct;
+		for (int k = 0; m && k < r.light[0].result.map_count; k++) {
+			const struct lx_shadow_map *map = &r.light[0].result.maps[k];
+			floor_lixels += map->rendered && map->plane == 0 ? (long)map->w * map->h : 0;
+		}
+		lx_render_report_free(&r);
+	}
+	print_message("%-36s plane %.4f%%, uniform %.4f%%: %+.4f points; the floor's maps %ld lixels\n", what, pct[1],
+		      pct[0], pct[1] - pct[0], floor_lixels);
+	if (!(pct[1] - pct[0] <= 0.01))
+		fail_msg("%s: plane-optimal %.4f%% against uniform's %.4f%%", what, pct[1], pct[0]);
+	return floor_lixels;
+}
+
 /* Views where the plane method once lost shadows without a word (a caster's vertex
  * behind a plane map's light flattened onto its near plane, a plane's image mirrored
  * when the eye sees its unlit side, table legs and a sphere served by a foreshortened
@@ -757,37 +781,13 @@ static void plane_keeps_every_shadow(void **state)
 	 * gives it every budget: within the issue's 0.01 points. */
 	s.camera.eye = v3(1.65294, 4.75918, 0.0246814), s.camera.at = v3(-0.31962, 0.255539, 0.896479);
 	s.light.position = v3(-4.29707, 1.31104, -3.39865);
-	for (int m = 0; m < 2; m++) {
-		struct lx_render_report r;
-		run_frame(m ? "plane" : "uniform", &s, 1024, 768, 1.96661, LX_DEPTH_AUTO, true, &r);
-		pct[m] = r.mismatch.mismatch_pct;
-		lx_render_report_free(&r);
-	}
-	print_message("%-36s plane %.4f%%, uniform %.4f%%: %+.4f points\n", "no plane map in view (view 72)", pct[1],
-		      pct[0], pct[1] - pct[0]);
-	if (!(pct[1] - pct[0] <= 0.01))
-		fail_msg("view 72: plane-optimal %.4f%% against uniform's %.4f%%", pct[1], pct[0]);
+	plane_near_uniform(&s, 1.96661, "no plane map in view (view 72)");
 	/* Random view 32 (seed 7): the wall out of view, the floor's shadows over 205,000
 	 * pixels. With its own 122,500 lixels alone the floor map gave 0.0650% against
 	 * uniform's 0.0534%; it takes the wall's budget now (fixed budgets too). */
 	s.camera.eye = v3(0.540502, 2.37015, -0.873426), s.camera.at = v3(-0.505506, 0.748712, -0.950951);
 	s.light.position = v3(-5.22851, 6.9105, 3.88363);
-	long floor_lixels = 0;
-	for (int m = 0; m < 2; m++) {
-		struct lx_render_report r;
-		run_frame(m ? "plane" : "uniform", &s, 1024, 768, 4.85848, LX_DEPTH_AUTO, true, &r);
-		pct[m] = r.mismatch.mismatch_pct;
-		for (int k = 0; m && k < r.light[0].result.map_count; k++) {
-			const struct lx_shadow_map *map = &r.light[0].result.maps[k];
-			floor_lixels += map->rendered && map->plane == 0 ? (long)map->w * map->h : 0;
-		}
-		lx_render_report_free(&r);
-	}
-	print_message("%-36s plane %.4f%%, uniform %.4f%%: %+.4f points; the floor's maps %ld lixels\n",
-		      "the floor alone short (view 32)", pct[1], pct[0], pct[1] - pct[0], floor_lixels);
-	assert_true(floor_lixels > 350L * 350);
-	if (!(pct[1] - pct[0] <= 0.01))
-		fail_msg("view 32: plane-optimal %.4f%% against uniform's %.4f%%", pct[1], pct[0]);
+	assert_true(plane_near_uniform(&s, 4.85848, "the floor alone short (view 32)") > 350L * 350);
 }
 
 /* Short of a lixel per pixel a plane map stretches its lixels along the shadows' edges

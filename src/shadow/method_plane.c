@@ -1060,6 +1060,20 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 	}
 }
 
+/* A piece's lixels at a lixel per pixel, as fit_plane counts them (whole pixels from a
+ * floored corner, rounded up), a row and a column more for the margin: short of that the
+ * fit takes a scale just off 1, whose lixel centres sit off the pixel centres. */
+static double scale_one_width(const double *r) { return ceil(r[2] - floor(r[0])) + 1; }
+static double scale_one_height(const double *r) { return ceil(r[3] - floor(r[1])) + 1; }
+
+static double scale_one_lixels(const struct plane_pieces *pc)
+{
+	double a = 0;
+	for (int k = 0; k < pc->n; k++)
+		a += scale_one_width(pc->r[k]) * scale_one_height(pc->r[k]);
+	return a;
+}
+
 /* Each plane map's lixels this frame: its own budget, and what the others leave: the
  * budgets of the maps that serve nothing this frame (their plane out of view, facing
  * away from the light, or with no shadow in view), and with shared budgets also the
@@ -1075,17 +1089,8 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 	if (o->square_regions)
 		return;
 	double density = o->plane_max_lpp > 0 ? o->plane_max_lpp : 1;
-	for (int i = 0; i < np; i++) {
-		double area = 0;
-		/* the lixels of a scale-1 fit (fit_plane: whole pixels from a floored corner,
-		 * rounded up), a row and a column more for the margin: short of that the fit
-		 * takes a scale just off 1, whose lixel centres sit off the pixel centres */
-		for (int k = 0; ok[i] && k < pc[i].n; k++) {
-			const double *r = pc[i].r[k];
-			area += (ceil(r[2] - floor(r[0])) + 1) * (ceil(r[3] - floor(r[1])) + 1);
-		}
-		need[i] = (long)ceil(density * area);
-	}
+	for (int i = 0; i < np; i++)
+		need[i] = ok[i] ? (long)ceil(density * scale_one_lixels(&pc[i])) : 0;
 	/* The budget of a map with nothing to serve this frame, and with shared budgets the
 	 * lixels a map's fit leaves unused, go to the maps that need more than their own
 	 * (for lpp 1, or the cap), in proportion to their shortfall. A map that needs less
@@ -1127,7 +1132,7 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
  * plane budgets' total, so the frame still packs (lx_atlas_layout's bound). */
 static double piece_lixels_most(const double *r, double s2)
 {
-	double w = ceil(r[2] - floor(r[0])) + 1, h = ceil(r[3] - floor(r[1])) + 1;
+	double w = scale_one_width(r), h = scale_one_height(r);
 	return s2 * w * h + 3 * sqrt(s2) * (w + h) + 1;
 }
 
@@ -1137,13 +1142,10 @@ static void cut_to_regions(const struct lx_atlas *atlas, int np, const bool *ok,
 	for (int i = 0; i < np; i++) {
 		long room = atlas->regions[i].budget; /* the spare pieces' are the same (plane_regions) */
 		for (int tries = 0; ok[i] && budget[i] > room && tries < 64; tries++) {
-			double total = 0, most = 0; /* the scale-1 areas, as fit_plane counts them */
+			double most = 0;
 			int big = 0;
-			for (int k = 0; k < pc[i].n; k++) {
-				const double *r = pc[i].r[k];
-				total += (ceil(r[2] - floor(r[0])) + 1) * (ceil(r[3] - floor(r[1])) + 1);
-			}
-			double s2 = fmin(1, (double)budget[i] / total); /* lixels per pixel; total >= 1 */
+			/* lixels per pixel; the scale-1 count >= 1 */
+			double s2 = fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
 			for (int k = 0; k < pc[i].n; k++) {
 				double l = piece_lixels_most(pc[i].r[k], s2);
 				if (l > most)
