@@ -827,6 +827,51 @@ static void fallback_serves_only_what_needs_it(void **state)
 	lx_meshes_free(&s.meshes);
 }
 
+/* Random view 70 of the default scene (tools/random-views.py, seed 13): the eye over the
+ * green cylinder, the light just beside the sphere, whose image on the light's chart
+ * covers the cylinder's. Yet no ray from the light to the sphere passes the cylinder
+ * (both the light and the sphere lie on one side of it along x), and no other caster
+ * reaches the sphere: the fallback leaves the sphere out and spends its 128x128 on the
+ * cylinder, which the sphere shadows. With the sphere in, the cylinder's shadowed top
+ * read the fallback at about 36 pixels per lixel. */
+static void fallback_leaves_out_what_nothing_reaches(void **state)
+{
+	(void)state;
+	static const struct random_view v70 = {false, {-0.611149, 2.02308, 0.333994}, {-0.646251, 1.00542, 0.85989},
+					       {-1.50432, 2.72382, -0.628421}, 4.31861};
+	struct setup s;
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	random_view_scene(&s, &v70);
+	assert_true(build_with(&s, "plane", 1024, 768, v70.time, &o));
+	int np = s.scene.plane_count, fb = s.res.map_count - 1; /* the fallback last */
+	assert_true(s.res.maps[fb].rendered);
+	int sphere = -1, cylinder = -1;
+	for (int id = np; id < s.frame.object_count; id++) {
+		enum lx_shape shape = s.scene.casters[id - np].shape;
+		sphere = shape == LX_SPHERE ? id : sphere;
+		cylinder = shape == LX_CYLINDER ? id : cylinder;
+	}
+	assert_true(sphere >= 0 && cylinder >= 0);
+	double x, y;
+	if (box_centre_in_map(&s, fb, sphere, &x, &y) && fabs(x) <= 1 && fabs(y) <= 1)
+		fail_msg("the sphere's centre lies in the fallback at (%g, %g)", x, y);
+	/* the cylinder's width in the fallback, in lixels: at least a tenth of the map */
+	double lo = INFINITY, hi = -INFINITY;
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_point(&s.res.maps[fb].light_clip, v3_box_corner(s.frame.bmin[cylinder], s.frame.bmax[cylinder], k));
+		assert_true(c.w > 0);
+		lo = fmin(lo, c.x / c.w), hi = fmax(hi, c.x / c.w);
+	}
+	int side = s.res.maps[fb].w;
+	uint64_t seed = 7;
+	long pairs = check_coverage(&s.frame, &s.res, np, &seed, 2000, "view 70");
+	print_message("view 70: the sphere left out of the fallback, the cylinder's box %.0f lixels wide in its %d; %ld pairs covered\n",
+		      (hi - lo) / 2 * side, side, pairs);
+	assert_true((hi - lo) / 2 > 0.1);
+	assert_true(pairs > 500);
+	lx_meshes_free(&s.meshes);
+}
+
 /* The flat boxes' faces the maps leave out (lx_slab_faces_left_out): on the table the
  * slab's underside, as a plane in the slab's own space (its bottom, the normal towards
  * the light above), and with it the whole slab, whose pair of fronts every object under
@@ -1169,6 +1214,7 @@ int main(void)
 		cmocka_unit_test(no_stale_matrix),
 		cmocka_unit_test(only_what_the_scene_requires),
 		cmocka_unit_test(fallback_serves_only_what_needs_it),
+		cmocka_unit_test(fallback_leaves_out_what_nothing_reaches),
 		cmocka_unit_test(polygon_difference),
 		cmocka_unit_test(polygon_inset),
 		cmocka_unit_test(slab_underside_left_out_of_maps),

@@ -47,8 +47,10 @@ bool lx_shadows_hidden(const struct lx_frame *f);
 int lx_light_space_receivers(const struct lx_frame *f, vec3 *pts);
 /* Whether an object that casts, other than id, may shadow a receiver of id whose points'
  * bounds on G are own (x0, y0, x1, y1): a ray from the light to a point it shadows passes
- * through that object, so their images on G meet (caster_g). */
-bool lx_light_space_shadowed_by_other(const struct lx_light_space *ls, int object_count, int id, const double own[4]);
+ * through that object, so their images on G meet (caster_g), and its box meets the rays
+ * from the light to id's box (f->bmin, bmax). */
+bool lx_light_space_shadowed_by_other(const struct lx_light_space *ls, const struct lx_frame *f, int id,
+				      const double own[4]);
 /* Receivers are the view frustum clipped to the scene bounds; casters the objects'
  * bounds (planes only where their back face is lit). */
 void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls);

@@ -1271,7 +1271,7 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 		}
 		/* a convex caster never shadows its own lit faces: with no other shadow reaching
 		 * it, it needs no lixel */
-		if (m > 0 && lx_light_space_shadowed_by_other(ls, f->object_count, id, own))
+		if (m > 0 && lx_light_space_shadowed_by_other(ls, f, id, own))
 			n += m;
 	}
 	for (int p = 0; p < f->scene->plane_count; p++) {
