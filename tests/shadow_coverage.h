@@ -15,6 +15,7 @@
 #include "light_space.h"
 #include "plane_cover.h"
 #include "plane_optimal.h"
+#include "reference.h"
 #include "shadow_method.h"
 
 static bool in_receivers(const struct lx_frame *f, vec3 p)
@@ -52,14 +53,42 @@ static bool covered_by_front(const struct lx_plane_covers *cv, int object, vec3 
 	return object < LX_MAX_PLANES && lx_plane_covers_shadow(cv, object, r);
 }
 
+/* Plane receivers no map serves that the eye cannot see, since the last reset: the eye's
+ * ray to them meets another object's triangle beyond the near plane (the exact
+ * reference's ray caster, over the triangles the renderer draws). Plane-optimal's maps
+ * leave out what casters hide (method_plane.c, hidden_parts). */
+static long coverage_hidden;
+
+/* The frame check_coverage checks, and its ray caster (made when first asked). */
+static const struct lx_frame *coverage_frame;
+static struct lx_raycaster *coverage_rays;
+
+/* Whether receiver r of object `object` is hidden from the eye by another object. */
+static bool hidden_from_eye(int object, vec3 r)
+{
+	const struct lx_view *v = &coverage_frame->view;
+	vec3 d = v3_sub(r, v->eye);
+	double along = v3_dot(d, v->dir);
+	if (!(along > v->near))
+		return false; /* not beyond the near plane: the check holds it */
+	if (!coverage_rays)
+		assert_non_null(coverage_rays = lx_raycaster_create(coverage_frame));
+	return lx_raycast_blocked(coverage_rays, v->eye, d, v->near / along, 1 - 1e-9, object);
+}
+
 /* Checks the map that serves receiver r of object `object` holds caster point c; a plane
- * receiver in a lit front's shadow may be left to the cover test (cv). */
+ * receiver in a lit front's shadow may be left to the cover test (cv), one hidden from the
+ * eye needs no map. */
 static void check_pair(const struct lx_shadow_result *res, const struct lx_plane_covers *cv, int object, vec3 c, vec3 r,
 		       const char *what)
 {
 	int m = lx_shadow_select_map(res, object, r);
 	if (m < 0 && cv && covered_by_front(cv, object, r)) {
 		coverage_left_to_cover++;
+		return;
+	}
+	if (m < 0 && cv && hidden_from_eye(object, r)) {
+		coverage_hidden++;
 		return;
 	}
 	if (m < 0)
@@ -168,6 +197,7 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 	}
 	struct lx_plane_covers cv;
 	lx_plane_covers(f, &cv);
+	coverage_frame = f, coverage_rays = NULL;
 	for (int id = plane_count; id < f->object_count; id++)
 		for (int k = 0; k < samples; k++) {
 			vec3 c;
@@ -199,6 +229,8 @@ static long check_coverage(const struct lx_frame *f, const struct lx_shadow_resu
 				checked++;
 			}
 		}
+	lx_raycaster_destroy(coverage_rays);
+	coverage_rays = NULL;
 	return checked;
 }
 

@@ -794,6 +794,12 @@ static void plane_keeps_every_shadow(void **state)
 	s.camera.eye = v3(-0.611149, 2.02308, 0.333994), s.camera.at = v3(-0.646251, 1.00542, 0.85989);
 	s.light.position = v3(-1.50432, 2.72382, -0.628421);
 	plane_near_uniform(&s, 4.31861, "the cylinder's top (view 70)");
+	/* Random view 132 (seed 13): the sphere near the eye hides most of its own shadow on
+	 * the floor, whose map once spread 0.53 lixels per pixel over it too: 0.0429% against
+	 * uniform's 0.0242%. The hidden floor takes no lixel now. */
+	s.camera.eye = v3(-2.78897, 3.07978, 1.92653), s.camera.at = v3(-0.403308, 0.0241855, 0.946119);
+	s.light.position = v3(-0.174909, 2.25104, 2.6265);
+	plane_near_uniform(&s, 0.455596, "the floor behind the sphere (view 132)");
 }
 
 /* Short of a lixel per pixel a plane map stretches its lixels along the shadows' edges
@@ -829,34 +835,45 @@ static void stretched_maps_follow_long_shadows(void **state)
 
 /* Two rectangles over one plane may overlap (method_plane.c, plane_pieces) where the one
  * around every footprint holds more pixels than the plane's budget has lixels: on the
- * table under the directional light, the floor's rectangle around the legs' shadows and
- * the cylinder's gives 0.75 lixels a pixel; two give a lixel per pixel: 0.0003% against
- * one rectangle's 0.0123% (before the slab left the maps, 0.0086% against 0.0264%, uniform
- * 0.0467%). Where pieces overlap, a pixel is drawn with each map and reads the first that
- * serves it. */
+ * default scene under the light facing the camera, one rectangle gives the floor 0.25
+ * lixels a pixel, 0.0902% mismatch; three, two of them overlapping, give it a lixel per
+ * pixel, 0.0003%. Where pieces overlap, a pixel is drawn with each map and reads the
+ * first that serves it. (The case was the table under the directional light, 0.0003%
+ * against 0.0123%, until the floor hidden behind the casters took no lixel: one
+ * rectangle now holds the rest at a lixel per pixel.) */
 static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 {
 	(void)state;
 	struct lx_scene s;
-	lx_scene_table(&s);
-	lx_config_apply(lx_config_find("directional"), &s);
+	lx_scene_default(&s);
+	lx_config_apply(lx_config_find("facing"), &s);
 	static const char *const methods[2] = {"plane", "plane/onepiece"};
 	double pct[2], lpp[2];
 	for (int k = 0; k < 2; k++) {
 		struct lx_render_report r;
 		run_sized(methods[k], &s, 1024, 1024, &r);
 		pct[k] = r.mismatch.mismatch_pct;
-		assert_true(r.light[0].planes[1].present);
-		lpp[k] = r.light[0].planes[1].s.lpp_median;
-		int floor_maps = 0;
-		for (int m = 0; m < r.light[0].result.map_count; m++)
-			floor_maps += r.light[0].result.maps[m].rendered && r.light[0].result.maps[m].plane == 1;
-		assert_true(k == 1 || floor_maps >= 2); /* the floor in pieces */
+		assert_true(r.light[0].planes[0].present);
+		lpp[k] = r.light[0].planes[0].s.lpp_median;
+		const struct lx_shadow_result *res = &r.light[0].result;
+		int floor_maps = 0, overlaps = 0;
+		for (int m = 0; m < res->map_count; m++) {
+			const struct lx_shadow_map *a = &res->maps[m];
+			if (!a->rendered || a->plane != 0)
+				continue;
+			floor_maps++;
+			for (int n = m + 1; n < res->map_count; n++) {
+				const struct lx_shadow_map *b = &res->maps[n];
+				overlaps += b->rendered && b->plane == 0 && a->screen[0] < b->screen[2] && b->screen[0] < a->screen[2] &&
+					    a->screen[1] < b->screen[3] && b->screen[1] < a->screen[3];
+			}
+		}
+		assert_true(k == 1 || (floor_maps >= 2 && overlaps > 0)); /* the floor in pieces, some overlapping */
 		lx_render_report_free(&r);
 	}
-	print_message("table, directional light, 1024x1024: pieces %.4f%% (floor lpp %.3f), one %.4f%% (lpp %.3f)\n",
+	print_message("default scene, light facing the camera, 1024x1024: pieces %.4f%% (floor lpp %.3f), one %.4f%% (lpp %.3f)\n",
 		      pct[0], lpp[0], pct[1], lpp[1]);
-	assert_true(lpp[0] >= 1 && lpp[1] < 1);
+	assert_true(lpp[0] >= 1 - 1e-9 && lpp[1] < 1); /* a lixel per pixel but for the density's rounding */
 	assert_true(pct[0] < 0.5 * pct[1]);
 }
 

@@ -206,6 +206,32 @@ void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, doub
 	}
 }
 
+bool lx_poly_bounds_outside(const struct lx_poly *a, const struct lx_poly *b, vec2 ex, vec2 ey, double out[4])
+{
+	out[0] = out[1] = INFINITY, out[2] = out[3] = -INFINITY;
+	double side = lx_poly_area(b) < 0 ? -1 : 1;
+	for (int i = 0; i < a->n; i++) {
+		vec2 p = a->v[i], q = a->v[(i + 1) % a->n], x[3];
+		double t0 = 0, t1 = 1;
+		int n = 0;
+		/* the ends of the edge's parts outside b (its own end is the next edge's start) */
+		if (b->n < 3 || !segment_in(b, side, p, q, &t0, &t1))
+			x[n++] = p;
+		else {
+			if (t0 > 0)
+				x[n++] = p, x[n++] = (vec2){p.x + (q.x - p.x) * t0, p.y + (q.y - p.y) * t0};
+			if (t1 < 1)
+				x[n++] = (vec2){p.x + (q.x - p.x) * t1, p.y + (q.y - p.y) * t1};
+		}
+		for (int k = 0; k < n; k++) { /* finite: ternaries, not fmin's library calls */
+			double u = ex.x * x[k].x + ex.y * x[k].y, v = ey.x * x[k].x + ey.y * x[k].y;
+			out[0] = u < out[0] ? u : out[0], out[1] = v < out[1] ? v : out[1];
+			out[2] = u > out[2] ? u : out[2], out[3] = v > out[3] ? v : out[3];
+		}
+	}
+	return out[0] <= out[2];
+}
+
 bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps)
 {
 	if (p->n < 3)
@@ -318,6 +344,30 @@ bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, 
 		return false;
 	*x0 = (int)ceil(lo - 0.5), *x1 = (int)floor(hi - 0.5) + 1; /* centres x + 0.5 in [lo, hi] */
 	return *x1 > *x0;
+}
+
+void lx_poly_shrink(const struct lx_poly *p, double d, struct lx_poly *out)
+{
+	out->n = 0;
+	if (p->n < 3)
+		return;
+	vec2 c = {0, 0};
+	for (int k = 0; k < p->n; k++)
+		c.x += p->v[k].x / p->n, c.y += p->v[k].y / p->n;
+	double least = INFINITY; /* the squared distance from c to the nearest edge's line */
+	for (int k = 0; k < p->n; k++) {
+		vec2 s = p->v[k], t = p->v[(k + 1) % p->n];
+		double ex = t.x - s.x, ey = t.y - s.y, len2 = ex * ex + ey * ey, x = ex * (c.y - s.y) - ey * (c.x - s.x);
+		if (len2 > 0) /* a hull leaves no edge of length 0; a guard all the same */
+			least = fmin(least, x * x / len2);
+	}
+	double rho = sqrt(least); /* least >= 0 */
+	if (!(rho > d))
+		return; /* the mean within d of an edge: thinner than 2 d, or rounding */
+	double k = 1 - d / rho; /* an edge h >= rho from c moves in by h d / rho >= d */
+	out->n = p->n;
+	for (int i = 0; i < p->n; i++)
+		out->v[i] = (vec2){c.x + (p->v[i].x - c.x) * k, c.y + (p->v[i].y - c.y) * k};
 }
 
 void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out)

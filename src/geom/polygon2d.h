@@ -33,6 +33,11 @@ double lx_poly_area(const struct lx_poly *p);
  * along x (*dx) and along y (*dy). An edge's length times its normal's x component is
  * its extent along y: these weigh how much of a's outline runs along each axis. */
 void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, double *dx, double *dy);
+/* The bounds, along axes ex and ey, of the part of convex a outside the interior of
+ * convex b (either winding): (lowest along ex, along ey, highest along ex, along ey),
+ * those of HULL(a - b) but for rounding. That part's extremes lie at a's vertices outside b
+ * or where a's edges leave b; false when none of a lies outside b. */
+bool lx_poly_bounds_outside(const struct lx_poly *a, const struct lx_poly *b, vec2 ex, vec2 ey, double out[4]);
 /* Strictly inside by more than eps (distance to every edge). */
 bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
 /* The pixels [*x0, *x1) whose centres, in every row of [y0, y1), lie inside p by more
@@ -41,6 +46,10 @@ bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps);
  * the last row decide. */
 bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, int *x0, int *x1);
 void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1, double *y1);
+/* Convex p scaled down about its vertices' mean so that every edge moves in by d or
+ * more (within lx_poly_inset's result, for a few operations a vertex instead of a clip
+ * an edge): empty (n = 0) when the mean lies within d of an edge. out may not be p. */
+void lx_poly_shrink(const struct lx_poly *p, double d, struct lx_poly *out);
 /* Convex counter-clockwise p moved in by d (every edge by d along its inner normal) into
  * out (may be p): empty (n = 0) when nothing is left. */
 void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out);

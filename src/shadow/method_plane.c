@@ -143,6 +143,13 @@ struct plane_chart {
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
+	int plane;                    /* the plane of interest charted */
+	struct caster_images *images; /* the frame's casters' images in the window, shared */
+	bool seek_hidden;             /* the wanted rectangle holds more pixels than the plane's
+				       * own budget has lixels: what casters hide is worth finding */
+	bool hid_some;                /* a caster hides part of a footprint (take_hidden) */
+	unsigned char hides[LX_MAX_PLANES + LX_MAX_CASTERS]; /* per caster: 0 not asked, 1 it hides
+							      * what its image covers, 2 it does not */
 	const bool *unmapped;   /* per object: no face of it in the maps, the fronts' tests decide
 				 * its whole shadow (lx_shadow_result.slab_out) */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
@@ -486,10 +493,140 @@ static bool casters_bound(const struct lx_frame *f, int i, const vec2 *pts, cons
 	return bounded;
 }
 
+/* Points of caster id's mesh (some of its vertices, world space) whose hull lies inside
+ * it, as mesh.c builds it (32 segments around, 16 rings pole to pole): every fourth
+ * vertex of a cylinder's or cone's rims (and the cone's apex); a sphere's poles, every
+ * fourth vertex of its equator and every eighth of its rings at 45 and 135 degrees.
+ * Returns the count (at most 18); 0 for a box, whose corners are its own. */
+#define INNER_POINTS 18
+static int round_inner_points(const struct lx_frame *f, int id, vec3 *x)
+{
+	static const double h2 = 0.70710678118654752; /* cos and sin of 45 degrees */
+	static const double cs[8][2] = {{1, 0}, {h2, h2}, {0, 1}, {-h2, h2}, {-1, 0}, {-h2, -h2}, {0, -1}, {h2, -h2}};
+	const struct lx_caster *c = &f->scene->casters[id - f->scene->plane_count];
+	vec3 o = f->offset[id];
+	double r = c->size.x, h = c->size.y;
+	int n = 0;
+	switch (c->shape) {
+	case LX_SPHERE: /* rings at y = r (1 + cos th), radius r sin th: th = 45 and 135 degrees
+			 * (every eighth vertex), 90 (every fourth) */
+		x[n++] = v3_add(o, v3(0, 2 * r, 0)), x[n++] = o;
+		for (int j = 0; j < 3; j++) {
+			double ry = r * (j == 0 ? 1 + h2 : j == 1 ? 1 : 1 - h2), rr = r * (j == 1 ? 1 : h2);
+			for (int k = 0; k < 8; k += j == 1 ? 1 : 2)
+				x[n++] = v3_add(o, v3(rr * cs[k][0], ry, -rr * cs[k][1]));
+		}
+		return n;
+	case LX_CYLINDER:
+	case LX_CONE:
+		for (int k = 0; k < 8; k++) {
+			x[n++] = v3_add(o, v3(r * cs[k][0], 0, -r * cs[k][1]));
+			if (c->shape == LX_CYLINDER)
+				x[n++] = v3_add(o, v3(r * cs[k][0], h, -r * cs[k][1]));
+		}
+		if (c->shape == LX_CONE)
+			x[n++] = v3_add(o, v3(0, h, 0));
+		return n;
+	default:
+		return 0;
+	}
+}
+
+/* The frame's casters' images in the window, shared by the planes and found as they are
+ * asked for (take_hidden): first the bounds of a caster's box, then the image of its
+ * mesh (the hull of points on it, a box's corners or round_inner_points) moved in by
+ * HIDE_INSET pixels or more (the meshes' float vertices, and a pixel centre on the edge;
+ * lx_poly_shrink). On the table most casters never get past their bounds. */
+#define HIDE_INSET 1.0
+enum { IMAGE_UNKNOWN, IMAGE_BOX, IMAGE_INSET, IMAGE_NONE };
+struct caster_images {
+	unsigned char state[LX_MAX_PLANES + LX_MAX_CASTERS];
+	double bounds[LX_MAX_PLANES + LX_MAX_CASTERS][4]; /* the box's image's */
+	struct lx_poly img[LX_MAX_PLANES + LX_MAX_CASTERS];
+};
+
+/* Caster id's box's image bounds (IMAGE_BOX), or IMAGE_NONE when the box reaches the near
+ * plane or behind the eye (the near plane cuts it, and it hides only what it covers). */
+static void caster_box_image(const struct lx_frame *f, struct caster_images *im, int id)
+{
+	double *b = im->bounds[id];
+	b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
+	im->state[id] = IMAGE_BOX;
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_point(&f->view.view_proj, v3_box_corner(f->bmin[id], f->bmax[id], k));
+		if (!(c.w > 0) || !(c.z > -c.w)) {
+			im->state[id] = IMAGE_NONE;
+			return;
+		}
+		double x = (c.x / c.w * 0.5 + 0.5) * f->view.width, y = (c.y / c.w * 0.5 + 0.5) * f->view.height;
+		b[0] = fmin(b[0], x), b[1] = fmin(b[1], y), b[2] = fmax(b[2], x), b[3] = fmax(b[3], y);
+	}
+}
+
+/* Caster id's mesh's image, moved in (IMAGE_INSET), or IMAGE_NONE when nothing is left. */
+static void caster_mesh_image(const struct lx_frame *f, struct caster_images *im, int id)
+{
+	vec3 x[INNER_POINTS];
+	vec2 w[INNER_POINTS];
+	int n = round_inner_points(f, id, x);
+	for (int k = 0; k < 8 && n == 0; k++) /* a box: its corners */
+		x[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	n = n > 0 ? n : 8;
+	for (int k = 0; k < n; k++) { /* within the box: beyond the near plane */
+		vec4 c = m4_mul_point(&f->view.view_proj, x[k]);
+		w[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+	}
+	struct lx_poly hull;
+	lx_poly_hull(w, n, &hull);
+	lx_poly_shrink(&hull, HIDE_INSET, &im->img[id]);
+	im->state[id] = im->img[id].n >= 3 ? IMAGE_INSET : IMAGE_NONE;
+}
+
+/* The chart's bounds b of footprint `on` (window coordinates) narrowed to what casters do
+ * not hide from the eye: a caster whose box lies wholly on the eye's side of the plane
+ * (lx_frame_box_hides) meets the eye's ray to any point of the plane behind its image
+ * before the plane, so a shadow there is never seen and needs no lixel. Each footprint's
+ * part outside a caster's image bounds it (lx_poly_bounds_outside), so their bounds'
+ * overlap holds the part outside all. False when a caster hides all of it. */
+static bool take_hidden(const struct lx_frame *f, struct plane_chart *ch, const struct lx_poly *on, double *b)
+{
+	struct caster_images *im = ch->images;
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	for (int k = 0; k < on->n; k++) {
+		vec2 p = on->v[k];
+		x0 = p.x < x0 ? p.x : x0, y0 = p.y < y0 ? p.y : y0, x1 = p.x > x1 ? p.x : x1, y1 = p.y > y1 ? p.y : y1;
+	}
+	vec2 ex = {ch->mx * ch->cs, -ch->mx * ch->sn}, ey = {ch->sn, ch->cs}; /* chart_point's axes */
+	for (int id = f->scene->plane_count; id < f->object_count && ch->seek_hidden; id++) {
+		if (im->state[id] == IMAGE_UNKNOWN)
+			caster_box_image(f, im, id);
+		const double *h = im->bounds[id];
+		if (im->state[id] == IMAGE_NONE || !(h[0] < x1 && x0 < h[2] && h[1] < y1 && y0 < h[3]))
+			continue; /* apart: nothing to take away */
+		if (ch->hides[id] == 0) {
+			vec2 corner[8];
+			ch->hides[id] = lx_frame_box_hides(f, id, ch->plane, corner) ? 1 : 2;
+		}
+		if (ch->hides[id] != 1)
+			continue;
+		if (im->state[id] == IMAGE_BOX)
+			caster_mesh_image(f, im, id);
+		if (im->state[id] != IMAGE_INSET)
+			continue;
+		double r[4];
+		ch->hid_some = true;
+		if (!lx_poly_bounds_outside(on, &im->img[id], ex, ey, r))
+			return false;
+		b[0] = fmax(b[0], r[0]), b[1] = fmax(b[1], r[1]), b[2] = fmin(b[2], r[2]), b[3] = fmin(b[3], r[3]);
+	}
+	return b[0] <= b[2] && b[1] <= b[3];
+}
+
 /* A footprint's part on the visible plane (window coordinates) among the chart's
  * footprints, which the pieces must hold (plane_pieces), less what the cover test
- * shadows (covered_part): its bounds, turned. */
-static void add_foot(struct plane_chart *ch, struct lx_poly on)
+ * shadows (covered_part) and what casters hide from the eye (take_hidden): its bounds,
+ * turned. */
+static void add_foot(const struct lx_frame *f, struct plane_chart *ch, struct lx_poly on)
 {
 	if (ch->covered.n >= 3) { /* what lies in the cover's shadow needs no lixel */
 		struct lx_poly rest;
@@ -498,19 +635,24 @@ static void add_foot(struct plane_chart *ch, struct lx_poly on)
 	}
 	if (on.n < 3)
 		return;
-	to_chart(ch, &on);
-	double *b = ch->foot[ch->feet++];
-	lx_poly_bounds(&on, &b[0], &b[1], &b[2], &b[3]);
+	double *b = ch->foot[ch->feet];
+	b[0] = b[1] = INFINITY, b[2] = b[3] = -INFINITY;
+	for (int k = 0; k < on.n; k++) { /* its bounds in the chart */
+		vec2 c = chart_point(ch, on.v[k]);
+		b[0] = c.x < b[0] ? c.x : b[0], b[1] = c.y < b[1] ? c.y : b[1], b[2] = c.x > b[2] ? c.x : b[2],
+		b[3] = c.y > b[3] ? c.y : b[3];
+	}
+	ch->feet += take_hidden(f, ch, &on, b);
 }
 
 /* A clipped footprint's part on the visible plane among the chart's footprints. */
-static void reach_foot(struct plane_chart *ch, const struct reach *r)
+static void reach_foot(const struct lx_frame *f, struct plane_chart *ch, const struct reach *r)
 {
 	struct lx_poly one = reach_poly(r), on;
 	lx_poly_intersect(&ch->win, &one, &on);
 	if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 		return;
-	add_foot(ch, on);
+	add_foot(f, ch, on);
 }
 
 /* Where the cover test (plane_cover.h) shadows plane i exactly: the image of the shadow
@@ -574,7 +716,9 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces,
 	 * when every caster has one); its outline inside the visible plane, for the lixels'
 	 * aspect (chart_stretch: from those that have one) */
-	ch->feet = 0;
+	ch->feet = 0, ch->plane = i, ch->hid_some = false;
+	ch->seek_hidden = (ch->x1 - ch->x0 + 1) * (ch->y1 - ch->y0 + 1) > (double)o->plane_lixels * o->plane_lixels;
+	memset(ch->hides, 0, sizeof ch->hides);
 	double along_x = 0, along_y = 0;
 	struct lx_poly win = ch->win;
 	to_chart(ch, &win);
@@ -582,7 +726,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		struct lx_poly one, on;
 		if (!whole[c]) {
 			if (reach[c].kind == FOOT_POLYGON && bounded)
-				reach_foot(ch, &reach[c]);
+				reach_foot(f, ch, &reach[c]);
 			continue;
 		}
 		lx_poly_hull(pts + first[c], first[c + 1] - first[c], &one);
@@ -590,7 +734,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
 		if (bounded)
-			add_foot(ch, on);
+			add_foot(f, ch, on);
 		if (similar)
 			continue; /* square lixels: no outlines wanted */
 		double dx, dy;
@@ -599,8 +743,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
-	if (bounded && ch->covered.n >= 3 && !feet_bound(ch))
-		return false; /* every shadow falls in the cover's: the test serves the plane */
+	if (bounded && !feet_bound(ch))
+		return false; /* every shadow falls in the cover's, or behind casters: no map */
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
@@ -1445,6 +1589,8 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
 	struct plane_chart ch[PLANE_MAPS];
+	struct caster_images images;
+	memset(images.state, 0, sizeof images.state);
 	bool ok[PLANE_MAPS];
 	long budget[PLANE_MAPS];
 	struct plane_pieces pc[PLANE_MAPS];
@@ -1454,7 +1600,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	struct plane_splits sp[PLANE_MAPS];
 	for (int i = 0; i < np; i++) {
-		ch[i].unmapped = out->slab_out;
+		ch[i].unmapped = out->slab_out, ch[i].images = &images;
 		covered_part(f, &out->covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i]);
 		if (ok[i])
