@@ -1431,6 +1431,11 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	}
 	struct lx_poly rec;
 	lx_poly_hull(pts, n, &rec);
+	if (!ls->receivers_behind && ls->receivers.n >= 3) { /* the view's receivers: what is seen */
+		struct lx_poly seen;
+		lx_poly_intersect(&rec, &ls->receivers, &seen);
+		rec = seen;
+	}
 	if (ls->casters_unbounded || ls->receivers_behind || ls->casters.n < 3)
 		*want = rec;
 	else
