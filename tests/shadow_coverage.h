@@ -9,7 +9,8 @@
  * drawn, and no pair is checked (test_reference's hidden_shadows_are_hidden checks that
  * rule against the reference). A plane's receiver no map serves passes where the lit
  * front the renderer tests over it shadows it (coverage_left_to_cover counts those:
- * plane-optimal leaves them to that test). Include after test_util.h and method_fixture.h. */
+ * plane-optimal leaves them to that test), or where another object hides it from the eye
+ * (coverage_hidden). Include after test_util.h and method_fixture.h. */
 #ifndef LX_SHADOW_COVERAGE_H
 #define LX_SHADOW_COVERAGE_H
 #include "light_space.h"
@@ -56,7 +57,7 @@ static bool covered_by_front(const struct lx_plane_covers *cv, int object, vec3 
 /* Plane receivers no map serves that the eye cannot see, since the last reset: the eye's
  * ray to them meets another object's triangle beyond the near plane (the exact
  * reference's ray caster, over the triangles the renderer draws). Plane-optimal's maps
- * leave out what casters hide (method_plane.c, hidden_parts). */
+ * leave out what casters hide (method_plane.c, take_hidden). */
 static long coverage_hidden;
 
 /* The frame check_coverage checks, and its ray caster (made when first asked). */

@@ -599,7 +599,7 @@ static void scattered_shadows_take_pieces(void **state)
  * floor at 0.995 lixels per pixel in four pieces: it was an unsnapped similarity just
  * under one, its lixel centres drifting off the pixel centres along every edge, 0.2223%
  * against uniform's 0.1948% (snapped: 0.0199%). Since the floor hidden behind the casters
- * needs no lixel (hidden_parts) the view's floor gets a lixel per pixel; with 288x288
+ * needs no lixel (take_hidden) the view's floor gets a lixel per pixel; with 288x288
  * lixels a plane it is short of one again. */
 static void just_short_of_one_is_snapped(void **state)
 {
@@ -880,7 +880,7 @@ static void fallback_leaves_out_what_nothing_reaches(void **state)
 
 /* Random view 132 of the default scene (tools/random-views.py, seed 13): the sphere,
  * near the eye, hides most of its own shadow on the floor. The floor's map leaves out
- * what the casters hide (hidden_parts): a lixel per pixel on what is left, within the
+ * what the casters hide (take_hidden): a lixel per pixel on what is left, within the
  * floor's own budget, where the whole footprints gave it 0.53 lixels per pixel (stretched
  * 1.89 to 1); every shadow on the floor the eye sees is still in it. */
 static void hidden_floor_takes_no_lixels(void **state)
