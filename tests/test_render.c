@@ -839,8 +839,8 @@ static void stretched_maps_follow_long_shadows(void **state)
  * lixels a pixel, 0.0902% mismatch; three, two of them overlapping, give it a lixel per
  * pixel, 0.0003%. Where pieces overlap, a pixel is drawn with each map and reads the
  * first that serves it. (The case was the table under the directional light, 0.0003%
- * against 0.0123%, until the floor hidden behind the casters took no lixel: one
- * rectangle now holds the rest at a lixel per pixel.) */
+ * against 0.0123%, until one rectangle less what the casters hide from the eye gave the
+ * floor a lixel per pixel there too, take_hidden.) */
 static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 {
 	(void)state;
