@@ -1338,8 +1338,8 @@ static bool box_on_screen(const struct lx_frame *f, vec3 lo, vec3 hi, int rect[4
 		vec4 q = m4_mul_point(&f->view.view_proj, v3_box_corner(lo, hi, k));
 		if (!(q.w > 1e-9 * fabs(q.z) + 1e-300))
 			return false;
-		double x = (q.x / q.w * 0.5 + 0.5) * f->view.width, y = (q.y / q.w * 0.5 + 0.5) * f->view.height;
-		x0 = fmin(x0, x), y0 = fmin(y0, y), x1 = fmax(x1, x), y1 = fmax(y1, y);
+		vec2 w = lx_view_window_point(&f->view, q);
+		x0 = fmin(x0, w.x), y0 = fmin(y0, w.y), x1 = fmax(x1, w.x), y1 = fmax(y1, w.y);
 	}
 	rect[0] = (int)fmax(0, floor(x0) - 1), rect[1] = (int)fmax(0, floor(y0) - 1);
 	rect[2] = (int)fmin(f->view.width, ceil(x1) + 1), rect[3] = (int)fmin(f->view.height, ceil(y1) + 1);

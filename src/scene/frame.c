@@ -270,7 +270,7 @@ bool lx_frame_plane_hides(const struct lx_frame *f, int front, int back, struct 
 		vec4 c = m4_mul_point(&f->view.view_proj, corner[k]);
 		if (!(side(&s, corner[k]) > 0) || !(c.w > 0) || !(c.z > -c.w))
 			return false; /* on back's far side, or reaching the near plane, which clips it */
-		win->v[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+		win->v[k] = lx_view_window_point(&f->view, c);
 	}
 	win->n = 4;
 	return true;
@@ -287,7 +287,7 @@ bool lx_frame_box_hides(const struct lx_frame *f, int id, int back, vec2 window[
 		vec4 c = m4_mul_point(&f->view.view_proj, x);
 		if (!(side(&s, x) >= touch) || !(c.w > 1e-12 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
 			return false;
-		window[k] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+		window[k] = lx_view_window_point(&f->view, c);
 	}
 	return true;
 }

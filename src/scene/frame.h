@@ -54,6 +54,11 @@ void lx_view_frustum_corners(const struct lx_view *v, vec3 fc[8]);
  * convex mesh's faces turned away from the eye is hidden behind one turned towards it
  * (the main pass culls them); one the near plane cuts shows its inner faces. */
 bool lx_view_box_beyond_near(const struct lx_view *v, vec3 lo, vec3 hi);
+/* Clip-space point c (c.w > 0, view_proj's image) in window pixels, GL's origin. */
+static inline vec2 lx_view_window_point(const struct lx_view *v, vec4 c)
+{
+	return (vec2){(c.x / c.w * 0.5 + 0.5) * v->width, (c.y / c.w * 0.5 + 0.5) * v->height};
+}
 
 bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct lx_scene_meshes *m, double t,
 		    int width, int height, char *err, size_t errlen);

@@ -394,7 +394,7 @@ bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers
 		vec4 c = m4_mul_point(&f->view.view_proj, (vec3){y.x, y.y, y.z});
 		if (!(c.w > 1e-9 * (fabs(c.x) + fabs(c.y) + fabs(c.z))))
 			return false; /* at or behind the eye: the shadow's image is not the corners' hull */
-		pts[i] = (vec2){(c.x / c.w * 0.5 + 0.5) * f->view.width, (c.y / c.w * 0.5 + 0.5) * f->view.height};
+		pts[i] = lx_view_window_point(&f->view, c);
 	}
 	/* the corners' shadows bound the shadow (a central projection of the parallelogram,
 	 * every corner in front of the light and of the eye, keeps it convex) */
