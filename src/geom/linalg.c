@@ -30,7 +30,9 @@ mat4 m4_mul(const mat4 *a, const mat4 *b)
 	return r;
 }
 
-bool lx_solve(int n, double *a, double *b, double eps)
+/* a x = b for the m columns of b (n x m, row-major) at once: each column goes through
+ * the operations lx_solve would give it alone, so the results are the same to the bit. */
+static bool solve_columns(int n, double *a, double *b, int m, double eps)
 {
 	double big = 0;
 	for (int i = 0; i < n * n; i++)
@@ -50,9 +52,11 @@ bool lx_solve(int n, double *a, double *b, double eps)
 				a[c * n + k] = a[p * n + k];
 				a[p * n + k] = t;
 			}
-			double t = b[c];
-			b[c] = b[p];
-			b[p] = t;
+			for (int j = 0; j < m; j++) {
+				double t = b[c * m + j];
+				b[c * m + j] = b[p * m + j];
+				b[p * m + j] = t;
+			}
 		}
 		for (int r = c + 1; r < n; r++) {
 			double f = a[r * n + c] / a[c * n + c]; /* pivot checked above */
@@ -60,33 +64,35 @@ bool lx_solve(int n, double *a, double *b, double eps)
 				continue;
 			for (int k = c; k < n; k++)
 				a[r * n + k] -= f * a[c * n + k];
-			b[r] -= f * b[c];
+			for (int j = 0; j < m; j++)
+				b[r * m + j] -= f * b[c * m + j];
 		}
 	}
-	for (int r = n - 1; r >= 0; r--) {
-		double s = b[r];
-		for (int k = r + 1; k < n; k++)
-			s -= a[r * n + k] * b[k];
-		b[r] = s / a[r * n + r];
-	}
+	for (int j = 0; j < m; j++)
+		for (int r = n - 1; r >= 0; r--) {
+			double s = b[r * m + j];
+			for (int k = r + 1; k < n; k++)
+				s -= a[r * n + k] * b[k * m + j];
+			b[r * m + j] = s / a[r * n + r];
+		}
 	return true;
 }
 
-/* r = a^-1 for a column-major n x n matrix (n <= 4): each column of the identity solved
- * for (lx_solve, pivots below eps fail); n small solves are plenty fast. */
+bool lx_solve(int n, double *a, double *b, double eps) { return solve_columns(n, a, b, 1, eps); }
+
+/* r = a^-1 for a column-major n x n matrix (n <= 4): the identity's columns solved for
+ * together (one elimination; pivots below eps fail). */
 static bool square_invert(int n, const double *a, double *r, double eps)
 {
-	for (int c = 0; c < n; c++) {
-		double A[16], b[4] = {0, 0, 0, 0};
+	double A[16], B[16];
+	for (int row = 0; row < n; row++)
+		for (int k = 0; k < n; k++)
+			A[row * n + k] = a[k * n + row], B[row * n + k] = row == k;
+	if (!solve_columns(n, A, B, n, eps))
+		return false;
+	for (int c = 0; c < n; c++)
 		for (int row = 0; row < n; row++)
-			for (int k = 0; k < n; k++)
-				A[row * n + k] = a[k * n + row];
-		b[c] = 1.0;
-		if (!lx_solve(n, A, b, eps))
-			return false;
-		for (int row = 0; row < n; row++)
-			r[c * n + row] = b[row];
-	}
+			r[c * n + row] = B[row * n + c];
 	return true;
 }
 
