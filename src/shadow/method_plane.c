@@ -366,7 +366,7 @@ static double origin_distance(const struct lx_poly *p)
 		return 0;
 	double best = INFINITY;
 	for (int k = 0; k < p->n; k++) {
-		vec2 a = p->v[k], b = p->v[(k + 1) % p->n], d = {b.x - a.x, b.y - a.y};
+		vec2 a = p->v[k], b = p->v[k + 1 < p->n ? k + 1 : 0], d = {b.x - a.x, b.y - a.y};
 		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? fmin(1, fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
 		best = fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
 	}
