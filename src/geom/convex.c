@@ -25,14 +25,14 @@ int lx_clip_polygon(const vec3 *in, int n, vec4 p, vec3 *out, int max_out)
 static int clip_faces(const vec3 faces[6][4], const plane_t *planes, int np, vec3 *out, int count, int max_out)
 {
 	for (int f = 0; f < 6; f++) {
-		vec3 a[POLY_MAX], b[POLY_MAX];
+		vec3 buf[2][POLY_MAX], *a = buf[0], *b = buf[1]; /* each cut from a into b, then the two swap */
 		int n = 4;
 		for (int i = 0; i < 4; i++)
 			a[i] = faces[f][i];
 		for (int p = 0; p < np && n > 0; p++) {
 			n = lx_clip_polygon(a, n, (vec4){planes[p].n.x, planes[p].n.y, planes[p].n.z, planes[p].d}, b, POLY_MAX);
-			for (int i = 0; i < n; i++)
-				a[i] = b[i];
+			vec3 *t = a;
+			a = b, b = t;
 		}
 		for (int i = 0; i < n && count < max_out; i++)
 			out[count++] = a[i];

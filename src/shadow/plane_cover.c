@@ -78,16 +78,6 @@ bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2
 	return true;
 }
 
-/* Whether box [lo, hi] reaches beyond the front of cover matrix m, a corner of it (h.w >
- * LX_COVER_TOUCH, as beyond_meets_in finds it): 8 products. */
-static bool reaches_beyond(const mat4 *m, vec3 lo, vec3 hi)
-{
-	for (int k = 0; k < 8; k++)
-		if (m4_mul_point(m, v3_box_corner(lo, hi, k)).w > LX_COVER_TOUCH)
-			return true;
-	return false;
-}
-
 /* Whether the part of box [lo, hi] where h.w > LX_COVER_TOUCH has rays crossing the
  * plane inside r (u0, v0, u1, v1 in the parallelogram's coordinates): that part is the box
  * cut by the plane, whose corners are the box's corners beyond it and its edges'
@@ -95,13 +85,15 @@ static bool reaches_beyond(const mat4 *m, vec3 lo, vec3 hi)
  * directional light). */
 static bool beyond_meets_in(const mat4 *m, vec3 lo, vec3 hi, const double r[4])
 {
-	if (!reaches_beyond(m, lo, hi))
-		return false; /* a box above a floor or a table top: the loop below would find nothing */
 	vec4 h[8];
+	bool beyond = false;
 	for (int k = 0; k < 8; k++) {
 		h[k] = m4_mul_point(m, v3_box_corner(lo, hi, k));
+		beyond |= h[k].w > LX_COVER_TOUCH;
 		h[k].w -= LX_COVER_TOUCH; /* a box touching the plane (the floor's edge at the wall's foot) is not beyond it */
 	}
+	if (!beyond)
+		return false; /* a box above a floor or a table top: the loop below would find nothing */
 	double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY;
 	for (int a = 0; a < 8; a++)
 		for (int bit = 0; bit < 4; bit++) { /* each corner alone (bit 3), each edge once */
