@@ -73,7 +73,7 @@ CORE_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(CORE_SRC))) $(BUILD)/boards_em
 CORE_LIB = $(BUILD)/liblixel-core.a
 GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 
-TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_render test_extremes test_filter
+TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_run_order test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
 .PHONY: all run slide check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build

@@ -10,6 +10,7 @@
 #include "png_out.h"
 #include "out_file.h"
 #include "reference.h"
+#include "run_order.h"
 #include "renderer.h"
 #include "soft_reference.h"
 #include <sys/stat.h>
@@ -24,6 +25,7 @@
 #define MAX_METHODS 16
 /* a run: a method with a filter (none reads no map: once, unfiltered) */
 #define MAX_RUNS (MAX_METHODS * LX_FILTER_COUNT)
+_Static_assert(MAX_RUNS <= LX_RUN_ORDER_MAX, "lx_run_order orders every run");
 #define LX_STR_(x) #x
 #define LX_STR(x) LX_STR_(x) /* a limit in a message */
 #define MAX_CONFIGS 16
@@ -103,14 +105,15 @@ static void usage(FILE *f)
 		   "\n"
 		   "Renders every method over every configuration: N timed frames each (glFinish after\n"
 		   "the shadow passes and after the main pass), in 5 rounds: in each the methods take\n"
-		   "turns in a fresh order, each alone on GL objects made for the round, its warm-up\n"
-		   "frames first, so that they share the machine's noise, the order of --methods does\n"
-		   "not matter and no method keeps an unlucky allocation; then the accuracy against the\n"
-		   "exact reference: the mismatch of the shadow decision, and the soft-edge error of the\n"
-		   "visibility against a small area light. Prints a line per method, filter and\n"
-		   "configuration, then a summary per run: medians of the frame, its shadow passes and\n"
-		   "its main pass, with ratios to no shadows and to uniform. Run with LP_NUM_THREADS=1\n"
-		   "to stand in for a fill-limited board GPU.\n"
+		   "turns in a fresh order (drawn over the runs sorted by name: the same for any order\n"
+		   "of --methods), each alone on GL objects made for the round, its warm-up frames\n"
+		   "first, so that they share the machine's noise and no method keeps an unlucky\n"
+		   "allocation; then the accuracy against the exact reference: the mismatch of the\n"
+		   "shadow decision, and the soft-edge error of the visibility against a small area\n"
+		   "light. Prints a line per method, filter and configuration, then a summary per run:\n"
+		   "medians of the frame, its shadow passes and its main pass, with ratios to no\n"
+		   "shadows and to uniform. Run with LP_NUM_THREADS=1 to stand in for a fill-limited\n"
+		   "board GPU.\n"
 		   "\n"
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
@@ -210,19 +213,6 @@ struct pixels {
 	/* ref_sh and ref_vis: every light's, light after light (light k's from k * width * height) */
 };
 
-/* A fresh order of the methods for each frame (a fixed sequence, so runs repeat): no
- * method always runs first or always follows the same one, whatever --methods says. */
-static void shuffled(int nm, unsigned long long *seq, int *order)
-{
-	for (int k = 0; k < nm; k++)
-		order[k] = k;
-	for (int k = nm - 1; k > 0; k--) {
-		*seq = *seq * 6364136223846793005ull + 1442695040888963407ull; /* a 64-bit LCG */
-		int j = (int)((*seq >> 33) % (unsigned long long)(k + 1)), t = order[k];
-		order[k] = order[j], order[j] = t;
-	}
-}
-
 /* Rounds in which every method is timed alone, each round with GL objects made anew: on
  * llvmpipe under a virtual machine one allocation of an atlas can read 20% slower than
  * another for the same method, so a median over rounds outvotes an unlucky one. */
@@ -261,7 +251,10 @@ static bool frame_at(const struct bench *b, const struct lx_scene *scene, bool a
 static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim, const struct lx_scene_meshes *meshes,
 		       double *times, struct lx_frame *frame, char *err, size_t errlen)
 {
-	unsigned long long seq = 0x6c697865ull;
+	unsigned long long seq = LX_RUN_ORDER_SEED;
+	const char *names[MAX_RUNS];
+	for (int m = 0; m < b->nm; m++)
+		names[m] = b->labels[m];
 	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
 	enum lx_depth_precision path = b->depth.taken;
 	/* a still configuration's one frame, set up once; the animation's, frame by frame */
@@ -269,7 +262,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 		return 2;
 	for (int r = 0, done = 0; r < rounds; r++) {
 		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
-		shuffled(b->nm, &seq, order);
+		lx_run_order(names, b->nm, &seq, order); /* the same schedule for any order of --methods */
 		for (int k = 0; k < b->nm; k++) {
 			int m = order[k], st;
 			struct lx_method_run run;
