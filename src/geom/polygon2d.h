@@ -20,7 +20,7 @@ struct lx_poly {
  * of more than LX_POLY_MAX vertices becomes a 32-sided polygon around it (a superset):
  * false then. Clipping (below) does the same where a cut would add the 65th vertex. */
 bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out);
-/* Intersection of two convex polygons (clipping a by each edge of b). */
+/* Intersection of two convex polygons (clipping a by each edge of b); out may be a. */
 void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *out);
 /* Keeps the part of a on the side a.x * x + a.y * y + c >= 0 of a line. */
 void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out);

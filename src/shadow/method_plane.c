@@ -143,11 +143,7 @@ struct plane_chart {
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
-	int plane;                    /* the plane of interest charted */
-	struct caster_images *images; /* the frame's casters' images in the window, shared */
-	bool hid_some;                /* a caster hides part of a footprint (take_hidden) */
-	unsigned char hides[LX_MAX_PLANES + LX_MAX_CASTERS]; /* per caster: 0 not asked, 1 it hides
-							      * what its image covers, 2 it does not */
+	int plane;              /* the plane of interest charted */
 	const bool *unmapped;   /* per object: no face of it in the maps, the fronts' tests decide
 				 * its whole shadow (lx_shadow_result.slab_out) */
 	int feet;              /* casters' own footprints on the visible plane, turned: their bounds */
@@ -567,9 +563,9 @@ static void caster_mesh_image(const struct lx_frame *f, struct caster_images *im
 	vec3 x[INNER_POINTS];
 	vec2 w[INNER_POINTS];
 	int n = round_inner_points(f, id, x);
-	for (int k = 0; k < 8 && n == 0; k++) /* a box: its corners */
-		x[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-	n = n > 0 ? n : 8;
+	if (n == 0) /* a box: its corners */
+		for (; n < 8; n++)
+			x[n] = v3_box_corner(f->bmin[id], f->bmax[id], n);
 	for (int k = 0; k < n; k++) /* within the box: beyond the near plane */
 		w[k] = lx_view_window_point(&f->view, m4_mul_point(&f->view.view_proj, x[k]));
 	struct lx_poly hull;
@@ -578,15 +574,25 @@ static void caster_mesh_image(const struct lx_frame *f, struct caster_images *im
 	im->state[id] = im->img[id].n >= 3 ? IMAGE_INSET : IMAGE_NONE;
 }
 
+/* What hides one plane's footprints, found as hidden_feet asks: the frame's casters'
+ * images (shared by the planes), per caster whether it hides this plane (0 not asked, 1
+ * what its image covers, 2 nothing), and whether one hid some footprint. */
+struct hiding {
+	struct caster_images *images;
+	unsigned char hides[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool some;
+};
+
 /* The chart's bounds b of footprint `on` (window coordinates) narrowed to what casters do
  * not hide from the eye: a caster whose box lies wholly on the eye's side of the plane
  * (lx_frame_box_hides) meets the eye's ray to any point of the plane behind its image
  * before the plane, so a shadow there is never seen and needs no lixel. Each footprint's
  * part outside a caster's image bounds it (lx_poly_bounds_outside), so their bounds'
  * overlap holds the part outside all. False when a caster hides all of it. */
-static bool take_hidden(const struct lx_frame *f, struct plane_chart *ch, const struct lx_poly *on, double *b)
+static bool take_hidden(const struct lx_frame *f, const struct plane_chart *ch, struct hiding *hd,
+			const struct lx_poly *on, double *b)
 {
-	struct caster_images *im = ch->images;
+	struct caster_images *im = hd->images;
 	double x0, y0, x1, y1;
 	lx_poly_bounds(on, &x0, &y0, &x1, &y1);
 	vec2 ex = {ch->mx * ch->cs, -ch->mx * ch->sn}, ey = {ch->sn, ch->cs}; /* chart_point's axes */
@@ -596,18 +602,18 @@ static bool take_hidden(const struct lx_frame *f, struct plane_chart *ch, const 
 		const double *h = im->bounds[id];
 		if (im->state[id] == IMAGE_NONE || !(h[0] < x1 && x0 < h[2] && h[1] < y1 && y0 < h[3]))
 			continue; /* apart: nothing to take away */
-		if (ch->hides[id] == 0) {
+		if (hd->hides[id] == 0) {
 			vec2 corner[8];
-			ch->hides[id] = lx_frame_box_hides(f, id, ch->plane, corner) ? 1 : 2;
+			hd->hides[id] = lx_frame_box_hides(f, id, ch->plane, corner) ? 1 : 2;
 		}
-		if (ch->hides[id] != 1)
+		if (hd->hides[id] != 1)
 			continue;
 		if (im->state[id] == IMAGE_BOX)
 			caster_mesh_image(f, im, id);
 		if (im->state[id] != IMAGE_INSET)
 			continue;
 		double r[4];
-		ch->hid_some = true;
+		hd->some = true;
 		if (!lx_poly_bounds_outside(on, &im->img[id], ex, ey, r))
 			return false;
 		b[0] = fmax(b[0], r[0]), b[1] = fmax(b[1], r[1]), b[2] = fmin(b[2], r[2]), b[3] = fmin(b[3], r[3]);
@@ -693,19 +699,20 @@ static bool feet_bound(struct plane_chart *ch)
 }
 
 /* The chart's feet again, each less what casters hide from the eye (take_hidden), and
- * the wanted rectangle their bounds where a caster hides some. False when they hide
- * every footprint: no map. */
-static bool hidden_feet(const struct lx_frame *f, struct plane_chart *ch, const struct foot_parts *parts)
+ * the wanted rectangle their bounds where a caster hides some (*hid_some). False when
+ * they hide every footprint: no map. */
+static bool hidden_feet(const struct lx_frame *f, struct plane_chart *ch, const struct foot_parts *parts,
+			struct caster_images *images, bool *hid_some)
 {
-	ch->hid_some = false;
-	memset(ch->hides, 0, sizeof ch->hides);
+	struct hiding hd = {.images = images};
 	int n = 0;
 	for (int k = 0; k < parts->n; k++) {
 		chart_bounds(ch, &parts->on[k], ch->foot[n]);
-		n += take_hidden(f, ch, &parts->on[k], ch->foot[n]);
+		n += take_hidden(f, ch, &hd, &parts->on[k], ch->foot[n]);
 	}
 	ch->feet = n;
-	return !ch->hid_some || feet_bound(ch);
+	*hid_some = hd.some;
+	return !hd.some || feet_bound(ch);
 }
 
 static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
@@ -1461,11 +1468,8 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 	}
 	struct lx_poly rec;
 	lx_poly_hull(pts, n, &rec);
-	if (!ls->receivers_behind && ls->receivers.n >= 3) { /* the view's receivers: what is seen */
-		struct lx_poly seen;
-		lx_poly_intersect(&rec, &ls->receivers, &seen);
-		rec = seen;
-	}
+	if (!ls->receivers_behind && ls->receivers.n >= 3) /* the view's receivers: what is seen */
+		lx_poly_intersect(&rec, &ls->receivers, &rec);
 	if (ls->casters_unbounded || ls->receivers_behind || ls->casters.n < 3)
 		*want = rec;
 	else
@@ -1636,7 +1640,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	struct plane_splits sp[PLANE_MAPS];
 	for (int i = 0; i < np; i++) {
-		ch[i].unmapped = out->slab_out, ch[i].images = &images;
+		ch[i].unmapped = out->slab_out;
 		covered_part(f, &out->covers, i, &ch[i].covered);
 		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i], &parts);
 		if (ok[i])
@@ -1647,9 +1651,10 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		 * would only take the pieces' place with more area (on the default view at
 		 * 1024x1024 one 586x205 against two of 76,000 lixels together, 0.13 ms more shadow
 		 * pass in interleaved runs). */
+		bool hid_some = false;
 		if (ok[i] && least_area(&sp[i]) > (double)own) {
-			ok[i] = hidden_feet(f, &ch[i], &parts);
-			if (ok[i] && ch[i].hid_some) /* else the same feet: the same splits */
+			ok[i] = hidden_feet(f, &ch[i], &parts, &images, &hid_some);
+			if (ok[i] && hid_some) /* else the same feet: the same splits */
 				plane_splits(&ch[i], spare > 0, own, &sp[i]);
 		}
 	}
