@@ -344,6 +344,9 @@ static void kiosk_inputs(struct kiosk *k)
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	signal(SIGHUP, on_signal); /* a closed terminal or session: the same clean stop */
+	/* A write to a display server that has died (X11's socket) must come back as an error, which
+	 * the platform reports as a lost display, not end the kiosk silently with SIGPIPE. */
+	signal(SIGPIPE, SIG_IGN);
 	k->ov = lx_overlay_create(err, sizeof err);
 	if (!k->ov)
 		printf("lixel kiosk: warning: no overlay: %s\n", err);
