@@ -1,8 +1,9 @@
 /* Where the main pass looks a map up (lookup_region.c), GL-free: the spans cut a window
  * into pieces that cover it once, every point a caster shadows is inside a lookup span,
  * a plane's pieces cover it once, the maps left to a caster are the ones its points
- * read, and the shadow pass leaves a caster out of a map only where no lookup reads it.
- * Over the standard configurations of both built-in scenes and some extremes. */
+ * read, the parts of a caster called out of reach of every shadow are, and the shadow
+ * pass leaves a caster out of a map only where no lookup reads it. Over the standard
+ * configurations of both built-in scenes and some extremes. */
 #include "configs.h"
 #include "lookup_region.h"
 #include "plane_cover.h"
@@ -186,10 +187,10 @@ static void check_scene(struct setup *s, const char *what, struct tally *tally)
 	check_lookup_any(&v, s, what, span, 4096, tally);
 }
 
-static void shadowed_points_are_looked_up(void **state)
+/* fn on every method with maps over both built-in scenes and every standard
+ * configuration, set up at W x H at time 0.4; `what` names the three. */
+static void each_standard_setup(void (*fn)(struct setup *s, const char *what, void *ctx), void *ctx)
 {
-	(void)state;
-	struct tally t = {0};
 	for (const char *const *sn = (const char *const[]){"default", "table", NULL}; *sn; sn++)
 		FOR_METHODS(method)
 			for (int c = 0; c < lx_config_count; c++) {
@@ -200,9 +201,18 @@ static void shadowed_points_are_looked_up(void **state)
 					continue;
 				char what[96];
 				snprintf(what, sizeof what, "%s scene, %s, %s", *sn, lx_configs[c].name, method);
-				check_scene(&s, what, &t);
+				fn(&s, what, ctx);
 				lx_meshes_free(&s.meshes);
 			}
+}
+
+static void check_scene_tally(struct setup *s, const char *what, void *tally) { check_scene(s, what, tally); }
+
+static void shadowed_points_are_looked_up(void **state)
+{
+	(void)state;
+	struct tally t = {0};
+	each_standard_setup(check_scene_tally, &t);
 	print_message("%ld shadowed plane pixels, every one inside a lookup span or, %ld of them, shadowed by a flat box "
 		      "in no map and by its fronts' tests; %ld pixels looked up in all\n", t.checked, t.fronts, t.looked);
 	print_message("%ld receivers a shadow can fall on, %ld none can, alike by lx_lookup_any and the spans\n", t.yes,
@@ -356,6 +366,65 @@ static bool in_volume(const vec4 *pl, int np, vec3 p)
 		if (pl[j].x * p.x + pl[j].y * p.y + pl[j].z * p.z + pl[j].w < -1e-9)
 			return false;
 	return true;
+}
+
+/* Whether p lies in a volume of another object than `receiver` through a map of mask:
+ * a point a lookup may find shadowed (by that object). */
+static bool in_other_volume(const struct lx_lookup_volumes *v, int receiver, unsigned mask, vec3 p)
+{
+	for (int m = 0; m < v->res->map_count; m++)
+		for (int c = 0; c < v->frame->object_count && (mask & 1u << m); c++)
+			if (c != receiver && v->count[m][c] >= 0 && in_volume(v->plane[m][c], v->count[m][c], p))
+				return true;
+	return false;
+}
+
+/* What caster_parts_out_of_reach counts. */
+struct reach {
+	uint64_t seed;
+	long out, in, points;
+};
+
+static void check_reach(struct setup *s, const char *what, void *ctx)
+{
+	struct reach *t = ctx;
+	static struct lx_lookup_volumes v;
+	lx_lookup_prepare(&s->frame, &s->atlas, &s->res, LX_LOOKUP_MARGIN_HIGHP, &v);
+	for (int id = s->scene.plane_count; id < s->frame.object_count; id++) {
+		unsigned mask = lx_shadow_receiver_maps(&s->res, id);
+		vec3 lo = s->frame.bmin[id], hi = s->frame.bmax[id], d = v3_scale(v3_sub(hi, lo), 0.25);
+		if (lx_lookup_any(&v, id, mask) && !lx_lookup_box_may_meet(&v, id, mask, lo, hi))
+			fail_msg("%s, object %d: a shadow can fall on it, its box out of reach", what, id);
+		for (int k = 0; k < 64; k++) {
+			vec3 a = v3_add(lo, v3(d.x * (k & 3), d.y * (k >> 2 & 3), d.z * (k >> 4))), b = v3_add(a, d);
+			if (lx_lookup_box_may_meet(&v, id, mask, a, b)) {
+				t->in++;
+				continue;
+			}
+			t->out++;
+			for (int i = 0; i < 40; i++, t->points++) {
+				vec3 p = v3(a.x + (b.x - a.x) * test_rand(&t->seed), a.y + (b.y - a.y) * test_rand(&t->seed),
+					    a.z + (b.z - a.z) * test_rand(&t->seed));
+				if (in_other_volume(&v, id, mask, p))
+					fail_msg("%s, object %d: part %d out of reach holds a point in a volume", what, id, k);
+			}
+		}
+	}
+}
+
+/* lx_lookup_box_may_meet, which the main pass asks of each run of a caster's faces
+ * turned to the light: a part of a caster's box (4x4x4 of them) it calls out of reach
+ * holds no point inside another object's volume (so no lookup there can find a shadow),
+ * and the whole box of a caster lx_lookup_any says a shadow can fall on is in reach.
+ * Every method, both scenes, every standard configuration. */
+static void caster_parts_out_of_reach(void **state)
+{
+	(void)state;
+	struct reach t = {.seed = 11};
+	each_standard_setup(check_reach, &t);
+	print_message("%ld parts of casters out of reach (%ld points in none of the volumes), %ld in reach\n", t.out,
+		      t.points, t.in);
+	assert_true(t.out > 1000 && t.in > 1000); /* both answers were given often */
 }
 
 /* Points of object id: a grid over a plane's quad, a caster's mesh vertices. */
@@ -782,6 +851,7 @@ int main(void)
 		cmocka_unit_test(extremes_stay_conservative),
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
+		cmocka_unit_test(caster_parts_out_of_reach),
 		cmocka_unit_test(casters_left_out_only_where_unread),
 		cmocka_unit_test(lit_plane_fronts_shadow_what_lies_beyond),
 		cmocka_unit_test(two_fronts_over_an_object_are_both_tested),

@@ -403,6 +403,31 @@ bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mas
 	return false;
 }
 
+/* Whether box [lo, hi] has a point inside every half-space of a volume: for each, its
+ * corner furthest along the half-space's normal is inside. */
+static bool box_may_meet(const vec4 *pl, int np, vec3 lo, vec3 hi)
+{
+	for (int j = 0; j < np; j++) {
+		vec3 far = v3(pl[j].x > 0 ? hi.x : lo.x, pl[j].y > 0 ? hi.y : lo.y, pl[j].z > 0 ? hi.z : lo.z);
+		if (v4_dot_point(pl[j], far) < 0)
+			return false;
+	}
+	return true;
+}
+
+bool lx_lookup_box_may_meet(const struct lx_lookup_volumes *v, int receiver, unsigned mask, vec3 lo, vec3 hi)
+{
+	const struct lx_frame *f = v->frame;
+	for (int m = 0; m < v->res->map_count && m < LX_MAX_MAPS; m++) {
+		if (!(mask & 1u << m))
+			continue;
+		for (int c = 0; c < f->object_count; c++)
+			if (v->count[m][c] >= 0 && c != receiver && box_may_meet(v->plane[m][c], v->count[m][c], lo, hi))
+				return true;
+	}
+	return false;
+}
+
 unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool everywhere)
 {
 	const struct lx_frame *f = v->frame;

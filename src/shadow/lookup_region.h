@@ -82,6 +82,13 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
  * by another object. */
 bool lx_lookup_any(const struct lx_lookup_volumes *v, int receiver, unsigned mask);
 
+/* Whether one of the maps in `mask` may shadow a point of world box [lo, hi], a part of
+ * receiver object `receiver`, by another object: the box reaches into one of their
+ * volumes past each of its half-spaces (by the corner that reaches furthest). False
+ * only where no such point can be shadowed; a few dot products per volume, so that a
+ * caster's faces can be asked in runs, each by its box. */
+bool lx_lookup_box_may_meet(const struct lx_lookup_volumes *v, int receiver, unsigned mask, vec3 lo, vec3 hi);
+
 /* The maps of `mask` a draw of receiver object `receiver` needs, the same pixels shadowed:
  * the shader reads the first map, in order, that serves a point, so a map that serves no
  * point of the receiver's part in view is dropped, and so are the maps after one that
