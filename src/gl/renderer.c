@@ -1157,22 +1157,37 @@ static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f,
 	return span;
 }
 
+/* Whether object id's faces turned away from the eye can be left out of the main pass: a
+ * caster's (a closed mesh wound counter-clockwise outwards) when its whole box lies
+ * beyond the near plane, where each of them is hidden behind one of its own faces turned
+ * towards the eye. A plane is seen from both sides, as the reference sees it; a caster
+ * the near plane cuts shows its inner faces through the cut (the horizon view's did). */
+static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
+{
+	return id >= plane_count && lx_view_box_beyond_near(&f->view, f->bmin[id], f->bmax[id]);
+}
+
 /* Appends caster id's triangles to the frame's index buffer in three groups: those turned
  * towards the light in runs (RUN_TRIANGLES) where one of the maps in `mask` may shadow a
  * point (lx_lookup_box_may_meet; every run when !cut), those turned towards it elsewhere,
  * those turned away. Returns the first group's count of indices and *lit the second's, or
  * -1 when its mesh cannot be indexed so. A face lying in a plane through the light counts
  * as turned away, as the reference has it (where the light grazes a face the reference
- * calls neither side wrong). */
-static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int id, unsigned mask, bool cut, int *lit)
+ * calls neither side wrong). With `cull` (the GL culls the object's back faces) a face
+ * turned away from the eye by more than a hundredth of edge-on is left out: the GL
+ * would shade its vertices before culling it (llvmpipe's draw module, a board's vertex
+ * stage), and each of a caster's triangles has its own three; nearer edge-on, the GL
+ * decides, so no face it draws is lost to rounding. */
+static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int id, unsigned mask, bool cut, bool cull,
+			  int *lit)
 {
 	const struct lx_mesh *m = &r->d.meshes->mesh[id];
 	*lit = 0;
 	if (m->vertex_count > 65536 || r->facing_count + m->vertex_count > r->facing_room)
 		return -1;
-	enum { LOOKUP, LIT, AWAY };
+	enum { LOOKUP, LIT, AWAY, UNSEEN };
 	unsigned char group[65536 / 3];
-	int tris = m->vertex_count / 3, count[3] = {0, 0, 0};
+	int tris = m->vertex_count / 3, count[4] = {0, 0, 0, 0};
 	const struct lx_light *l = &f->light;
 	for (int k = 0; k * RUN_TRIANGLES < tris; k++) {
 		bool reads = !cut || !r->run_box[id] ||
@@ -1184,18 +1199,26 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
 			const float *v = m->v + (size_t)t * 3 * LX_VERTEX_FLOATS;
 			vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
 			vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
-			group[t] = !(v3_dot(n, to_light) > 0) ? AWAY : reads ? LOOKUP : LIT;
+			vec3 to_eye = v3_sub(f->view.eye, p);
+			double e = v3_dot(n, to_eye);
+			group[t] = cull && e < 0 && e * e > 1e-4 * v3_dot(n, n) * v3_dot(to_eye, to_eye) ? UNSEEN
+				   : !(v3_dot(n, to_light) > 0)						? AWAY
+				   : reads								? LOOKUP
+													: LIT;
 			count[group[t]]++;
 		}
 	}
-	/* the first two groups in the mesh's order, the third from the end */
-	unsigned short *at[3] = {r->facing_index + r->facing_count, NULL, r->facing_index + r->facing_count + m->vertex_count};
+	/* the first two groups in the mesh's order, the third from its end */
+	int kept = 3 * (count[LOOKUP] + count[LIT] + count[AWAY]);
+	unsigned short *at[3] = {r->facing_index + r->facing_count, NULL, r->facing_index + r->facing_count + kept};
 	at[LIT] = at[LOOKUP] + 3 * count[LOOKUP];
 	for (int t = 0; t < tris; t++) {
+		if (group[t] == UNSEEN)
+			continue;
 		unsigned short *o = group[t] == AWAY ? (at[AWAY] -= 3) : (at[group[t]] += 3) - 3;
 		o[0] = (unsigned short)(3 * t), o[1] = (unsigned short)(3 * t + 1), o[2] = (unsigned short)(3 * t + 2);
 	}
-	r->facing_count += m->vertex_count;
+	r->facing_count += kept;
 	*lit = 3 * count[LIT];
 	return 3 * count[LOOKUP];
 }
@@ -1231,10 +1254,16 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
 		/* its faces turned towards the light read the maps only in runs a shadow can reach */
+		bool cull = culls_back_faces(f, id, r->d.scene->plane_count);
 		int first = r->facing_count, lit = 0,
-		    facing = sides ? sort_by_facing(r, f, id, mask, mask && !r->d.lookup_everywhere, &lit) : -1;
+		    facing = sides || cull ? sort_by_facing(r, f, id, mask, sides && mask && !r->d.lookup_everywhere, cull, &lit)
+					   : -1;
 		if (facing < 0) {
 			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, covers};
+			return n;
+		}
+		if (!sides) { /* one draw of the faces the eye may see */
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, r->facing_count - first, covers};
 			return n;
 		}
 		if (facing > 0)
@@ -1453,16 +1482,6 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
 	lx_gl.ActiveTexture(GL_TEXTURE1);
 	lx_gl.BindTexture(GL_TEXTURE_2D, u->beam_tex);
 	lx_gl.ActiveTexture(GL_TEXTURE0);
-}
-
-/* Whether object id's faces turned away from the eye can be left out of the main pass: a
- * caster's (a closed mesh wound counter-clockwise outwards) when its whole box lies
- * beyond the near plane, where each of them is hidden behind one of its own faces turned
- * towards the eye. A plane is seen from both sides, as the reference sees it; a caster
- * the near plane cuts shows its inner faces through the cut (the horizon view's did). */
-static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count)
-{
-	return id >= plane_count && lx_view_box_beyond_near(&f->view, f->bmin[id], f->bmax[id]);
 }
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
