@@ -397,8 +397,6 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 	return r->clear_prog != 0;
 }
 
-/* The buffers: the clear's quad, each mesh for the main pass and indexed for the shadow
- * pass, the planes' pieces and the facing-sorted indices (room for every triangle). */
 /* A caster's triangles in runs of this many, as its mesh lists them: a band of a ring of
  * a sphere (a quarter of it), a wedge of a cylinder or a cone, so that each run's box is
  * small. */
@@ -425,6 +423,8 @@ static bool run_boxes(struct lx_renderer *r, int id, const struct lx_mesh *m)
 	return true;
 }
 
+/* The buffers: the clear's quad, each mesh for the main pass and indexed for the shadow
+ * pass, the planes' pieces and the facing-sorted indices (room for every triangle). */
 static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 {
 	const struct lx_scene_meshes *meshes = r->d.meshes;
@@ -1236,10 +1236,11 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
  * pixels), the others turned towards it without a lookup, and those turned away, in their
  * own shadow without a test or a lookup (--lookup-region all: tested, with one). A face's
  * side is one answer over it, so neither asks the shader's per-fragment face test (on
- * llvmpipe 0.25 ms of a 1024x1024 main pass). A flat-shaded caster's shading needs no side (its Lambert term is 0 on a
- * face turned away): one draw, its lookups on faces turned away wasted, which cost less
- * than a draw (the table's five boxes drawn so: 0.12 ms less a frame, measured frame by
- * frame). */
+ * llvmpipe 0.25 ms of a 1024x1024 main pass). A flat-shaded caster's shading needs no
+ * side (its Lambert term is 0 on a face turned away): one draw, its lookups on faces
+ * turned away wasted, which cost less than a draw (the table's five boxes drawn so: 0.12
+ * ms less a frame, measured frame by frame), of the faces the eye may see where its back
+ * faces are culled (sort_by_facing). */
 static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int id,
 			bool decision, struct draw *out, int n)
 {
