@@ -12,7 +12,7 @@ int lx_clip_polygon(const vec3 *in, int n, vec4 p, vec3 *out, int max_out)
 {
 	int m = 0;
 	for (int i = 0; i < n; i++) {
-		vec3 a = in[i], b = in[i + 1 < n ? i + 1 : 0];
+		vec3 a = in[i], b = in[lx_loop_next(i, n)];
 		double da = p.x * a.x + p.y * a.y + p.z * a.z + p.w, db = p.x * b.x + p.y * b.y + p.z * b.z + p.w;
 		if (da >= 0 && m < max_out)
 			out[m++] = a;

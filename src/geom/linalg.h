@@ -12,6 +12,9 @@ typedef struct { double m[16]; } mat4;
 typedef struct { double m[9]; } mat3; /* column-major too */
 
 static inline vec3 v3(double x, double y, double z) { return (vec3){x, y, z}; }
+/* The index after i in a closed loop of n (a polygon's next vertex): a compare where a
+ * modulo would divide, in loops that run many times a frame. */
+static inline int lx_loop_next(int i, int n) { return i + 1 < n ? i + 1 : 0; }
 static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline vec3 v3_scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }

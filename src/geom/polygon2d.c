@@ -1,4 +1,5 @@
 #include "polygon2d.h"
+#include "linalg.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -130,7 +131,7 @@ void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, doubl
 	vec2 r[LX_POLY_MAX + 1]; /* a convex n-gon cut by a line has at most n + 1 vertices */
 	int rn = 0;
 	for (int i = 0; i < a->n; i++) {
-		vec2 p = a->v[i], q = a->v[i + 1 < a->n ? i + 1 : 0];
+		vec2 p = a->v[i], q = a->v[lx_loop_next(i, a->n)];
 		double dp = nx * p.x + ny * p.y + c, dq = nx * q.x + ny * q.y + c;
 		if (dp >= 0)
 			r[rn++] = p;
@@ -151,7 +152,7 @@ void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct 
 {
 	struct lx_poly r = *a;
 	for (int i = 0; i < b->n && r.n > 0; i++) {
-		vec2 p = b->v[i], q = b->v[i + 1 < b->n ? i + 1 : 0];
+		vec2 p = b->v[i], q = b->v[lx_loop_next(i, b->n)];
 		/* inside of a counter-clockwise edge p->q: cross(p, q, x) >= 0 */
 		double nx = -(q.y - p.y), ny = q.x - p.x;
 		lx_poly_clip_halfplane(&r, nx, ny, -(nx * p.x + ny * p.y), &r);
@@ -165,7 +166,7 @@ double lx_poly_area(const struct lx_poly *p)
 {
 	double s = 0;
 	for (int i = 0; i < p->n; i++) {
-		vec2 a = p->v[i], b = p->v[i + 1 < p->n ? i + 1 : 0];
+		vec2 a = p->v[i], b = p->v[lx_loop_next(i, p->n)];
 		s += a.x * b.y - a.y * b.x;
 	}
 	return 0.5 * s;
@@ -177,7 +178,7 @@ static bool segment_in(const struct lx_poly *b, double side, vec2 p, vec2 q, dou
 {
 	*t0 = 0, *t1 = 1;
 	for (int k = 0; k < b->n && *t0 < *t1; k++) {
-		vec2 u = b->v[k], w = b->v[k + 1 < b->n ? k + 1 : 0];
+		vec2 u = b->v[k], w = b->v[lx_loop_next(k, b->n)];
 		double ex = w.x - u.x, ey = w.y - u.y;
 		double f0 = side * (ex * (p.y - u.y) - ey * (p.x - u.x)), f1 = side * (ex * (q.y - u.y) - ey * (q.x - u.x));
 		if (f0 < 0 && f1 < 0)
@@ -197,7 +198,7 @@ void lx_poly_edges_inside(const struct lx_poly *a, const struct lx_poly *b, doub
 		return;
 	double side = lx_poly_area(b) < 0 ? -1 : 1;
 	for (int i = 0; i < a->n; i++) {
-		vec2 p = a->v[i], q = a->v[i + 1 < a->n ? i + 1 : 0];
+		vec2 p = a->v[i], q = a->v[lx_loop_next(i, a->n)];
 		double t0, t1;
 		if (segment_in(b, side, p, q, &t0, &t1)) {
 			*dx += (t1 - t0) * fabs(q.x - p.x);
@@ -211,7 +212,7 @@ bool lx_poly_bounds_outside(const struct lx_poly *a, const struct lx_poly *b, ve
 	out[0] = out[1] = INFINITY, out[2] = out[3] = -INFINITY;
 	double side = lx_poly_area(b) < 0 ? -1 : 1;
 	for (int i = 0; i < a->n; i++) {
-		vec2 p = a->v[i], q = a->v[i + 1 < a->n ? i + 1 : 0], x[3];
+		vec2 p = a->v[i], q = a->v[lx_loop_next(i, a->n)], x[3];
 		double t0 = 0, t1 = 1;
 		int n = 0;
 		/* the ends of the edge's parts outside b (its own end is the next edge's start) */
@@ -237,7 +238,7 @@ bool lx_poly_contains(const struct lx_poly *p, vec2 q, double eps)
 	if (p->n < 3)
 		return false;
 	for (int i = 0; i < p->n; i++) {
-		vec2 a = p->v[i], b = p->v[i + 1 < p->n ? i + 1 : 0];
+		vec2 a = p->v[i], b = p->v[lx_loop_next(i, p->n)];
 		double len = hypot(b.x - a.x, b.y - a.y);
 		if (!(len > 0))
 			continue; /* a repeated vertex bounds nothing */
@@ -292,7 +293,7 @@ static void subtract(const struct lx_poly *a, const struct lx_poly *b, const str
 	}
 	struct lx_poly rest = *a, piece;
 	for (int i = 0; i < b->n && rest.n >= 3; i++) {
-		vec2 p = b->v[i], q = b->v[i + 1 < b->n ? i + 1 : 0];
+		vec2 p = b->v[i], q = b->v[lx_loop_next(i, b->n)];
 		double nx = -(q.y - p.y), ny = q.x - p.x, k = -(nx * p.x + ny * p.y); /* inside: >= 0 */
 		if (nx == 0 && ny == 0)
 			continue;
@@ -325,7 +326,7 @@ static bool cross_section(const struct lx_poly *p, double y, double *lo, double 
 {
 	*lo = INFINITY, *hi = -INFINITY;
 	for (int i = 0; i < p->n; i++) {
-		vec2 a = p->v[i], b = p->v[i + 1 < p->n ? i + 1 : 0];
+		vec2 a = p->v[i], b = p->v[lx_loop_next(i, p->n)];
 		if ((a.y <= y) != (b.y <= y)) { /* a.y != b.y: the edge crosses the line */
 			double x = a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
 			*lo = fmin(*lo, x), *hi = fmax(*hi, x);
@@ -356,7 +357,7 @@ void lx_poly_shrink(const struct lx_poly *p, double d, struct lx_poly *out)
 		c.x += p->v[k].x / p->n, c.y += p->v[k].y / p->n;
 	double least = INFINITY; /* the squared distance from c to the nearest edge's line */
 	for (int k = 0; k < p->n; k++) {
-		vec2 s = p->v[k], t = p->v[k + 1 < p->n ? k + 1 : 0];
+		vec2 s = p->v[k], t = p->v[lx_loop_next(k, p->n)];
 		double ex = t.x - s.x, ey = t.y - s.y, len2 = ex * ex + ey * ey, x = ex * (c.y - s.y) - ey * (c.x - s.x);
 		if (len2 > 0) /* a hull leaves no edge of length 0; a guard all the same */
 			least = fmin(least, x * x / len2);
@@ -375,7 +376,7 @@ void lx_poly_inset(const struct lx_poly *p, double d, struct lx_poly *out)
 	struct lx_poly a = *p; /* the edges are p's, whatever out is */
 	*out = a;
 	for (int k = 0; k < a.n && out->n >= 3; k++) { /* counter-clockwise: inside on the left */
-		vec2 s = a.v[k], t = a.v[(k + 1) % a.n];
+		vec2 s = a.v[k], t = a.v[lx_loop_next(k, a.n)];
 		double nx = -(t.y - s.y), ny = t.x - s.x, len = sqrt(nx * nx + ny * ny);
 		if (len > 0) /* a hull leaves no edge of length 0; a guard all the same */
 			lx_poly_clip_halfplane(out, nx, ny, -(nx * s.x + ny * s.y) - d * len, out);

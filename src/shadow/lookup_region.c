@@ -374,7 +374,7 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 {
 	*x0 = INFINITY, *x1 = -INFINITY;
 	for (int i = 0; i < h->n; i++) {
-		vec2 a = h->v[i], b = h->v[i + 1 < h->n ? i + 1 : 0];
+		vec2 a = h->v[i], b = h->v[lx_loop_next(i, h->n)];
 		double t0 = 0, t1 = 1;
 		if (b.y != a.y) { /* the part of edge ab inside the band */
 			double ta = (y0 - a.y) / (b.y - a.y), tb = (y1 - a.y) / (b.y - a.y);

@@ -328,7 +328,7 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 				break;
 			}
 	for (int v = 0; v < nin; v++) { /* in front of the near plane: w + z >= 0 */
-		vec4 a = in[v], b = in[(v + 1) % nin];
+		vec4 a = in[v], b = in[lx_loop_next(v, nin)];
 		double da = a.w + a.z, db = b.w + b.z;
 		if (da >= 0)
 			h[m++] = a;
@@ -362,7 +362,7 @@ static double origin_distance(const struct lx_poly *p)
 		return 0;
 	double best = INFINITY;
 	for (int k = 0; k < p->n; k++) {
-		vec2 a = p->v[k], b = p->v[k + 1 < p->n ? k + 1 : 0], d = {b.x - a.x, b.y - a.y};
+		vec2 a = p->v[k], b = p->v[lx_loop_next(k, p->n)], d = {b.x - a.x, b.y - a.y};
 		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? fmin(1, fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
 		best = fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
 	}

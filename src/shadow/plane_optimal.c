@@ -162,7 +162,7 @@ static int clip_homogeneous(vec4 *poly, int n, vec4 *tmp)
 	for (int k = 0; k < 6; k++) {
 		int m = 0;
 		for (int i = 0; i < n; i++) {
-			vec4 a = poly[i], b = poly[i + 1 < n ? i + 1 : 0];
+			vec4 a = poly[i], b = poly[lx_loop_next(i, n)];
 			double ca[3] = {a.x, a.y, a.z}, cb[3] = {b.x, b.y, b.z};
 			double s = k & 1 ? -1 : 1;
 			double da = a.w + s * ca[k / 2], db = b.w + s * cb[k / 2];
