@@ -41,6 +41,7 @@
 	X(void, Enable, (GLenum))                                                            \
 	X(void, EnableVertexAttribArray, (GLuint))                                           \
 	X(void, Finish, (void))                                                              \
+	X(void, Flush, (void))                                                               \
 	X(void, FramebufferRenderbuffer, (GLenum, GLenum, GLenum, GLuint))                   \
 	X(void, FramebufferTexture2D, (GLenum, GLenum, GLenum, GLuint, GLint))               \
 	X(void, GenBuffers, (GLsizei, GLuint *))                                             \

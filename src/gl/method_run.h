@@ -39,7 +39,8 @@ struct lx_frame_times {
 	double setup_us;  /* CPU time building the light matrices (every light's) */
 	double setup_again_us; /* with setup_again: the same work done again at once, on copies,
 				* the CPU awake; the frame does not pay it. NAN otherwise. */
-	double shadow_ms; /* shadow passes, glFinish'ed */
+	double shadow_ms; /* shadow passes, glFinish'ed (and the main pass's CPU work, done while
+			   * the GL draws them) */
 	double main_ms;   /* main pass (every light's), glFinish'ed */
 	double frame_ms;  /* all three */
 };

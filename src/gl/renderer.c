@@ -66,6 +66,28 @@ struct draw {
 		     * cover[that plane]) */
 };
 
+/* What a pass of the main pass draws: the first light's shading (the target cleared, the
+ * ambient term), another light's added to it, or one light's decision. */
+enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
+
+/* One light's pass of the main pass as the CPU works it out (prepare_light) before any
+ * of it is drawn (light_pass): its draws, and the fronts whose covers they test (covers->of:
+ * the result's, which outlives the pass), each front's cover matrix as the shader takes it.
+ * A plane draws once per set of the maps it reads (at most LX_MAX_READS:
+ * lx_shadow_receiver_maps), with the cover test or without, and once in a cover's shadow
+ * (object_draws); a caster at most three times. */
+struct light_draws {
+	const struct lx_frame *f;
+	const struct lx_shadow_result *res;
+	enum pass_kind kind;
+	bool reaches;  /* false: an added projective light that lights nothing in view */
+	int shading;   /* the variants' */
+	struct draw draws[LX_MAX_PLANES * (2 * (1 << LX_MAX_READS) + 1) + 3 * LX_MAX_CASTERS];
+	int n;
+	const struct lx_plane_covers *covers;
+	float cover[LX_MAX_FRONTS][16];
+};
+
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
 #define SLAB_SPANS(k) ((2 * (k) + 1) * (2 * (k) + 1))
 /* room for a plane's spans in a frame */
@@ -74,11 +96,12 @@ struct draw {
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
-	/* a plane draws once per set of the maps it reads (at most LX_MAX_READS:
-	 * lx_shadow_receiver_maps), with the cover test or without, and once in a cover's
-	 * shadow (object_draws); a caster at most three times */
-	struct draw draws[LX_MAX_PLANES * (2 * (1 << LX_MAX_READS) + 1) + 3 * LX_MAX_CASTERS];
-	/* casters' triangles sorted by facing this frame, 16-bit indices into their meshes */
+	/* the main pass's lights worked out (lx_renderer_main_prepare), `prepared` of them
+	 * (0: none waiting to be drawn) */
+	struct light_draws pass[LX_MAX_LIGHTS];
+	int prepared;
+	/* casters' triangles sorted by facing this frame, 16-bit indices into their meshes
+	 * (every light's main pass one after the other) */
 	unsigned short *facing_index;
 	int facing_count, facing_room;
 	GLuint facing_ibo; /* a frame's main-pass draws */
@@ -126,10 +149,7 @@ struct lx_renderer {
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
 	 * other slots stay empty, and tests no cover) */
 	struct main_program variant[SHADINGS][LX_FILTER_COUNT][LX_FACES_COUNT][LX_MAX_READS + 1][LX_MAX_COVERS + 1];
-	/* this light pass's fronts over each object (covers->of: the result's, which outlives
-	 * the pass), and each front's cover matrix as the shader takes it */
-	const struct lx_plane_covers *covers;
-	float cover[LX_MAX_FRONTS][16];
+	const struct lx_plane_covers *covers; /* the fronts of the light pass being worked out */
 	int max_covers; /* the most covers a frame may test over one object (lx_scene_covers_needed) */
 	bool covers_short; /* some draw tests fewer (covers_fit): the maps keep every face */
 	enum lx_filter filter; /* the main pass's, lx_renderer_set_filter */
@@ -440,8 +460,8 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	int triangles = 0;
 	for (int i = 0; i < r->objects; i++)
 		triangles += meshes->mesh[i].vertex_count;
-	r->facing_room = triangles;
-	r->facing_index = malloc((size_t)triangles * sizeof(unsigned short) + 1);
+	r->facing_room = triangles * r->d.light_count; /* every light's main pass */
+	r->facing_index = malloc((size_t)r->facing_room * sizeof(unsigned short) + 1);
 	/* at most every triangle in every map of every light */
 	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
 	r->kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
@@ -1433,25 +1453,29 @@ static bool box_on_screen(const struct lx_frame *f, vec3 lo, vec3 hi, int rect[4
  * and then covered: 0.2-0.5 ms of the table's main pass), each object cut by where a
  * shadow can fall on it and a plane by what a plane in front hides (visible_spans); the
  * planes' pieces and the casters' facing-sorted indices uploaded. Returns the count. */
-static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-		       bool lit_only, bool decision)
+static void frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			bool lit_only, struct light_draws *ld)
 {
-	int n = 0;
-	r->piece_vertices = r->facing_count = 0;
+	ld->n = 0;
 	/* also for all: the same pieces */
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
 	lx_frame_draw_order(f, order);
-	r->covers = &res->covers; /* the method's (lx_shadow_method_frame); none without maps */
-	for (int p = 0; p < r->covers->count; p++)
-		if (r->covers->lit[p])
-			to_float(&r->covers->m[p], r->cover[p]);
+	r->covers = ld->covers = &res->covers; /* the method's (lx_shadow_method_frame); none without maps */
+	for (int p = 0; p < ld->covers->count; p++)
+		if (ld->covers->lit[p])
+			to_float(&ld->covers->m[p], ld->cover[p]);
 	for (int k = 0; k < r->objects; k++) {
 		int id = order[k];
 		if (lit_only && !boxes_meet(f->bmin[id], f->bmax[id], f->lit_min, f->lit_max))
 			continue; /* the light reaches none of it */
-		n = object_draws(r, f, res, id, decision, r->draws, n);
+		ld->n = object_draws(r, f, res, id, ld->kind == DECISION, ld->draws, ld->n);
 	}
+}
+
+/* The pieces and facing-sorted indices of every pass worked out, into their buffers. */
+static void upload_draws(struct lx_renderer *r)
+{
 	if (r->piece_vertices > 0) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->piece_vertices * LX_VERTEX_FLOATS * sizeof(float),
@@ -1462,7 +1486,12 @@ static int frame_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->facing_count * sizeof(unsigned short),
 				 r->facing_index, GL_STREAM_DRAW);
 	}
-	return n;
+}
+
+/* Whether light f's pass projects an image (a beam or slide): its matrix in *m. */
+static bool beam_projects(const struct lx_renderer *r, const struct lx_frame *f, mat4 *m)
+{
+	return r->beam_tex[f->light_index] && lx_light_projection(&f->light, m);
 }
 
 /* A projective light's matrix and range, and its image bound to unit 1. */
@@ -1470,11 +1499,9 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
 {
 	const struct lx_light *L = &f->light;
 	mat4 m;
-	u->beam_tex = r->beam_tex[f->light_index];
-	if (!u->beam_tex || !lx_light_projection(L, &m)) {
-		u->beam_tex = 0;
+	u->beam_tex = beam_projects(r, f, &m) ? r->beam_tex[f->light_index] : 0;
+	if (!u->beam_tex)
 		return;
-	}
 	to_float(&m, u->beam);
 	bool ranged = L->range_far > 0; /* then range_far > range_near: the parser checks it */
 	u->range[0] = (float)L->range_near;
@@ -1487,9 +1514,10 @@ static void beam_uniforms(const struct lx_renderer *r, const struct lx_frame *f,
 
 /* One draw: its object's uniforms and its geometry (pieces, facing-sorted indices, or
  * the whole mesh). */
-static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const struct main_program *p,
+static void issue_draw(struct lx_renderer *r, const struct light_draws *ld, const struct main_program *p,
 		       const struct draw *d)
 {
+	const struct lx_frame *f = ld->f;
 	const struct lx_scene *s = r->d.scene;
 	int id = d->object;
 	vec3 c = id < s->plane_count ? s->planes[id].color : s->casters[id - s->plane_count].color;
@@ -1498,9 +1526,9 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 	lx_gl.Uniform1f(p->object_id, (float)id);
 	for (int c = 0; c < d->covers; c++)
 		if (p->cover[c] >= 0) /* -1: a variant short of varyings tests fewer (lx_main_covers) */
-			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, r->cover[r->covers->of[id][c]]);
+			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, ld->cover[ld->covers->of[id][c]]);
 	if (p->cover_pair >= 0)
-		lx_gl.Uniform1f(p->cover_pair, d->covers > 1 && r->covers->paired[id] ? 1.0f : 0.0f);
+		lx_gl.Uniform1f(p->cover_pair, d->covers > 1 && ld->covers->paired[id] ? 1.0f : 0.0f);
 	if (d->kind == PIECES) {
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->piece_vbo);
 		set_attributes(true);
@@ -1515,10 +1543,6 @@ static void issue_draw(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.DrawArrays(GL_TRIANGLES, 0, r->vertices[id]);
 	}
 }
-
-/* What a pass of the main pass draws: the first light's shading (the target cleared, the
- * ambient term), another light's added to it, or one light's decision. */
-enum pass_kind { FIRST_LIGHT, ADDED_LIGHT, DECISION };
 
 /* The maps of a set, in their order, into a variant's first slots: matrices, regions and
  * (filtered) clamps. Set whenever the set changes: variants serve many sets. */
@@ -1616,31 +1640,43 @@ static void light_pass_done(enum pass_kind kind)
 	lx_gl.Disable(GL_SCISSOR_TEST);
 }
 
-/* One light's pass of the main pass. */
-static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-		       enum pass_kind kind)
+/* What one light's pass draws, worked out on the CPU (no GL call): its objects' draws. */
+static void prepare_light(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			  enum pass_kind kind, struct light_draws *ld)
 {
+	mat4 m;
+	bool projective = kind != DECISION && beam_projects(r, f, &m); /* the decision needs only the shadow test */
+	ld->f = f, ld->res = res, ld->kind = kind, ld->n = 0; /* not the whole struct: its arrays are large */
+	ld->shading = kind == DECISION ? SHADING_DECISION
+				       : shading_of(projective, kind == ADDED_LIGHT, light_coloured(&f->light));
+	/* an added projective light lights only inside its frustum (the lit box): nothing of
+	 * its pass need be drawn outside the box's image, nor any object outside the box */
+	bool lit_only = kind == ADDED_LIGHT && projective;
+	ld->reaches = !lit_only || f->lit_min.x <= f->lit_max.x;
+	if (ld->reaches)
+		frame_draws(r, f, res, lit_only, ld);
+}
+
+/* One light's pass of the main pass, as prepare_light worked it out. */
+static void light_pass(struct lx_renderer *r, const struct light_draws *ld)
+{
+	const struct lx_frame *f = ld->f;
+	enum pass_kind kind = ld->kind;
 	pass_state(r, kind);
+	if (!ld->reaches) {
+		light_pass_done(kind); /* it reaches nothing in view */
+		return;
+	}
 	struct main_uniforms u;
 	to_float(&f->view.view_proj, u.view_proj);
 	const struct lx_light *L = &f->light;
 	vec3 lv = L->directional ? L->direction : L->position;
 	u.light[0] = (float)lv.x, u.light[1] = (float)lv.y, u.light[2] = (float)lv.z, u.light[3] = L->directional ? 0.0f : 1.0f;
 	u.light_color[0] = (float)L->color.x, u.light_color[1] = (float)L->color.y, u.light_color[2] = (float)L->color.z;
-	map_uniforms(r, r->d.lights[f->light_index].atlas, res, &u);
+	map_uniforms(r, r->d.lights[f->light_index].atlas, ld->res, &u);
 	beam_uniforms(r, f, &u);
-	bool projective = kind != DECISION && u.beam_tex != 0; /* the decision needs only the shadow test */
-	int shading = kind == DECISION ? SHADING_DECISION
-				       : shading_of(projective, kind == ADDED_LIGHT, light_coloured(L));
-	/* an added projective light lights only inside its frustum (the lit box): nothing of
-	 * its pass need be drawn outside the box's image, nor any object outside the box */
-	bool lit_only = kind == ADDED_LIGHT && projective;
 	int rect[4];
-	if (lit_only && !(f->lit_min.x <= f->lit_max.x)) {
-		light_pass_done(kind); /* it reaches nothing in view */
-		return;
-	}
-	if (lit_only && box_on_screen(f, f->lit_min, f->lit_max, rect)) {
+	if (kind == ADDED_LIGHT && u.beam_tex && box_on_screen(f, f->lit_min, f->lit_max, rect)) {
 		lx_gl.Enable(GL_SCISSOR_TEST);
 		lx_gl.Scissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
 	}
@@ -1649,7 +1685,6 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 		lx_gl.ActiveTexture(GL_TEXTURE0);
 		lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	}
-	int n = frame_draws(r, f, res, lit_only, kind == DECISION);
 	/* the maps set up whenever those read change, the program only when the variant does
 	 * (one serves every set of as many maps), culling whenever it changes (a caster's two
 	 * draws and the planes' pieces come in runs) */
@@ -1658,12 +1693,12 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 	enum lx_faces faces = LX_FACES_TOWARD;
 	bool culling = false; /* as pass_state left it */
 	int covers = 0;
-	for (int k = 0; k < n; k++) {
-		const struct draw *d = &r->draws[k];
+	for (int k = 0; k < ld->n; k++) {
+		const struct draw *d = &ld->draws[k];
 		if (!p || d->mask != current || d->faces != faces || d->covers != covers) {
 			current = d->mask, faces = d->faces, covers = d->covers;
 			unsigned reads = current;
-			struct main_program *v = variant_for(r, shading, faces, &reads, covers);
+			struct main_program *v = variant_for(r, ld->shading, faces, &reads, covers);
 			if (v != p)
 				use_program(r, v, &u);
 			p = v;
@@ -1678,7 +1713,7 @@ static void light_pass(struct lx_renderer *r, const struct lx_frame *f, const st
 				lx_gl.Disable(GL_CULL_FACE);
 			culling = cull;
 		}
-		issue_draw(r, f, p, d);
+		issue_draw(r, ld, p, d);
 	}
 	light_pass_done(kind);
 }
@@ -1732,18 +1767,52 @@ void lx_renderer_warm(struct lx_renderer *r)
 	lx_gl.Finish();
 }
 
+void lx_renderer_main_prepare(struct lx_renderer *r, const struct lx_frame *const *f,
+			      const struct lx_shadow_result *const *res, int n)
+{
+	int k = 0;
+	r->piece_vertices = r->facing_count = 0;
+	for (int i = 0; i < n && i < LX_MAX_LIGHTS; i++)
+		if (f[i]->light_index >= 0 && f[i]->light_index < r->d.light_count) {
+			prepare_light(r, f[i], res[i], k == 0 ? FIRST_LIGHT : ADDED_LIGHT, &r->pass[k]);
+			k++;
+		}
+	r->prepared = k;
+	upload_draws(r);
+}
+
+/* Whether the passes worked out are those of these lights (the same frames and results). */
+static bool prepared_for(const struct lx_renderer *r, const struct lx_frame *const *f,
+			 const struct lx_shadow_result *const *res, int n)
+{
+	int k = 0;
+	for (int i = 0; i < n && i < LX_MAX_LIGHTS; i++)
+		if (f[i]->light_index >= 0 && f[i]->light_index < r->d.light_count) {
+			if (k >= r->prepared || r->pass[k].f != f[i] || r->pass[k].res != res[i] || r->pass[k].kind == DECISION)
+				return false;
+			k++;
+		}
+	return k == r->prepared;
+}
+
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
 			   const struct lx_shadow_result *const *res, int n)
 {
-	for (int i = 0; i < n; i++)
-		if (f[i]->light_index >= 0 && f[i]->light_index < r->d.light_count)
-			light_pass(r, f[i], res[i], i == 0 ? FIRST_LIGHT : ADDED_LIGHT);
+	if (!r->prepared || !prepared_for(r, f, res, n))
+		lx_renderer_main_prepare(r, f, res, n);
+	for (int k = 0; k < r->prepared; k++)
+		light_pass(r, &r->pass[k]);
+	r->prepared = 0; /* drawn: the next frame works its own out */
 }
 
 void lx_renderer_decision_pass(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res)
 {
-	if (f->light_index >= 0 && f->light_index < r->d.light_count)
-		light_pass(r, f, res, DECISION);
+	if (f->light_index < 0 || f->light_index >= r->d.light_count)
+		return;
+	r->piece_vertices = r->facing_count = r->prepared = 0;
+	prepare_light(r, f, res, DECISION, &r->pass[0]);
+	upload_draws(r);
+	light_pass(r, &r->pass[0]);
 }
 
 void lx_renderer_read(struct lx_renderer *r, uint8_t *rgba)
@@ -1857,3 +1926,5 @@ bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r)
 }
 
 void lx_renderer_finish(void) { lx_gl.Finish(); }
+
+void lx_renderer_flush(void) { lx_gl.Flush(); }

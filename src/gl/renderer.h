@@ -56,8 +56,15 @@ void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere);
  * (its f[i]->light_index says which) and maps. */
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
 			       const struct lx_shadow_result *const *res, int n);
+/* The main pass's CPU work for n lights (where each draw looks a map up, which of a
+ * caster's faces it draws, the planes' pieces, into their buffers), done before the main
+ * pass: after the shadow passes and a glFlush (lx_renderer_flush) it runs while the GL
+ * draws the maps, which it does not read. */
+void lx_renderer_main_prepare(struct lx_renderer *r, const struct lx_frame *const *f,
+			      const struct lx_shadow_result *const *res, int n);
 /* The shaded main pass: the first light's pass with the ambient term, each other light's
- * added to it. */
+ * added to it. Draws what lx_renderer_main_prepare worked out for the same f and res since
+ * the last main or decision pass, else works it out first. */
 void lx_renderer_main_pass(struct lx_renderer *r, const struct lx_frame *const *f,
 			   const struct lx_shadow_result *const *res, int n);
 /* The main pass's per-pixel shadow decision for one light (main.frag's LX_DECISION). */
@@ -87,5 +94,7 @@ bool lx_renderer_covers_short(const struct lx_renderer *r);
  * not when a new set of maps first comes into view. Leaves the main target cleared. */
 void lx_renderer_warm(struct lx_renderer *r);
 void lx_renderer_finish(void);
+/* glFlush: the GL starts on what was sent while the CPU goes on. */
+void lx_renderer_flush(void);
 
 #endif
