@@ -115,6 +115,7 @@ struct tally {
 	long checked, looked; /* shadowed plane pixels checked; pixels looked up */
 	long fronts;          /* of those checked, shadowed by a flat box in no map: its fronts' tests */
 	long yes, no;         /* receivers lx_lookup_any says a shadow can fall on, and not */
+	long long_thin;       /* casters' volumes bounded along their images' long axes too */
 };
 
 /* lx_lookup_any stops at the first face of a receiver that meets a caster's volume; it
@@ -153,6 +154,9 @@ static void check_scene(struct setup *s, const char *what, struct tally *tally)
 	static struct lx_span span[4096];
 	static struct lx_lookup_volumes v;
 	lx_lookup_prepare(&s->frame, &s->atlas, &s->res, LX_LOOKUP_MARGIN_HIGHP, &v);
+	for (int m = 0; m < s->res.map_count; m++)
+		for (int c = 0; c < s->frame.object_count; c++)
+			tally->long_thin += v.count[m][c] > 11; /* an octagon's eight, depth, light, eye */
 	for (int id = 0; id < s->scene.plane_count; id++) {
 		unsigned mask = lx_shadow_receiver_maps(&s->res, id);
 		if (!mask)
@@ -215,9 +219,10 @@ static void shadowed_points_are_looked_up(void **state)
 	each_standard_setup(check_scene_tally, &t);
 	print_message("%ld shadowed plane pixels, every one inside a lookup span or, %ld of them, shadowed by a flat box "
 		      "in no map and by its fronts' tests; %ld pixels looked up in all\n", t.checked, t.fronts, t.looked);
-	print_message("%ld receivers a shadow can fall on, %ld none can, alike by lx_lookup_any and the spans\n", t.yes,
-		      t.no);
+	print_message("%ld receivers a shadow can fall on, %ld none can, alike by lx_lookup_any and the spans; %ld "
+		      "casters' volumes bounded along a long image's axes as well\n", t.yes, t.no, t.long_thin);
 	assert_true(t.checked > 10000 && t.fronts > 1000); /* there were shadows to check, the slab's among them */
+	assert_true(t.long_thin > 10);
 	assert_true(t.yes > 100 && t.no > 10);
 }
 

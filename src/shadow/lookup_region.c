@@ -3,9 +3,14 @@
 #include "polygon2d.h"
 #include "plane_optimal.h"
 #include <math.h>
+#include <string.h>
 
 #define VOLUME_PLANES LX_LOOKUP_VOLUME_PLANES
-#define FACE_MAX 16 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 11 vertices */
+#define FACE_MAX 20 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 15 vertices */
+#define MAX_DIRECTIONS 6 /* a caster's image bounded in as many directions (image_directions) */
+
+/* A box's six faces, as v3_box_corner's corners. */
+static const int box_faces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
 
 bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 {
@@ -104,30 +109,140 @@ static bool sphere_range(vec4 nn, vec4 dd, vec3 c, double r, double *lo, double 
 	return *lo <= *hi;
 }
 
-/* Narrows b0 and b1 (the image's x, y, x + y and x - y bounds) to caster id's outline
- * (lx_frame_object_outline), when all of it lies in front of the light. */
-static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, double *b0, double *b1)
+/* Narrows b0 and b1 (the image's bounds in nd directions, coef as image_directions gives
+ * them) to caster id's outline (lx_frame_object_outline), when all of it lies in front of
+ * the light. */
+static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, const double (*coef)[2], int nd,
+			   double *b0, double *b1)
 {
 	vec3 x[LX_OUTLINE_POINTS];
 	int n = lx_frame_object_outline(f, id, true, x);
-	double t0[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, t1[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+	double t0[MAX_DIRECTIONS], t1[MAX_DIRECTIONS];
+	for (int d = 0; d < nd; d++)
+		t0[d] = INFINITY, t1[d] = -INFINITY;
 	for (int k = 0; k < n; k++) {
 		vec4 c = m4_mul_point(m, x[k]);
 		if (!(c.w > 0) || !isfinite(c.x + c.y))
 			return; /* reaches behind the light: the box's bounds stand */
-		double u = c.x / c.w, v = c.y / c.w, p[4] = {u, v, u + v, u - v};
-		for (int d = 0; d < 4; d++)
-			t0[d] = fmin(t0[d], p[d]), t1[d] = fmax(t1[d], p[d]);
+		double u = c.x / c.w, v = c.y / c.w;
+		for (int d = 0; d < nd; d++) {
+			double p = coef[d][0] * u + coef[d][1] * v;
+			t0[d] = fmin(t0[d], p), t1[d] = fmax(t1[d], p);
+		}
 	}
-	for (int d = 0; d < 4; d++)
+	for (int d = 0; d < nd; d++)
 		b0[d] = fmax(b0[d], t0[d]), b1[d] = fmin(b1[d], t1[d]);
 }
 
+/* The directions an image is bounded in, as coefficients of its x and y: x, y, x + y and
+ * x - y (an octagon: tight for round shapes), and where the image of points x, y (n of
+ * them) is long and thin, its long axis and the one across it too: a shadow cast low,
+ * often at a slant, which the octagon bounds loosely. Returns their count. */
+#define LONG_THIN 4.0 /* the ratio of the points' variances along and across the long axis */
+static int image_directions(const double *x, const double *y, int n, double (*coef)[2])
+{
+	static const double octagon[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+	memcpy(coef, octagon, sizeof octagon);
+	if (n < 2)
+		return 4;
+	double mx = 0, my = 0, sxx = 0, syy = 0, sxy = 0;
+	for (int k = 0; k < n; k++)
+		mx += x[k], my += y[k];
+	mx /= n, my /= n; /* n >= 2 */
+	for (int k = 0; k < n; k++) {
+		double dx = x[k] - mx, dy = y[k] - my;
+		sxx += dx * dx, syy += dy * dy, sxy += dx * dy;
+	}
+	/* the covariance's eigenvalues, half +- root, and its long axis's angle */
+	double half = 0.5 * (sxx + syy), root = sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
+	if (!(half + root > LONG_THIN * (half - root)) || !isfinite(half + root))
+		return 4;
+	double a = 0.5 * atan2(2 * sxy, sxx - syy), ca = cos(a), sa = sin(a);
+	coef[4][0] = ca, coef[4][1] = sa, coef[5][0] = -sa, coef[5][1] = ca;
+	return 6;
+}
+
+/* The box [lo, hi]'s part inside the rays `map` serves (its bounds), as the map's clip
+ * coordinates of its vertices: the box's faces clipped by the four sides, every vertex
+ * in front of the light (the sides meet only at the light). Returns the count (0: no
+ * part), or -1 when a vertex is not in front (the light inside the box). */
+#define SERVED_POINTS (6 * FACE_MAX)
+static int served_points(const struct lx_shadow_map *map, vec3 lo, vec3 hi, vec4 *out)
+{
+	const mat4 *m = &map->light_clip;
+	vec4 r0 = m4_row(m, 0), r1 = m4_row(m, 1), r3 = m4_row(m, 3);
+	const double *b = map->bounds;
+	vec4 side[4] = {v4_lin(1, r0, -b[0], r3), v4_lin(b[2], r3, -1, r0), v4_lin(1, r1, -b[1], r3),
+			v4_lin(b[3], r3, -1, r1)};
+	int count = 0;
+	for (int k = 0; k < 6; k++) {
+		vec3 a[FACE_MAX], t[FACE_MAX];
+		int n = 4;
+		for (int i = 0; i < 4; i++)
+			a[i] = v3_box_corner(lo, hi, box_faces[k][i]);
+		for (int j = 0; j < 4 && n > 0; j++) {
+			n = lx_clip_polygon(a, n, side[j], t, FACE_MAX);
+			for (int i = 0; i < n; i++)
+				a[i] = t[i];
+		}
+		for (int i = 0; i < n; i++) {
+			vec4 q = m4_mul_point(m, a[i]);
+			if (!(q.w > 0) || !isfinite(q.x + q.y + q.z))
+				return -1;
+			out[count++] = q; /* at most 6 * FACE_MAX */
+		}
+	}
+	return count;
+}
+
+/* The image's bounds b0 <= (x, y) . coef[d] <= b1 in each of nd directions and its
+ * nearest depth z0, from n points (clip coordinates). With `crosses` the points are a
+ * box's 8 corners, some behind the light: where its edges cross the light's plane (w = 0)
+ * they are points at infinity in the image, and a bound that such a point exceeds is no
+ * bound (-/+ infinity). */
+static void image_bounds(const vec4 *c, int n, bool crosses, const double (*coef)[2], int nd, double *b0, double *b1,
+			 double *z0)
+{
+	*z0 = INFINITY;
+	for (int d = 0; d < nd; d++)
+		b0[d] = INFINITY, b1[d] = -INFINITY;
+	for (int k = 0; k < n; k++) {
+		if (!(c[k].w > 0))
+			continue;
+		double x = c[k].x / c[k].w, y = c[k].y / c[k].w; /* w > 0 */
+		for (int d = 0; d < nd; d++) {
+			double v = coef[d][0] * x + coef[d][1] * y;
+			b0[d] = fmin(b0[d], v), b1[d] = fmax(b1[d], v);
+		}
+		*z0 = fmin(*z0, c[k].z / c[k].w);
+	}
+	if (!crosses)
+		return;
+	for (int k = 0; k < 8; k++)
+		for (int bit = 1; bit < 8; bit <<= 1) { /* the 12 edges: corners k and k | bit */
+			int j = k | bit;
+			if (j == k || (c[k].w > 0) == (c[j].w > 0))
+				continue;
+			double t = c[k].w / (c[k].w - c[j].w); /* signs differ: no zero division */
+			double x = c[k].x + t * (c[j].x - c[k].x), y = c[k].y + t * (c[j].y - c[k].y);
+			double z = c[k].z + t * (c[j].z - c[k].z);
+			for (int d = 0; d < nd; d++) {
+				double v = coef[d][0] * x + coef[d][1] * y;
+				if (v < 0)
+					b0[d] = -INFINITY;
+				if (v > 0)
+					b1[d] = INFINITY;
+			}
+			if (z < 0)
+				*z0 = -INFINITY;
+		}
+}
+
 /* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
- * image, an octagon (x, y, x + y and x - y bounded: tight for the round shapes) grown by
- * the margin and cut to the rays the map serves, swept beyond the caster's nearest depth.
- * Returns the count, or -1 when it shadows nothing there. */
-#define OCTAGON 4
+ * image bounded in x, y, x + y and x - y (an octagon: tight for the round shapes), and
+ * along and across its long axis where it is long and thin, grown by the margin and cut
+ * to the rays the map serves, swept beyond the caster's nearest depth. Returns the count,
+ * or -1 when it shadows nothing there. */
 static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *map, int id, const double margin[2],
 			 vec4 *pl)
 {
@@ -136,63 +251,50 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		return -1;
 	const mat4 *m = &map->light_clip;
 	vec4 r0 = m4_row(m, 0), r1 = m4_row(m, 1), r2 = m4_row(m, 2), r3 = m4_row(m, 3);
-	vec4 dir[OCTAGON] = {r0, r1, v4_lin(1, r0, 1, r1), v4_lin(1, r0, -1, r1)}; /* x, y, x + y, x - y */
 	int n = 0;
-	double b0[OCTAGON], b1[OCTAGON], z0 = INFINITY;
-	for (int d = 0; d < OCTAGON; d++)
-		b0[d] = INFINITY, b1[d] = -INFINITY;
-	/* The box's part in front of the light: its corners there, and where its edges cross
-	 * the light's plane (w = 0), points at infinity in the image: a bound that such a
-	 * point exceeds is no bound (-/+ infinity). */
-	vec4 c[8];
+	vec4 corner[8], served[SERVED_POINTS], *c = corner;
 	bool crosses = false;
 	for (int k = 0; k < 8; k++) {
 		c[k] = m4_mul_point(m, v3_box_corner(lo, hi, k));
 		if (!isfinite(c[k].x + c[k].y + c[k].z + c[k].w))
 			return add_plane(pl, &n, r3) ? n : -1; /* no bound at all */
-		if (!(c[k].w > 0)) {
-			crosses = true;
-			continue;
-		}
-		double x = c[k].x / c[k].w, y = c[k].y / c[k].w, v[OCTAGON] = {x, y, x + y, x - y};
-		for (int d = 0; d < OCTAGON; d++)
-			b0[d] = fmin(b0[d], v[d]), b1[d] = fmax(b1[d], v[d]);
-		z0 = fmin(z0, c[k].z / c[k].w);
+		crosses |= !(c[k].w > 0);
 	}
+	/* a box reaching behind the light: its part inside the rays served, whose image is
+	 * bounded (where that fails, its corners and their points at infinity) */
+	int nc = 8;
 	if (crosses) {
-		for (int k = 0; k < 8; k++)
-			for (int bit = 1; bit < 8; bit <<= 1) { /* the 12 edges: corners k and k | bit */
-				int j = k | bit;
-				if (j == k || (c[k].w > 0) == (c[j].w > 0))
-					continue;
-				double t = c[k].w / (c[k].w - c[j].w); /* signs differ: no zero division */
-				double x = c[k].x + t * (c[j].x - c[k].x), y = c[k].y + t * (c[j].y - c[k].y);
-				double z = c[k].z + t * (c[j].z - c[k].z), v[OCTAGON] = {x, y, x + y, x - y};
-				for (int d = 0; d < OCTAGON; d++) {
-					if (v[d] < 0)
-						b0[d] = -INFINITY;
-					if (v[d] > 0)
-						b1[d] = INFINITY;
-				}
-				if (z < 0)
-					z0 = -INFINITY;
-			}
+		int k = served_points(map, lo, hi, served);
+		if (k == 0)
+			return -1; /* none of it in the rays served */
+		if (k > 0)
+			c = served, nc = k, crosses = false;
 	}
+	double cx[SERVED_POINTS], cy[SERVED_POINTS], coef[MAX_DIRECTIONS][2], b0[MAX_DIRECTIONS], b1[MAX_DIRECTIONS], z0;
+	for (int k = 0; k < nc && !crosses; k++)
+		cx[k] = c[k].x / c[k].w, cy[k] = c[k].y / c[k].w; /* w > 0 (served_points, or no crossing) */
+	int nd = image_directions(cx, cy, crosses ? 0 : nc, coef);
+	image_bounds(c, nc, crosses, coef, nd, b0, b1, &z0);
+	vec4 dir[MAX_DIRECTIONS];
+	for (int d = 0; d < nd; d++)
+		dir[d] = v4_lin(coef[d][0], r0, coef[d][1], r1);
 	if (id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape == LX_SPHERE) {
 		/* the sphere itself, not its box (its mesh lies inside it) */
 		double r = f->scene->casters[id - f->scene->plane_count].size.x, l, h;
 		vec3 centre = v3_add(f->offset[id], v3(0, r, 0));
-		for (int d = 0; d < OCTAGON; d++)
+		for (int d = 0; d < nd; d++)
 			if (sphere_range(dir[d], r3, centre, r, &l, &h))
 				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
 	} else if (id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape != LX_BOX)
-		outline_bounds(f, m, id, b0, b1); /* a cylinder's or cone's octagons */
+		outline_bounds(f, m, id, coef, nd, b0, b1); /* a cylinder's or cone's octagons */
 	/* grown by the margin and cut to the rays the map serves */
 	double ex = margin[0], ey = margin[1];
-	double grow[OCTAGON] = {ex, ey, ex + ey, ex + ey};
+	double grow[MAX_DIRECTIONS];
+	for (int d = 0; d < nd; d++)
+		grow[d] = fabs(coef[d][0]) * ex + fabs(coef[d][1]) * ey;
 	b0[0] = fmax(b0[0], map->bounds[0]), b1[0] = fmin(b1[0], map->bounds[2]);
 	b0[1] = fmax(b0[1], map->bounds[1]), b1[1] = fmin(b1[1], map->bounds[3]);
-	for (int d = 0; d < OCTAGON; d++) {
+	for (int d = 0; d < nd; d++) {
 		b0[d] -= grow[d], b1[d] += grow[d];
 		if (!(b0[d] <= b1[d]))
 			return -1; /* nothing of it in front of the light, or outside the rays served */
@@ -249,10 +351,9 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 			       struct window_points *w)
 {
 	static const int quad[1][4] = {{0, 1, 2, 3}};
-	static const int box[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
 	vec3 corner[8], face[6][4];
 	bool solid = receiver_corners(f, id, corner) == 8;
-	const int(*q)[4] = solid ? box : quad;
+	const int(*q)[4] = solid ? box_faces : quad;
 	int faces = solid ? 6 : 1;
 	for (int k = 0; k < faces; k++)
 		for (int i = 0; i < 4; i++)

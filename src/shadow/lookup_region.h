@@ -7,9 +7,12 @@
  * A map shadows a point only where a caster was drawn in front of it: the point's image
  * in the map lies within a few lixels of that caster's image, and its depth lies beyond
  * the caster's nearest depth. For one caster that set is a convex volume in world space,
- * six half-spaces taken from the rows of the map's matrix (so it holds for every
- * method's warp); its part inside the receiver and in front of the eye, projected,
- * bounds the pixels.
+ * half-spaces taken from the rows of the map's matrix (so it holds for every method's
+ * warp): the image bounded in x, y and the diagonals, and along and across its long axis
+ * where it is long and thin (a shadow cast low), beyond a depth and in front of the
+ * light; of a box reaching behind the light, the image of its part inside the rays the
+ * map serves. Its part inside the receiver and in front of the eye, projected, bounds
+ * the pixels.
  *
  * A receiver's own volume is left out: a plane's holds none of it where a lookup is
  * drawn (a plane turned away from the light is drawn without one), and a caster is a
@@ -49,7 +52,7 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
  * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
-#define LX_LOOKUP_VOLUME_PLANES 11 /* a caster's ten, and the eye's near plane */
+#define LX_LOOKUP_VOLUME_PLANES 15 /* a caster's fourteen at most, and the eye's near plane */
 
 /* One frame's casters seen through each map, built once (lx_lookup_prepare) and asked
  * for each receiver: per map and caster the half-spaces where it can shadow a point
