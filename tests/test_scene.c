@@ -3,9 +3,11 @@
 #include "light_image.h"
 #include "mesh.h"
 #include "scene.h"
+#include "silhouette.h"
 #include "test_util.h"
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifndef LX_TEST_DATA
@@ -341,6 +343,129 @@ static void caster_meshes_are_closed_and_outward(void **state)
 		for (int k = 0; k < 3; k++)
 			assert_near(area_normal[k], 0, 1e-5);
 	}
+	lx_meshes_free(&m);
+}
+
+/* A mesh's positions each once (exact floats, as the renderer's shadow mesh), its
+ * corners as indices into them; returns the count of positions. */
+static int index_positions(const struct lx_mesh *me, float *pos, unsigned short *index)
+{
+	int np = 0;
+	for (int i = 0; i < me->vertex_count; i++) {
+		const float *q = me->v + (size_t)i * LX_VERTEX_FLOATS;
+		int k = 0;
+		while (k < np && memcmp(pos + 3 * k, q, 3 * sizeof(float)))
+			k++;
+		if (k == np)
+			memcpy(pos + 3 * np++, q, 3 * sizeof(float));
+		index[i] = (unsigned short)k;
+	}
+	return np;
+}
+
+/* Twice the signed area of a triangle's image seen from light L (a central projection
+ * onto the plane across `axis` at unit distance). */
+static double image_area2(vec3 L, vec3 axis, vec3 u, vec3 v, const float *a, const float *b, const float *c)
+{
+	const float *p[3] = {a, b, c};
+	double x[3], y[3];
+	for (int k = 0; k < 3; k++) {
+		vec3 d = v3_sub(v3(p[k][0], p[k][1], p[k][2]), L);
+		double z = v3_dot(d, axis); /* > 0: the light is outside the caster */
+		x[k] = v3_dot(d, u) / z, y[k] = v3_dot(d, v) / z;
+	}
+	return (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+}
+
+/* The fans over one mesh's faces turned away from 200 lights round it (round: a sphere,
+ * cylinder or cone; a box's mesh is only checked closed). Returns how many. */
+static int check_fans(const struct lx_mesh *me, int id, bool round, uint64_t *seed)
+{
+	int n = me->vertex_count, t = n / 3, fans = 0;
+	float *pos = malloc((size_t)(n + 1) * 3 * sizeof(float));
+	unsigned short *index = malloc((size_t)n * sizeof *index), *welded = malloc((size_t)n * sizeof *welded);
+	unsigned short *fan = malloc((size_t)n * sizeof *fan);
+	int *rep = malloc((size_t)n * sizeof *rep), *adj = malloc((size_t)n * sizeof *adj);
+	int *next = malloc((size_t)(n + 1) * sizeof *next);
+	bool *kept = malloc((size_t)t * sizeof *kept);
+	assert_true(pos && index && welded && fan && rep && adj && next && kept);
+	int np = index_positions(me, pos, index);
+	assert_true(lx_mesh_weld(pos, np, 1e-6, rep));
+	for (int k = 0; k < n; k++)
+		welded[k] = (unsigned short)rep[index[k]];
+	assert_true(lx_mesh_adjacency(welded, t, adj)); /* every caster's, the box's too */
+	vec3 c = v3_scale(v3_add(me->bmin, me->bmax), 0.5);
+	for (int k = 0; k < 3; k++)
+		pos[3 * np + k] = (float)((&c.x)[k]);
+	for (int k = 0; k <= np; k++)
+		next[k] = -1;
+	for (int trial = 0; round && trial < 200; trial++) {
+		vec3 dir = v3(0, 0, 1);
+		assert_true(v3_normalize(v3(test_rand(seed) - 0.5, test_rand(seed) - 0.5, test_rand(seed) - 0.5), &dir));
+		vec3 L = v3_add(c, v3_scale(dir, 0.8 + 5 * test_rand(seed))), axis = v3_scale(dir, -1), u, v;
+		assert_true(v3_normalize(v3_cross(axis, fabs(axis.y) < 0.9 ? v3(0, 1, 0) : v3(1, 0, 0)), &u));
+		v = v3_cross(axis, u);
+		double faces = 0, covered = 0, least = 0;
+		for (int k = 0; k < t; k++) {
+			const float *a = pos + 3 * welded[3 * k], *b = pos + 3 * welded[3 * k + 1], *d = pos + 3 * welded[3 * k + 2];
+			vec3 pa = v3(a[0], a[1], a[2]), pb = v3(b[0], b[1], b[2]), pd = v3(d[0], d[1], d[2]);
+			vec3 nrm = v3_cross(v3_sub(pb, pa), v3_sub(pd, pa));
+			kept[k] = v3_dot(nrm, v3_sub(L, pa)) < 0; /* turned away from the light */
+			if (kept[k])
+				faces += image_area2(L, axis, u, v, a, b, d);
+		}
+		double sign = faces < 0 ? -1 : 1; /* the faces turned away wind one way */
+		int count = lx_silhouette_fan(welded, adj, t, kept, (unsigned short)np, next, fan, n);
+		assert_true(count > 0 && count % 3 == 0 && count < 3 * t);
+		for (int k = 0; k < count; k += 3) {
+			double a2 = image_area2(L, axis, u, v, pos + 3 * fan[k], pos + 3 * fan[k + 1], pos + 3 * fan[k + 2]);
+			covered += a2, least = fmax(least, -sign * a2); /* wound the other way: > 0 */
+		}
+		for (int k = 0; k <= np; k++)
+			assert_int_equal(next[k], -1); /* left as it was */
+		if (fabs(covered - faces) > 1e-9 * fabs(faces) + 1e-12 || least > 1e-12 * fabs(faces))
+			fail_msg("object %d, light %d: the fan covers %.12g of the faces' %.12g (a triangle %.3g the other way)",
+				 id, trial, covered, faces, least);
+		fans++;
+	}
+	/* two kept triangles apart: two disks, no one loop */
+	for (int k = 0; k < t; k++)
+		kept[k] = false;
+	kept[0] = true;
+	for (int k = 1; k < t; k++) {
+		bool touches = false;
+		for (int e = 0; e < 3; e++)
+			for (int j = 0; j < 3; j++)
+				touches |= welded[3 * k + e] == welded[j];
+		if (!touches && adj[3 * k] >= 0) {
+			kept[k] = true;
+			break;
+		}
+	}
+	assert_int_equal(lx_silhouette_fan(welded, adj, t, kept, (unsigned short)np, next, fan, n), -1);
+	assert_false(lx_mesh_adjacency(welded, t - 1, adj)); /* a hole: no closed mesh */
+	free(pos), free(index), free(welded), free(fan), free(rep), free(adj), free(next), free(kept);
+	return fans;
+}
+
+/* The casters' shadow meshes, welded at their seams, are closed, and for lights all round
+ * a round one the faces turned away from the light make one disk whose fan from the
+ * caster's centre covers the same image, wound the same way; a mesh with a hole and a
+ * kept set of two disks are refused. */
+static void silhouette_fans_cover_the_faces_turned_away(void **state)
+{
+	(void)state;
+	struct lx_scene s;
+	lx_scene_default(&s);
+	struct lx_scene_meshes m;
+	assert_true(lx_meshes_build(&s, &m));
+	uint64_t seed = 7;
+	int fans = 0;
+	for (int id = s.plane_count; id < m.count; id++)
+		fans += check_fans(&m.mesh[id], id, s.casters[id - s.plane_count].shape != LX_BOX, &seed);
+	print_message("%d fans over the round casters' faces turned away from the light, each covering their image\n",
+		      fans);
+	assert_int_equal(fans, 600);
 	lx_meshes_free(&m);
 }
 
@@ -687,6 +812,7 @@ int main(void)
 		cmocka_unit_test(lights_are_white_unless_coloured),
 		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
+		cmocka_unit_test(silhouette_fans_cover_the_faces_turned_away),
 		cmocka_unit_test(flat_meshes_carry_their_face_normals),
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),

@@ -6,6 +6,7 @@
 #include "lookup_region.h"
 #include "plane_cover.h"
 #include "shader_text.h"
+#include "silhouette.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -128,6 +129,17 @@ struct lx_renderer {
 	GLsizei shadow_indices[LX_MAX_PLANES + LX_MAX_CASTERS];
 	unsigned short *shadow_index[LX_MAX_PLANES + LX_MAX_CASTERS];
 	vec4 *shadow_plane[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* a round caster's faces turned away from the light drawn into a plane's maps as a fan
+	 * from its centre, the last position of its shadow mesh (silhouette.h): the
+	 * triangles' corners with the positions of one point taken as one (welded: a seam's),
+	 * the triangle across each edge (adj), the centre's index (fan_apex, -1: no fan), and
+	 * the scratch of a frame's fans */
+	unsigned short *welded[LX_MAX_PLANES + LX_MAX_CASTERS];
+	int *adj[LX_MAX_PLANES + LX_MAX_CASTERS];
+	int fan_apex[LX_MAX_PLANES + LX_MAX_CASTERS];
+	bool *fan_kept;
+	int *fan_next;
+	unsigned short *fan_index;
 	/* this frame's kept triangles, per light, map and object: from `first`, `count`
 	 * indices of kept_index, uploaded into kept_ibo, and the object's light-clip matrix
 	 * they were chosen with, which the draw takes */
@@ -361,11 +373,48 @@ static int cmp_position(const void *pa, const void *pb)
 
 /* Mesh id for the shadow passes: its distinct positions and its triangles as 16-bit
  * indices into them, the same triangles in the same winding. */
+/* A sphere, cylinder or cone: convex, and of more triangles than its silhouette has edges. */
+static bool round_caster(const struct lx_renderer *r, int id)
+{
+	const struct lx_scene *s = r->d.scene;
+	return id >= s->plane_count && s->casters[id - s->plane_count].shape != LX_BOX;
+}
+
+/* A round caster's fan: its corners welded, its triangles' neighbours, and its centre
+ * (the mean of its np positions, inside it: it is convex), appended to pos. False when
+ * the mesh is not closed (no fan, its faces drawn) or out of memory. */
+static bool fan_mesh(struct lx_renderer *r, int id, const unsigned short *index, int triangles, float *pos, int np)
+{
+	int *rep = malloc((size_t)(np > 0 ? np : 1) * sizeof *rep);
+	r->welded[id] = malloc((size_t)(3 * triangles + 1) * sizeof *r->welded[id]);
+	r->adj[id] = malloc((size_t)(3 * triangles + 1) * sizeof(int));
+	double extent = 0;
+	for (int i = 0; i < 3 * np; i++)
+		extent = fmax(extent, fabs(pos[i]));
+	bool ok = rep && r->welded[id] && r->adj[id] && np >= 1 && lx_mesh_weld(pos, np, 1e-6 * extent, rep);
+	for (int k = 0; ok && k < 3 * triangles; k++)
+		r->welded[id][k] = (unsigned short)rep[index[k]];
+	ok = ok && lx_mesh_adjacency(r->welded[id], triangles, r->adj[id]);
+	free(rep);
+	if (!ok) {
+		free(r->welded[id]), free(r->adj[id]);
+		r->welded[id] = NULL, r->adj[id] = NULL;
+		return false;
+	}
+	double c[3] = {0, 0, 0};
+	for (int i = 0; i < np; i++)
+		for (int k = 0; k < 3; k++)
+			c[k] += pos[3 * i + k];
+	for (int k = 0; k < 3; k++)
+		pos[3 * np + k] = (float)(c[k] / np); /* np >= 1 */
+	return true;
+}
+
 static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 {
 	int n = m->vertex_count;
 	struct keyed_position *key = malloc((size_t)n * sizeof *key);
-	float *pos = malloc((size_t)n * 3 * sizeof(float));
+	float *pos = malloc((size_t)(n + 1) * 3 * sizeof(float)); /* and a round caster's centre */
 	unsigned short *index = malloc((size_t)n * sizeof(unsigned short));
 	bool ok = key && pos && index && n <= 65536;
 	if (ok) {
@@ -380,6 +429,9 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 				memcpy(pos + 3 * np++, key[i].p, sizeof key[i].p);
 			index[key[i].vertex] = (unsigned short)(np - 1);
 		}
+		r->fan_apex[id] = -1;
+		if (round_caster(r, id) && np < 65536 && fan_mesh(r, id, index, n / 3, pos, np))
+			r->fan_apex[id] = np++;
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
@@ -465,7 +517,15 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	/* at most every triangle in every map of every light */
 	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
 	r->kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
-	if (!r->facing_index || !r->kept_index) {
+	int most = 1; /* the most vertices (so positions, and indices of kept faces) of one mesh */
+	for (int i = 0; i < r->objects; i++)
+		most = meshes->mesh[i].vertex_count > most ? meshes->mesh[i].vertex_count : most;
+	r->fan_kept = malloc((size_t)most * sizeof(bool));
+	r->fan_next = malloc((size_t)(most + 1) * sizeof(int));
+	r->fan_index = malloc((size_t)most * sizeof(unsigned short));
+	for (int i = 0; r->fan_next && i <= most; i++)
+		r->fan_next[i] = -1;
+	if (!r->facing_index || !r->kept_index || !r->fan_kept || !r->fan_next || !r->fan_index) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -573,10 +633,11 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->kept_ibo)
 		lx_gl.DeleteBuffers(1, &r->kept_ibo);
 	for (int i = 0; i < LX_MAX_PLANES + LX_MAX_CASTERS; i++)
-		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]);
+		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]);
 	free(r->piece_v);
 	free(r->facing_index);
 	free(r->kept_index);
+	free(r->fan_kept), free(r->fan_next), free(r->fan_index);
 	free(r);
 }
 
@@ -798,7 +859,7 @@ static bool in_front(const vec4 *pl, const vec4 *front)
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
-			    int m, int id, const vec4 *front)
+			    int m, int id, const vec4 *front, bool reads_itself)
 {
 	mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t); /* the object's */
 	to_float(&lc, r->kept[light][m][id].light_clip);
@@ -807,11 +868,27 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	int first = r->kept_count, n = r->shadow_indices[id] / 3;
 	const vec4 *plane = r->shadow_plane[id];
 	const unsigned short *index = r->shadow_index[id];
-	for (int t = 0; t < n && r->kept_count + 3 <= r->kept_room; t++) /* room: every triangle, map and light */
-		if (v4_dot(centre, plane[t]) < tolerance && !(front && in_front(&plane[t], front))) {
+	/* a plane's map (never flattened onto its near plane: draw_map) draws a round
+	 * caster as the fan over the faces turned away, where it has fewer triangles and
+	 * does not read the map itself: its own faces at its terminator would compare with
+	 * the fan's depths, not its far side's */
+	bool fan = r->fan_apex[id] >= 0 && map->plane >= 0 && !front && !reads_itself;
+	for (int t = 0; t < n && r->kept_count + 3 <= r->kept_room; t++) { /* room: every triangle, map and light */
+		double side = v4_dot(centre, plane[t]);
+		if (fan)
+			r->fan_kept[t] = side < 0; /* turned away, as the GL's culling sees it */
+		if (side < tolerance && !(front && in_front(&plane[t], front))) {
 			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
 			r->kept_count += 3;
 		}
+	}
+	int k = fan ? lx_silhouette_fan(r->welded[id], r->adj[id], n, r->fan_kept, (unsigned short)r->fan_apex[id], r->fan_next,
+					r->fan_index, r->kept_count - first - 3)
+		    : -1;
+	if (k > 0) { /* fewer indices than the faces': in their place */
+		memcpy(r->kept_index + first, r->fan_index, (size_t)k * sizeof *r->fan_index);
+		r->kept_count = first + k;
+	}
 	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
 }
 
@@ -832,7 +909,8 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
 					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
-							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL);
+							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL,
+							r->lookup.reads[id] & 1u << m);
 		}
 	}
 	/* left bound for the draws (nothing else of the pass binds an index buffer) */

@@ -1,0 +1,120 @@
+#include "silhouette.h"
+#include <math.h>
+#include <stdlib.h>
+
+/* An edge of a triangle, keyed by its two ends (smaller first), for sorting. */
+struct edge {
+	unsigned key;
+	int slot; /* 3 t + e */
+	bool forward; /* runs from the smaller index to the larger */
+};
+
+static int cmp_edge(const void *pa, const void *pb)
+{
+	const struct edge *a = pa, *b = pb;
+	return a->key < b->key ? -1 : a->key > b->key;
+}
+
+static const float *weld_pos; /* qsort's comparison has no context */
+static int cmp_x(const void *pa, const void *pb)
+{
+	float a = weld_pos[3 * *(const int *)pa], b = weld_pos[3 * *(const int *)pb];
+	return a < b ? -1 : a > b;
+}
+
+static int root(int *rep, int i)
+{
+	while (rep[i] != i)
+		i = rep[i] = rep[rep[i]];
+	return i;
+}
+
+bool lx_mesh_weld(const float *pos, int np, double eps, int *rep)
+{
+	for (int i = 0; i < np; i++)
+		rep[i] = i;
+	int *order = malloc((size_t)(np > 0 ? np : 1) * sizeof *order);
+	if (!order)
+		return false;
+	for (int i = 0; i < np; i++)
+		order[i] = i;
+	weld_pos = pos;
+	qsort(order, (size_t)np, sizeof *order, cmp_x);
+	/* sorted by x, each position's neighbours within eps follow it closely */
+	for (int i = 0; i < np; i++)
+		for (int j = i + 1; j < np && pos[3 * order[j]] - pos[3 * order[i]] <= eps; j++) {
+			const float *a = pos + 3 * order[i], *b = pos + 3 * order[j];
+			if (fabs((double)a[1] - b[1]) <= eps && fabs((double)a[2] - b[2]) <= eps) {
+				int ra = root(rep, order[i]), rb = root(rep, order[j]);
+				if (ra != rb)
+					rep[ra > rb ? ra : rb] = ra < rb ? ra : rb; /* the first index stands */
+			}
+		}
+	for (int i = 0; i < np; i++)
+		rep[i] = root(rep, i);
+	free(order);
+	return true;
+}
+
+bool lx_mesh_adjacency(const unsigned short *index, int triangles, int *adj)
+{
+	struct edge *e = malloc((size_t)(3 * triangles + 1) * sizeof *e);
+	if (!e)
+		return false;
+	int n = 0;
+	for (int t = 0; t < triangles; t++) {
+		const unsigned short *c = index + 3 * t;
+		adj[3 * t] = adj[3 * t + 1] = adj[3 * t + 2] = -1;
+		if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+			continue; /* two corners welded into one (a pole's): no area, no neighbour */
+		for (int k = 0; k < 3; k++) {
+			unsigned a = c[k], b = c[(k + 1) % 3];
+			e[n++] = (struct edge){a < b ? a << 16 | b : b << 16 | a, 3 * t + k, a < b};
+		}
+	}
+	qsort(e, (size_t)n, sizeof *e, cmp_edge);
+	/* sorted, each edge's two runs side by side: more or fewer than two, or two the same
+	 * way (a face turned over), is no closed mesh */
+	bool closed = n % 2 == 0;
+	for (int s = 0; closed && s < n; s += 2)
+		closed = e[s].key == e[s + 1].key && (s + 2 >= n || e[s + 2].key != e[s].key) &&
+			 e[s].forward != e[s + 1].forward;
+	for (int s = 0; closed && s < n; s += 2)
+		adj[e[s].slot] = e[s + 1].slot / 3, adj[e[s + 1].slot] = e[s].slot / 3;
+	free(e);
+	return closed;
+}
+
+int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles, const bool *kept,
+		      unsigned short apex, int *next, unsigned short *out, int max_out)
+{
+	int edges = 0, count = 0;
+	bool simple = true;
+	for (int t = 0; t < triangles; t++) {
+		if (!kept[t] || adj[3 * t] < 0)
+			continue; /* not kept, or of no area (lx_mesh_adjacency) */
+		for (int e = 0; e < 3; e++) {
+			if (kept[adj[3 * t + e]])
+				continue;
+			int a = index[3 * t + e], b = index[3 * t + (e + 1) % 3];
+			if (next[a] >= 0 || count + 3 > max_out) { /* two boundary edges leave a: pinched */
+				simple = false;
+				continue;
+			}
+			next[a] = b, edges++;
+			out[count++] = apex, out[count++] = (unsigned short)a, out[count++] = (unsigned short)b;
+		}
+	}
+	/* one loop: from one edge's start, `edges` steps come back to it and no sooner */
+	int steps = 0;
+	if (simple && edges > 0) {
+		int start = out[1], v = start;
+		do
+			v = next[v], steps++;
+		while (v >= 0 && v != start && steps <= edges);
+		simple = v == start && steps == edges;
+	}
+	for (int k = 1; k < count; k += 3)
+		next[out[k]] = -1;
+	return simple && edges > 0 ? count : -1;
+}

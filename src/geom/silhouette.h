@@ -1,0 +1,37 @@
+/* Silhouettes of closed, indexed triangle meshes, GL-free: which triangle lies across each
+ * edge, and a set of a mesh's triangles (those turned away from a light) drawn again as
+ * a fan over its boundary from one point.
+ *
+ * A shadow pass draws a caster's faces turned away from the light; on a rasterizer that
+ * pays for each triangle (llvmpipe: a few hundred nanoseconds) a round caster's hundreds
+ * of them cost more than the lixels they fill. For a convex caster those faces' image is
+ * the convex polygon of its silhouette, and a fan from a point inside the caster to the
+ * silhouette's edges covers the same lixels (the same outer edges) at depths between the
+ * caster's near and far sides: every point outside the caster compares with it as it
+ * compares with the far side. */
+#ifndef LX_SILHOUETTE_H
+#define LX_SILHOUETTE_H
+#include <stdbool.h>
+
+/* rep[i]: the first of the np positions (x, y, z floats) within eps of position i in every
+ * coordinate, through a chain of such (a mesh's seam, where sin(2 pi) is not 0, makes
+ * two positions of one point). False out of memory (rep[i] = i then). */
+bool lx_mesh_weld(const float *pos, int np, double eps, int *rep);
+
+/* adj[3 t + e]: the triangle across edge e of triangle t (its corners e and (e + 1) % 3),
+ * for `triangles` triangles of 16-bit indices; -1 for each edge of a triangle with two
+ * corners the same (no area), which is left out. True when the rest is closed, each edge
+ * between two triangles that run it in opposite directions, false otherwise or out of
+ * memory (adj unusable). */
+bool lx_mesh_adjacency(const unsigned short *index, int triangles, int *adj);
+
+/* The triangles `kept` marks (but those of no area), as a fan: the triangle (apex, a, b)
+ * for each edge a -> b of a kept triangle whose neighbour across it is not kept, wound as
+ * that kept triangle; adj as lx_mesh_adjacency gives it.
+ * next: scratch of one int per position, each -1, left so. Returns the indices written
+ * (3 per edge), or -1 when no triangle is kept, the boundary is not one simple loop
+ * (the kept triangles are not one disk), or the fan needs more than max_out indices. */
+int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles, const bool *kept,
+		      unsigned short apex, int *next, unsigned short *out, int max_out);
+
+#endif
