@@ -873,11 +873,12 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	 * does not read the map itself: its own faces at its terminator would compare with
 	 * the fan's depths, not its far side's */
 	bool fan = r->fan_apex[id] >= 0 && map->plane >= 0 && !front && !reads_itself;
-	for (int t = 0; t < n && r->kept_count + 3 <= r->kept_room; t++) { /* room: every triangle, map and light */
+	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
 		if (fan)
 			r->fan_kept[t] = side < 0; /* turned away, as the GL's culling sees it */
-		if (side < tolerance && !(front && in_front(&plane[t], front))) {
+		if (side < tolerance && !(front && in_front(&plane[t], front)) &&
+		    r->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
 			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
 			r->kept_count += 3;
 		}
@@ -1525,12 +1526,13 @@ static bool box_on_screen(const struct lx_frame *f, vec3 lo, vec3 hi, int rect[4
 	return true;
 }
 
-/* The frame's draws, in lx_frame_draw_order's order (mostly casters first: the planes'
- * pixels behind them then fail the depth test, which on llvmpipe costs about half their
- * shading; a table top before the slab and legs under it, which would otherwise be shaded
- * and then covered: 0.2-0.5 ms of the table's main pass), each object cut by where a
- * shadow can fall on it and a plane by what a plane in front hides (visible_spans); the
- * planes' pieces and the casters' facing-sorted indices uploaded. Returns the count. */
+/* A light pass's draws into ld, in lx_frame_draw_order's order (mostly casters first: the
+ * planes' pixels behind them then fail the depth test, which on llvmpipe costs about half
+ * their shading; a table top before the slab and legs under it, which would otherwise be
+ * shaded and then covered: 0.2-0.5 ms of the table's main pass), each object cut by where
+ * a shadow can fall on it and a plane by what a plane in front hides (visible_spans); the
+ * planes' pieces and the casters' facing-sorted indices appended to the frame's
+ * (upload_draws sends them). */
 static void frame_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
 			bool lit_only, struct light_draws *ld)
 {
