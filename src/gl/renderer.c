@@ -136,6 +136,7 @@ struct lx_renderer {
 	 * the scratch of a frame's fans */
 	unsigned short *welded[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int *adj[LX_MAX_PLANES + LX_MAX_CASTERS];
+	float *fan_pos[LX_MAX_PLANES + LX_MAX_CASTERS]; /* its positions, the centre last */
 	int fan_apex[LX_MAX_PLANES + LX_MAX_CASTERS];
 	bool *fan_kept;
 	int *fan_next;
@@ -430,8 +431,14 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 			index[key[i].vertex] = (unsigned short)(np - 1);
 		}
 		r->fan_apex[id] = -1;
-		if (round_caster(r, id) && np < 65536 && fan_mesh(r, id, index, n / 3, pos, np))
+		if (round_caster(r, id) && np < 65536 && fan_mesh(r, id, index, n / 3, pos, np)) {
 			r->fan_apex[id] = np++;
+			r->fan_pos[id] = malloc((size_t)np * 3 * sizeof(float));
+			if (r->fan_pos[id])
+				memcpy(r->fan_pos[id], pos, (size_t)np * 3 * sizeof(float));
+			else
+				r->fan_apex[id] = -1;
+		}
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
@@ -633,7 +640,7 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->kept_ibo)
 		lx_gl.DeleteBuffers(1, &r->kept_ibo);
 	for (int i = 0; i < LX_MAX_PLANES + LX_MAX_CASTERS; i++)
-		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]);
+		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]);
 	free(r->piece_v);
 	free(r->facing_index);
 	free(r->kept_index);
@@ -858,6 +865,45 @@ static bool in_front(const vec4 *pl, const vec4 *front)
  * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
+/* A fan over the faces of a caster that reads the map itself leaves out the faces turned
+ * away by less than this (the cosine of their normal's angle with the direction away from
+ * the light): they lie along its silhouette, where its own faces at its terminator read
+ * the map, and stay faces, its far side. A sphere's are 30 degrees of it from edge-on, a
+ * seventh of its radius in the image. */
+#define FAN_WELL_AWAY 0.5
+
+/* Whether triangle t of caster id (its plane pl, unit normal) is turned away from the light
+ * (centre: the map's centre of projection in the object's space, homogeneous) by more
+ * than FAN_WELL_AWAY. */
+static bool turned_well_away(const struct lx_renderer *r, int id, int t, vec4 centre, vec4 pl)
+{
+	vec3 n = v3(pl.x, pl.y, pl.z), to;
+	if (fabs(centre.w) > 1e-12 * v4_len(centre)) { /* a point: from the triangle's first corner */
+		const float *q = r->fan_pos[id] + 3 * r->welded[id][3 * t];
+		to = v3_sub(v3(centre.x / centre.w, centre.y / centre.w, centre.z / centre.w), v3(q[0], q[1], q[2]));
+	} else
+		to = v3(centre.x, centre.y, centre.z); /* a direction, of either sign */
+	double len = v3_len(to);
+	return len > 0 && fabs(v3_dot(n, to)) > FAN_WELL_AWAY * len * v3_len(n);
+}
+
+/* Whether every triangle of a fan (k indices in fan_index) faces away from the light
+ * (centre as above), as the faces it stands for: then its image covers theirs once. */
+static bool fan_faces_away(const struct lx_renderer *r, int id, vec4 centre, int k)
+{
+	const float *p = r->fan_pos[id];
+	for (int i = 0; i < k; i += 3) {
+		vec4 c[3];
+		for (int j = 0; j < 3; j++) {
+			const float *q = p + 3 * r->fan_index[i + j];
+			c[j] = (vec4){q[0], q[1], q[2], 1};
+		}
+		if (!(v4_dot(centre, v4_cross3(c[0], c[1], c[2])) <= 0))
+			return false;
+	}
+	return true;
+}
+
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
 			    int m, int id, const vec4 *front, bool reads_itself)
 {
@@ -869,24 +915,36 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	const vec4 *plane = r->shadow_plane[id];
 	const unsigned short *index = r->shadow_index[id];
 	/* a plane's map (never flattened onto its near plane: draw_map) draws a round
-	 * caster as the fan over the faces turned away, where it has fewer triangles and
-	 * does not read the map itself: its own faces at its terminator would compare with
-	 * the fan's depths, not its far side's */
-	bool fan = r->fan_apex[id] >= 0 && map->plane >= 0 && !front && !reads_itself;
+	 * caster as the fan over the faces turned away, where it has fewer triangles; where
+	 * the caster reads the map itself, over those turned well away only (its own faces at
+	 * its terminator compare with its far side there, as before) */
+	bool fan = r->fan_apex[id] >= 0 && map->plane >= 0 && !front;
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
 		if (fan)
-			r->fan_kept[t] = side < 0; /* turned away, as the GL's culling sees it */
+			r->fan_kept[t] = side < 0 && (!reads_itself || turned_well_away(r, id, t, centre, plane[t]));
 		if (side < tolerance && !(front && in_front(&plane[t], front)) &&
 		    r->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
 			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
 			r->kept_count += 3;
 		}
 	}
+	int room = r->kept_count - first - 3; /* fewer indices than the faces' */
 	int k = fan ? lx_silhouette_fan(r->welded[id], r->adj[id], n, r->fan_kept, (unsigned short)r->fan_apex[id], r->fan_next,
-					r->fan_index, r->kept_count - first - 3)
+					r->fan_index, room)
 		    : -1;
-	if (k > 0) { /* fewer indices than the faces': in their place */
+	if (k > 0 && !fan_faces_away(r, id, centre, k))
+		k = -1;
+	for (int t = 0; k > 0 && reads_itself && t < n; t++) /* the faces turned away near the edge-on, as faces */
+		if (v4_dot(centre, plane[t]) < tolerance && !r->fan_kept[t]) {
+			if (k + 3 > room) {
+				k = -1;
+				break;
+			}
+			memcpy(r->fan_index + k, index + 3 * t, 3 * sizeof *index);
+			k += 3;
+		}
+	if (k > 0) { /* in place of the faces */
 		memcpy(r->kept_index + first, r->fan_index, (size_t)k * sizeof *r->fan_index);
 		r->kept_count = first + k;
 	}
