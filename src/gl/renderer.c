@@ -856,15 +856,6 @@ static bool in_front(const vec4 *pl, const vec4 *front)
 	return fabs(fabs(c) - 1) < 1e-9 && fabs(pl->w / nn - (c > 0 ? front->w : -front->w)) < 1e-5;
 }
 
-/* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
- * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
- * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
- * llvmpipe little, 0.015-0.06 ms a frame), and half of each closed caster's are. The sign
- * of a triangle's projected area is that of its plane against the map's centre of
- * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
- * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
- * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
- * it would draw. */
 /* A fan over the faces of a caster that reads the map itself leaves out the faces turned
  * away by less than this (the cosine of their normal's angle with the direction away from
  * the light): they lie along its silhouette, where its own faces at its terminator read
@@ -904,6 +895,15 @@ static bool fan_faces_away(const struct lx_renderer *r, int id, vec4 centre, int
 	return true;
 }
 
+/* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
+ * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
+ * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
+ * llvmpipe little, 0.015-0.06 ms a frame), and half of each closed caster's are. The sign
+ * of a triangle's projected area is that of its plane against the map's centre of
+ * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
+ * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
+ * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
+ * it would draw. */
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
 			    int m, int id, const vec4 *front, bool reads_itself)
 {
