@@ -15,11 +15,16 @@ static int cmp_edge(const void *pa, const void *pb)
 	return a->key < b->key ? -1 : a->key > b->key;
 }
 
-static const float *weld_pos; /* qsort's comparison has no context */
+/* A position's x and its index, sorted by x (a comparison without the positions). */
+struct keyed_x {
+	float x;
+	int i;
+};
+
 static int cmp_x(const void *pa, const void *pb)
 {
-	float a = weld_pos[3 * *(const int *)pa], b = weld_pos[3 * *(const int *)pb];
-	return a < b ? -1 : a > b;
+	const struct keyed_x *a = pa, *b = pb;
+	return a->x < b->x ? -1 : a->x > b->x;
 }
 
 static int root(int *rep, int i)
@@ -33,19 +38,18 @@ bool lx_mesh_weld(const float *pos, int np, double eps, int *rep)
 {
 	for (int i = 0; i < np; i++)
 		rep[i] = i;
-	int *order = malloc((size_t)(np > 0 ? np : 1) * sizeof *order);
+	struct keyed_x *order = malloc((size_t)(np > 0 ? np : 1) * sizeof *order);
 	if (!order)
 		return false;
 	for (int i = 0; i < np; i++)
-		order[i] = i;
-	weld_pos = pos;
+		order[i] = (struct keyed_x){pos[3 * i], i};
 	qsort(order, (size_t)np, sizeof *order, cmp_x);
 	/* sorted by x, each position's neighbours within eps follow it closely */
 	for (int i = 0; i < np; i++)
-		for (int j = i + 1; j < np && pos[3 * order[j]] - pos[3 * order[i]] <= eps; j++) {
-			const float *a = pos + 3 * order[i], *b = pos + 3 * order[j];
+		for (int j = i + 1; j < np && order[j].x - order[i].x <= eps; j++) {
+			const float *a = pos + 3 * order[i].i, *b = pos + 3 * order[j].i;
 			if (fabs((double)a[1] - b[1]) <= eps && fabs((double)a[2] - b[2]) <= eps) {
-				int ra = root(rep, order[i]), rb = root(rep, order[j]);
+				int ra = root(rep, order[i].i), rb = root(rep, order[j].i);
 				if (ra != rb)
 					rep[ra > rb ? ra : rb] = ra < rb ? ra : rb; /* the first index stands */
 			}

@@ -1926,7 +1926,7 @@ static bool prepared_for(const struct lx_renderer *r, const struct lx_frame *con
 	int k = 0;
 	for (int i = 0; i < n && i < LX_MAX_LIGHTS; i++)
 		if (f[i]->light_index >= 0 && f[i]->light_index < r->d.light_count) {
-			if (k >= r->prepared || r->pass[k].f != f[i] || r->pass[k].res != res[i] || r->pass[k].kind == DECISION)
+			if (k >= r->prepared || r->pass[k].f != f[i] || r->pass[k].res != res[i])
 				return false;
 			k++;
 		}

@@ -135,11 +135,11 @@ static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, cons
 }
 
 /* The directions an image is bounded in, as coefficients of its x and y: x, y, x + y and
- * x - y (an octagon: tight for round shapes), and where the image of points x, y (n of
- * them) is long and thin, its long axis and the one across it too: a shadow cast low,
- * often at a slant, which the octagon bounds loosely. Returns their count. */
+ * x - y (an octagon: tight for round shapes), and where the image of the n points c (clip
+ * coordinates, w > 0) is long and thin, its long axis and the one across it too: a shadow
+ * cast low, often at a slant, which the octagon bounds loosely. Returns their count. */
 #define LONG_THIN 4.0 /* the ratio of the points' variances along and across the long axis */
-static int image_directions(const double *x, const double *y, int n, double (*coef)[2])
+static int image_directions(const vec4 *c, int n, double (*coef)[2])
 {
 	static const double octagon[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
 	memcpy(coef, octagon, sizeof octagon);
@@ -147,10 +147,10 @@ static int image_directions(const double *x, const double *y, int n, double (*co
 		return 4;
 	double mx = 0, my = 0, sxx = 0, syy = 0, sxy = 0;
 	for (int k = 0; k < n; k++)
-		mx += x[k], my += y[k];
+		mx += c[k].x / c[k].w, my += c[k].y / c[k].w;
 	mx /= n, my /= n; /* n >= 2 */
 	for (int k = 0; k < n; k++) {
-		double dx = x[k] - mx, dy = y[k] - my;
+		double dx = c[k].x / c[k].w - mx, dy = c[k].y / c[k].w - my;
 		sxx += dx * dx, syy += dy * dy, sxy += dx * dy;
 	}
 	/* the covariance's eigenvalues, half +- root, and its long axis's angle */
@@ -270,10 +270,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		if (k > 0)
 			c = served, nc = k, crosses = false;
 	}
-	double cx[SERVED_POINTS], cy[SERVED_POINTS], coef[MAX_DIRECTIONS][2], b0[MAX_DIRECTIONS], b1[MAX_DIRECTIONS], z0;
-	for (int k = 0; k < nc && !crosses; k++)
-		cx[k] = c[k].x / c[k].w, cy[k] = c[k].y / c[k].w; /* w > 0 (served_points, or no crossing) */
-	int nd = image_directions(cx, cy, crosses ? 0 : nc, coef);
+	double coef[MAX_DIRECTIONS][2], b0[MAX_DIRECTIONS], b1[MAX_DIRECTIONS], z0;
+	int nd = image_directions(c, crosses ? 0 : nc, coef); /* w > 0: served_points', or no crossing */
 	image_bounds(c, nc, crosses, coef, nd, b0, b1, &z0);
 	vec4 dir[MAX_DIRECTIONS];
 	for (int d = 0; d < nd; d++)
