@@ -384,11 +384,11 @@ static int check_fans(const struct lx_mesh *me, int id, bool round, uint64_t *se
 	int n = me->vertex_count, t = n / 3, fans = 0;
 	float *pos = malloc((size_t)(n + 1) * 3 * sizeof(float));
 	unsigned short *index = malloc((size_t)n * sizeof *index), *welded = malloc((size_t)n * sizeof *welded);
-	unsigned short *fan = malloc((size_t)n * sizeof *fan);
+	unsigned short *fan = malloc((size_t)n * sizeof *fan), *loop = malloc((size_t)n * sizeof *loop);
 	int *rep = malloc((size_t)n * sizeof *rep), *adj = malloc((size_t)n * sizeof *adj);
 	int *next = malloc((size_t)(n + 1) * sizeof *next);
 	bool *kept = malloc((size_t)t * sizeof *kept);
-	assert_true(pos && index && welded && fan && rep && adj && next && kept);
+	assert_true(pos && index && welded && fan && loop && rep && adj && next && kept);
 	int np = index_positions(me, pos, index);
 	assert_true(lx_mesh_weld(pos, np, 1e-6, rep));
 	for (int k = 0; k < n; k++)
@@ -426,6 +426,20 @@ static int check_fans(const struct lx_mesh *me, int id, bool round, uint64_t *se
 		if (fabs(covered - faces) > 1e-9 * fabs(faces) + 1e-12 || least > 1e-12 * fabs(faces))
 			fail_msg("object %d, light %d: the fan covers %.12g of the faces' %.12g (a triangle %.3g the other way)",
 				 id, trial, covered, faces, least);
+		/* a convex caster's silhouette is convex: drawn as its polygon, the same image */
+		int cut = lx_fan_as_polygon(fan, count, pos, (vec4){L.x, L.y, L.z, 1}, next, loop);
+		assert_int_equal(cut, count - 6);
+		covered = least = 0;
+		for (int k = 0; k < cut; k += 3) {
+			assert_true(fan[k] != np && fan[k + 1] != np && fan[k + 2] != np); /* the mesh's own corners */
+			double a2 = image_area2(L, axis, u, v, pos + 3 * fan[k], pos + 3 * fan[k + 1], pos + 3 * fan[k + 2]);
+			covered += a2, least = fmax(least, -sign * a2);
+		}
+		for (int k = 0; k <= np; k++)
+			assert_int_equal(next[k], -1);
+		if (fabs(covered - faces) > 1e-9 * fabs(faces) + 1e-12 || least > 1e-12 * fabs(faces))
+			fail_msg("object %d, light %d: the polygon covers %.12g of the faces' %.12g (a triangle %.3g the other way)",
+				 id, trial, covered, faces, least);
 		fans++;
 	}
 	/* two kept triangles apart: two disks, no one loop */
@@ -444,14 +458,14 @@ static int check_fans(const struct lx_mesh *me, int id, bool round, uint64_t *se
 	}
 	assert_int_equal(lx_silhouette_fan(welded, adj, t, kept, (unsigned short)np, next, fan, n), -1);
 	assert_false(lx_mesh_adjacency(welded, t - 1, adj)); /* a hole: no closed mesh */
-	free(pos), free(index), free(welded), free(fan), free(rep), free(adj), free(next), free(kept);
+	free(pos), free(index), free(welded), free(fan), free(loop), free(rep), free(adj), free(next), free(kept);
 	return fans;
 }
 
 /* The casters' shadow meshes, welded at their seams, are closed, and for lights all round
  * a round one the faces turned away from the light make one disk whose fan from the
- * caster's centre covers the same image, wound the same way; a mesh with a hole and a
- * kept set of two disks are refused. */
+ * caster's centre covers the same image, wound the same way, as does the fan's polygon
+ * cut by diagonals; a mesh with a hole and a kept set of two disks are refused. */
 static void silhouette_fans_cover_the_faces_turned_away(void **state)
 {
 	(void)state;
@@ -467,6 +481,57 @@ static void silhouette_fans_cover_the_faces_turned_away(void **state)
 		      fans);
 	assert_int_equal(fans, 600);
 	lx_meshes_free(&m);
+}
+
+/* A fan of 8 corners round (0, 0, 0) on the plane z = 0, seen from a light at (0, 0, 5),
+ * with corner 2 pulled in to radius `r2` of the others' 1: its polygon for
+ * lx_fan_as_polygon. */
+static int octagon_fan(double r2, unsigned short *fan, float *pos, int *next, unsigned short *loop)
+{
+	for (int i = 0; i < 8; i++) {
+		double a = -i * M_PI / 4, r = i == 2 ? r2 : 1; /* clockwise seen from the light: turned away */
+		pos[3 * i] = (float)(r * cos(a)), pos[3 * i + 1] = (float)(r * sin(a)), pos[3 * i + 2] = 0;
+		fan[3 * i] = 8, fan[3 * i + 1] = (unsigned short)i, fan[3 * i + 2] = (unsigned short)((i + 1) % 8);
+	}
+	pos[24] = pos[25] = pos[26] = 0; /* the apex */
+	return lx_fan_as_polygon(fan, 24, pos, (vec4){0, 0, 5, 1}, next, loop);
+}
+
+/* A fan's polygon replaces it only where convex: a corner pulled in past its neighbours'
+ * chord leaves the fan as it was; a corner on that chord (a straight angle) and one
+ * outside it are cut into six triangles covering the octagon's area, none the other way. */
+static void fan_polygons_only_where_convex(void **state)
+{
+	(void)state;
+	unsigned short fan[24], loop[8];
+	float pos[27];
+	int next[9];
+	for (int i = 0; i < 9; i++)
+		next[i] = -1;
+	double chord = cos(M_PI / 4); /* corner 2 on the line from corner 1 to corner 3 */
+	const double radii[] = {0.5, chord, 1.0};
+	for (int c = 0; c < 3; c++) {
+		int n = octagon_fan(radii[c], fan, pos, next, loop);
+		for (int i = 0; i < 9; i++)
+			assert_int_equal(next[i], -1);
+		if (c == 0) {
+			assert_int_equal(n, 24); /* not convex: the fan unchanged */
+			for (int i = 0; i < 8; i++)
+				assert_true(fan[3 * i] == 8 && fan[3 * i + 1] == i && fan[3 * i + 2] == (i + 1) % 8);
+			continue;
+		}
+		assert_int_equal(n, 18);
+		double area = 0, fan_area = 0;
+		for (int k = 0; k < n; k += 3) {
+			const float *a = pos + 3 * fan[k], *b = pos + 3 * fan[k + 1], *d = pos + 3 * fan[k + 2];
+			double a2 = (b[0] - a[0]) * (d[1] - a[1]) - (d[0] - a[0]) * (b[1] - a[1]);
+			assert_true(fan[k] < 8 && a2 <= 1e-7); /* its own corners, clockwise like the fan */
+			area += a2;
+		}
+		for (int i = 0; i < 8; i++) /* the octagon's, from the apex at 0 */
+			fan_area += (double)pos[3 * ((i + 1) % 8)] * pos[3 * i + 1] - (double)pos[3 * i] * pos[3 * ((i + 1) % 8) + 1];
+		assert_near(area, -fan_area, 1e-6);
+	}
 }
 
 /* A flat-faced object (a plane, a box) carries each face's normal as its shading normal,
@@ -813,6 +878,7 @@ int main(void)
 		cmocka_unit_test(several_lights_keep_their_order_and_scale),
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 		cmocka_unit_test(silhouette_fans_cover_the_faces_turned_away),
+		cmocka_unit_test(fan_polygons_only_where_convex),
 		cmocka_unit_test(flat_meshes_carry_their_face_normals),
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),

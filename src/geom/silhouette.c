@@ -122,3 +122,47 @@ int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles
 		next[out[k]] = -1;
 	return simple && edges > 0 ? count : -1;
 }
+
+static vec4 point_at(const float *pos, unsigned short i)
+{
+	const float *q = pos + 3 * i;
+	return (vec4){q[0], q[1], q[2], 1};
+}
+
+int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop)
+{
+	int m = count / 3;
+	if (m < 3)
+		return count;
+	/* the corners in order: each edge (apex, a, b) leads from a to b */
+	for (int k = 0; k < count; k += 3)
+		next[fan[k + 1]] = fan[k + 2];
+	int v = fan[1], n = 0;
+	do
+		loop[n++] = (unsigned short)v, v = next[v];
+	while (v != fan[1] && v >= 0 && n < m);
+	for (int k = 0; k < count; k += 3)
+		next[fan[k + 1]] = -1;
+	if (n != m || v != fan[1])
+		return count; /* not one loop: cannot happen for lx_silhouette_fan's */
+	/* the way the fan's triangles face the light, and every corner turning that way */
+	double way = 0;
+	for (int k = 0; k < count; k += 3)
+		way += v4_dot(centre, v4_cross3(point_at(pos, fan[k]), point_at(pos, fan[k + 1]), point_at(pos, fan[k + 2])));
+	for (int i = 0; i < m; i++) {
+		vec4 a = point_at(pos, loop[i]), b = point_at(pos, loop[(i + 1) % m]), c = point_at(pos, loop[(i + 2) % m]);
+		if (!(way * v4_dot(centre, v4_cross3(a, b, c)) >= 0))
+			return count; /* a corner turns the other way: not convex */
+	}
+	int out = 0;
+	while (m > 2) { /* (0, 1, 2), (2, 3, 4), ...; the even corners stay for the next round */
+		int kept = 0;
+		for (int i = 0; i < m; i += 2) {
+			if (i + 1 < m)
+				fan[out++] = loop[i], fan[out++] = loop[i + 1], fan[out++] = loop[(i + 2) % m];
+			loop[kept++] = loop[i];
+		}
+		m = kept;
+	}
+	return out;
+}

@@ -11,6 +11,7 @@
  * compares with the far side. */
 #ifndef LX_SILHOUETTE_H
 #define LX_SILHOUETTE_H
+#include "linalg.h"
 #include <stdbool.h>
 
 /* rep[i]: the first of the np positions (x, y, z floats) within eps of position i in every
@@ -33,5 +34,23 @@ bool lx_mesh_adjacency(const unsigned short *index, int triangles, int *adj);
  * (the kept triangles are not one disk), or the fan needs more than max_out indices. */
 int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles, const bool *kept,
 		      unsigned short apex, int *next, unsigned short *out, int max_out);
+
+/* A fan lx_silhouette_fan wrote (count indices), each of its triangles facing one way as
+ * seen from the light (centre: its centre of projection, homogeneous, a point or a
+ * direction, of either sign: the sign of v4_dot(centre, v4_cross3 of a triangle's
+ * corners)), drawn instead as its boundary's polygon where that polygon is convex: where
+ * every three corners in a row face that way as well (the fan's triangles all facing one
+ * way make the polygon star-shaped round the apex's image, and a closed convex caster's
+ * faces turned away have an image that covers itself nowhere, so it turns once).
+ * Cut by short diagonals: the corners (0, 1, 2), (2, 3, 4), ... as triangles, then every
+ * other corner again the same way, down to three. A rasterizer shades each block an inner
+ * edge crosses once for each triangle beside it; against the fan's spokes, one from the
+ * apex to each corner, these edges are about half as long in all (20 radii for 32
+ * corners, 23 for 46), and there are two triangles fewer. The triangles lie inside a
+ * convex caster (their corners are its vertices), as the apex's did. pos: the indices' positions (x, y, z floats); next:
+ * scratch of one int per position, each -1, left so; loop: scratch of count / 3 indices.
+ * Returns the new count of indices, or count with the fan unchanged where the polygon is
+ * not convex. */
+int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop);
 
 #endif

@@ -133,14 +133,14 @@ struct lx_renderer {
 	 * from its centre, the last position of its shadow mesh (silhouette.h): the
 	 * triangles' corners with the positions of one point taken as one (welded: a seam's),
 	 * the triangle across each edge (adj), the centre's index (fan_apex, -1: no fan), and
-	 * the scratch of a frame's fans */
+	 * the scratch of a frame's fans (a convex one drawn as its polygon: fan_loop) */
 	unsigned short *welded[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int *adj[LX_MAX_PLANES + LX_MAX_CASTERS];
 	float *fan_pos[LX_MAX_PLANES + LX_MAX_CASTERS]; /* its positions, the centre last */
 	int fan_apex[LX_MAX_PLANES + LX_MAX_CASTERS];
 	bool *fan_kept;
 	int *fan_next;
-	unsigned short *fan_index;
+	unsigned short *fan_index, *fan_loop;
 	/* this frame's kept triangles, per light, map and object: from `first`, `count`
 	 * indices of kept_index, uploaded into kept_ibo, and the object's light-clip matrix
 	 * they were chosen with, which the draw takes */
@@ -530,9 +530,10 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	r->fan_kept = malloc((size_t)most * sizeof(bool));
 	r->fan_next = malloc((size_t)(most + 1) * sizeof(int));
 	r->fan_index = malloc((size_t)most * sizeof(unsigned short));
+	r->fan_loop = malloc((size_t)most * sizeof(unsigned short));
 	for (int i = 0; r->fan_next && i <= most; i++)
 		r->fan_next[i] = -1;
-	if (!r->facing_index || !r->kept_index || !r->fan_kept || !r->fan_next || !r->fan_index) {
+	if (!r->facing_index || !r->kept_index || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -644,7 +645,7 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	free(r->piece_v);
 	free(r->facing_index);
 	free(r->kept_index);
-	free(r->fan_kept), free(r->fan_next), free(r->fan_index);
+	free(r->fan_kept), free(r->fan_next), free(r->fan_index), free(r->fan_loop);
 	free(r);
 }
 
@@ -935,6 +936,8 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 		    : -1;
 	if (k > 0 && !fan_faces_away(r, id, centre, k))
 		k = -1;
+	if (k > 0) /* its polygon where convex: the same lixels, shorter inner edges */
+		k = lx_fan_as_polygon(r->fan_index, k, r->fan_pos[id], centre, r->fan_next, r->fan_loop);
 	for (int t = 0; k > 0 && reads_itself && t < n; t++) /* the faces turned away near the edge-on, as faces */
 		if (v4_dot(centre, plane[t]) < tolerance && !r->fan_kept[t]) {
 			if (k + 3 > room) {
