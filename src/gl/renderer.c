@@ -968,11 +968,15 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			/* the maps its own main-pass draws read: none where nothing can shadow it
+			 * (object_draws asks the same with its own margin, no wider than this) */
+			unsigned reads = r->lookup.reads[id];
+			if (!r->d.lookup_everywhere && reads && !lx_lookup_any(&r->lookup, id, reads))
+				reads = 0;
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
 					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
-							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL,
-							r->lookup.reads[id] & 1u << m);
+							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL, reads & 1u << m);
 		}
 	}
 	/* left bound for the draws (nothing else of the pass binds an index buffer) */
