@@ -905,6 +905,21 @@ static bool fan_faces_away(const struct lx_renderer *r, int id, vec4 centre, int
  * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
+/* Whether every corner of object id's box lies in front of the light and inside the
+ * depth range of light clip matrix lc (the object's): then a map that flattens casters
+ * onto its near plane flattens none of it, and neither plane clips it. */
+static bool box_in_depth_range(const struct lx_renderer *r, int id, const mat4 *lc)
+{
+	const struct lx_mesh *me = &r->d.meshes->mesh[id];
+	for (int k = 0; k < 8; k++) {
+		vec4 c = m4_mul_v4(lc, (vec4){k & 1 ? me->bmax.x : me->bmin.x, k & 2 ? me->bmax.y : me->bmin.y,
+					      k & 4 ? me->bmax.z : me->bmin.z, 1});
+		if (!(c.w > 0 && c.z > -c.w && c.z < c.w))
+			return false;
+	}
+	return true;
+}
+
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
 			    int m, int id, const vec4 *front, bool reads_itself)
 {
@@ -915,11 +930,12 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	int first = r->kept_count, n = r->shadow_indices[id] / 3;
 	const vec4 *plane = r->shadow_plane[id];
 	const unsigned short *index = r->shadow_index[id];
-	/* a plane's map (never flattened onto its near plane: draw_map) draws a round
-	 * caster as the fan over the faces turned away, where it has fewer triangles; where
-	 * the caster reads the map itself, over those turned well away only (its own faces at
-	 * its terminator compare with its far side there, as before) */
-	bool fan = r->fan_apex[id] >= 0 && map->plane >= 0 && !front;
+	/* a round caster drawn as the fan over the faces turned away, where it has fewer
+	 * triangles, into a plane's map (never flattened onto its near plane: draw_map) or
+	 * another that flattens and clips none of it; where the caster reads the map itself,
+	 * over those turned well away only (its own faces at its terminator compare with its
+	 * far side there, as before) */
+	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front;
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
 		if (fan)
