@@ -372,8 +372,6 @@ static int cmp_position(const void *pa, const void *pb)
 	return 0;
 }
 
-/* Mesh id for the shadow passes: its distinct positions and its triangles as 16-bit
- * indices into them, the same triangles in the same winding. */
 /* A sphere, cylinder or cone: convex, and of more triangles than its silhouette has edges. */
 static bool round_caster(const struct lx_renderer *r, int id)
 {
@@ -411,6 +409,8 @@ static bool fan_mesh(struct lx_renderer *r, int id, const unsigned short *index,
 	return true;
 }
 
+/* Mesh id for the shadow passes: its distinct positions and its triangles as 16-bit
+ * indices into them, the same triangles in the same winding. */
 static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 {
 	int n = m->vertex_count;
@@ -864,17 +864,29 @@ static bool in_front(const vec4 *pl, const vec4 *front)
  * seventh of its radius in the image. */
 #define FAN_WELL_AWAY 0.5
 
-/* Whether triangle t of caster id (its plane pl, unit normal) is turned away from the light
- * (centre: the map's centre of projection in the object's space, homogeneous) by more
- * than FAN_WELL_AWAY. */
-static bool turned_well_away(const struct lx_renderer *r, int id, int t, vec4 centre, vec4 pl)
+/* The light as turned_well_away takes it, from the map's centre of projection in the
+ * object's space (homogeneous): a point, or a direction (of either sign). */
+struct light_seen {
+	bool point;
+	vec3 at;
+};
+
+static struct light_seen light_seen(vec4 centre)
 {
-	vec3 n = v3(pl.x, pl.y, pl.z), to;
-	if (fabs(centre.w) > 1e-12 * v4_len(centre)) { /* a point: from the triangle's first corner */
+	if (fabs(centre.w) > 1e-12 * v4_len(centre))
+		return (struct light_seen){true, v3(centre.x / centre.w, centre.y / centre.w, centre.z / centre.w)};
+	return (struct light_seen){false, v3(centre.x, centre.y, centre.z)};
+}
+
+/* Whether triangle t of caster id (its plane pl) is turned away from the light by more
+ * than FAN_WELL_AWAY. */
+static bool turned_well_away(const struct lx_renderer *r, int id, int t, struct light_seen l, vec4 pl)
+{
+	vec3 n = v3(pl.x, pl.y, pl.z), to = l.at;
+	if (l.point) { /* from the triangle's first corner */
 		const float *q = r->fan_pos[id] + 3 * r->welded[id][3 * t];
-		to = v3_sub(v3(centre.x / centre.w, centre.y / centre.w, centre.z / centre.w), v3(q[0], q[1], q[2]));
-	} else
-		to = v3(centre.x, centre.y, centre.z); /* a direction, of either sign */
+		to = v3_sub(l.at, v3(q[0], q[1], q[2]));
+	}
 	double len = v3_len(to);
 	return len > 0 && fabs(v3_dot(n, to)) > FAN_WELL_AWAY * len * v3_len(n);
 }
@@ -896,15 +908,6 @@ static bool fan_faces_away(const struct lx_renderer *r, int id, vec4 centre, int
 	return true;
 }
 
-/* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
- * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
- * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
- * llvmpipe little, 0.015-0.06 ms a frame), and half of each closed caster's are. The sign
- * of a triangle's projected area is that of its plane against the map's centre of
- * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
- * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
- * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
- * it would draw. */
 /* Whether every corner of object id's box lies in front of the light and inside the
  * depth range of light clip matrix lc (the object's): then a map that flattens casters
  * onto its near plane flattens none of it, and neither plane clips it. */
@@ -920,6 +923,15 @@ static bool box_in_depth_range(const struct lx_renderer *r, int id, const mat4 *
 	return true;
 }
 
+/* The triangles of object id that map m's culling keeps (the pass culls GL_FRONT: those
+ * whose image turns clockwise), appended to kept_index: a triangle the GL culls still
+ * costs its vertices and set-up (on a board's vertex stage, its shading and tiling; on
+ * llvmpipe little, 0.015-0.06 ms a frame), and half of each closed caster's are. The sign
+ * of a triangle's projected area is that of its plane against the map's centre of
+ * projection (v4_cross3 of the light-clip x, y and w rows), whatever the map's warp and
+ * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
+ * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
+ * it would draw. */
 static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
 			    int m, int id, const vec4 *front, bool reads_itself)
 {
@@ -936,10 +948,11 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	 * over those turned well away only (its own faces at its terminator compare with its
 	 * far side there, as before) */
 	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front;
+	struct light_seen seen = light_seen(centre);
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
 		if (fan)
-			r->fan_kept[t] = side < 0 && (!reads_itself || turned_well_away(r, id, t, centre, plane[t]));
+			r->fan_kept[t] = side < 0 && (!reads_itself || turned_well_away(r, id, t, seen, plane[t]));
 		if (side < tolerance && !(front && in_front(&plane[t], front)) &&
 		    r->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
 			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
@@ -970,6 +983,18 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
 }
 
+/* Of the maps in mask a caster reads as a receiver, those its main-pass draws read with the
+ * frame's lookup volumes (r->lookup): the ones that can serve a point of it in view, none
+ * where no shadow can fall on it (--lookup-region all: every one). A wider margin keeps
+ * as many or more. */
+static unsigned caster_reads(const struct lx_renderer *r, int id, unsigned mask)
+{
+	if (r->d.lookup_everywhere || !mask)
+		return mask;
+	mask = lx_lookup_maps(&r->lookup, id, mask);
+	return mask && lx_lookup_any(&r->lookup, id, mask) ? mask : 0;
+}
+
 /* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
  * lookup can read, lx_lookup_caster_maps; none for a flat box in no map) and the
  * triangles each keeps (a flat box's face its front decides left out, res->slab_front),
@@ -984,11 +1009,9 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
-			/* the maps its own main-pass draws read: none where nothing can shadow it
-			 * (object_draws asks the same with its own margin, no wider than this) */
-			unsigned reads = r->lookup.reads[id];
-			if (!r->d.lookup_everywhere && reads && !lx_lookup_any(&r->lookup, id, reads))
-				reads = 0;
+			/* the maps its own main-pass draws read, asked as object_draws asks with its
+			 * own margin, no wider than this one's: it reads none this keeps out */
+			unsigned reads = caster_reads(r, id, r->lookup.reads[id]);
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
 					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
@@ -1428,10 +1451,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	int covers = lx_plane_cover_count(r->covers, id); /* a caster, small on the screen, tests
 							    * them all over; a plane along their shadows' edges */
 	if (id >= r->d.scene->plane_count || !mask) {
-		if (!r->d.lookup_everywhere)
-			mask = lx_lookup_maps(&r->lookup, id, mask);
-		if (mask && !r->d.lookup_everywhere && !lx_lookup_any(&r->lookup, id, mask))
-			mask = 0; /* no shadow can fall on it */
+		mask = caster_reads(r, id, mask);
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
 		/* its faces turned towards the light read the maps only in runs a shadow can reach */
