@@ -783,6 +783,39 @@ static void only_what_the_scene_requires(void **state)
 	lx_meshes_free(&s.meshes);
 }
 
+/* The miner's lamp (the light at the eye, lx_shadows_hidden) leaves every method without a
+ * map and without a front to test (lx_plane_covers_none): the table's slab would make the
+ * main pass test its fronts over the floor and the table top, for no shadow in sight.
+ * 5 cm above the eye the slab's fronts are tested again. */
+static void no_test_for_shadows_hidden(void **state)
+{
+	(void)state;
+	for (int table = 0; table < 2; table++)
+		for (int lift = 0; lift < 2; lift++)
+			for (int i = 0; i < lx_shadow_method_count(); i++) {
+				const char *name = lx_shadow_method_at(i)->name;
+				struct setup s;
+				memset(&s, 0, sizeof s);
+				table ? lx_scene_table(&s.scene) : lx_scene_default(&s.scene);
+				lx_config_apply(lx_config_find("miner"), &s.scene);
+				s.scene.light.position = v3_add(s.scene.camera.eye, v3(0, lift ? 0.05 : 0, 0));
+				assert_true(build(&s, name, 320, 240, 0));
+				assert_true(lx_shadows_hidden(&s.frame) == !lift);
+				int tested = 0;
+				for (int id = 0; id < s.frame.object_count; id++)
+					tested += lx_plane_cover_count(&s.res.covers, id);
+				if (!lift) {
+					for (int m = 0; m < s.res.map_count; m++)
+						assert_false(s.res.maps[m].rendered);
+					if (s.res.covers.count != 0 || tested != 0)
+						fail_msg("%s, %s scene, the light at the eye: %d fronts, %d tested", name,
+							 table ? "table" : "default", s.res.covers.count, tested);
+				} else if (table && strcmp(name, "none") != 0 && tested == 0)
+					fail_msg("%s, table scene, the light 5 cm above the eye: no front tested", name);
+				lx_meshes_free(&s.meshes);
+			}
+}
+
 /* Where caster id's box centre lies in map m's clip square (x, y), false behind its light. */
 static bool box_centre_in_map(const struct setup *s, int m, int id, double *x, double *y)
 {
@@ -1320,6 +1353,7 @@ int main(void)
 		cmocka_unit_test(degenerate_configurations),
 		cmocka_unit_test(no_stale_matrix),
 		cmocka_unit_test(only_what_the_scene_requires),
+		cmocka_unit_test(no_test_for_shadows_hidden),
 		cmocka_unit_test(fallback_serves_only_what_needs_it),
 		cmocka_unit_test(fallback_leaves_out_what_nothing_reaches),
 		cmocka_unit_test(hidden_floor_takes_no_lixels),

@@ -270,7 +270,11 @@ void lx_shadow_method_frame(const struct lx_shadow_method *m, const struct lx_fr
 			    const struct lx_method_options *o, struct lx_shadow_result *out)
 {
 	memset(out, 0, sizeof(*out)); /* nothing survives from an earlier frame */
-	if (atlas->count == 0) /* no map (method none): nothing shadowed, by fronts neither */
+	/* No map (method none), or the light at the eye (every shadow behind its caster, so no
+	 * map is drawn): nothing shadowed, by the fronts' tests neither. Tested there, the
+	 * table's slab had every span of the floor and the table top run them: a main pass
+	 * 1.65 ms longer at 1024x1024 (3.27 against 4.93 ms) for the same image. */
+	if (atlas->count == 0 || lx_shadows_hidden(f))
 		lx_plane_covers_none(&out->covers);
 	else
 		lx_plane_covers(f, &out->covers);
