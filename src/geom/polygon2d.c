@@ -126,13 +126,18 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	return k <= LX_POLY_MAX;
 }
 
-void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out)
+/* The part of polygon v (n <= LX_POLY_MAX vertices) on the side nx x + ny y + c >= 0,
+ * into r (room for n + 1); returns its count. Each vertex's side is worked out once. */
+static int clip_points(const vec2 *v, int n, double nx, double ny, double c, vec2 *r)
 {
-	vec2 r[LX_POLY_MAX + 1]; /* a convex n-gon cut by a line has at most n + 1 vertices */
+	double d[LX_POLY_MAX];
+	for (int i = 0; i < n; i++)
+		d[i] = nx * v[i].x + ny * v[i].y + c;
 	int rn = 0;
-	for (int i = 0; i < a->n; i++) {
-		vec2 p = a->v[i], q = a->v[lx_loop_next(i, a->n)];
-		double dp = nx * p.x + ny * p.y + c, dq = nx * q.x + ny * q.y + c;
+	for (int i = 0; i < n; i++) {
+		int j = lx_loop_next(i, n);
+		vec2 p = v[i], q = v[j];
+		double dp = d[i], dq = d[j];
 		if (dp >= 0)
 			r[rn++] = p;
 		if ((dp >= 0) != (dq >= 0)) {
@@ -145,21 +150,37 @@ void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, doubl
 	/* no repeated vertices: they make zero-length edges */
 	while (rn > 1 && r[rn - 1].x == r[0].x && r[rn - 1].y == r[0].y)
 		rn--;
-	fit(r, rn, out);
+	return rn;
 }
 
+void lx_poly_clip_halfplane(const struct lx_poly *a, double nx, double ny, double c, struct lx_poly *out)
+{
+	vec2 r[LX_POLY_MAX + 1]; /* a convex n-gon cut by a line has at most n + 1 vertices */
+	fit(r, clip_points(a->v, a->n, nx, ny, c, r), out);
+}
+
+/* Clipped in two buffers in turn, each cut fitted as lx_poly_clip_halfplane fits it,
+ * copying only the vertices held (a polygon is a kilobyte, its few vertices far less). */
 void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct lx_poly *out)
 {
-	struct lx_poly r = *a;
-	for (int i = 0; i < b->n && r.n > 0; i++) {
+	vec2 buf[2][LX_POLY_MAX + 1];
+	int n = b->n < 3 ? 0 : a->n, cur = 0;
+	memcpy(buf[0], a->v, (size_t)n * sizeof(vec2));
+	for (int i = 0; i < b->n && n > 0; i++) {
 		vec2 p = b->v[i], q = b->v[lx_loop_next(i, b->n)];
 		/* inside of a counter-clockwise edge p->q: cross(p, q, x) >= 0 */
 		double nx = -(q.y - p.y), ny = q.x - p.x;
-		lx_poly_clip_halfplane(&r, nx, ny, -(nx * p.x + ny * p.y), &r);
+		n = clip_points(buf[cur], n, nx, ny, -(nx * p.x + ny * p.y), buf[1 - cur]);
+		cur = 1 - cur;
+		if (n > LX_POLY_MAX) { /* the 32-sided polygon around it (fit) */
+			struct lx_poly t;
+			dop(buf[cur], n, &t);
+			n = t.n;
+			memcpy(buf[cur], t.v, (size_t)n * sizeof(vec2));
+		}
 	}
-	if (b->n < 3)
-		r.n = 0;
-	*out = r;
+	out->n = n;
+	memcpy(out->v, buf[cur], (size_t)n * sizeof(vec2));
 }
 
 double lx_poly_area(const struct lx_poly *p)
