@@ -1010,8 +1010,11 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 		for (int id = 0; id < r->objects; id++) {
 			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			/* the maps its own main-pass draws read, asked as object_draws asks with its
-			 * own margin, no wider than this one's: it reads none this keeps out */
-			unsigned reads = caster_reads(r, id, r->lookup.reads[id]);
+			 * own margin, no wider than this one's: it reads none this keeps out. Asked
+			 * only where keep_back_faces takes it, for a round caster's fan, in a map
+			 * that draws it (lx_lookup_any clips the receiver's faces by each volume:
+			 * asked of every object, 6-17 us of the table's shadow_draws) */
+			unsigned reads = drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
 					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
