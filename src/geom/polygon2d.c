@@ -172,9 +172,9 @@ void lx_poly_intersect(const struct lx_poly *a, const struct lx_poly *b, struct 
 		double nx = -(q.y - p.y), ny = q.x - p.x;
 		n = clip_points(buf[cur], n, nx, ny, -(nx * p.x + ny * p.y), buf[1 - cur]);
 		cur = 1 - cur;
-		if (n > LX_POLY_MAX) { /* the 32-sided polygon around it (fit) */
+		if (n > LX_POLY_MAX) { /* the 32-sided polygon around it, as fit gives */
 			struct lx_poly t;
-			dop(buf[cur], n, &t);
+			fit(buf[cur], n, &t);
 			n = t.n;
 			memcpy(buf[cur], t.v, (size_t)n * sizeof(vec2));
 		}

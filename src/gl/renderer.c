@@ -1453,7 +1453,10 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	unsigned mask = r->lookup.reads[id]; /* lx_shadow_receiver_maps, prepared by frame_draws */
 	int covers = lx_plane_cover_count(r->covers, id); /* a caster, small on the screen, tests
 							    * them all over; a plane along their shadows' edges */
-	if (id >= r->d.scene->plane_count || !mask) {
+	/* a plane reading no map but testing fronts is cut into spans all the same, so that
+	 * it tests them only along their shadows' edges (drawn whole, a shelf over the floor
+	 * with no map tested them over every pixel: 5.21 against 3.42 ms of main pass) */
+	if (id >= r->d.scene->plane_count || (!mask && !covers)) {
 		mask = caster_reads(r, id, mask);
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
 		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
