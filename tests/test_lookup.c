@@ -2,12 +2,14 @@
  * into pieces that cover it once, every point a caster shadows is inside a lookup span,
  * a plane's pieces cover it once, the maps left to a caster are the ones its points
  * read, the parts of a caster called out of reach of every shadow are, and the shadow
- * pass leaves a caster out of a map only where no lookup reads it. Over the standard
- * configurations of both built-in scenes and some extremes. */
+ * pass leaves a caster out of a map only where no lookup reads it, and where a plane is
+ * drawn without one as surely shadowed (sure_shadow.c), a caster does shadow it. Over the
+ * standard configurations of both built-in scenes and some extremes. */
 #include "configs.h"
 #include "lookup_region.h"
 #include "plane_cover.h"
 #include "plane_optimal.h"
+#include "sure_shadow.h"
 #include "test_util.h"
 #include "method_fixture.h"
 #include <stdio.h>
@@ -849,6 +851,105 @@ static void a_flat_box_pair_is_its_box(void **state)
 	assert_true(shadowed > 1000 && sides > 10);
 }
 
+/* Caster c's mesh corners as lx_sure_shadow_window takes them (x, y, z floats); returns
+ * how many (its triangles' corners, repeats and all). */
+static int mesh_corners(const struct setup *s, int c, float *pts, int room)
+{
+	const struct lx_mesh *me = &s->meshes.mesh[c];
+	int n = me->vertex_count < room ? me->vertex_count : room;
+	for (int k = 0; k < n; k++)
+		memcpy(pts + 3 * k, me->v + (size_t)k * LX_VERTEX_FLOATS, 3 * sizeof(float));
+	return n;
+}
+
+struct sure_tally {
+	long windows, pixels;
+};
+
+/* Every pixel of a plane inside a caster's sure window for a map is in that caster's
+ * exact shadow, and its point's image lies inside the rays the map serves. */
+static void check_sure(struct setup *s, const char *what, void *ctx)
+{
+	struct sure_tally *t = ctx;
+	static float pts[3 * 4096];
+	for (int id = 0; id < s->scene.plane_count; id++) {
+		vec4 pe = lx_plane_equation(&s->scene.planes[id]);
+		for (int m = 0; m < s->res.map_count; m++) {
+			const struct lx_shadow_map *map = &s->res.maps[m];
+			const struct lx_region *g = &s->atlas.regions[map->region];
+			if (!map->rendered || g->w < 1 || g->h < 1)
+				continue;
+			for (int c = s->scene.plane_count; c < s->frame.object_count; c++) {
+				struct lx_poly win;
+				if (s->res.slab_face_out[c] ||
+				    !lx_sure_shadow_window(&s->frame, map, g->w, g->h, c, pts, NULL, mesh_corners(s, c, pts, 4096),
+							   id, LX_LOOKUP_MARGIN_HIGHP, 1e-6, &win))
+					continue;
+				t->windows++;
+				for (int y = 0; y < H; y++)
+					for (int x = 0; x < W; x++) {
+						vec3 q;
+						double dist;
+						if (!lx_poly_contains(&win, (vec2){x + 0.5, y + 0.5}, 0) ||
+						    !lx_window_on_plane(&s->frame.view, pe, x + 0.5, y + 0.5, &q, &dist) ||
+						    !lx_plane_contains(&s->scene.planes[id], q))
+							continue;
+						vec4 l = m4_mul_point(&map->light_clip, q);
+						if (!caster_shadows(&s->frame, c, q) || !(l.w > 0) || l.x / l.w < map->bounds[0] ||
+						    l.y / l.w < map->bounds[1] || l.x / l.w >= map->bounds[2] || l.y / l.w >= map->bounds[3])
+							fail_msg("%s: plane %d pixel (%d, %d), in caster %d's sure shadow in map %d, is not "
+								 "in its shadow or not served by the map", what, id, x, y, c, m);
+						t->pixels++;
+					}
+			}
+		}
+	}
+}
+
+static void sure_shadows_lie_in_the_casters_shadows(void **state)
+{
+	(void)state;
+	struct sure_tally t = {0};
+	each_standard_setup(check_sure, &t);
+	print_message("%ld sure shadows of a caster on a plane in a map; %ld plane pixels inside them, each in the "
+		      "caster's exact shadow and served by the map\n", t.windows, t.pixels);
+	assert_true(t.windows > 100 && t.pixels > 20000);
+}
+
+/* No sure shadow where it could be wrong: a table leg standing on the floor (the floor
+ * meets its bottom, as deep in the map as the leg's nearest faces over it), a caster moved
+ * below the floor (the floor then lies between it and the light), nor for a depth gap
+ * wider than the whole depth range; and a caster well above the floor has one. */
+static void no_sure_shadow_where_a_caster_touches_or_passes_the_plane(void **state)
+{
+	(void)state;
+	static float pts[3 * 4096];
+	struct setup s;
+	assert_true(lx_scene_builtin("table", &s.scene));
+	assert_true(build(&s, "uniform", W, H, 0.4));
+	const struct lx_shadow_map *map = &s.res.maps[0];
+	const struct lx_region *g = &s.atlas.regions[map->region];
+	const int floor = 1, sphere = 7;
+	assert_string_equal(s.scene.planes[floor].name, "floor");
+	assert_int_equal(s.scene.casters[sphere - s.scene.plane_count].shape, LX_SPHERE);
+	struct lx_poly win;
+	for (int leg = 3; leg <= 6; leg++)
+		assert_false(lx_sure_shadow_window(&s.frame, map, g->w, g->h, leg, pts, NULL, mesh_corners(&s, leg, pts, 4096),
+						  floor, LX_LOOKUP_MARGIN_HIGHP, 1e-6, &win));
+	int n = mesh_corners(&s, sphere, pts, 4096);
+	assert_true(lx_sure_shadow_window(&s.frame, map, g->w, g->h, sphere, pts, NULL, n, floor, LX_LOOKUP_MARGIN_HIGHP,
+					  1e-6, &win));
+	assert_true(win.n >= 3);
+	assert_false(lx_sure_shadow_window(&s.frame, map, g->w, g->h, sphere, pts, NULL, n, floor, LX_LOOKUP_MARGIN_HIGHP,
+					   2.0, &win));
+	assert_int_equal(win.n, 0);
+	double down = s.frame.offset[sphere].y + 5; /* 5 m under the floor */
+	s.frame.offset[sphere].y -= down, s.frame.bmin[sphere].y -= down, s.frame.bmax[sphere].y -= down;
+	assert_false(lx_sure_shadow_window(&s.frame, map, g->w, g->h, sphere, pts, NULL, n, floor, LX_LOOKUP_MARGIN_HIGHP,
+					   1e-6, &win));
+	lx_meshes_free(&s.meshes);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -861,6 +962,8 @@ int main(void)
 		cmocka_unit_test(lit_plane_fronts_shadow_what_lies_beyond),
 		cmocka_unit_test(two_fronts_over_an_object_are_both_tested),
 		cmocka_unit_test(a_flat_box_pair_is_its_box),
+		cmocka_unit_test(sure_shadows_lie_in_the_casters_shadows),
+		cmocka_unit_test(no_sure_shadow_where_a_caster_touches_or_passes_the_plane),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,6 +7,7 @@
 #include "plane_cover.h"
 #include "shader_text.h"
 #include "silhouette.h"
+#include "sure_shadow.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -147,9 +148,18 @@ struct lx_renderer {
 	struct {
 		int first, count;
 		float light_clip[16];
+		int outline_first, outline_count; /* a round caster's: its fan's corners (outline_index) */
 	} kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
 	unsigned short *kept_index;
 	int kept_count, kept_room;
+	/* the corners of the round casters' fans this frame, each once: their images' hull lies
+	 * inside the caster's image in that map, which holds it (sure_spans) */
+	unsigned short *outline_index;
+	int outline_count;
+	/* the maps of the last shadow pass that drew each caster, by its frame's light: what
+	 * the atlas holds */
+	unsigned drawn_in[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	float *box_pos[LX_MAX_PLANES + LX_MAX_CASTERS]; /* a box caster's 8 corners, else NULL */
 	GLuint kept_ibo;
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint beam_tex[LX_MAX_LIGHTS]; /* a projective light's image, 0 for other lights */
@@ -439,6 +449,11 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 			else
 				r->fan_apex[id] = -1;
 		}
+		if (id >= r->d.scene->plane_count && !round_caster(r, id) && np == 8) {
+			r->box_pos[id] = malloc(sizeof(float) * 24);
+			if (r->box_pos[id])
+				memcpy(r->box_pos[id], pos, sizeof(float) * 24);
+		}
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
@@ -524,6 +539,7 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	/* at most every triangle in every map of every light */
 	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
 	r->kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
+	r->outline_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
 	int most = 1; /* the most vertices (so positions, and indices of kept faces) of one mesh */
 	for (int i = 0; i < r->objects; i++)
 		most = meshes->mesh[i].vertex_count > most ? meshes->mesh[i].vertex_count : most;
@@ -533,7 +549,7 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	r->fan_loop = malloc((size_t)most * sizeof(unsigned short));
 	for (int i = 0; r->fan_next && i <= most; i++)
 		r->fan_next[i] = -1;
-	if (!r->facing_index || !r->kept_index || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop) {
+	if (!r->facing_index || !r->kept_index || !r->outline_index || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -641,10 +657,12 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->kept_ibo)
 		lx_gl.DeleteBuffers(1, &r->kept_ibo);
 	for (int i = 0; i < LX_MAX_PLANES + LX_MAX_CASTERS; i++)
-		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]);
+		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]),
+			free(r->box_pos[i]);
 	free(r->piece_v);
 	free(r->facing_index);
 	free(r->kept_index);
+	free(r->outline_index);
 	free(r->fan_kept), free(r->fan_next), free(r->fan_index), free(r->fan_loop);
 	free(r);
 }
@@ -963,6 +981,10 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 	int k = fan ? lx_silhouette_fan(r->welded[id], r->adj[id], n, r->fan_kept, (unsigned short)r->fan_apex[id], r->fan_next,
 					r->fan_index, room)
 		    : -1;
+	r->kept[light][m][id].outline_first = r->outline_count, r->kept[light][m][id].outline_count = 0;
+	for (int i = 0; i + 2 < k && r->outline_count < r->kept_room; i += 3) /* (apex, a, b): each corner once, as a */
+		r->outline_index[r->outline_count++] = r->fan_index[i + 1];
+	r->kept[light][m][id].outline_count = r->outline_count - r->kept[light][m][id].outline_first;
 	if (k > 0 && !fan_faces_away(r, id, centre, k))
 		k = -1;
 	if (k > 0) /* its polygon where convex: the same lixels, shorter inner edges */
@@ -1002,9 +1024,10 @@ static unsigned caster_reads(const struct lx_renderer *r, int id, unsigned mask)
 static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
 			 int n, unsigned drawn[][LX_MAX_PLANES + LX_MAX_CASTERS])
 {
-	r->kept_count = 0;
+	r->kept_count = r->outline_count = 0;
 	for (int i = 0; i < n; i++) {
-		const struct lx_atlas *a = r->d.lights[f[i]->light_index].atlas;
+		int light = f[i]->light_index; /* kept and drawn_in by light, which the main pass knows */
+		const struct lx_atlas *a = r->d.lights[light].atlas;
 		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
 		for (int id = 0; id < r->objects; id++) {
@@ -1016,9 +1039,12 @@ static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f,
 			 * asked of every object, 6-17 us of the table's shadow_draws) */
 			unsigned reads = drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
-				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
-					keep_back_faces(r, f[i], &res[i]->maps[m], i, m, id,
+				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
+					keep_back_faces(r, f[i], &res[i]->maps[m], light, m, id,
 							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL, reads & 1u << m);
+					if (r->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
+						r->drawn_in[light][id] |= 1u << m;
+				}
 		}
 	}
 	/* left bound for the draws (nothing else of the pass binds an index buffer) */
@@ -1056,6 +1082,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 			       const struct lx_shadow_result *const *res, int n)
 {
 	bool any = false;
+	memset(r->drawn_in, 0, sizeof r->drawn_in); /* what the atlas holds: nothing of this frame yet */
 	for (int i = 0; i < n; i++) {
 		if (f[i]->light_index < 0 || f[i]->light_index >= r->d.light_count)
 			return; /* a light the renderer was not made for: cannot happen through lx_method_run */
@@ -1081,7 +1108,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.DepthFunc(GL_LESS);
 	for (int i = 0; i < n; i++)
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], i, m, drawn[i]);
+			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], f[i]->light_index, m, drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }
@@ -1363,6 +1390,65 @@ static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f,
 	return span;
 }
 
+/* The least depth (normalized, -1 to 1) by which a plane must lie beyond a caster for
+ * every lookup of it to shadow it: the bias and a few codes of rounding (the decode's,
+ * the floors', fp16's on the mediump path), twice over, in the slot's codes. */
+static double sure_depth_gap(const struct lx_renderer *r)
+{
+	double lo, hi;
+	slot_range(r, &lo, &hi);
+	double codes = (mediump(r) ? 2047.0 : 16777215.0) * (hi - lo); /* hi > lo */
+	return 4.0 * (r->bias_uniform * (hi - lo) + 4.0) / codes;
+}
+
+/* Plane id's spans that read one map alone cut by the shadows that map surely throws on
+ * it (lx_sure_shadow_window, of each caster the last shadow pass drew in it): inside
+ * one, a pixel and a row in, drawn in the light's shadow without a lookup (COVERED_SPAN,
+ * as under a front), elsewhere as before. Short of room, a cut is left undone. Returns
+ * the spans. */
+static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
+			       int id, struct span *span, int *ns)
+{
+	const struct lx_atlas *a = r->d.lights[f->light_index].atlas;
+	int plane_count = r->d.scene->plane_count, light = f->light_index;
+	double inset = lookup_margin(r, r->filter), gap = sure_depth_gap(r);
+	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
+		unsigned bit = 1u << m;
+		const struct lx_shadow_map *map = &res->maps[m];
+		for (int c = plane_count; c < r->objects; c++) {
+			bool reads = false;
+			for (int i = 0; i < *ns && !reads; i++)
+				reads = (span[i].mask & (MAP_BITS | COVERED_SPAN)) == bit;
+			if (!reads)
+				break;
+			const float *pos = round_caster(r, c) ? r->fan_pos[c] : r->box_pos[c];
+			int np = round_caster(r, c) ? r->kept[light][m][c].outline_count : 8;
+			const unsigned short *index =
+				round_caster(r, c) ? r->outline_index + r->kept[light][m][c].outline_first : NULL;
+			struct lx_poly win;
+			if (!(r->drawn_in[light][c] & bit) || !pos || np < 3 ||
+			    !lx_sure_shadow_window(f, map, a->regions[map->region].w, a->regions[map->region].h, c, pos, index,
+						   np, id, inset, gap, &win))
+				continue;
+			struct span *to = span == r->seen ? r->spans : r->seen;
+			int k = 0;
+			for (int i = 0; i < *ns && k >= 0; i++) {
+				if ((span[i].mask & (MAP_BITS | COVERED_SPAN)) != bit) {
+					k = k < PLANE_SPANS ? k : -1;
+					if (k >= 0)
+						to[k++] = span[i];
+					continue;
+				}
+				int got = cut_spans(span + i, 1, &win, 0, 0, COVERED_SPAN, to + k, PLANE_SPANS - k);
+				k = got < 0 ? -1 : k + got;
+			}
+			if (k >= 0)
+				span = to, *ns = k;
+		}
+	}
+	return span;
+}
+
 /* Whether object id's faces turned away from the eye can be left out of the main pass: a
  * caster's (a closed mesh wound counter-clockwise outwards) when its whole box lies
  * beyond the near plane, where each of them is hidden behind one of its own faces turned
@@ -1505,6 +1591,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			span[i].mask = mask;
 	if (!away && covers > 0)
 		span = cover_spans(r, f, id, span, &ns);
+	if (!away && !r->d.lookup_everywhere)
+		span = sure_spans(r, f, res, id, span, &ns);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
 		unsigned m = span[i].mask;
@@ -2074,6 +2162,7 @@ void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 {
+	memset(r->drawn_in, 0, sizeof r->drawn_in); /* no caster known to be drawn in what is written */
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	/* the same size and format again: the texture (and the framebuffer holding it) stays */
