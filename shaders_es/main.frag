@@ -31,7 +31,8 @@ precision mediump float;
 #endif
 // Main pass: shading and the shadow decision. With LX_DECISION defined it writes the
 // decision instead of a colour: R = 1 where shadowed, G = (object id + 1) / 255, B = 1
-// where the pixel ran a lookup (the variant reads a map). With LX_FILTER (pcf.glsl), R is
+// where the pixel ran a lookup (the variant reads a map), one half where a map decided it
+// without one (u_served: a caster's sure shadow), else 0. With LX_FILTER (pcf.glsl), R is
 // the filtered shadow thresholded at one half and A the visibility, 1 - the filtered shadow.
 // The loader compiles one variant per count of maps a draw reads (LX_READS), whichever
 // they are: the draw puts their matrices, regions and clamps in the first slots, in the
@@ -39,6 +40,9 @@ precision mediump float;
 //!include depth_rgba.glsl
 uniform vec3 u_color;
 uniform float u_object_id;
+#ifdef LX_DECISION
+uniform float u_served;
+#endif
 // Lights add up pass by pass [Segal]: the first light's pass has the ambient term, each
 // later one's (LX_AMBIENT 0.0) adds only its own light, blended ONE, ONE. A light that is
 // not white (LX_LIGHT_COLOR) and a projective one scale theirs by u_light_color.
@@ -320,9 +324,9 @@ void main()
 	/* filtered: R the decision, shadowed where the filtered shadow exceeds one half
 	 * (where a NEAREST edge lay); A the visibility the shading uses, 1 - shadowed */
 	gl_FragColor = vec4(float(shadowed > 0.5), (u_object_id + 1.25) / 255.0,
-			    LX_READS > 0 ? 1.0 : 0.0, 1.0 - shadowed);
+			    LX_READS > 0 ? 1.0 : u_served, 1.0 - shadowed);
 #else
-	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_READS > 0 ? 1.0 : 0.0,
+	gl_FragColor = vec4(shadowed, (u_object_id + 1.25) / 255.0, LX_READS > 0 ? 1.0 : u_served,
 			    1.0);
 #endif
 #else

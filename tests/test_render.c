@@ -930,7 +930,7 @@ static void default_view_planes_get_a_lixel_per_pixel(void **state)
 	long n = 1024L * 1024, wall_looked = 0, wall_ref_shadowed = 0;
 	for (long i = 0; i < n; i++)
 		if (r.ref_object[i] == 1)
-			wall_looked += r.looked[i], wall_ref_shadowed += r.ref_shadow[i];
+			wall_looked += r.served[i], wall_ref_shadowed += r.ref_shadow[i];
 	const struct lx_plane_sampling *floor = &lr->planes[0].s, *wall = &lr->planes[1].s;
 	print_message("default 1024x1024: floor %ld of %ld pixels read a map, lpp %.4g-%.4g; wall %ld pixels, "
 		      "%ld looked up, %ld in the reference's shadow\n",

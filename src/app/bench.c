@@ -207,7 +207,7 @@ static void config_scene(const struct bench *b, const char *config, struct lx_sc
 
 /* The scratch images of a configuration's accuracy and strips. */
 struct pixels {
-	uint8_t *rgba, *sh, *ref_sh, *vis, *looked;
+	uint8_t *rgba, *sh, *ref_sh, *vis, *served;
 	int16_t *obj, *ref_obj;
 	float *ref_vis; /* the soft reference */
 	/* ref_sh and ref_vis: every light's, light after light (light k's from k * width * height) */
@@ -359,10 +359,10 @@ static void measure_method(struct bench *b, int ci, int m, int sidx, struct lx_m
 		size_t o = (size_t)l * n;
 		looked += lx_method_run_decision(run, l, px->rgba, px->obj, px->sh);
 		lx_decision_visibility(px->rgba, n, run->filter, px->vis);
-		lx_decision_looked_up(px->rgba, n, px->looked);
+		lx_decision_served(px->rgba, n, px->served);
 		struct lx_mismatch mm;
 		struct lx_plane_report planes[LX_MAX_PLANES];
-		lx_measure(&lm->frame, &lm->atlas, &lm->result, px->ref_obj, px->ref_sh + o, px->obj, px->sh, px->looked, pts, &mm,
+		lx_measure(&lm->frame, &lm->atlas, &lm->result, px->ref_obj, px->ref_sh + o, px->obj, px->sh, px->served, pts, &mm,
 			   planes);
 		soft += mm.compared * lx_soft_error(px->ref_obj, px->ref_sh + o, px->ref_vis + o, px->obj, px->vis, n);
 		lx_mismatch_add(&all, &mm);
@@ -831,8 +831,8 @@ static bool bench_alloc(struct bench *b, struct pixels *px)
 	long n = (long)b->width * b->height;
 	px->rgba = malloc((size_t)n * 4), px->sh = malloc((size_t)n), px->ref_sh = malloc((size_t)n * LX_MAX_LIGHTS);
 	px->obj = malloc((size_t)n * sizeof(int16_t)), px->ref_obj = malloc((size_t)n * sizeof(int16_t));
-	px->vis = malloc((size_t)n), px->looked = malloc((size_t)n), px->ref_vis = malloc((size_t)n * LX_MAX_LIGHTS * sizeof(float));
-	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj && px->vis && px->looked && px->ref_vis;
+	px->vis = malloc((size_t)n), px->served = malloc((size_t)n), px->ref_vis = malloc((size_t)n * LX_MAX_LIGHTS * sizeof(float));
+	bool ok = px->rgba && px->sh && px->ref_sh && px->obj && px->ref_obj && px->vis && px->served && px->ref_vis;
 	for (int m = 0; m < b->nm; m++)
 		for (int q = 0; q < T_KINDS; q++)
 			ok &= (b->all[m][q] = malloc(sizeof(double) * (size_t)b->frames * b->nc)) != NULL;
@@ -901,7 +901,7 @@ int lx_bench_main(int argc, char **argv)
 	for (int m = 0; m < b.nm; m++)
 		for (int q = 0; q < T_KINDS; q++)
 			free(b.all[m][q]);
-	free(px.rgba), free(px.sh), free(px.ref_sh), free(px.obj), free(px.ref_obj), free(px.vis), free(px.looked), free(px.ref_vis);
+	free(px.rgba), free(px.sh), free(px.ref_sh), free(px.obj), free(px.ref_obj), free(px.vis), free(px.served), free(px.ref_vis);
 	lx_platform_destroy(plat);
 	lx_meshes_free(&meshes);
 	return status;

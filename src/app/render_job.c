@@ -18,11 +18,11 @@ void lx_render_report_free(struct lx_render_report *rep)
 	free(rep->ref_shadow);
 	free(rep->shadow);
 	free(rep->visibility);
-	free(rep->looked);
+	free(rep->served);
 	free(rep->ref_visibility);
 	free(rep->ref_rgba);
 	rep->ref_object = rep->object = NULL;
-	rep->ref_shadow = rep->shadow = rep->visibility = rep->looked = rep->ref_rgba = NULL;
+	rep->ref_shadow = rep->shadow = rep->visibility = rep->served = rep->ref_rgba = NULL;
 	rep->ref_visibility = NULL;
 }
 
@@ -143,8 +143,8 @@ static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, st
 	rep->object = malloc((size_t)n * sizeof(int16_t));
 	rep->shadow = malloc((size_t)n * lights);
 	rep->visibility = malloc((size_t)n * lights);
-	rep->looked = malloc((size_t)n * lights);
-	if (!rep->object || !rep->shadow || !rep->visibility || !rep->looked) {
+	rep->served = malloc((size_t)n * lights);
+	if (!rep->object || !rep->shadow || !rep->visibility || !rep->served) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -154,7 +154,7 @@ static bool decide(const struct lx_render_job *job, struct lx_method_run *mr, st
 		rep->light[l].lookup_pct = 100.0 * lx_method_run_decision(mr, l, rgba, rep->object, shadow) / n;
 		rep->lookup_pct += rep->light[l].lookup_pct / lights;
 		lx_decision_visibility(rgba, n, mr->filter, vis);
-		lx_decision_looked_up(rgba, n, rep->looked + (size_t)l * n);
+		lx_decision_served(rgba, n, rep->served + (size_t)l * n);
 	}
 	if (!job->decision_png)
 		return true;
@@ -247,7 +247,7 @@ static bool measure(const struct lx_render_job *job, struct lx_render_report *re
 	for (int l = 0; l < lights; l++) {
 		struct lx_light_report *lr = &rep->light[l];
 		lx_measure(&mr->lights[l].frame, &lr->atlas, &lr->result, rep->ref_object, rep->ref_shadow + (size_t)l * n,
-			   rep->object, rep->shadow + (size_t)l * n, rep->looked + (size_t)l * n, &pts, &lr->mismatch,
+			   rep->object, rep->shadow + (size_t)l * n, rep->served + (size_t)l * n, &pts, &lr->mismatch,
 			   lr->planes);
 		lx_sampling_warnings(lr->planes, rep->plane_count, lx_atlas_lixels(&lr->atlas), &lr->result);
 		lx_mismatch_add(&rep->mismatch, &lr->mismatch);

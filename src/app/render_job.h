@@ -77,7 +77,7 @@ struct lx_render_report {
 	uint8_t *ref_shadow, *shadow;
 	uint8_t *ref_rgba;     /* with measure: the reference's shading, RGBA */
 	uint8_t *visibility;   /* the shading's visibility, 0 to 255 (lx_decision_visibility) */
-	uint8_t *looked;       /* 1 where the pixel ran a shadow lookup (lx_decision_looked_up), light after light */
+	uint8_t *served;       /* 1 where a map decided the pixel (lx_decision_served), light after light */
 	float *ref_visibility; /* with soft: the soft reference's, 0 to 1 */
 };
 

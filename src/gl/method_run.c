@@ -95,10 +95,10 @@ void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter fil
 		visibility[i] = filter == LX_FILTER_NONE ? (rgba[i * 4] > 127 ? 0 : 255) : rgba[i * 4 + 3];
 }
 
-void lx_decision_looked_up(const uint8_t *rgba, long pixels, uint8_t *looked)
+void lx_decision_served(const uint8_t *rgba, long pixels, uint8_t *served)
 {
 	for (long i = 0; i < pixels; i++)
-		looked[i] = rgba[i * 4 + 2] > 127;
+		served[i] = rgba[i * 4 + 2] > 63; /* 255: a lookup ran; 128: a sure shadow */
 }
 
 void lx_method_run_free(struct lx_method_run *mr)
@@ -214,7 +214,7 @@ long lx_method_run_decision(struct lx_method_run *mr, int light, uint8_t *rgba, 
 	for (long i = 0; i < n; i++) {
 		shadow[i] = rgba[i * 4] > 127;
 		object[i] = (int16_t)(rgba[i * 4 + 1] - 1); /* (id + 1.25) / 255 stores id + 1 */
-		lookups += rgba[i * 4 + 2] > 127;
+		lookups += rgba[i * 4 + 2] > 191; /* 255: a lookup ran; 128: a map decided without one */
 	}
 	return lookups;
 }

@@ -89,10 +89,12 @@ bool lx_method_run_reference(const struct lx_method_run *mr, int16_t *object, ui
  * decision image rgba that lx_method_run_decision left with filter `filter`: the
  * filtered variants write it in alpha, NEAREST's is 0 or 255 by the decision. */
 void lx_decision_visibility(const uint8_t *rgba, long pixels, enum lx_filter filter, uint8_t *visibility);
-/* 1 where the pixel ran a shadow lookup, from the same decision image. */
-void lx_decision_looked_up(const uint8_t *rgba, long pixels, uint8_t *looked);
+/* 1 where a map decided the pixel, from the same decision image: it ran a lookup, or lies
+ * in a caster's sure shadow, drawn without one (sure_shadow.h); lx_method_run_decision
+ * counts the lookups alone. */
+void lx_decision_served(const uint8_t *rgba, long pixels, uint8_t *served);
 /* The mismatch against the reference, and each plane's sampling figures over the pixels
- * that read a map (looked, lx_decision_looked_up; NULL: every pixel a map's bounds hold);
+ * that a map decided (looked, lx_decision_served; NULL: every pixel a map's bounds hold);
  * pts, when not NULL, the frame's plane points (lx_plane_points_make) shared by the
  * methods measured. */
 void lx_measure(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -20,6 +20,7 @@
 struct main_program {
 	GLuint prog;
 	GLint view_proj, offset, shadow_tex, region, bias, light, color, object_id, atlas;
+	GLint served; /* decision variants: B where a map decides without a lookup (main.frag) */
 	GLint clamp, texel; /* filtered variants (pcf.glsl): the maps' regions, the atlas's texel */
 	GLint face_tex;     /* LX_FACE_PLANE variants: the maps' inverse transposes (main.vert) */
 	GLint origin;       /* the mediump path: each map's centre, its coordinates' origin (main.frag) */
@@ -44,13 +45,15 @@ static bool shading_bit(int shading, int bit) { return shading != SHADING_DECISI
 
 /* A window rectangle of a plane and the maps it reads there. */
 struct span {
-	unsigned mask; /* the maps read, and COVER_SPAN */
+	unsigned mask; /* the maps read, and COVER_SPAN, COVERED_SPAN, SURE_SPAN */
 	struct lx_rect box;
 };
 /* A plane's span that tests the cover over it, and one wholly in the cover's shadow,
  * drawn in it without a lookup (object_draws, cover_spans): bits no map has. */
 #define COVER_SPAN (1u << LX_MAX_MAPS)
 #define COVERED_SPAN (1u << (LX_MAX_MAPS + 1))
+/* with COVERED_SPAN: drawn in a caster's sure shadow, which its map decides (sure_spans) */
+#define SURE_SPAN (1u << (LX_MAX_MAPS + 2))
 #define MAP_BITS (COVER_SPAN - 1)
 
 /* One draw of the main pass: an object with the maps it reads, and what of it: its whole
@@ -66,6 +69,7 @@ struct draw {
 	int first, count;
 	int covers; /* tests the first `covers` planes of covers.of[object] (their matrices
 		     * cover[that plane]) */
+	bool sure;  /* in a caster's sure shadow: its map decides it, with no lookup */
 };
 
 /* What a pass of the main pass draws: the first light's shading (the target cleared, the
@@ -260,6 +264,7 @@ static bool main_program(struct main_program *p, const struct lx_renderer *r, in
 	p->light = lx_gl.GetUniformLocation(p->prog, "u_light");
 	p->color = lx_gl.GetUniformLocation(p->prog, "u_color");
 	p->object_id = lx_gl.GetUniformLocation(p->prog, "u_object_id");
+	p->served = lx_gl.GetUniformLocation(p->prog, "u_served");
 	p->atlas = lx_gl.GetUniformLocation(p->prog, "u_atlas");
 	p->beam = lx_gl.GetUniformLocation(p->prog, "u_beam");
 	p->beam_tex = lx_gl.GetUniformLocation(p->prog, "u_beam_tex");
@@ -1439,7 +1444,7 @@ static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, 
 						to[k++] = span[i];
 					continue;
 				}
-				int got = cut_spans(span + i, 1, &win, 0, 0, COVERED_SPAN, to + k, PLANE_SPANS - k);
+				int got = cut_spans(span + i, 1, &win, 0, 0, COVERED_SPAN | SURE_SPAN, to + k, PLANE_SPANS - k);
 				k = got < 0 ? -1 : k + got;
 			}
 			if (k >= 0)
@@ -1552,22 +1557,22 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		    facing = sides || cull ? sort_by_facing(r, f, id, mask, sides && mask && !r->d.lookup_everywhere, cull, &lit)
 					   : -1;
 		if (facing < 0) {
-			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, covers};
+			out[n++] = (struct draw){id, mask, sides ? LX_FACES_TESTED : toward, WHOLE, 0, 0, covers, false};
 			return n;
 		}
 		if (!sides) { /* one draw of the faces the eye may see */
-			out[n++] = (struct draw){id, mask, toward, INDEXED, first, r->facing_count - first, covers};
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, r->facing_count - first, covers, false};
 			return n;
 		}
 		if (facing > 0)
-			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing, covers};
+			out[n++] = (struct draw){id, mask, toward, INDEXED, first, facing, covers, false};
 		if (lit > 0)
-			out[n++] = (struct draw){id, 0, toward, INDEXED, first + facing, lit, covers};
+			out[n++] = (struct draw){id, 0, toward, INDEXED, first + facing, lit, covers, false};
 		int away = first + facing + lit, away_count = r->facing_count - away;
 		if (away_count > 0)
 			out[n++] = r->d.lookup_everywhere
-					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, away, away_count, covers}
-					   : (struct draw){id, 0, LX_FACES_AWAY, INDEXED, away, away_count, 0};
+					   ? (struct draw){id, mask, LX_FACES_TESTED, INDEXED, away, away_count, covers, false}
+					   : (struct draw){id, 0, LX_FACES_AWAY, INDEXED, away, away_count, 0, false};
 		return n;
 	}
 	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
@@ -1607,7 +1612,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 				add_piece(r, f, id, span[j].box);
 		if (r->piece_vertices > first)
 			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
-						 r->piece_vertices - first, m & COVER_SPAN ? covers : 0};
+						 r->piece_vertices - first, m & COVER_SPAN ? covers : 0, (m & SURE_SPAN) != 0};
 	}
 	return n;
 }
@@ -1799,6 +1804,8 @@ static void issue_draw(struct lx_renderer *r, const struct light_draws *ld, cons
 	lx_gl.Uniform3f(p->offset, (float)f->offset[id].x, (float)f->offset[id].y, (float)f->offset[id].z);
 	lx_gl.Uniform3f(p->color, (float)c.x, (float)c.y, (float)c.z);
 	lx_gl.Uniform1f(p->object_id, (float)id);
+	if (p->served >= 0)
+		lx_gl.Uniform1f(p->served, d->sure ? 0.5f : 0.0f);
 	for (int c = 0; c < d->covers; c++)
 		if (p->cover[c] >= 0) /* -1: a variant short of varyings tests fewer (lx_main_covers) */
 			lx_gl.UniformMatrix4fv(p->cover[c], 1, GL_FALSE, ld->cover[ld->covers->of[id][c]]);

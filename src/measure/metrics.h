@@ -57,8 +57,9 @@ void lx_plane_points_free(struct lx_plane_points *pts);
 /* The Jacobian figures of the screen-to-lixel homographies on plane `plane`, over the
  * pixels whose visible object (ref_object, or every pixel that sees the plane's
  * parallelogram when ref_object is NULL) is that plane and, when looked is not NULL,
- * that ran a shadow lookup (looked[i] nonzero, lx_decision_looked_up): a pixel where no
- * shadow can fall reads no map, and no lixel serves it. If a map is optimal for the
+ * that a map decided (looked[i] nonzero, lx_decision_served: a lookup ran, or a caster's
+ * sure shadow was drawn without one): a pixel where no shadow can fall reads no map, and
+ * no lixel serves it. If a map is optimal for the
  * plane, the figures cover the pixels that map serves; otherwise each pixel counts
  * with the map that serves it (lx_shadow_select_map). pts, when not NULL, holds those
  * pixels' points (lx_plane_points_make of the same frame and ref_object), worked out once
