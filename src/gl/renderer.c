@@ -1426,12 +1426,14 @@ static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, 
 				reads = (span[i].mask & (MAP_BITS | COVERED_SPAN)) == bit;
 			if (!reads)
 				break;
-			const float *pos = round_caster(r, c) ? r->fan_pos[c] : r->box_pos[c];
-			int np = round_caster(r, c) ? r->kept[light][m][c].outline_count : 8;
-			const unsigned short *index =
-				round_caster(r, c) ? r->outline_index + r->kept[light][m][c].outline_first : NULL;
+			if (!(r->drawn_in[light][c] & bit)) /* else its kept triangles and outline are stale */
+				continue;
+			bool round = round_caster(r, c);
+			const float *pos = round ? r->fan_pos[c] : r->box_pos[c];
+			int np = round ? r->kept[light][m][c].outline_count : 8;
+			const unsigned short *index = round ? r->outline_index + r->kept[light][m][c].outline_first : NULL;
 			struct lx_poly win;
-			if (!(r->drawn_in[light][c] & bit) || !pos || np < 3 ||
+			if (!pos || np < 3 ||
 			    !lx_sure_shadow_window(f, map, a->regions[map->region].w, a->regions[map->region].h, c, pos, index,
 						   np, id, inset, gap, &win))
 				continue;
