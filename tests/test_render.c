@@ -659,6 +659,33 @@ static void a_slab_alone_needs_no_map(void **state)
 	}
 }
 
+/* Inside the casters' shadows on the default view's floor plane-optimal draws without a
+ * lookup (sure_shadow.h): of the pixels a map decides (lx_decision_served) a twentieth or
+ * more ran none (at 640x480 the shadows span few of the 32-row bands the cut works in),
+ * and the decisions stay exact against the reference. That they are the same as with
+ * every pixel looked up is lookup_region_changes_no_decision's to check. */
+static void sure_shadows_skip_lookups(void **state)
+{
+	(void)state;
+	static const char *const methods[] = {"uniform", "plane"};
+	struct lx_scene s;
+	lx_scene_default(&s);
+	for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++) {
+		struct lx_render_report r;
+		run_sized(methods[k], &s, 640, 480, &r);
+		long n = (long)r.width * r.height, served = 0, looked = lround(r.lookup_pct / 100 * n);
+		for (long i = 0; i < n; i++)
+			served += r.served[i];
+		print_message("default view at 640x480, %s: %ld pixels decided by a map, %ld of them by a lookup; "
+			      "mismatch %.4f%%\n", methods[k], served, looked, r.mismatch.mismatch_pct);
+		assert_true(served >= looked && looked > 0);
+		if (!strcmp(methods[k], "plane")) /* uniform's coarser lixels leave it none here */
+			assert_true(served - looked > served / 20);
+		assert_true(r.mismatch.mismatch_pct <= 0.05);
+		lx_render_report_free(&r);
+	}
+}
+
 /* Two shelves stacked over the floor (tests/data/two-shelves.scene): the floor tests both
  * fronts, so the upper shelf's shadow where it falls outside the lower one's is kept (one
  * front per object lit a row of 275 pixels, 0.159% at 640x480, for every method). */
@@ -2017,6 +2044,7 @@ int main(void)
 		cmocka_unit_test(a_shelf_shadows_the_floor_without_a_caster),
 		cmocka_unit_test(a_flat_box_pair_decides_its_shadow),
 		cmocka_unit_test(a_slab_alone_needs_no_map),
+		cmocka_unit_test(sure_shadows_skip_lookups),
 		cmocka_unit_test(two_shelves_shadow_the_floor_both),
 		cmocka_unit_test_teardown(overlay_draws_text, close_shared_platform),
 	};
