@@ -1408,9 +1408,10 @@ static double sure_depth_gap(const struct lx_renderer *r)
 
 /* Plane id's spans that read one map alone cut by the shadows that map surely throws on
  * it (lx_sure_shadow_window, of each caster the last shadow pass drew in it): inside
- * one, a pixel and a row in, drawn in the light's shadow without a lookup (COVERED_SPAN,
- * as under a front), elsewhere as before. Short of room, a cut is left undone. Returns
- * the spans. */
+ * one, a pixel in along the rows (the window already holds the lookup's margin), drawn in
+ * the light's shadow without a lookup (COVERED_SPAN, as under a front; SURE_SPAN marks
+ * the decision image's pixels a map decided), elsewhere as before. Short of room, a cut
+ * is left undone. Returns the spans. */
 static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
 			       int id, struct span *span, int *ns)
 {

@@ -8,7 +8,8 @@
  * reads a lixel the caster was drawn in, at a depth no farther than the caster's
  * farthest; where the plane lies farther still, by more than the lookup's bias, the
  * compare shadows it. There the plane is drawn in the light's shadow without a lookup,
- * the same decision for less work (on the default view, most of the pixels looked up). */
+ * the same decision for less work (on the default view, a quarter of the pixels
+ * plane-optimal looked up at 1024x1024). */
 #ifndef LX_SURE_SHADOW_H
 #define LX_SURE_SHADOW_H
 #include "shadow_method.h"
