@@ -12,6 +12,7 @@
 #include "sure_shadow.h"
 #include "test_util.h"
 #include "method_fixture.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -863,7 +864,7 @@ static int mesh_corners(const struct setup *s, int c, float *pts, int room)
 }
 
 struct sure_tally {
-	long windows, pixels;
+	long windows, pixels, boxes;
 };
 
 /* Every pixel of a plane inside a caster's sure window for a map is in that caster's
@@ -886,6 +887,16 @@ static void check_sure(struct setup *s, const char *what, void *ctx)
 							   id, LX_LOOKUP_MARGIN_HIGHP, 1e-6, &win))
 					continue;
 				t->windows++;
+				if (s->scene.casters[c - s->scene.plane_count].shape == LX_BOX) {
+					/* the renderer's way for a box: its bounds' corners, no points */
+					struct lx_poly box;
+					assert_true(lx_sure_shadow_window(&s->frame, map, g->w, g->h, c, NULL, NULL, 8, id,
+									  LX_LOOKUP_MARGIN_HIGHP, 1e-6, &box));
+					assert_int_equal(box.n, win.n);
+					for (int k = 0; k < win.n; k++)
+						assert_true(fabs(box.v[k].x - win.v[k].x) + fabs(box.v[k].y - win.v[k].y) < 1e-3);
+					t->boxes++;
+				}
 				for (int y = 0; y < H; y++)
 					for (int x = 0; x < W; x++) {
 						vec3 q;
@@ -911,9 +922,10 @@ static void sure_shadows_lie_in_the_casters_shadows(void **state)
 	(void)state;
 	struct sure_tally t = {0};
 	each_standard_setup(check_sure, &t);
-	print_message("%ld sure shadows of a caster on a plane in a map; %ld plane pixels inside them, each in the "
-		      "caster's exact shadow and served by the map\n", t.windows, t.pixels);
-	assert_true(t.windows > 100 && t.pixels > 20000);
+	print_message("%ld sure shadows of a caster on a plane in a map (%ld of a box, the same from its bounds); %ld "
+		      "plane pixels inside them, each in the caster's exact shadow and served by the map\n", t.windows,
+		      t.boxes, t.pixels);
+	assert_true(t.windows > 100 && t.pixels > 20000 && t.boxes > 10);
 }
 
 /* No sure shadow where it could be wrong: a table leg standing on the floor (the floor

@@ -163,7 +163,6 @@ struct lx_renderer {
 	/* the maps of the last shadow pass that drew each caster, by its frame's light: what
 	 * the atlas holds */
 	unsigned drawn_in[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
-	float *box_pos[LX_MAX_PLANES + LX_MAX_CASTERS]; /* a box caster's 8 corners, else NULL */
 	GLuint kept_ibo;
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint beam_tex[LX_MAX_LIGHTS]; /* a projective light's image, 0 for other lights */
@@ -454,11 +453,6 @@ static bool shadow_mesh(struct lx_renderer *r, int id, const struct lx_mesh *m)
 			else
 				r->fan_apex[id] = -1;
 		}
-		if (id >= r->d.scene->plane_count && !round_caster(r, id) && np == 8) {
-			r->box_pos[id] = malloc(sizeof(float) * 24);
-			if (r->box_pos[id])
-				memcpy(r->box_pos[id], pos, sizeof(float) * 24);
-		}
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)np * 3 * sizeof(float), pos, GL_STATIC_DRAW);
 		r->shadow_indices[id] = n;
@@ -662,8 +656,7 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	if (r->kept_ibo)
 		lx_gl.DeleteBuffers(1, &r->kept_ibo);
 	for (int i = 0; i < LX_MAX_PLANES + LX_MAX_CASTERS; i++)
-		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]),
-			free(r->box_pos[i]);
+		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]);
 	free(r->piece_v);
 	free(r->facing_index);
 	free(r->kept_index);
@@ -1421,22 +1414,21 @@ static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, 
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
 		unsigned bit = 1u << m;
 		const struct lx_shadow_map *map = &res->maps[m];
-		for (int c = plane_count; c < r->objects; c++) {
-			bool reads = false;
-			for (int i = 0; i < *ns && !reads; i++)
-				reads = (span[i].mask & (MAP_BITS | COVERED_SPAN)) == bit;
-			if (!reads)
-				break;
+		bool reads = false; /* some span reads map m alone */
+		for (int i = 0; i < *ns && !reads; i++)
+			reads = (span[i].mask & (MAP_BITS | COVERED_SPAN)) == bit;
+		for (int c = plane_count; reads && c < r->objects; c++) {
 			if (!(r->drawn_in[light][c] & bit)) /* else its kept triangles and outline are stale */
 				continue;
+			/* a round caster's fan corners; a box's corners are its bounds (pts NULL) */
 			bool round = round_caster(r, c);
-			const float *pos = round ? r->fan_pos[c] : r->box_pos[c];
 			int np = round ? r->kept[light][m][c].outline_count : 8;
-			const unsigned short *index = round ? r->outline_index + r->kept[light][m][c].outline_first : NULL;
 			struct lx_poly win;
-			if (!pos || np < 3 ||
-			    !lx_sure_shadow_window(f, map, a->regions[map->region].w, a->regions[map->region].h, c, pos, index,
-						   np, id, inset, gap, &win))
+			if ((round && np < 3) ||
+			    !lx_sure_shadow_window(f, map, a->regions[map->region].w, a->regions[map->region].h, c,
+						   round ? r->fan_pos[c] : NULL,
+						   round ? r->outline_index + r->kept[light][m][c].outline_first : NULL, np, id,
+						   inset, gap, &win))
 				continue;
 			struct span *to = span == r->seen ? r->spans : r->seen;
 			int k = 0;

@@ -1,6 +1,7 @@
 #include "sure_shadow.h"
 #include "linalg.h"
 #include <math.h>
+#include <stdlib.h>
 
 /* Of caster id's box, the farthest normalized depth in the map whose matrix is m (a
  * depth z / w is linear-fractional: over a box in front of the light its largest is at a
@@ -37,7 +38,7 @@ bool lx_sure_shadow_window(const struct lx_frame *f, const struct lx_shadow_map 
 {
 	win->n = 0;
 	if (n < 3 || w < 1 || h < 1 || plane < 0 || plane >= f->scene->plane_count || id < f->scene->plane_count ||
-	    id >= f->object_count || n > 4096)
+	    id >= f->object_count || (!pts && n != 8))
 		return false;
 	const mat4 *m = &map->light_clip;
 	double far = farthest_depth(m, f->bmin[id], f->bmax[id], map->plane < 0);
@@ -46,15 +47,23 @@ bool lx_sure_shadow_window(const struct lx_frame *f, const struct lx_shadow_map 
 	/* the caster's image in lixels about the map's centre (every corner in front of the
 	 * light: its box is) */
 	double sx = 0.5 * w, sy = 0.5 * h;
-	vec2 img[4096];
-	vec3 o = f->offset[id];
+	enum { ON_STACK = 128 }; /* a fan's corners, a box's 8; a whole mesh (the tests') on the heap */
+	vec2 stack[ON_STACK], *img = n <= ON_STACK ? stack : malloc((size_t)n * sizeof(vec2));
+	if (!img)
+		return false; /* out of memory: no sure part */
+	vec3 o = f->offset[id], lo = f->bmin[id], hi = f->bmax[id];
 	for (int k = 0; k < n; k++) {
-		const float *q = pts + 3 * (index ? index[k] : k);
-		vec4 c = m4_mul_point(m, v3(q[0] + o.x, q[1] + o.y, q[2] + o.z));
+		const float *q = pts ? pts + 3 * (index ? index[k] : k) : NULL;
+		vec3 x = q ? v3(q[0] + o.x, q[1] + o.y, q[2] + o.z)
+			   : v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec4 c = m4_mul_point(m, x);
 		img[k] = (vec2){c.x / c.w * sx, c.y / c.w * sy}; /* c.w > 0 inside the box */
 	}
 	struct lx_poly hull, in;
-	if (!lx_poly_hull(img, n, &hull)) /* more corners than a polygon holds: no sure part */
+	bool fits = lx_poly_hull(img, n, &hull);
+	if (img != stack)
+		free(img);
+	if (!fits) /* more corners than a polygon holds: no sure part */
 		return false;
 	lx_poly_inset(&hull, inset, &in);
 	/* inside the rays the map serves, by the same margin */

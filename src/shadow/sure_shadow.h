@@ -19,7 +19,8 @@
  * alone, placed in a region of w x h lixels: its image lies `inset` lixels or more inside
  * the image of the caster's n points (object space floats, as the GL gets them: corners
  * of its convex mesh, so their image's hull lies within the image the map holds; pts[3 k]
- * onwards, or pts[3 index[k]] with an index) and inside the rays the map serves (map->bounds), and its depth in the
+ * onwards, or pts[3 index[k]] with an index; pts NULL: a box caster, whose mesh's corners
+ * are its bounds' 8, and n is 8) and inside the rays the map serves (map->bounds), and its depth in the
  * map exceeds the caster's farthest by `depth_gap` (in the map's normalized depth, -1 to
  * 1) or more. False, and win empty, where there is none to give: the caster reaches
  * behind the light or outside the map's depth range (a map that flattens casters onto
