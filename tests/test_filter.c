@@ -168,8 +168,10 @@ static void same_as_highp(const char *texture, const char *now)
  * and decision images, on every standard configuration of both built-in scenes and both
  * depth paths, against tests/data/filter-none.golden, written by the code before the
  * filters came (LIXEL_GOLDEN_WRITE=FILE writes them again; the decision hashes, since
- * they leave out where a lookup was drawn, by the code before the sure shadows, d6fed27,
- * whose shaded hashes were still the first ones). A method or configuration
+ * they leave out where a lookup was drawn, by the code before the sure shadows, d6fed27;
+ * the shaded hashes by the code that first drew a plane's lit spans as fewer, taller
+ * rectangles (span_merge.h), whose lighting, interpolated over other triangles, moved
+ * one or two pixels of 12 of the 280 images by one level). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

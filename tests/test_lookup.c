@@ -3,12 +3,14 @@
  * a plane's pieces cover it once, the maps left to a caster are the ones its points
  * read, the parts of a caster called out of reach of every shadow are, and the shadow
  * pass leaves a caster out of a map only where no lookup reads it, and where a plane is
- * drawn without one as surely shadowed (sure_shadow.c), a caster does shadow it. Over the
- * standard configurations of both built-in scenes and some extremes. */
+ * drawn without one as surely shadowed (sure_shadow.c), a caster does shadow it; spans
+ * merged into taller rectangles (span_merge.c) keep their pixels. Over the standard
+ * configurations of both built-in scenes and some extremes. */
 #include "configs.h"
 #include "lookup_region.h"
 #include "plane_cover.h"
 #include "plane_optimal.h"
+#include "span_merge.h"
 #include "sure_shadow.h"
 #include "test_util.h"
 #include "method_fixture.h"
@@ -315,6 +317,131 @@ static void plane_pieces_cover_the_plane_once(void **state)
 		}
 		lx_meshes_free(&s.meshes);
 	}
+}
+
+/* The sum lx_span_merge minimises. */
+static long merge_cost(const struct lx_rect *r, int n)
+{
+	long c = 0;
+	for (int i = 0; i < n; i++)
+		c += (long)(r[i].x1 - r[i].x0) + (r[i].y1 - r[i].y0) + LX_SPAN_RECT_COST;
+	return c;
+}
+
+/* How many of rectangles r[0..n) hold each pixel of an MW x MH window, into count. */
+enum { MW = 512, MH = 512 };
+static void coverage(const struct lx_rect *r, int n, uint8_t *count)
+{
+	memset(count, 0, (size_t)MW * MH);
+	for (int i = 0; i < n; i++) {
+		assert_true(r[i].x0 >= 0 && r[i].y0 >= 0 && r[i].x1 <= MW && r[i].y1 <= MH);
+		for (int y = r[i].y0; y < r[i].y1; y++)
+			for (int x = r[i].x0; x < r[i].x1; x++)
+				count[y * MW + x]++;
+	}
+}
+
+/* Spans in the lookup region's bands, merged, cover the same pixels once each, in at most
+ * three rectangles per span, at no higher cost: random layouts (a few intervals per band,
+ * some spans several bands tall, some empty), a staircase of lit spans beside a shadow
+ * (rectangles four bands tall and the steps beside them, at under 60% of the cost), and
+ * the refusals. */
+static void merged_spans_keep_their_pixels(void **state)
+{
+	(void)state;
+	static struct lx_rect in[LX_SPAN_MERGE_MAX + 1], out[3 * (LX_SPAN_MERGE_MAX + 1)];
+	uint8_t *before = malloc((size_t)MW * MH), *after = malloc((size_t)MW * MH);
+	assert_true(before && after);
+	uint64_t seed = 11;
+	long spans = 0, rects = 0, cost_in = 0, cost_out = 0;
+	for (int trial = 0; trial < 300; trial++) {
+		int n = 0;
+		for (int y = 0; y < MH && n < LX_SPAN_MERGE_MAX - 8;) {
+			int h = test_rand(&seed) < 0.2 ? 64 + 32 * (int)(test_rand(&seed) * 4) : 32;
+			h = y + h <= MH ? h : MH - y;
+			int x = (int)(test_rand(&seed) * 40), parts = 1 + (int)(test_rand(&seed) * 4);
+			for (int k = 0; k < parts && x < MW; k++) {
+				int w = (int)(test_rand(&seed) * (trial % 3 ? 300 : 20)), x1 = x + w < MW ? x + w : MW;
+				in[n++] = (struct lx_rect){x, y, test_rand(&seed) < 0.03 ? x : x1, y + h}; /* some empty */
+				x = x1 + 1 + (int)(test_rand(&seed) * 60);
+			}
+			y += h;
+		}
+		int k = lx_span_merge(in, n, out, 3 * n);
+		assert_true(k >= 0 && k <= 3 * n);
+		coverage(in, n, before);
+		coverage(out, k, after);
+		assert_memory_equal(before, after, (size_t)MW * MH);
+		for (long i = 0; i < (long)MW * MH; i++)
+			assert_true(after[i] <= 1);
+		assert_true(merge_cost(out, k) <= merge_cost(in, n));
+		spans += n, rects += k, cost_in += merge_cost(in, n), cost_out += merge_cost(out, k);
+	}
+	print_message("%ld spans in 300 layouts drawn as %ld rectangles, cost %ld of %ld\n", spans, rects, cost_out,
+		      cost_in);
+	assert_true(cost_out < cost_in);
+	/* lit spans left of a shadow, eight bands: [0, a) with a wandering */
+	static const int a[8] = {215, 169, 185, 204, 223, 241, 260, 303};
+	for (int i = 0; i < 8; i++)
+		in[i] = (struct lx_rect){0, 64 + 32 * i, a[i], 96 + 32 * i};
+	int k = lx_span_merge(in, 8, out, 24);
+	coverage(in, 8, before);
+	coverage(out, k, after);
+	assert_memory_equal(before, after, (size_t)MW * MH);
+	bool tall = false;
+	for (int i = 0; i < k; i++)
+		tall |= out[i].x0 == 0 && out[i].x1 >= 169 && out[i].y1 - out[i].y0 >= 4 * 32;
+	assert_true(tall);
+	assert_true(10 * merge_cost(out, k) < 6 * merge_cost(in, 8)); /* 1328 against 2312 */
+	assert_int_equal(lx_span_merge(in, 0, out, 0), 0);
+	assert_int_equal(lx_span_merge(in, 8, out, 23), -1); /* room short of 3 n */
+	assert_int_equal(lx_span_merge(in, LX_SPAN_MERGE_MAX + 1, out, 3 * (LX_SPAN_MERGE_MAX + 1)), -1);
+	free(before), free(after);
+}
+
+/* A window rectangle lx_plane_window_holds calls inside a plane's image is the piece
+ * lx_plane_in_window gives, its four corners: on both scenes' configurations, random
+ * rectangles, some held and some not (the plane's outline, the near plane). */
+static void held_rectangles_are_whole_pieces(void **state)
+{
+	(void)state;
+	uint64_t seed = 5;
+	long held = 0, refused = 0;
+	for (int sc = 0; sc < 2; sc++)
+		for (int c = 0; c < lx_config_count; c++) {
+			struct setup s;
+			lx_scene_builtin(sc ? "table" : "default", &s.scene);
+			lx_config_apply(&lx_configs[c], &s.scene);
+			if (!build(&s, "uniform", W, H, 0.4))
+				continue;
+			for (int id = 0; id < s.scene.plane_count; id++) {
+				struct lx_poly win;
+				lx_plane_window(&s.frame, id, &win);
+				for (int t = 0; t < 200; t++) {
+					int x0 = (int)(test_rand(&seed) * W), y0 = (int)(test_rand(&seed) * H);
+					struct lx_rect b = {x0, y0, x0 + 1 + (int)(test_rand(&seed) * (W - x0)),
+							    y0 + 1 + (int)(test_rand(&seed) * (H - y0))};
+					if (!lx_plane_window_holds(&win, b)) {
+						refused++;
+						continue;
+					}
+					held++;
+					vec3 p[LX_WINDOW_POLY_MAX];
+					int n = lx_plane_in_window(&s.frame, id, b, p);
+					assert_int_equal(n, 4);
+					for (int k = 0; k < n; k++) { /* in front of the near plane, on a corner */
+						vec4 q = m4_mul_point(&s.frame.view.view_proj, p[k]);
+						assert_true(q.z > -q.w && q.w > 0);
+						vec2 w = lx_view_window_point(&s.frame.view, q);
+						double dx = fmin(fabs(w.x - b.x0), fabs(w.x - b.x1)), dy = fmin(fabs(w.y - b.y0), fabs(w.y - b.y1));
+						assert_true(dx < 1e-3 && dy < 1e-3);
+					}
+				}
+			}
+			lx_meshes_free(&s.meshes);
+		}
+	print_message("%ld rectangles held whole by their plane, %ld not\n", held, refused);
+	assert_true(held > 100 && refused > 100);
 }
 
 /* The first map of a mask that serves a point. */
@@ -968,6 +1095,8 @@ int main(void)
 		cmocka_unit_test(shadowed_points_are_looked_up),
 		cmocka_unit_test(extremes_stay_conservative),
 		cmocka_unit_test(plane_pieces_cover_the_plane_once),
+		cmocka_unit_test(merged_spans_keep_their_pixels),
+		cmocka_unit_test(held_rectangles_are_whole_pieces),
 		cmocka_unit_test(casters_keep_the_maps_they_read),
 		cmocka_unit_test(caster_parts_out_of_reach),
 		cmocka_unit_test(casters_left_out_only_where_unread),

@@ -7,6 +7,7 @@
 #include "plane_cover.h"
 #include "shader_text.h"
 #include "silhouette.h"
+#include "span_merge.h"
 #include "sure_shadow.h"
 #include <math.h>
 #include <stdio.h>
@@ -114,6 +115,7 @@ struct lx_renderer {
 	struct span spans[PLANE_SPANS];    /* a plane's spans */
 	struct span seen[PLANE_SPANS];     /* the same without what another plane hides */
 	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
+	struct lx_rect merge_in[LX_SPAN_MERGE_MAX], merge_out[3 * LX_SPAN_MERGE_MAX]; /* lx_span_merge's */
 	struct lx_lookup_volumes lookup;   /* this frame's casters seen through each map */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
 	float *piece_v;
@@ -1291,6 +1293,34 @@ static bool rows_touched(const struct lx_poly *w, int y0, int y1, int *x0, int *
 	return *x1 > *x0;
 }
 
+/* The pieces of plane id in the spans of span[0]'s mask among span[0..n): where they read
+ * no map and test no front (drawn lit, or in shadow without a lookup), as fewer and taller
+ * rectangles (lx_span_merge: the same pixels, whose shading and decision depend on no
+ * varying but the lighting's), else span by span, as the lookups' coordinates come. */
+static void add_pieces(struct lx_renderer *r, const struct lx_frame *f, int id, const struct lx_poly *window,
+		       const struct span *span, int n)
+{
+	unsigned m = span[0].mask;
+	bool merge = !(m & (MAP_BITS | COVER_SPAN));
+	int k = 0, got = -1;
+	for (int j = 0; j < n; j++) {
+		if (span[j].mask != m)
+			continue;
+		/* only spans the plane fills: where its outline or the near plane cuts one, the
+		 * GL's edges would come from other corners, and pixels on them go either way */
+		if (merge && k < LX_SPAN_MERGE_MAX && lx_plane_window_holds(window, span[j].box))
+			r->merge_in[k++] = span[j].box;
+		else
+			add_piece(r, f, id, span[j].box);
+	}
+	if (k > 0)
+		got = lx_span_merge(r->merge_in, k, r->merge_out, 3 * LX_SPAN_MERGE_MAX);
+	for (int j = 0; j < got; j++)
+		add_piece(r, f, id, r->merge_out[j]);
+	for (int j = 0; j < k && got < 0; j++)
+		add_piece(r, f, id, r->merge_in[j]);
+}
+
 /* Spans in[0..n) cut band by band (the lookup region's grid) by convex window polygon
  * win, into out (room for room): in each band, the pixels inside win by a pixel along
  * the row and by `rows` rows across (lx_poly_rows_inside) become a span of mask `inner`
@@ -1593,6 +1623,8 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		span = cover_spans(r, f, id, span, &ns);
 	if (!away && !r->d.lookup_everywhere)
 		span = sure_spans(r, f, res, id, span, &ns);
+	struct lx_poly window;
+	lx_plane_window(f, id, &window);
 	/* one draw per set of maps, its spans' pieces together */
 	for (int i = 0; i < ns; i++) {
 		unsigned m = span[i].mask;
@@ -1602,9 +1634,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 		if (seen)
 			continue;
 		int first = r->piece_vertices;
-		for (int j = i; j < ns; j++)
-			if (span[j].mask == m)
-				add_piece(r, f, id, span[j].box);
+		add_pieces(r, f, id, &window, span + i, ns - i);
 		if (r->piece_vertices > first)
 			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
 						 r->piece_vertices - first, m & COVER_SPAN ? covers : 0, (m & SURE_SPAN) != 0};

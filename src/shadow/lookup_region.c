@@ -639,6 +639,38 @@ int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec
 	return n < LX_WINDOW_POLY_MAX ? n : LX_WINDOW_POLY_MAX;
 }
 
+void lx_plane_window(const struct lx_frame *f, int id, struct lx_poly *out)
+{
+	const struct lx_view *v = &f->view;
+	vec3 a[4], b[FACE_MAX];
+	vec2 w[FACE_MAX];
+	lx_frame_plane_corners(f, id, a);
+	/* beyond the GL's near plane (z >= -w), where w > 0 divides */
+	vec4 near = v4_lin(1, m4_row(&v->view_proj, 2), 1 - 1e-6, m4_row(&v->view_proj, 3));
+	int n = lx_clip_polygon(a, 4, near, b, FACE_MAX);
+	for (int i = 0; i < n; i++)
+		w[i] = lx_view_window_point(v, m4_mul_point(&v->view_proj, b[i]));
+	lx_poly_hull(w, n, out); /* counter-clockwise */
+}
+
+bool lx_plane_window_holds(const struct lx_poly *window, struct lx_rect box)
+{
+	const vec2 *p = window->v;
+	int n = window->n;
+	if (n < 3)
+		return false;
+	for (int i = 0; i < n; i++) {
+		vec2 a = p[i], e = {p[lx_loop_next(i, n)].x - a.x, p[lx_loop_next(i, n)].y - a.y};
+		double len = sqrt(e.x * e.x + e.y * e.y); /* > 0: the hull keeps no repeated point */
+		for (int k = 0; k < 4; k++) {
+			double x = k & 1 ? box.x1 : box.x0, y = k & 2 ? box.y1 : box.y0;
+			if (!(e.x * (y - a.y) - e.y * (x - a.x) >= 0.01 * len))
+				return false;
+		}
+	}
+	return true;
+}
+
 unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigned mask)
 {
 	/* the receiver's part in view: its box clipped to the view frustum */

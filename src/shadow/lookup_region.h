@@ -22,6 +22,7 @@
  * has them. */
 #ifndef LX_LOOKUP_REGION_H
 #define LX_LOOKUP_REGION_H
+#include "polygon2d.h"
 #include "shadow_method.h"
 
 /* Window pixels [x0, x1) x [y0, y1), GL's origin (bottom left), as glScissor takes them. */
@@ -117,5 +118,12 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
  * what cuts there. The main pass draws a plane as such pieces, with and without a lookup,
  * in one draw each: on llvmpipe every scissored draw costs about a tenth of a millisecond. */
 int lx_plane_in_window(const struct lx_frame *f, int id, struct lx_rect box, vec3 *out);
+/* Plane of interest id's image in the window where it lies beyond the GL's near plane, a
+ * convex polygon in window pixels (n 0: none in front). */
+void lx_plane_window(const struct lx_frame *f, int id, struct lx_poly *out);
+/* Whether window rectangle box lies inside that image, its corners a hundredth of a pixel
+ * in or more: then lx_plane_in_window gives the rectangle itself, which the GL draws
+ * uncut, its edges on whole pixels. */
+bool lx_plane_window_holds(const struct lx_poly *window, struct lx_rect box);
 
 #endif
