@@ -1017,29 +1017,45 @@ static unsigned caster_reads(const struct lx_renderer *r, int id, unsigned mask)
 	return mask && lx_lookup_any(&r->lookup, id, mask) ? mask : 0;
 }
 
-/* Which objects light i's maps draw (drawn[object], a mask of maps: those a lookup can
- * read, lx_lookup_caster_maps; none for a flat box in no map) and, for a round caster
- * drawn as a fan, the maps it reads itself (reads[object]). */
-static void light_map_objects(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res,
-			      unsigned *drawn, unsigned *reads)
+/* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
+ * lookup can read, lx_lookup_caster_maps; none for a flat box in no map) and the
+ * triangles each keeps (a flat box's face its front decides left out, res->slab_front),
+ * uploaded at once. */
+static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
+			 int n, unsigned drawn[][LX_MAX_PLANES + LX_MAX_CASTERS])
 {
-	/* with the widest margin; the main pass prepares its own, with its filter's */
-	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, shadow_margin(r), &r->lookup);
-	for (int id = 0; id < r->objects; id++) {
-		drawn[id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
-		/* the maps its own main-pass draws read, asked as object_draws asks with its own
-		 * margin, no wider than this one's: it reads none this keeps out. Asked only where
-		 * keep_back_faces takes it, for a round caster's fan, in a map that draws it
-		 * (lx_lookup_any clips the receiver's faces by each volume: asked of every
-		 * object, 6-17 us of the table's shadow_draws) */
-		reads[id] = drawn[id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
+	r->kept_count = r->outline_count = 0;
+	for (int i = 0; i < n; i++) {
+		int light = f[i]->light_index; /* kept and drawn_in by light, which the main pass knows */
+		const struct lx_atlas *a = r->d.lights[light].atlas;
+		/* with the widest margin; the main pass prepares its own, with its filter's */
+		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
+		for (int id = 0; id < r->objects; id++) {
+			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			/* the maps its own main-pass draws read, asked as object_draws asks with its
+			 * own margin, no wider than this one's: it reads none this keeps out. Asked
+			 * only where keep_back_faces takes it, for a round caster's fan, in a map
+			 * that draws it (lx_lookup_any clips the receiver's faces by each volume:
+			 * asked of every object, 6-17 us of the table's shadow_draws) */
+			unsigned reads = drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
+			for (int m = 0; m < res[i]->map_count; m++)
+				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
+					keep_back_faces(r, f[i], &res[i]->maps[m], light, m, id,
+							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL, reads & 1u << m);
+					if (r->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
+						r->drawn_in[light][id] |= 1u << m;
+				}
+		}
 	}
+	/* left bound for the draws (nothing else of the pass binds an index buffer) */
+	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
+	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->kept_count * sizeof(unsigned short), r->kept_index,
+			 GL_STREAM_DRAW);
 }
 
-/* Light `light`'s map m: the triangles it keeps of the objects it draws, inside its
- * region (their indices from kept_index[base], as uploaded). */
+/* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its region. */
 static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_shadow_map *map, int light, int m,
-		     const unsigned *drawn, int base)
+		     const unsigned *drawn)
 {
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
@@ -1058,40 +1074,10 @@ static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const stru
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
 		lx_gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT,
-				   (const void *)((size_t)(r->kept[light][m][id].first - base) * sizeof(unsigned short)));
+				   (const void *)((size_t)r->kept[light][m][id].first * sizeof(unsigned short)));
 	}
 }
 
-/* Light `light`'s map m: the triangles each object it draws keeps (a flat box's face its
- * front decides left out, res->slab_front), appended to kept_index and uploaded, and
- * drawn into its region. */
-static void keep_and_draw_map(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int m,
-			      const unsigned *drawn, const unsigned *reads)
-{
-	int light = f->light_index, base = r->kept_count;
-	const struct lx_shadow_map *map = &res->maps[m];
-	if (!map->rendered)
-		return;
-	for (int id = 0; id < r->objects; id++)
-		if (drawn[id] & 1u << m) {
-			keep_back_faces(r, f, map, light, m, id, res->slab_face_out[id] ? &res->slab_front[id] : NULL,
-					reads[id] & 1u << m);
-			if (r->kept[light][m][id].count > 0 && !res->slab_face_out[id])
-				r->drawn_in[light][id] |= 1u << m;
-		}
-	if (r->kept_count == base)
-		return;
-	/* its own storage each time (orphaned): a GPU may still read the last map's */
-	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
-	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->kept_count - base) * sizeof(unsigned short),
-			 r->kept_index + base, GL_STREAM_DRAW);
-	draw_map(r, r->d.lights[light].atlas, map, light, m, drawn, base);
-}
-
-/* The shadow passes, map by map: each map's triangles are found and sent before the next
- * map's are found, and after the first map that draws, the GL is flushed, so that it
- * draws while the CPU finds the rest (not on a tiler, which would write its tiles out
- * and read them back). */
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
 			       const struct lx_shadow_result *const *res, int n)
 {
@@ -1105,6 +1091,8 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	}
 	if (!any)
 		return;
+	unsigned drawn[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	shadow_draws(r, f, res, n, drawn);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	vertex_arrays(false);
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
@@ -1118,20 +1106,9 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.Enable(GL_CULL_FACE);
 	lx_gl.CullFace(GL_FRONT);
 	lx_gl.DepthFunc(GL_LESS);
-	r->kept_count = r->outline_count = 0;
-	bool flushed = r->d.caps->tiler;
-	for (int i = 0; i < n; i++) {
-		unsigned drawn[LX_MAX_PLANES + LX_MAX_CASTERS], reads[LX_MAX_PLANES + LX_MAX_CASTERS];
-		light_map_objects(r, f[i], res[i], drawn, reads);
-		for (int m = 0; m < res[i]->map_count; m++) {
-			int before = r->kept_count;
-			keep_and_draw_map(r, f[i], res[i], m, drawn, reads);
-			if (!flushed && r->kept_count > before && (m + 1 < res[i]->map_count || i + 1 < n)) {
-				lx_gl.Flush();
-				flushed = true;
-			}
-		}
-	}
+	for (int i = 0; i < n; i++)
+		for (int m = 0; m < res[i]->map_count; m++)
+			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], f[i]->light_index, m, drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }
