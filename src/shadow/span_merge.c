@@ -11,17 +11,20 @@ static int height(struct lx_rect r) { return r.y1 - r.y0; }
 static long remainder_cost(int w, int h) { return w > 0 ? (long)w + 2L * h + LX_SPAN_RECT_COST : 0; }
 
 /* The cost of drawing chain rectangles c[s..e) as one run: the core they all share and
- * each band's rest beside it; -1 when they share no column (a run of one is itself). */
+ * each band's rest beside it; -1 when several share no column (a run of one is itself,
+ * empty or not). */
 static long run_cost(const struct lx_rect *c, int s, int e, int *cx0, int *cx1)
 {
 	int a = c[s].x0, b = c[s].x1;
 	for (int k = s + 1; k < e; k++)
 		a = c[k].x0 > a ? c[k].x0 : a, b = c[k].x1 < b ? c[k].x1 : b;
 	*cx0 = a, *cx1 = b;
+	if (e - s == 1)
+		return (long)(b > a ? b - a : 0) + (height(c[s]) > 0 ? height(c[s]) : 0) + LX_SPAN_RECT_COST;
 	if (b <= a)
 		return -1;
 	long cost = (long)(b - a) + (c[e - 1].y1 - c[s].y0) + LX_SPAN_RECT_COST;
-	for (int k = s; k < e && e - s > 1; k++)
+	for (int k = s; k < e; k++)
 		cost += remainder_cost(a - c[k].x0, height(c[k])) + remainder_cost(c[k].x1 - b, height(c[k]));
 	return cost;
 }
