@@ -933,8 +933,7 @@ static bool box_in_depth_range(const struct lx_renderer *r, int id, const mat4 *
 {
 	const struct lx_mesh *me = &r->d.meshes->mesh[id];
 	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_v4(lc, (vec4){k & 1 ? me->bmax.x : me->bmin.x, k & 2 ? me->bmax.y : me->bmin.y,
-					      k & 4 ? me->bmax.z : me->bmin.z, 1});
+		vec4 c = m4_mul_point(lc, v3_box_corner(me->bmin, me->bmax, k));
 		if (!(c.w > 0 && c.z > -c.w && c.z < c.w))
 			return false;
 	}

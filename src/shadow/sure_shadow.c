@@ -12,7 +12,7 @@ static double farthest_depth(const mat4 *m, vec3 lo, vec3 hi, bool flat)
 {
 	double far = -INFINITY;
 	for (int k = 0; k < 8; k++) {
-		vec4 c = m4_mul_point(m, v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
+		vec4 c = m4_mul_point(m, v3_box_corner(lo, hi, k));
 		if (!(c.w > 0) || !(c.z < c.w) || (!flat && !(c.z > -c.w)))
 			return NAN;
 		far = fmax(far, fmax(c.z / c.w, -1.0)); /* c.w > 0 */
@@ -54,8 +54,7 @@ bool lx_sure_shadow_window(const struct lx_frame *f, const struct lx_shadow_map 
 	vec3 o = f->offset[id], lo = f->bmin[id], hi = f->bmax[id];
 	for (int k = 0; k < n; k++) {
 		const float *q = pts ? pts + 3 * (index ? index[k] : k) : NULL;
-		vec3 x = q ? v3(q[0] + o.x, q[1] + o.y, q[2] + o.z)
-			   : v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+		vec3 x = q ? v3(q[0] + o.x, q[1] + o.y, q[2] + o.z) : v3_box_corner(lo, hi, k);
 		vec4 c = m4_mul_point(m, x);
 		img[k] = (vec2){c.x / c.w * sx, c.y / c.w * sy}; /* c.w > 0 inside the box */
 	}
