@@ -171,7 +171,9 @@ static void same_as_highp(const char *texture, const char *now)
  * they leave out where a lookup was drawn, by the code before the sure shadows, d6fed27;
  * the shaded hashes by the code that first drew a plane's lit spans as fewer, taller
  * rectangles (span_merge.h), whose lighting, interpolated over other triangles, moved
- * one or two pixels of 12 of the 280 images by one level). A method or configuration
+ * one or two pixels of 12 of the 280 images by one level; plane-optimal's two of the
+ * table's low light by the code that tests a flat box's two fronts over the hull of
+ * their shadows, where one floor pixel the exact reference shadows was lit before). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

@@ -1324,8 +1324,9 @@ static void add_pieces(struct lx_renderer *r, const struct lx_frame *f, int id, 
  * win, into out (room for room): in each band, the pixels inside win by a pixel along
  * the row and by `rows` rows across (lx_poly_rows_inside) become a span of mask `inner`
  * (none when 0), and with `edge` nonzero those around them that win may reach become the
- * span's own mask | edge; the rest, and the rows of bands it leaves alone, stay as they
- * were, together. Returns the new count, or -1 short of room. */
+ * span's own mask | edge (with `edge` and no `inner`, all that win may reach); the rest,
+ * and the rows of bands it leaves alone, stay as they were, together. Returns the new
+ * count, or -1 short of room. */
 static int cut_spans(const struct span *in, int n, const struct lx_poly *win, int rows, unsigned edge, unsigned inner,
 		     struct span *out, int room)
 {
@@ -1338,7 +1339,7 @@ static int cut_spans(const struct span *in, int n, const struct lx_poly *win, in
 			int y0 = y < b.y0 ? b.y0 : y, y1 = y + LX_LOOKUP_BAND < b.y1 ? y + LX_LOOKUP_BAND : b.y1;
 			int ix0 = 0, ix1 = 0, ox0 = 0, ox1 = 0;
 			bool touch = edge && rows_touched(win, y0, y1, &ox0, &ox1) && ox1 > b.x0 && ox0 < b.x1;
-			bool inside = lx_poly_rows_inside(win, y0 - rows, y1 + rows, 1.0, &ix0, &ix1);
+			bool inside = (inner || !edge) && lx_poly_rows_inside(win, y0 - rows, y1 + rows, 1.0, &ix0, &ix1);
 			ix0 = ix0 > b.x0 ? ix0 : b.x0, ix1 = ix1 < b.x1 ? ix1 : b.x1;
 			inside = inside && ix1 > ix0;
 			if (!touch && !inside)
@@ -1401,13 +1402,29 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
  * the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	for (int c = 0; c < LX_MAX_COVERS && r->covers->of[id][c] >= 0; c++) {
-		struct lx_poly w;
+	/* w[0]: a flat box's two fronts' hull, w[1...]: each front's shadow */
+	struct lx_poly w[LX_MAX_COVERS + 1];
+	int nw = 1;
+	bool given = true;
+	for (int c = 0; c < LX_MAX_COVERS && r->covers->of[id][c] >= 0; c++)
+		given = given && lx_plane_cover_image(f, r->covers, r->covers->of[id][c], id, &w[nw++]);
+	/* a flat box's two fronts, tested together, also shadow what the rays through its thin
+	 * sides reach: between their shadows, inside the hull of the two (the box's own
+	 * shadow), where every pixel is tested; without, a low light lost those pixels'
+	 * shadow (the table's slab under a low light, one pixel at 256x192) */
+	w[0].n = 0;
+	if (given && nw == 3 && r->covers->paired[id]) {
+		vec2 pts[2 * LX_POLY_MAX];
+		memcpy(pts, w[1].v, (size_t)w[1].n * sizeof(vec2));
+		memcpy(pts + w[1].n, w[2].v, (size_t)w[2].n * sizeof(vec2));
+		given = lx_poly_hull(pts, w[1].n + w[2].n, &w[0]); /* two quadrilaterals': 8 corners at most */
+	}
+	for (int c = w[0].n >= 3 ? 0 : 1; c < nw; c++) {
 		struct span *to = span == r->seen ? r->spans : r->seen;
-		int n = lx_plane_cover_image(f, r->covers, r->covers->of[id][c], id, &w)
-				? cut_spans(span, *ns, &w, 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS)
-				: -1;
-		if (n < 0) {
+		int n = !given ? -1
+			       : c == 0 ? cut_spans(span, *ns, &w[0], 0, COVER_SPAN, 0, to, PLANE_SPANS)
+					: cut_spans(span, *ns, &w[c], 1, COVER_SPAN, COVERED_SPAN, to, PLANE_SPANS);
+		if (n < 0) { /* a shadow not to give (it reaches behind the eye), or short of room */
 			for (int i = 0; i < *ns; i++)
 				span[i].mask |= COVER_SPAN;
 			return span;
