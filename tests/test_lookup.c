@@ -169,6 +169,11 @@ static void check_scene(struct setup *s, const char *what, struct tally *tally)
 		int n = lx_lookup_spans(&v, id, mask, screen, span, 4096);
 		assert_true(n >= 1);
 		tally->looked += check_partition(span, n, screen, hit);
+		for (int k = 0; k < n; k++) /* a lookup span ends on whole blocks, or where the screen does */
+			if (span[k].lookup && ((span[k].box.x0 % LX_SPAN_ALIGN && span[k].box.x0 != screen.x0) ||
+					       (span[k].box.x1 % LX_SPAN_ALIGN && span[k].box.x1 != screen.x1)))
+				fail_msg("%s: plane %d's lookup span [%d, %d) ends inside a block", what, id, span[k].box.x0,
+					 span[k].box.x1);
 		vec4 pe = lx_plane_equation(&s->scene.planes[id]);
 		for (int y = 0; y < H; y++)
 			for (int x = 0; x < W; x++) {

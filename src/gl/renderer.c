@@ -1320,6 +1320,11 @@ static void add_pieces(struct lx_renderer *r, const struct lx_frame *f, int id, 
 		add_piece(r, f, id, r->merge_in[j]);
 }
 
+/* Column x rounded down or up to a multiple of LX_SPAN_ALIGN (x of either sign, far
+ * from INT_MAX: columns are clamped to a billion). */
+static int align_down(int x) { return x - ((x % LX_SPAN_ALIGN) + LX_SPAN_ALIGN) % LX_SPAN_ALIGN; }
+static int align_up(int x) { return align_down(x + LX_SPAN_ALIGN - 1); }
+
 /* Spans in[0..n) cut band by band (the lookup region's grid) by convex window polygon
  * win, into out (room for room): in each band, the pixels inside win by a pixel along
  * the row and by `rows` rows across (lx_poly_rows_inside) become a span of mask `inner`
@@ -1340,6 +1345,8 @@ static int cut_spans(const struct span *in, int n, const struct lx_poly *win, in
 			int ix0 = 0, ix1 = 0, ox0 = 0, ox1 = 0;
 			bool touch = edge && rows_touched(win, y0, y1, &ox0, &ox1) && ox1 > b.x0 && ox0 < b.x1;
 			bool inside = (inner || !edge) && lx_poly_rows_inside(win, y0 - rows, y1 + rows, 1.0, &ix0, &ix1);
+			/* the inner pixels in to whole blocks, the edges out (LX_SPAN_ALIGN) */
+			ix0 = align_up(ix0), ix1 = align_down(ix1), ox0 = align_down(ox0), ox1 = align_up(ox1);
 			ix0 = ix0 > b.x0 ? ix0 : b.x0, ix1 = ix1 < b.x1 ? ix1 : b.x1;
 			inside = inside && ix1 > ix0;
 			if (!touch && !inside)
@@ -1561,6 +1568,56 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
 	return 3 * count[LOOKUP];
 }
 
+/* Plane id's draws (object_draws): its spans (plane_spans; then what hides it, the
+ * fronts' shadows and the sure shadows cut out) drawn as pieces, one draw per set of
+ * maps. --lookup-region all cuts the same spans (from the maps the shader would read) and
+ * draws the same pieces, so that the two ways differ in their lookups only: each piece
+ * but those in a front's shadow reads every map of the plane, a sure shadow's too. */
+static int plane_draws(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_result *res, int id,
+		       unsigned mask, int covers, struct draw *out, int n)
+{
+	unsigned need = lx_lookup_maps(&r->lookup, id, mask);
+	bool all = r->d.lookup_everywhere;
+	/* a plane turned away from the light is all in its own shadow (--lookup-region all:
+	 * tested, reading its maps) */
+	const struct lx_plane *pl = &r->d.scene->planes[id];
+	vec3 nrm = v3_cross(pl->edge1, pl->edge2), to_light = f->light.directional
+							      ? v3_scale(f->light.direction, -1)
+							      : v3_sub(f->light.position, v3_add(pl->corner, f->offset[id]));
+	bool away = !(v3_dot(nrm, to_light) > 0);
+	enum lx_faces faces = !away ? LX_FACES_TOWARD : all ? LX_FACES_TESTED : LX_FACES_AWAY;
+	if (away)
+		need = 0;
+	struct span *span = r->spans;
+	int ns = plane_spans(r, res, id, need, span, PLANE_SPANS);
+	span = visible_spans(r, f, id, span, &ns);
+	if (!away && covers > 0)
+		span = cover_spans(r, f, id, span, &ns);
+	if (!away)
+		span = sure_spans(r, f, res, id, span, &ns);
+	struct lx_poly window;
+	lx_plane_window(f, id, &window);
+	/* one draw per set of maps, its spans' pieces together */
+	for (int i = 0; i < ns; i++) {
+		unsigned m = span[i].mask;
+		bool seen = false;
+		for (int j = 0; j < i && !seen; j++)
+			seen = span[j].mask == m;
+		if (seen)
+			continue;
+		int first = r->piece_vertices;
+		add_pieces(r, f, id, &window, span + i, ns - i);
+		if (r->piece_vertices == first)
+			continue;
+		struct draw d = {id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
+				 r->piece_vertices - first, m & COVER_SPAN ? covers : 0, (m & SURE_SPAN) != 0};
+		if (all && (!(m & COVERED_SPAN) || (m & SURE_SPAN)))
+			d.mask = mask, d.faces = faces, d.sure = false;
+		out[n++] = d;
+	}
+	return n;
+}
+
 /* The draws of object id: with every map it reads over the region where one of them can
  * shadow it (lookup_region.h), without a lookup elsewhere (llvmpipe runs both sides of a
  * branch, and small GPUs pay for every fetch). A plane, large on the screen, is cut into
@@ -1616,46 +1673,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 					   : (struct draw){id, 0, LX_FACES_AWAY, INDEXED, away, away_count, 0, false};
 		return n;
 	}
-	unsigned need = r->d.lookup_everywhere ? mask : lx_lookup_maps(&r->lookup, id, mask);
-	/* a plane turned away from the light is all in its own shadow (--lookup-region all:
-	 * tested, reading its maps) */
-	const struct lx_plane *pl = &r->d.scene->planes[id];
-	vec3 nrm = v3_cross(pl->edge1, pl->edge2), to_light = f->light.directional
-							      ? v3_scale(f->light.direction, -1)
-							      : v3_sub(f->light.position, v3_add(pl->corner, f->offset[id]));
-	bool away = !(v3_dot(nrm, to_light) > 0);
-	enum lx_faces faces = !away ? LX_FACES_TOWARD : r->d.lookup_everywhere ? LX_FACES_TESTED : LX_FACES_AWAY;
-	if (away)
-		need = 0;
-	struct span *span = r->spans;
-	int ns = plane_spans(r, res, id, need, span, PLANE_SPANS);
-	span = visible_spans(r, f, id, span, &ns);
-	/* --lookup-region all: the same pieces (so that the two ways differ in their lookups
-	 * only), each reading every map of the plane */
-	if (r->d.lookup_everywhere)
-		for (int i = 0; i < ns; i++)
-			span[i].mask = mask;
-	if (!away && covers > 0)
-		span = cover_spans(r, f, id, span, &ns);
-	if (!away && !r->d.lookup_everywhere)
-		span = sure_spans(r, f, res, id, span, &ns);
-	struct lx_poly window;
-	lx_plane_window(f, id, &window);
-	/* one draw per set of maps, its spans' pieces together */
-	for (int i = 0; i < ns; i++) {
-		unsigned m = span[i].mask;
-		bool seen = false;
-		for (int j = 0; j < i && !seen; j++)
-			seen = span[j].mask == m;
-		if (seen)
-			continue;
-		int first = r->piece_vertices;
-		add_pieces(r, f, id, &window, span + i, ns - i);
-		if (r->piece_vertices > first)
-			out[n++] = (struct draw){id, m & MAP_BITS, m & COVERED_SPAN ? LX_FACES_AWAY : faces, PIECES, first,
-						 r->piece_vertices - first, m & COVER_SPAN ? covers : 0, (m & SURE_SPAN) != 0};
-	}
-	return n;
+	return plane_draws(r, f, res, id, mask, covers, out, n);
 }
 
 /* The uniforms of a frame every main-pass program takes. */

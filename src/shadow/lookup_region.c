@@ -564,7 +564,8 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 	}
 	/* bands on a fixed grid (so that the cuts move seldom as the casters do): per band
 	 * the x-ranges of the hulls, whole pixels whose centres may lie inside and one more
-	 * for rounding, merged; a band cut like the one before it extends that one */
+	 * for rounding, out to whole blocks (LX_SPAN_ALIGN), merged; a band cut like the one
+	 * before it extends that one */
 	int prev_first = -1;
 	for (int y = within.y0 - within.y0 % LX_LOOKUP_BAND; y < within.y1; y += LX_LOOKUP_BAND) {
 		int y0 = y < within.y0 ? within.y0 : y, y1 = y + LX_LOOKUP_BAND > within.y1 ? within.y1 : y + LX_LOOKUP_BAND;
@@ -573,8 +574,9 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 			double x0, x1;
 			if (!band_range(&hull[h], y0 - 1.0, y1 + 1.0, &x0, &x1))
 				continue;
-			int i0 = (int)fmax(within.x0, fmin(within.x1, floor(x0) - 1));
-			int i1 = (int)fmax(within.x0, fmin(within.x1, ceil(x1) + 1));
+			const double q = LX_SPAN_ALIGN; /* widened to whole blocks */
+			int i0 = (int)fmax(within.x0, fmin(within.x1, q * floor((floor(x0) - 1) / q)));
+			int i1 = (int)fmax(within.x0, fmin(within.x1, q * ceil((ceil(x1) + 1) / q)));
 			if (i1 <= i0)
 				continue;
 			int j = k++; /* insert by start */

@@ -38,6 +38,11 @@ struct lx_rect {
 #define LX_LOOKUP_MARGIN_MEDIUMP 3.0
 /* The lookup region is cut in horizontal bands this many pixels tall, on a fixed grid. */
 #define LX_LOOKUP_BAND 32
+/* Spans end on columns that are multiples of this: a rasterizer shades the 4x4 blocks
+ * (llvmpipe; a board's 2x2 quads) that an edge between two draws crosses once for each,
+ * so a span with a lookup takes the rest of each block its edge would cut (on the
+ * table's default view 0.03 ms less main pass at 1024x1024, measured frame by frame). */
+#define LX_SPAN_ALIGN 4
 
 /* A window rectangle drawn with a lookup or without. */
 struct lx_span {
