@@ -925,12 +925,14 @@ static bool ray_hits_box(const struct lx_frame *f, vec3 lo, vec3 hi, vec3 x, boo
  * plane on its top. The table's slab and its top, for the floor and the legs, under every
  * standard configuration's light and three more (low, level with the top, and a grazing
  * directional light); some of those rays pass through the slab's thin sides only, which
- * neither face's test alone shadows. */
+ * neither face's test alone shadows. Every floor point the pair shadows lies, seen by the
+ * eye, inside the pair's image (lx_plane_cover_pair_image), which the main pass tests the
+ * floor over, some outside both fronts' own images (those the main pass once left lit). */
 static void a_flat_box_pair_is_its_box(void **state)
 {
 	(void)state;
 	uint64_t seed = 0x51abull;
-	long shadowed = 0, sides = 0, points = 0;
+	long shadowed = 0, sides = 0, points = 0, imaged_points = 0, beside = 0;
 	const vec3 extra[3] = {{3.5, 0.9, 1.0}, {-2.5, 0.8, -1.5}, {0, 0, 0}};
 	for (int c = 0; c < lx_config_count + 3; c++) {
 		struct setup s;
@@ -951,6 +953,8 @@ static void a_flat_box_pair_is_its_box(void **state)
 				continue;
 			int top = cov.of[id][0], bottom = cov.of[id][1];
 			assert_true(cov.top[bottom] == top && cov.owner[bottom] == slab && top == 0); /* the table top */
+			struct lx_poly img[2], pair;
+			bool imaged = id == 1 && lx_plane_cover_pair_image(f, &cov, id, &img[0], &img[1], &pair);
 			for (int k = 0; k < 2000; k++) {
 				vec3 lo = f->bmin[id], hi = f->bmax[id], x;
 				if (id == 1 && k % 2) { /* the floor around a slab corner's shadow: where the sides' rays fall */
@@ -975,13 +979,25 @@ static void a_flat_box_pair_is_its_box(void **state)
 						 c, id, x.x, x.y, x.z, got, box, plane);
 				points++, shadowed += want;
 				sides += want && !lx_plane_cover_shadows(&cov.m[top], x) && !lx_plane_cover_shadows(&cov.m[bottom], x);
+				/* the main pass tests the floor over the pair's image: a point the tests
+				 * shadow lies inside it, though perhaps in neither front's own */
+				vec4 e = m4_mul_point(&f->view.view_proj, x);
+				if (!imaged || !got || !(e.w > 0))
+					continue;
+				vec2 at = lx_view_window_point(&f->view, e);
+				if (!lx_poly_contains(&pair, at, -1e-6 * (1 + fabs(at.x) + fabs(at.y))))
+					fail_msg("configuration %d: floor point (%g, %g, %g) in the pair's shadow, pixel (%g, %g), "
+						 "lies outside the pair's image", c, x.x, x.y, x.z, at.x, at.y);
+				imaged_points++;
+				beside += !lx_poly_contains(&img[0], at, 0) && !lx_poly_contains(&img[1], at, 0);
 			}
 		}
 		lx_meshes_free(&s.meshes);
 	}
 	print_message("the table's pair: %ld points, %ld in the slab's or the top's shadow, %ld of them by rays through "
-		      "the slab's thin sides alone\n", points, shadowed, sides);
-	assert_true(shadowed > 1000 && sides > 10);
+		      "the slab's thin sides alone; %ld floor points of it in the pair's image, %ld outside both fronts' "
+		      "own\n", points, shadowed, sides, imaged_points, beside);
+	assert_true(shadowed > 1000 && sides > 10 && imaged_points > 500 && beside > 10);
 }
 
 /* Caster c's mesh corners as lx_sure_shadow_window takes them (x, y, z floats); returns

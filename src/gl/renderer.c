@@ -1320,11 +1320,6 @@ static void add_pieces(struct lx_renderer *r, const struct lx_frame *f, int id, 
 		add_piece(r, f, id, r->merge_in[j]);
 }
 
-/* Column x rounded down or up to a multiple of LX_SPAN_ALIGN (x of either sign, far
- * from INT_MAX: columns are clamped to a billion). */
-static int align_down(int x) { return x - ((x % LX_SPAN_ALIGN) + LX_SPAN_ALIGN) % LX_SPAN_ALIGN; }
-static int align_up(int x) { return align_down(x + LX_SPAN_ALIGN - 1); }
-
 /* Spans in[0..n) cut band by band (the lookup region's grid) by convex window polygon
  * win, into out (room for room): in each band, the pixels inside win by a pixel along
  * the row and by `rows` rows across (lx_poly_rows_inside) become a span of mask `inner`
@@ -1346,7 +1341,7 @@ static int cut_spans(const struct span *in, int n, const struct lx_poly *win, in
 			bool touch = edge && rows_touched(win, y0, y1, &ox0, &ox1) && ox1 > b.x0 && ox0 < b.x1;
 			bool inside = (inner || !edge) && lx_poly_rows_inside(win, y0 - rows, y1 + rows, 1.0, &ix0, &ix1);
 			/* the inner pixels in to whole blocks, the edges out (LX_SPAN_ALIGN) */
-			ix0 = align_up(ix0), ix1 = align_down(ix1), ox0 = align_down(ox0), ox1 = align_up(ox1);
+			ix0 = lx_align_up(ix0), ix1 = lx_align_down(ix1), ox0 = lx_align_down(ox0), ox1 = lx_align_up(ox1);
 			ix0 = ix0 > b.x0 ? ix0 : b.x0, ix1 = ix1 < b.x1 ? ix1 : b.x1;
 			inside = inside && ix1 > ix0;
 			if (!touch && !inside)
@@ -1409,24 +1404,17 @@ static struct span *visible_spans(struct lx_renderer *r, const struct lx_frame *
  * the spans. */
 static struct span *cover_spans(struct lx_renderer *r, const struct lx_frame *f, int id, struct span *span, int *ns)
 {
-	/* w[0]: a flat box's two fronts' hull, w[1...]: each front's shadow */
+	/* w[0]: a flat box's whole shadow (lx_plane_cover_pair_image: its thin sides' too,
+	 * tested over all of it), w[1...]: each front's own */
 	struct lx_poly w[LX_MAX_COVERS + 1];
 	int nw = 1;
 	bool given = true;
-	for (int c = 0; c < LX_MAX_COVERS && r->covers->of[id][c] >= 0; c++)
-		given = given && lx_plane_cover_image(f, r->covers, r->covers->of[id][c], id, &w[nw++]);
-	/* a flat box's two fronts, tested together, also shadow what the rays through its thin
-	 * sides reach: between their shadows, inside the hull of the two (the box's own
-	 * shadow), where every pixel is tested; without, a low light lost those pixels'
-	 * shadow (the table's slab under a low light, one pixel at 256x192) */
-	w[0].n = 0;
-	if (given && nw == 3 && r->covers->paired[id]) {
-		vec2 pts[2 * LX_POLY_MAX];
-		memcpy(pts, w[1].v, (size_t)w[1].n * sizeof(vec2));
-		memcpy(pts + w[1].n, w[2].v, (size_t)w[2].n * sizeof(vec2));
-		given = lx_poly_hull(pts, w[1].n + w[2].n, &w[0]); /* two quadrilaterals': 8 corners at most */
-	}
-	for (int c = w[0].n >= 3 ? 0 : 1; c < nw; c++) {
+	if (r->covers->paired[id])
+		given = lx_plane_cover_pair_image(f, r->covers, id, &w[1], &w[2], &w[0]), nw = 3;
+	else
+		for (int c = 0; c < LX_MAX_COVERS && r->covers->of[id][c] >= 0; c++, nw++)
+			given = given && lx_plane_cover_image(f, r->covers, r->covers->of[id][c], id, &w[nw]);
+	for (int c = r->covers->paired[id] ? 0 : 1; c < nw; c++) {
 		struct span *to = span == r->seen ? r->spans : r->seen;
 		int n = !given ? -1
 			       : c == 0 ? cut_spans(span, *ns, &w[0], 0, COVER_SPAN, 0, to, PLANE_SPANS)

@@ -574,9 +574,13 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 			double x0, x1;
 			if (!band_range(&hull[h], y0 - 1.0, y1 + 1.0, &x0, &x1))
 				continue;
-			const double q = LX_SPAN_ALIGN; /* widened to whole blocks */
-			int i0 = (int)fmax(within.x0, fmin(within.x1, q * floor((floor(x0) - 1) / q)));
-			int i1 = (int)fmax(within.x0, fmin(within.x1, q * ceil((ceil(x1) + 1) / q)));
+			/* out to whole blocks: clamped a block beyond `within` (so that a range
+			 * outside it stays outside), aligned, clamped to it */
+			double lo = within.x0 - LX_SPAN_ALIGN, hi = within.x1 + LX_SPAN_ALIGN;
+			int i0 = lx_align_down((int)fmax(lo, fmin(hi, floor(x0) - 1)));
+			int i1 = lx_align_up((int)fmax(lo, fmin(hi, ceil(x1) + 1)));
+			i0 = i0 < within.x0 ? within.x0 : i0 > within.x1 ? within.x1 : i0;
+			i1 = i1 < within.x0 ? within.x0 : i1 > within.x1 ? within.x1 : i1;
 			if (i1 <= i0)
 				continue;
 			int j = k++; /* insert by start */
@@ -657,19 +661,9 @@ void lx_plane_window(const struct lx_frame *f, int id, struct lx_poly *out)
 
 bool lx_plane_window_holds(const struct lx_poly *window, struct lx_rect box)
 {
-	const vec2 *p = window->v;
-	int n = window->n;
-	if (n < 3)
-		return false;
-	for (int i = 0; i < n; i++) {
-		vec2 a = p[i], e = {p[lx_loop_next(i, n)].x - a.x, p[lx_loop_next(i, n)].y - a.y};
-		double len = sqrt(e.x * e.x + e.y * e.y); /* > 0: the hull keeps no repeated point */
-		for (int k = 0; k < 4; k++) {
-			double x = k & 1 ? box.x1 : box.x0, y = k & 2 ? box.y1 : box.y0;
-			if (!(e.x * (y - a.y) - e.y * (x - a.x) >= 0.01 * len))
-				return false;
-		}
-	}
+	for (int k = 0; k < 4; k++)
+		if (!lx_poly_contains(window, (vec2){k & 1 ? box.x1 : box.x0, k & 2 ? box.y1 : box.y0}, 0.01))
+			return false;
 	return true;
 }
 

@@ -43,6 +43,10 @@ struct lx_rect {
  * so a span with a lookup takes the rest of each block its edge would cut (on the
  * table's default view 0.03 ms less main pass at 1024x1024, measured frame by frame). */
 #define LX_SPAN_ALIGN 4
+/* Column x rounded down or up to a multiple of LX_SPAN_ALIGN (x of either sign, far from
+ * INT_MAX). */
+static inline int lx_align_down(int x) { return x - ((x % LX_SPAN_ALIGN) + LX_SPAN_ALIGN) % LX_SPAN_ALIGN; }
+static inline int lx_align_up(int x) { return lx_align_down(x + LX_SPAN_ALIGN - 1); }
 
 /* A window rectangle drawn with a lookup or without. */
 struct lx_span {

@@ -2,6 +2,7 @@
 #include "plane_cover.h"
 #include "plane_optimal.h"
 #include <math.h>
+#include <string.h>
 
 /* Row r of m: h_r = a . (X, 1). */
 static void set_row(mat4 *m, int r, vec4 a)
@@ -391,6 +392,20 @@ bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers
 	/* the corners' shadows bound the shadow (a central projection of the parallelogram,
 	 * every corner in front of the light and of the eye, keeps it convex) */
 	lx_poly_hull(pts, 4, win);
+	return win->n >= 3;
+}
+
+bool lx_plane_cover_pair_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int q, struct lx_poly *img0,
+			       struct lx_poly *img1, struct lx_poly *win)
+{
+	win->n = img0->n = img1->n = 0;
+	if (q < 0 || q >= f->scene->plane_count || !cv->paired[q] ||
+	    !lx_plane_cover_image(f, cv, cv->of[q][0], q, img0) || !lx_plane_cover_image(f, cv, cv->of[q][1], q, img1))
+		return false;
+	vec2 pts[8]; /* two quadrilaterals' corners */
+	memcpy(pts, img0->v, (size_t)img0->n * sizeof(vec2));
+	memcpy(pts + img0->n, img1->v, (size_t)img1->n * sizeof(vec2));
+	lx_poly_hull(pts, img0->n + img1->n, win);
 	return win->n >= 3;
 }
 

@@ -120,6 +120,15 @@ void lx_slab_faces_left_out(const struct lx_frame *f, const struct lx_plane_cove
  * the test along its edges, and as before elsewhere. */
 bool lx_plane_cover_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int p, int q,
 			  struct lx_poly *win);
+/* The shadow a flat box's pair of fronts (cv->paired[q]: fronts of[q][0] and of[q][1])
+ * throws on plane q's plane, as the eye sees it: the hull of the two fronts' images (the
+ * box's corners all lie on the two parallelograms), holding what the rays through the
+ * box's thin sides shadow between and beside them, which neither image holds. Where the
+ * pair's tests shadow a point of q, its image lies inside. False where there is none to
+ * give (not a pair, or lx_plane_cover_image gives none for a front); *img0 and *img1 then
+ * hold what it gave, as lx_plane_cover_image leaves them. */
+bool lx_plane_cover_pair_image(const struct lx_frame *f, const struct lx_plane_covers *cv, int q, struct lx_poly *img0,
+			       struct lx_poly *img1, struct lx_poly *win);
 
 /* How many covers any frame of the scene's animation may test over one object (0 to
  * LX_MAX_COVERS): the most planes' planes some object's box, anywhere on its path,
