@@ -386,7 +386,7 @@ static void two_extreme_lights_warn_or_match(void **state)
 				 sc.lights[1].position.z, sc.lights[1].at.x, sc.lights[1].at.y, sc.lights[1].at.z);
 			struct lx_plane_points pts;
 			for (int m = 0; m < NM; m++) {
-				lx_method_run_draw(&run[m], &frame);
+				lx_method_run_draw(&run[m], &frame, NULL);
 				if (m == 0) { /* the lights' frames and images are every run's: one reference for all */
 					assert_true(lx_method_run_reference(&run[m], px.ref_obj, ref_sh, ref_rgba, 2));
 					assert_true(lx_plane_points_make(&frame, px.ref_obj, &pts));

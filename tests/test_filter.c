@@ -36,7 +36,7 @@ static void golden_line(struct lx_method_run *run, const struct lx_frame *frame,
 			const char *what, char *line, size_t len)
 {
 	struct lx_frame_times t;
-	lx_method_run_frame(run, frame, &t);
+	lx_method_run_frame(run, frame, NULL, &t);
 	lx_renderer_read(run->renderer, rgba);
 	uint64_t shaded = fnv1a(0xcbf29ce484222325ull, rgba, (size_t)GW * GH * 4);
 	lx_method_run_decision(run, 0, rgba, obj, sh);

@@ -1881,7 +1881,7 @@ static int programs_built_by_frames(const char *scene_name, double step, bool wa
 				struct lx_frame frame;
 				struct lx_frame_times times;
 				assert_true(lx_frame_setup(&frame, &scene, &m, t, 160, 120, err, sizeof err));
-				lx_method_run_frame(&run, &frame, &times);
+				lx_method_run_frame(&run, &frame, NULL, &times);
 			}
 	}
 	lx_programs_counts(&kept, &reused);
@@ -1957,6 +1957,68 @@ static void programs_are_kept_per_context(void **state)
 	lx_render_report_free(&again);
 }
 
+/* A frame's light matrices made ahead, while the GL drew the frame before
+ * (lx_method_run_frame's `next`), are the ones it would make itself: the same result,
+ * atlas layout and decisions, frame after frame of the table's animation (its maps laid
+ * out anew each frame) for plane-optimal, which lays its maps out per frame, and
+ * uniform. A frame other than the one foretold makes its own. */
+static void a_set_up_made_ahead_is_the_frames_own(void **state)
+{
+	(void)state;
+	struct lx_gl_caps caps;
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
+	struct lx_scene s;
+	assert_true(lx_scene_builtin("table", &s));
+	struct lx_scene_meshes m;
+	assert_true(lx_meshes_build(&s, &m));
+	enum { N = 4 };
+	static struct lx_frame f[N + 1];
+	char err[512];
+	for (int i = 0; i <= N; i++) /* frames 0..N-1 in turn; N: one not foretold */
+		assert_true(lx_frame_setup(&f[i], &s, &m, i < N ? 2.0 + 0.7 * i : 9.5, W, H, err, sizeof err));
+	size_t n = (size_t)W * H;
+	uint8_t *rgba = malloc(n * 4), *sh[2] = {malloc(n), malloc(n)};
+	int16_t *obj[2] = {malloc(n * sizeof(int16_t)), malloc(n * sizeof(int16_t))};
+	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	const char *names[] = {"plane", "uniform"};
+	static struct lx_method_run run[2]; /* [0] ahead, [1] frame by frame */
+	for (int k = 0; k < 2; k++) {
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		for (int r = 0; r < 2; r++)
+			assert_int_equal(lx_method_run_init(&run[r], names[k], &s, &m, &caps, &o, W, H, LX_DEPTH_AUTO,
+							    LX_DEFAULT_BIAS_CODES, false, err, sizeof err),
+					 0);
+		long shadowed = 0;
+		for (int i = 0; i <= N; i++) {
+			struct lx_frame_times t[2];
+			/* frame N-1 foretells frame 0 again; frame N (another) comes instead */
+			lx_method_run_frame(&run[0], &f[i], i < N - 1 ? &f[i + 1] : i == N - 1 ? &f[0] : NULL, &t[0]);
+			lx_method_run_frame(&run[1], &f[i], NULL, &t[1]);
+			assert_true(t[0].setup_ahead == (i > 0 && i < N));
+			assert_false(t[1].setup_ahead);
+			const struct lx_light_maps *a = &run[0].lights[0], *b = &run[1].lights[0];
+			assert_memory_equal(&a->result, &b->result, sizeof a->result);
+			assert_int_equal(a->atlas.count, b->atlas.count);
+			for (int g = 0; g < a->atlas.count; g++) {
+				const struct lx_region *ga = &a->atlas.regions[g], *gb = &b->atlas.regions[g];
+				assert_true(ga->x == gb->x && ga->y == gb->y && ga->w == gb->w && ga->h == gb->h);
+			}
+			for (int r = 0; r < 2; r++)
+				lx_method_run_decision(&run[r], 0, rgba, obj[r], sh[r]);
+			assert_memory_equal(obj[0], obj[1], n * sizeof(int16_t));
+			assert_memory_equal(sh[0], sh[1], n);
+			for (size_t p = 0; p < n; p++)
+				shadowed += sh[0][p];
+		}
+		assert_true(shadowed > 0); /* frames with shadows to get wrong */
+		for (int r = 0; r < 2; r++)
+			lx_method_run_free(&run[r]);
+	}
+	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_meshes_free(&m);
+	lx_platform_destroy(plat);
+}
+
 /* The kiosk's overlay draws its text over a frame: a dark box at the top left with
  * bright glyph pixels in it, the rest of the frame untouched. */
 static void overlay_draws_text(void **state)
@@ -1981,7 +2043,7 @@ static void overlay_draws_text(void **state)
 						    err, sizeof err),
 				 0);
 		struct lx_frame_times t;
-		lx_method_run_frame(&mr, &f, &t);
+		lx_method_run_frame(&mr, &f, NULL, &t);
 		uint8_t *before = malloc((size_t)W * H * 4), *after = malloc((size_t)W * H * 4);
 		lx_renderer_read(mr.renderer, before);
 		struct lx_overlay *ov = lx_overlay_create(err, sizeof err);
@@ -2055,6 +2117,7 @@ int main(void)
 		cmocka_unit_test(a_slab_alone_needs_no_map),
 		cmocka_unit_test(sure_shadows_skip_lookups),
 		cmocka_unit_test(two_shelves_shadow_the_floor_both),
+		cmocka_unit_test(a_set_up_made_ahead_is_the_frames_own),
 		cmocka_unit_test_teardown(overlay_draws_text, close_shared_platform),
 	};
 	if (getenv("LIXEL_TEST_ONLY")) /* one test by name (a developer's rerun) */

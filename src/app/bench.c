@@ -257,32 +257,49 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 		names[m] = b->labels[m];
 	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
 	enum lx_depth_precision path = b->depth.taken;
-	/* a still configuration's one frame, set up once; the animation's, frame by frame */
+	/* a still configuration's one frame, set up once; the animation's, frame by frame,
+	 * each one's next set up ahead (lx_method_run_frame's `next`) */
 	if (!anim && !frame_at(b, scene, false, meshes, 0, frame, err, errlen))
 		return 2;
+	struct lx_frame *after = anim ? malloc(sizeof *after) : frame;
+	if (!after) {
+		snprintf(err, errlen, "out of memory for a frame");
+		return 1;
+	}
+	int st = 0;
 	for (int r = 0, done = 0; r < rounds; r++) {
 		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
 		lx_run_order(names, b->nm, &seq, order); /* the same schedule for any order of --methods */
-		for (int k = 0; k < b->nm; k++) {
-			int m = order[k], st;
+		for (int k = 0; k < b->nm && !st; k++) {
+			int m = order[k];
 			struct lx_method_run run;
 			if ((st = make_run(b, m, path, meshes, &run, err, errlen)))
-				return st;
-			for (int i = -warm; i < n; i++) {
+				break;
+			if (anim && !frame_at(b, scene, true, meshes, done, frame, err, errlen))
+				st = 2;
+			for (int i = -warm; i < n && !st; i++) {
 				struct lx_frame_times ft;
-				if (anim && !frame_at(b, scene, true, meshes, done + (i > 0 ? i : 0), frame, err, errlen)) {
-					lx_method_run_free(&run);
-					return 2;
+				bool more = i + 1 < n; /* frame done + i + 1 (warm-up frames are frame done) */
+				if (anim && more && !frame_at(b, scene, true, meshes, done + (i + 1 > 0 ? i + 1 : 0), after, err,
+							      errlen)) {
+					st = 2;
+					break;
 				}
-				lx_method_run_frame(&run, frame, &ft);
+				lx_method_run_frame(&run, frame, more ? after : NULL, &ft);
 				double v[T_KINDS] = {ft.frame_ms, ft.setup_us, ft.shadow_ms, ft.main_ms, ft.setup_again_us};
 				for (int q = 0; q < T_KINDS && i >= 0; q++)
 					times[((size_t)q * b->nm + m) * b->frames + done + i] = v[q];
+				if (anim && more)
+					memcpy(frame, after, sizeof *frame); /* the bytes the run set up ahead */
 			}
 			lx_method_run_free(&run);
 		}
 		done += n;
 	}
+	if (anim)
+		free(after);
+	if (st)
+		return st;
 	return !anim || frame_at(b, scene, true, meshes, b->frames - 1, frame, err, errlen) ? 0 : 2;
 }
 
@@ -298,7 +315,7 @@ static bool write_strip(const struct bench *b, const char *config, struct lx_met
 		return true; /* no strip, no harm to the figures */
 	memset(strip, 255, (size_t)sw * ph * 4);
 	for (int m = 0; m < b->nm; m++) {
-		lx_method_run_frame(&runs[m], frame, &(struct lx_frame_times){0});
+		lx_method_run_frame(&runs[m], frame, NULL, &(struct lx_frame_times){0});
 		lx_renderer_read(runs[m].renderer, rgba);
 		for (int y = 0; y < ph; y++)
 			for (int x = 0; x < pw; x++)
@@ -415,7 +432,7 @@ static int measure_config(struct bench *b, int ci, const struct lx_scene *scene,
 		}
 		for (int m = 0; m < b->nm; m++) {
 			double v[4];
-			lx_method_run_frame(&runs[m], &frame, &(struct lx_frame_times){0});
+			lx_method_run_frame(&runs[m], &frame, NULL, &(struct lx_frame_times){0});
 			measure_method(b, ci, m, sidx, &runs[m], px, &pts, v);
 			for (int q = 0; q < 4; q++)
 				mis[m][q][sidx] = v[q];

@@ -502,20 +502,44 @@ static bool kiosk_snapshot(struct kiosk *k)
 	return ok;
 }
 
-static int kiosk_loop(struct kiosk *k)
+/* The frame shown at time t (ns), or false after a line on stderr. */
+static bool kiosk_frame_at(const struct kiosk *k, int64_t t, struct lx_frame *f)
 {
 	char err[512];
+	if (lx_frame_setup(f, &k->scene, &k->meshes, (t - k->start) / 1e9, k->plat->width, k->plat->height, err,
+			   sizeof err))
+		return true;
+	fprintf(stderr, "lixel kiosk: %s\n", err);
+	return false;
+}
+
+/* Each frame drawn for the time the one before foretold (when it began, plus the time
+ * the one before that took), so that its light matrices are made while the GL draws
+ * the frame before (lx_method_run_draw's `next`); the first one for now. */
+static int kiosk_loop(struct kiosk *k)
+{
 	int status = 0;
+	struct lx_frame *f = malloc(sizeof *f), *next = malloc(sizeof *next);
+	int64_t began = now_ns(), step = 1000000000 / 60; /* until a frame has been timed */
+	if (!f || !next || !kiosk_frame_at(k, began, f)) {
+		if (!f || !next)
+			fprintf(stderr, "lixel kiosk: out of memory for two frames\n");
+		free(f), free(next);
+		return 2;
+	}
 	while (!stop_requested && (k->args->frames < 0 || k->frame < k->args->frames)) {
 		int64_t t = now_ns();
-		struct lx_frame f;
-		if (!lx_frame_setup(&f, &k->scene, &k->meshes, (t - k->start) / 1e9, k->plat->width, k->plat->height, err,
-				    sizeof err)) {
-			fprintf(stderr, "lixel kiosk: %s\n", err);
+		if (k->frame > 0) /* a stall (a display taken back) foretells nothing */
+			step = t - began < 1000000 ? 1000000 : t - began > 100000000 ? 100000000 : t - began;
+		began = t;
+		bool more = k->args->frames < 0 || k->frame + 1 < k->args->frames;
+		if (more && !kiosk_frame_at(k, t + step, next)) {
 			status = 2;
 			break;
 		}
-		lx_method_run_draw(&k->runs[k->current], &f);
+		lx_method_run_draw(&k->runs[k->current], f, more ? next : NULL);
+		struct lx_frame *drawn = f;
+		f = next, next = drawn; /* the next frame's bytes, as the run set them up */
 		if (k->args->overlay && k->ov)
 			kiosk_overlay(k, t);
 		if (k->args->snapshot && k->frame + 1 == k->args->frames && !kiosk_snapshot(k)) {
@@ -538,6 +562,7 @@ static int kiosk_loop(struct kiosk *k)
 		}
 		kiosk_status(k, false);
 	}
+	free(f), free(next);
 	kiosk_status(k, true);
 	return status;
 }

@@ -109,8 +109,8 @@ static bool time_frames(const struct lx_render_job *job, struct lx_method_run *m
 	double *frame_ms = times, *shadow_ms = times + timed, *main_ms = shadow_ms + timed, *setup_us = main_ms + timed;
 	lx_renderer_finish();
 	for (int i = 0; i < job->warmup_frames + timed; i++) {
-		struct lx_frame_times t;
-		lx_method_run_frame(mr, frame, &t);
+		struct lx_frame_times t; /* a still frame: each one's set-up made during the last */
+		lx_method_run_frame(mr, frame, i + 1 < job->warmup_frames + timed ? frame : NULL, &t);
 		int k = i - job->warmup_frames;
 		if (k >= 0)
 			frame_ms[k] = t.frame_ms, shadow_ms[k] = t.shadow_ms, main_ms[k] = t.main_ms, setup_us[k] = t.setup_us;

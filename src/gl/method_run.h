@@ -33,16 +33,30 @@ struct lx_method_run {
 	int width, height;
 	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
 	bool setup_again;      /* lx_method_run_frame times the set-up a second time (the bench) */
+	/* The next frame's set-up, made while the GL drew the last frame's main pass (the
+	 * calls' `next`): for frame ahead_of, each light's in ahead[], in ahead_us (and
+	 * ahead_again_us); taken by the call that draws that frame, dropped by any other. */
+	bool ahead_ready;
+	double ahead_us, ahead_again_us;
+	struct lx_frame ahead_of;
+	struct lx_light_ahead {
+		struct lx_frame frame;
+		struct lx_atlas atlas;
+		struct lx_shadow_result result;
+	} ahead[LX_MAX_LIGHTS];
 };
 
 struct lx_frame_times {
-	double setup_us;  /* CPU time building the light matrices (every light's) */
+	double setup_us;  /* CPU time building the light matrices (every light's), wherever it
+			   * ran: in the frame, or ahead, while the GL drew the frame before */
+	bool setup_ahead; /* the set-up ran ahead: the frame did not wait for it */
 	double setup_again_us; /* with setup_again: the same work done again at once, on copies,
 				* the CPU awake; the frame does not pay it. NAN otherwise. */
 	double shadow_ms; /* shadow passes, glFinish'ed (and the main pass's CPU work, done while
 			   * the GL draws them) */
-	double main_ms;   /* main pass (every light's), glFinish'ed */
-	double frame_ms;  /* all three */
+	double main_ms;   /* main pass (every light's), glFinish'ed (and the next frame's set-up,
+			   * done while the GL draws it) */
+	double frame_ms;  /* all three; the set-up only where it ran in the frame */
 };
 
 struct lx_plane_report {
@@ -68,11 +82,15 @@ void lx_method_run_warm(struct lx_method_run *mr);
 void lx_method_run_set_lookup_everywhere(struct lx_method_run *mr, bool everywhere);
 /* Light matrices, shadow passes and the shaded main pass, each step timed (glFinish
  * after each pass: for the bench and render, not for a display). f is the frame set up
- * for the scene (any light: each light's is made from it). */
-void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, struct lx_frame_times *t);
+ * for the scene (any light: each light's is made from it). next, when not NULL, is the
+ * frame the next call will draw: its light matrices are made once this frame's main
+ * pass is handed to the GL, while the GL draws it (the CPU waits for the GL there
+ * anyway), and that call takes them if its frame is the same bytes, else makes its own. */
+void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, const struct lx_frame *next,
+			 struct lx_frame_times *t);
 /* The same, untimed and unsynchronised: on a tiler a glFinish between the passes costs a
  * flush of every tile; the kiosk's swap is the only sync it needs. */
-void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f);
+void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f, const struct lx_frame *next);
 /* The light matrices and the shadow passes only: all that lx_method_run_decision needs
  * (the tests that judge decisions skip the shaded main pass). */
 void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f);
