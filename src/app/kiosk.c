@@ -521,15 +521,15 @@ static int kiosk_loop(struct kiosk *k)
 	int status = 0;
 	struct lx_frame *f = malloc(sizeof *f), *next = malloc(sizeof *next);
 	int64_t began = now_ns(), step = 1000000000 / 60; /* until a frame has been timed */
-	if (!f || !next || !kiosk_frame_at(k, began, f)) {
-		if (!f || !next)
-			fprintf(stderr, "lixel kiosk: out of memory for two frames\n");
-		free(f), free(next);
-		return 2;
+	if (!f || !next) {
+		fprintf(stderr, "lixel kiosk: out of memory for two frames\n");
+		status = 1;
+	} else if (!kiosk_frame_at(k, began, f)) {
+		status = 2;
 	}
-	while (!stop_requested && (k->args->frames < 0 || k->frame < k->args->frames)) {
+	while (!status && !stop_requested && (k->args->frames < 0 || k->frame < k->args->frames)) {
 		int64_t t = now_ns();
-		if (k->frame > 0) /* a stall (a display taken back) foretells nothing */
+		if (k->frame > 0) /* the last frame's time, within 1-100 ms (a stall foretells nothing) */
 			step = t - began < 1000000 ? 1000000 : t - began > 100000000 ? 100000000 : t - began;
 		began = t;
 		bool more = k->args->frames < 0 || k->frame + 1 < k->args->frames;
