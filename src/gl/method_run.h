@@ -35,7 +35,9 @@ struct lx_method_run {
 	bool setup_again;      /* lx_method_run_frame times the set-up a second time (the bench) */
 	/* The next frame's set-up, made while the GL drew the last frame's main pass (the
 	 * calls' `next`): for frame ahead_of, each light's in ahead[], in ahead_us (and
-	 * ahead_again_us); taken by the call that draws that frame, dropped by any other. */
+	 * ahead_again_us); taken by the call that draws that frame, dropped by any other.
+	 * The frame is all it depends on: the lights' options are fixed at init (the
+	 * setters change the renderer's main pass, not the set-up). */
 	bool ahead_ready;
 	double ahead_us, ahead_again_us;
 	struct lx_frame ahead_of;
