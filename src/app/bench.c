@@ -262,11 +262,8 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 	 * each one's next set up ahead (lx_method_run_frame's `next`) */
 	if (!anim && !frame_at(b, scene, false, meshes, 0, frame, err, errlen))
 		return 2;
-	struct lx_frame *after = anim ? malloc(sizeof *after) : frame;
-	if (!after) {
-		snprintf(err, errlen, "out of memory for a frame");
-		return 1;
-	}
+	struct lx_frame next;
+	struct lx_frame *after = anim ? &next : frame;
 	int st = 0;
 	for (int r = 0, done = 0; r < rounds; r++) {
 		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
@@ -297,8 +294,6 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 		}
 		done += n;
 	}
-	if (anim)
-		free(after);
 	if (st)
 		return st;
 	return !anim || frame_at(b, scene, true, meshes, b->frames - 1, frame, err, errlen) ? 0 : 2;

@@ -518,15 +518,9 @@ static bool kiosk_frame_at(const struct kiosk *k, int64_t t, struct lx_frame *f)
  * the frame before (lx_method_run_draw's `next`); the first one for now. */
 static int kiosk_loop(struct kiosk *k)
 {
-	int status = 0;
-	struct lx_frame *f = malloc(sizeof *f), *next = malloc(sizeof *next);
+	struct lx_frame frames[2], *f = &frames[0], *next = &frames[1];
 	int64_t began = now_ns(), step = 1000000000 / 60; /* until a frame has been timed */
-	if (!f || !next) {
-		fprintf(stderr, "lixel kiosk: out of memory for two frames\n");
-		status = 1;
-	} else if (!kiosk_frame_at(k, began, f)) {
-		status = 2;
-	}
+	int status = kiosk_frame_at(k, began, f) ? 0 : 2;
 	while (!status && !stop_requested && (k->args->frames < 0 || k->frame < k->args->frames)) {
 		int64_t t = now_ns();
 		if (k->frame > 0) /* the last frame's time, within 1-100 ms (a stall foretells nothing) */
@@ -562,7 +556,6 @@ static int kiosk_loop(struct kiosk *k)
 		}
 		kiosk_status(k, false);
 	}
-	free(f), free(next);
 	kiosk_status(k, true);
 	return status;
 }

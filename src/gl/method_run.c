@@ -109,14 +109,22 @@ void lx_method_run_free(struct lx_method_run *mr)
 		lx_image_free(&mr->lights[i].image);
 }
 
+/* Light i's frame of f and its light matrices into frame and res, its maps placed in
+ * *atlas (which starts as the light's layout of the frame before). */
+static void set_up_light(const struct lx_method_run *mr, int i, const struct lx_frame *f, struct lx_frame *frame,
+			 struct lx_atlas *atlas, struct lx_shadow_result *res)
+{
+	lx_frame_for_light(f, i, frame);
+	lx_shadow_method_frame(mr->method, frame, atlas, &mr->lights[i].options, res);
+}
+
 /* Every light's frame and light matrices, its maps placed in its part of the atlas. */
 static void build_maps(struct lx_method_run *mr, const struct lx_frame *f)
 {
 	mr->ahead_ready = false; /* made from the atlas as it was before this */
 	for (int i = 0; i < mr->light_count; i++) {
 		struct lx_light_maps *lm = &mr->lights[i];
-		lx_frame_for_light(f, i, &lm->frame);
-		lx_shadow_method_frame(mr->method, &lm->frame, &lm->atlas, &lm->options, &lm->result);
+		set_up_light(mr, i, f, &lm->frame, &lm->atlas, &lm->result);
 	}
 }
 
@@ -128,8 +136,7 @@ static double build_ahead(struct lx_method_run *mr, const struct lx_frame *next)
 	for (int i = 0; i < mr->light_count; i++) {
 		struct lx_light_ahead *a = &mr->ahead[i];
 		a->atlas = mr->lights[i].atlas;
-		lx_frame_for_light(next, i, &a->frame);
-		lx_shadow_method_frame(mr->method, &a->frame, &a->atlas, &mr->lights[i].options, &a->result);
+		set_up_light(mr, i, next, &a->frame, &a->atlas, &a->result);
 	}
 	memcpy(&mr->ahead_of, next, sizeof *next); /* compared byte by byte: no padding left out */
 	mr->ahead_ready = true;
@@ -208,8 +215,7 @@ static double setup_again_us(const struct lx_method_run *mr, const struct lx_fra
 		struct lx_frame frame;
 		struct lx_atlas atlas = mr->lights[i].atlas;
 		struct lx_shadow_result res;
-		lx_frame_for_light(f, i, &frame);
-		lx_shadow_method_frame(mr->method, &frame, &atlas, &mr->lights[i].options, &res);
+		set_up_light(mr, i, f, &frame, &atlas, &res);
 	}
 	return (now_ms() - t0) * 1e3;
 }
