@@ -212,8 +212,11 @@ bool m3_invert(const mat3 *a, mat3 *out)
 
 double v4_len(vec4 a) { return sqrt(v4_dot(a, a)); /* a sum of squares: >= 0 */ }
 
-/* 3x3 determinant of the rows (a, b, q) taken at columns i, j, k */
-static double minor3(const double *a, const double *b, const double *q, int i, int j, int k)
+/* 3x3 determinant of the rows (a, b, q) taken at columns i, j, k; inlined, so that the
+ * constant columns fold (the shadow pass's convexity tests call v4_cross3 thousands of
+ * times a frame) */
+static inline __attribute__((always_inline)) double minor3(const double *a, const double *b, const double *q, int i,
+								int j, int k)
 {
 	return a[i] * (b[j] * q[k] - b[k] * q[j]) - a[j] * (b[i] * q[k] - b[k] * q[i]) + a[k] * (b[i] * q[j] - b[j] * q[i]);
 }
