@@ -122,6 +122,7 @@ static void set_up_light(const struct lx_method_run *mr, int i, const struct lx_
 static void build_maps(struct lx_method_run *mr, const struct lx_frame *f)
 {
 	mr->ahead_ready = false; /* made from the atlas as it was before this */
+	lx_renderer_drop_plan(mr->renderer);
 	for (int i = 0; i < mr->light_count; i++) {
 		struct lx_light_maps *lm = &mr->lights[i];
 		set_up_light(mr, i, f, &lm->frame, &lm->atlas, &lm->result);
@@ -141,6 +142,18 @@ static double build_ahead(struct lx_method_run *mr, const struct lx_frame *next)
 	memcpy(&mr->ahead_of, next, sizeof *next); /* compared byte by byte: no padding left out */
 	mr->ahead_ready = true;
 	return (now_ms() - t0) * 1e3;
+}
+
+/* The next frame's shadow-pass CPU work from the set-up made ahead (the renderer's plan),
+ * which take_ahead hands over byte for byte. */
+static void plan_ahead(struct lx_method_run *mr)
+{
+	const struct lx_frame *frames[LX_MAX_LIGHTS];
+	const struct lx_shadow_result *results[LX_MAX_LIGHTS];
+	const struct lx_atlas *atlases[LX_MAX_LIGHTS];
+	for (int i = 0; i < mr->light_count; i++)
+		frames[i] = &mr->ahead[i].frame, results[i] = &mr->ahead[i].result, atlases[i] = &mr->ahead[i].atlas;
+	lx_renderer_plan_shadows(mr->renderer, frames, results, atlases, mr->light_count);
 }
 
 /* Whether the set-up made ahead is frame f's, taken into the lights if so (dropped
@@ -228,6 +241,7 @@ static void main_then_ahead(struct lx_method_run *mr, const struct lx_frame *nex
 	if (next) {
 		lx_renderer_flush();
 		mr->ahead_us = build_ahead(mr, next);
+		plan_ahead(mr);
 		mr->ahead_again_us = mr->setup_again ? setup_again_us(mr, next) : NAN;
 	}
 }

@@ -100,6 +100,26 @@ struct light_draws {
 /* room for a plane's spans in a frame */
 #define PLANE_SPANS 2048
 
+/* A shadow pass's CPU work (shadow_draws): per light, map and object, the triangles the
+ * map keeps (from `first`, `count` indices of kept_index, uploaded into kept_ibo) with the
+ * object's light-clip matrix they were chosen with, which the draw takes, and a round
+ * caster's fan corners (outline_index: their images' hull lies inside the caster's image
+ * in that map, which holds it: sure_spans); per light (by frame) the objects each map
+ * draws, and the maps that drew each caster (drawn_in, by light: what the atlas holds).
+ * Made in the pass, or ahead for the next one (lx_renderer_plan_shadows). */
+struct kept_draw {
+	int first, count;
+	float light_clip[16];
+	int outline_first, outline_count;
+};
+struct shadow_plan {
+	struct kept_draw kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	unsigned short *kept_index, *outline_index;
+	int kept_count, outline_count;
+	unsigned drawn[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	unsigned drawn_in[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+};
+
 struct lx_renderer {
 	struct lx_renderer_desc d;
 	int objects;
@@ -148,23 +168,11 @@ struct lx_renderer {
 	bool *fan_kept;
 	int *fan_next;
 	unsigned short *fan_index, *fan_loop;
-	/* this frame's kept triangles, per light, map and object: from `first`, `count`
-	 * indices of kept_index, uploaded into kept_ibo, and the object's light-clip matrix
-	 * they were chosen with, which the draw takes */
-	struct {
-		int first, count;
-		float light_clip[16];
-		int outline_first, outline_count; /* a round caster's: its fan's corners (outline_index) */
-	} kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
-	unsigned short *kept_index;
-	int kept_count, kept_room;
-	/* the corners of the round casters' fans this frame, each once: their images' hull lies
-	 * inside the caster's image in that map, which holds it (sure_spans) */
-	unsigned short *outline_index;
-	int outline_count;
-	/* the maps of the last shadow pass that drew each caster, by its frame's light: what
-	 * the atlas holds */
-	unsigned drawn_in[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
+	 * plans[1 - plan] made for the next shadow pass. Each holds kept_room indices. */
+	struct shadow_plan plans[2];
+	int plan, kept_room;
+	bool planned;
 	GLuint kept_ibo;
 	GLuint atlas_tex, atlas_fbo, atlas_depth;
 	GLuint beam_tex[LX_MAX_LIGHTS]; /* a projective light's image, 0 for other lights */
@@ -372,7 +380,11 @@ bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *
 	return true;
 }
 
-void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere) { r->d.lookup_everywhere = everywhere; }
+void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere)
+{
+	r->d.lookup_everywhere = everywhere;
+	r->planned = false; /* a plan made ahead drew what lookups read as they were */
+}
 
 struct keyed_position {
 	float p[3];
@@ -539,8 +551,10 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	r->facing_index = malloc((size_t)r->facing_room * sizeof(unsigned short) + 1);
 	/* at most every triangle in every map of every light */
 	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
-	r->kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
-	r->outline_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
+	for (int k = 0; k < 2; k++) {
+		r->plans[k].kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
+		r->plans[k].outline_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
+	}
 	int most = 1; /* the most vertices (so positions, and indices of kept faces) of one mesh */
 	for (int i = 0; i < r->objects; i++)
 		most = meshes->mesh[i].vertex_count > most ? meshes->mesh[i].vertex_count : most;
@@ -550,7 +564,9 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	r->fan_loop = malloc((size_t)most * sizeof(unsigned short));
 	for (int i = 0; r->fan_next && i <= most; i++)
 		r->fan_next[i] = -1;
-	if (!r->facing_index || !r->kept_index || !r->outline_index || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop) {
+	bool plans = r->plans[0].kept_index && r->plans[0].outline_index && r->plans[1].kept_index &&
+		     r->plans[1].outline_index;
+	if (!r->facing_index || !plans || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -661,8 +677,8 @@ void lx_renderer_destroy(struct lx_renderer *r)
 		free(r->shadow_index[i]), free(r->shadow_plane[i]), free(r->run_box[i]), free(r->adj[i]), free(r->welded[i]), free(r->fan_pos[i]);
 	free(r->piece_v);
 	free(r->facing_index);
-	free(r->kept_index);
-	free(r->outline_index);
+	for (int k = 0; k < 2; k++)
+		free(r->plans[k].kept_index), free(r->plans[k].outline_index);
 	free(r->fan_kept), free(r->fan_next), free(r->fan_index), free(r->fan_loop);
 	free(r);
 }
@@ -949,14 +965,14 @@ static bool box_in_depth_range(const struct lx_renderer *r, int id, const mat4 *
  * through the clipping of a triangle that crosses w = 0; one within a hundredth of edge-on
  * (in that measure) is kept and left to the GL, so that float rounding cannot drop one
  * it would draw. */
-static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map, int light,
-			    int m, int id, const vec4 *front, bool reads_itself)
+static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const struct lx_frame *f,
+			    const struct lx_shadow_map *map, int light, int m, int id, const vec4 *front, bool reads_itself)
 {
 	mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t); /* the object's */
-	to_float(&lc, r->kept[light][m][id].light_clip);
+	to_float(&lc, pl->kept[light][m][id].light_clip);
 	vec4 centre = v4_cross3(m4_row(&lc, 0), m4_row(&lc, 1), m4_row(&lc, 3));
 	double tolerance = 1e-2 * v4_len(centre);
-	int first = r->kept_count, n = r->shadow_indices[id] / 3;
+	int first = pl->kept_count, n = r->shadow_indices[id] / 3;
 	const vec4 *plane = r->shadow_plane[id];
 	const unsigned short *index = r->shadow_index[id];
 	/* a round caster drawn as the fan over the faces turned away, where it has fewer
@@ -971,19 +987,19 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 		if (fan)
 			r->fan_kept[t] = side < 0 && (!reads_itself || turned_well_away(r, id, t, seen, plane[t]));
 		if (side < tolerance && !(front && in_front(&plane[t], front)) &&
-		    r->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
-			memcpy(r->kept_index + r->kept_count, index + 3 * t, 3 * sizeof *index);
-			r->kept_count += 3;
+		    pl->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
+			memcpy(pl->kept_index + pl->kept_count, index + 3 * t, 3 * sizeof *index);
+			pl->kept_count += 3;
 		}
 	}
-	int room = r->kept_count - first - 3; /* fewer indices than the faces' */
+	int room = pl->kept_count - first - 3; /* fewer indices than the faces' */
 	int k = fan ? lx_silhouette_fan(r->welded[id], r->adj[id], n, r->fan_kept, (unsigned short)r->fan_apex[id], r->fan_next,
 					r->fan_index, room)
 		    : -1;
-	r->kept[light][m][id].outline_first = r->outline_count, r->kept[light][m][id].outline_count = 0;
-	for (int i = 0; i + 2 < k && r->outline_count < r->kept_room; i += 3) /* (apex, a, b): each corner once, as a */
-		r->outline_index[r->outline_count++] = r->fan_index[i + 1];
-	r->kept[light][m][id].outline_count = r->outline_count - r->kept[light][m][id].outline_first;
+	pl->kept[light][m][id].outline_first = pl->outline_count, pl->kept[light][m][id].outline_count = 0;
+	for (int i = 0; i + 2 < k && pl->outline_count < r->kept_room; i += 3) /* (apex, a, b): each corner once, as a */
+		pl->outline_index[pl->outline_count++] = r->fan_index[i + 1];
+	pl->kept[light][m][id].outline_count = pl->outline_count - pl->kept[light][m][id].outline_first;
 	if (k > 0 && !fan_faces_away(r, id, centre, k))
 		k = -1;
 	if (k > 0) /* its polygon where convex: the same lixels, shorter inner edges */
@@ -998,10 +1014,10 @@ static void keep_back_faces(struct lx_renderer *r, const struct lx_frame *f, con
 			k += 3;
 		}
 	if (k > 0) { /* in place of the faces */
-		memcpy(r->kept_index + first, r->fan_index, (size_t)k * sizeof *r->fan_index);
-		r->kept_count = first + k;
+		memcpy(pl->kept_index + first, r->fan_index, (size_t)k * sizeof *r->fan_index);
+		pl->kept_count = first + k;
 	}
-	r->kept[light][m][id].first = first, r->kept[light][m][id].count = r->kept_count - first;
+	pl->kept[light][m][id].first = first, pl->kept[light][m][id].count = pl->kept_count - first;
 }
 
 /* Of the maps in mask a caster reads as a receiver, those its main-pass draws read with the
@@ -1016,45 +1032,43 @@ static unsigned caster_reads(const struct lx_renderer *r, int id, unsigned mask)
 	return mask && lx_lookup_any(&r->lookup, id, mask) ? mask : 0;
 }
 
-/* Which objects each light's maps draw (drawn[light][object], a mask of maps: those a
- * lookup can read, lx_lookup_caster_maps; none for a flat box in no map) and the
- * triangles each keeps (a flat box's face its front decides left out, res->slab_front),
- * uploaded at once. */
-static void shadow_draws(struct lx_renderer *r, const struct lx_frame *const *f, const struct lx_shadow_result *const *res,
-			 int n, unsigned drawn[][LX_MAX_PLANES + LX_MAX_CASTERS])
+/* A shadow pass's CPU work into pl: which objects each light's maps draw (drawn[i][object]
+ * for frame i, a mask of maps: those a lookup can read, lx_lookup_caster_maps; none for a
+ * flat box in no map), the triangles each keeps (a flat box's face its front decides left
+ * out, res->slab_front) and the maps that draw each caster (drawn_in); atlas[i] is frame
+ * i's light's layout. No GL call: it may run for the next frame while the GL draws. */
+static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const struct lx_frame *const *f,
+			 const struct lx_shadow_result *const *res, const struct lx_atlas *const *atlas, int n)
 {
-	r->kept_count = r->outline_count = 0;
+	pl->kept_count = pl->outline_count = 0;
+	memset(pl->drawn_in, 0, sizeof pl->drawn_in); /* what the atlas holds: nothing of this frame yet */
 	for (int i = 0; i < n; i++) {
 		int light = f[i]->light_index; /* kept and drawn_in by light, which the main pass knows */
-		const struct lx_atlas *a = r->d.lights[light].atlas;
 		/* with the widest margin; the main pass prepares its own, with its filter's */
-		lx_lookup_prepare(f[i], a, res[i], shadow_margin(r), &r->lookup);
+		lx_lookup_prepare(f[i], atlas[i], res[i], shadow_margin(r), &r->lookup);
 		for (int id = 0; id < r->objects; id++) {
-			drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
+			pl->drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			/* the maps its own main-pass draws read, asked as object_draws asks with its
 			 * own margin, no wider than this one's: it reads none this keeps out. Asked
 			 * only where keep_back_faces takes it, for a round caster's fan, in a map
 			 * that draws it (lx_lookup_any clips the receiver's faces by each volume:
 			 * asked of every object, 6-17 us of the table's shadow_draws) */
-			unsigned reads = drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
+			unsigned reads = pl->drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
-				if (drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
-					keep_back_faces(r, f[i], &res[i]->maps[m], light, m, id,
+				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
+					keep_back_faces(r, pl, f[i], &res[i]->maps[m], light, m, id,
 							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL, reads & 1u << m);
-					if (r->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
-						r->drawn_in[light][id] |= 1u << m;
+					if (pl->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
+						pl->drawn_in[light][id] |= 1u << m;
 				}
 		}
 	}
-	/* left bound for the draws (nothing else of the pass binds an index buffer) */
-	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
-	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)r->kept_count * sizeof(unsigned short), r->kept_index,
-			 GL_STREAM_DRAW);
 }
 
-/* Light `light`'s map `m`: the triangles it keeps of the objects it draws, inside its region. */
-static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const struct lx_shadow_map *map, int light, int m,
-		     const unsigned *drawn)
+/* Light `light`'s map `m`: the triangles pl keeps of the objects it draws (drawn, the
+ * light's frame's), inside its region. */
+static void draw_map(struct lx_renderer *r, const struct shadow_plan *pl, const struct lx_atlas *a,
+		     const struct lx_shadow_map *map, int light, int m, const unsigned *drawn)
 {
 	const struct lx_region *g = &a->regions[map->region];
 	if (!map->rendered || g->w < 1 || g->h < 1)
@@ -1066,32 +1080,67 @@ static void draw_map(struct lx_renderer *r, const struct lx_atlas *a, const stru
 	 * plane (a caster beside a table under a grazing light lost its shadow) */
 	lx_gl.Uniform1f(r->shadow_pancake, map->plane < 0 ? 1.0f : 0.0f);
 	for (int id = 0; id < r->objects; id++) {
-		int count = r->kept[light][m][id].count;
-		if (!(drawn[id] & 1u << m) || count == 0)
+		const struct kept_draw *k = &pl->kept[light][m][id];
+		if (!(drawn[id] & 1u << m) || k->count == 0)
 			continue; /* no fill and no vertices for what no lookup reads */
-		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, r->kept[light][m][id].light_clip);
+		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, k->light_clip);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
-		lx_gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT,
-				   (const void *)((size_t)r->kept[light][m][id].first * sizeof(unsigned short)));
+		lx_gl.DrawElements(GL_TRIANGLES, k->count, GL_UNSIGNED_SHORT,
+				   (const void *)((size_t)k->first * sizeof(unsigned short)));
 	}
 }
+
+/* Whether the n frames' lights are the renderer's, and any of their maps is rendered. */
+static bool lights_known(const struct lx_renderer *r, const struct lx_frame *const *f,
+			 const struct lx_shadow_result *const *res, int n, bool *any)
+{
+	*any = false;
+	for (int i = 0; i < n; i++) {
+		if (f[i]->light_index < 0 || f[i]->light_index >= r->d.light_count)
+			return false; /* a light the renderer was not made for: cannot happen through lx_method_run */
+		for (int m = 0; m < res[i]->map_count; m++)
+			*any |= res[i]->maps[m].rendered;
+	}
+	return true;
+}
+
+void lx_renderer_plan_shadows(struct lx_renderer *r, const struct lx_frame *const *f,
+			      const struct lx_shadow_result *const *res, const struct lx_atlas *const *atlas, int n)
+{
+	bool any;
+	r->planned = false;
+	if (!lights_known(r, f, res, n, &any))
+		return;
+	shadow_draws(r, &r->plans[1 - r->plan], f, res, atlas, n);
+	r->planned = true;
+}
+
+void lx_renderer_drop_plan(struct lx_renderer *r) { r->planned = false; }
 
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
 			       const struct lx_shadow_result *const *res, int n)
 {
-	bool any = false;
-	memset(r->drawn_in, 0, sizeof r->drawn_in); /* what the atlas holds: nothing of this frame yet */
-	for (int i = 0; i < n; i++) {
-		if (f[i]->light_index < 0 || f[i]->light_index >= r->d.light_count)
-			return; /* a light the renderer was not made for: cannot happen through lx_method_run */
-		for (int m = 0; m < res[i]->map_count; m++)
-			any |= res[i]->maps[m].rendered;
-	}
+	bool any;
+	if (!lights_known(r, f, res, n, &any))
+		return;
+	const struct lx_atlas *atlas[LX_MAX_LIGHTS];
+	for (int i = 0; i < n; i++)
+		atlas[i] = r->d.lights[f[i]->light_index].atlas;
+	if (r->planned) /* made ahead for these frames (lx_renderer_plan_shadows) */
+		r->plan = 1 - r->plan;
+	else if (any)
+		shadow_draws(r, &r->plans[r->plan], f, res, atlas, n);
+	else /* nothing drawn: the atlas holds nothing of this frame */
+		memset(r->plans[r->plan].drawn_in, 0, sizeof r->plans[r->plan].drawn_in);
+	r->planned = false;
 	if (!any)
 		return;
-	unsigned drawn[LX_MAX_LIGHTS][LX_MAX_PLANES + LX_MAX_CASTERS];
-	shadow_draws(r, f, res, n, drawn);
+	const struct shadow_plan *pl = &r->plans[r->plan];
+	/* left bound for the draws (nothing else of the pass binds an index buffer) */
+	lx_gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->kept_ibo);
+	lx_gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)pl->kept_count * sizeof(unsigned short), pl->kept_index,
+			 GL_STREAM_DRAW);
 	lx_gl.BindFramebuffer(GL_FRAMEBUFFER, r->atlas_fbo);
 	vertex_arrays(false);
 	lx_gl.Disable(GL_SCISSOR_TEST); /* the viewport bounds every draw: triangles are clipped to it */
@@ -1107,7 +1156,7 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 	lx_gl.DepthFunc(GL_LESS);
 	for (int i = 0; i < n; i++)
 		for (int m = 0; m < res[i]->map_count; m++)
-			draw_map(r, r->d.lights[f[i]->light_index].atlas, &res[i]->maps[m], f[i]->light_index, m, drawn[i]);
+			draw_map(r, pl, atlas[i], &res[i]->maps[m], f[i]->light_index, m, pl->drawn[i]);
 	lx_gl.Disable(GL_CULL_FACE);
 	lx_gl.DepthRangef(0, 1);
 }
@@ -1450,6 +1499,7 @@ static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, 
 			       int id, struct span *span, int *ns)
 {
 	const struct lx_atlas *a = r->d.lights[f->light_index].atlas;
+	const struct shadow_plan *pl = &r->plans[r->plan]; /* the last shadow pass's */
 	int plane_count = r->d.scene->plane_count, light = f->light_index;
 	double inset = lookup_margin(r, r->filter), gap = sure_depth_gap(r);
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS; m++) {
@@ -1459,16 +1509,16 @@ static struct span *sure_spans(struct lx_renderer *r, const struct lx_frame *f, 
 		for (int i = 0; i < *ns && !reads; i++)
 			reads = (span[i].mask & (MAP_BITS | COVERED_SPAN)) == bit;
 		for (int c = plane_count; reads && c < r->objects; c++) {
-			if (!(r->drawn_in[light][c] & bit)) /* else its kept triangles and outline are stale */
+			if (!(pl->drawn_in[light][c] & bit)) /* else its kept triangles and outline are stale */
 				continue;
 			/* a round caster's fan corners; a box's corners are its bounds (pts NULL) */
 			bool round = round_caster(r, c);
-			int np = round ? r->kept[light][m][c].outline_count : 8;
+			int np = round ? pl->kept[light][m][c].outline_count : 8;
 			struct lx_poly win;
 			if ((round && np < 3) ||
 			    !lx_sure_shadow_window(f, map, a->regions[map->region].w, a->regions[map->region].h, c,
 						   round ? r->fan_pos[c] : NULL,
-						   round ? r->outline_index + r->kept[light][m][c].outline_first : NULL, np, id,
+						   round ? pl->outline_index + pl->kept[light][m][c].outline_first : NULL, np, id,
 						   inset, gap, &win))
 				continue;
 			struct span *to = span == r->seen ? r->spans : r->seen;
@@ -2216,7 +2266,8 @@ void lx_renderer_read_atlas(struct lx_renderer *r, uint8_t *rgba)
 
 void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 {
-	memset(r->drawn_in, 0, sizeof r->drawn_in); /* no caster known to be drawn in what is written */
+	/* no caster known to be drawn in what is written */
+	memset(r->plans[r->plan].drawn_in, 0, sizeof r->plans[r->plan].drawn_in);
 	lx_gl.BindTexture(GL_TEXTURE_2D, r->atlas_tex);
 	lx_gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	/* the same size and format again: the texture (and the framebuffer holding it) stays */

@@ -53,9 +53,17 @@ bool lx_renderer_set_filter(struct lx_renderer *r, enum lx_filter filter, char *
  * fall, from the next main pass on: the draws are cut per frame, nothing else changes. */
 void lx_renderer_set_lookup_everywhere(struct lx_renderer *r, bool everywhere);
 /* Shadow passes for the rendered maps of n lights: f[i] and res[i] are a light's frame
- * (its f[i]->light_index says which) and maps. */
+ * (its f[i]->light_index says which) and maps. Their CPU work (which triangles each map
+ * keeps) is the plan made ahead when there is one, else done now. */
 void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *const *f,
 			       const struct lx_shadow_result *const *res, int n);
+/* The next shadow pass's CPU work, done now (no GL call: while the GL draws this frame)
+ * for frames f, maps res and atlas layouts atlas that the caller will hand to
+ * lx_renderer_shadow_passes byte for byte the same, the layouts as the renderer's lights'
+ * atlases then hold them; or dropped, when the next pass is another's. */
+void lx_renderer_plan_shadows(struct lx_renderer *r, const struct lx_frame *const *f,
+			      const struct lx_shadow_result *const *res, const struct lx_atlas *const *atlas, int n);
+void lx_renderer_drop_plan(struct lx_renderer *r);
 /* The main pass's CPU work for n lights (where each draw looks a map up, which of a
  * caster's faces it draws, the planes' pieces, into their buffers), done before the main
  * pass: after the shadow passes and a glFlush (lx_renderer_flush) it runs while the GL
