@@ -230,6 +230,26 @@ static void caster_outlines(const struct lx_frame *f, const struct plane_chart *
 	first[*nc] = np;
 }
 
+/* Each whole caster's outline replaced by its hull, counter-clockwise (first[] moved to
+ * match; a caster not charted whole keeps no points): the hull of all of them is the hull
+ * of theirs (casters_bound, on about two thirds of the points), and each is its footprint's
+ * polygon (chart_plane). */
+static void outline_hulls(vec2 *pts, const bool *whole, int *first, int nc)
+{
+	int at = 0;
+	for (int c = 0; c < nc; c++) {
+		int from = first[c], n = first[c + 1] - from;
+		first[c] = at;
+		if (!whole[c])
+			continue;
+		struct lx_poly h;
+		lx_poly_hull(pts + from, n, &h); /* at most n <= LX_OUTLINE_POINTS vertices: in place */
+		memmove(pts + at, h.v, (size_t)h.n * sizeof(vec2));
+		at += h.n;
+	}
+	first[nc] = at;
+}
+
 /* A_l's twist and mirror: a twist by a multiple of 90 degrees (a level camera facing the
  * wall) keeps the pixel grid, so it is snapped and lixel centres can fall exactly on
  * pixel centres; the map's image of the plane is the view's, mirrored when seen from the
@@ -731,6 +751,7 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	int nc, ids[LX_MAX_PLANES + LX_MAX_CASTERS], first[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
 	struct reach reach[LX_MAX_PLANES + LX_MAX_CASTERS];
 	caster_outlines(f, ch, pts, whole, ids, first, &nc);
+	outline_hulls(pts, whole, first, nc);
 	bool bounded = casters_bound(f, i, pts, whole, ids, first, nc, reach, &cast);
 	if (bounded)
 		lx_poly_intersect(&ch->win, &cast, &wanted);
@@ -755,7 +776,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 				reach_foot(ch, &reach[c], parts);
 			continue;
 		}
-		lx_poly_hull(pts + first[c], first[c + 1] - first[c], &one);
+		one.n = first[c + 1] - first[c]; /* its outline's hull (outline_hulls) */
+		memcpy(one.v, pts + first[c], (size_t)one.n * sizeof(vec2));
 		lx_poly_intersect(&ch->win, &one, &on);
 		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
 			continue;
