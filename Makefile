@@ -76,7 +76,7 @@ GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_run_order test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run slide check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build
+.PHONY: all run slide setup-hash check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build
 
 all: $(BUILD)/lixel
 
@@ -116,6 +116,15 @@ slide: $(BUILD)/make-slide
 
 $(BUILD)/make-slide: tools/make-slide.c $(BUILD)/png_out.o $(BUILD)/font5x7.o $(BUILD)/out_file.o | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $^ $(PKG_PNG_LIBS) -lm -o $@
+
+# The set-up's outputs hashed over every method, built-in scene and configuration and 40
+# random views each (tools/setup_hash.c): the same hash before and after a change to the
+# set-up says it computes the same (SETUP_HASH_ARGS=-v lists each set-up's own).
+setup-hash: $(BUILD)/setup-hash
+	$(BUILD)/setup-hash $(SETUP_HASH_ARGS)
+
+$(BUILD)/setup-hash: tools/setup_hash.c $(CORE_LIB) | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $< $(CORE_LIB) $(PKG_PNG_LIBS) -lm -o $@
 
 $(BUILD)/slide_embedded.c: tests/data/slide.png tools/embed-binary.sh | $(BUILD)
 	sh tools/embed-binary.sh lx_builtin_slide_png tests/data/slide.png > $@.tmp && mv $@.tmp $@
@@ -167,7 +176,8 @@ $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h
 # them beside gcc's); CI (.ci/run) runs it and a 20-second `make soak` after make check.
 check: deps-check check-layers
 	@$(MAKE) --no-print-directory $(CHECK_JOBS) \
-		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone
+		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone \
+		$(BUILD)/setup-hash
 	@sh tests/run-tests.sh $(BUILD)
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, its own memory sampled.
