@@ -1036,13 +1036,14 @@ static unsigned caster_reads(const struct lx_renderer *r, int id, unsigned mask)
  * for frame i, a mask of maps: those a lookup can read, lx_lookup_caster_maps; none for a
  * flat box in no map), the triangles each keeps (a flat box's face its front decides left
  * out, res->slab_front) and the maps that draw each caster (drawn_in); atlas[i] is frame
- * i's light's layout. No GL call: it may run for the next frame while the GL draws. */
+ * i's light's layout; any: some map of theirs is rendered (else nothing is drawn). No GL
+ * call: it may run for the next frame while the GL draws. */
 static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const struct lx_frame *const *f,
-			 const struct lx_shadow_result *const *res, const struct lx_atlas *const *atlas, int n)
+			 const struct lx_shadow_result *const *res, const struct lx_atlas *const *atlas, int n, bool any)
 {
 	pl->kept_count = pl->outline_count = 0;
 	memset(pl->drawn_in, 0, sizeof pl->drawn_in); /* what the atlas holds: nothing of this frame yet */
-	for (int i = 0; i < n; i++) {
+	for (int i = 0; any && i < n; i++) {
 		int light = f[i]->light_index; /* kept and drawn_in by light, which the main pass knows */
 		/* with the widest margin; the main pass prepares its own, with its filter's */
 		lx_lookup_prepare(f[i], atlas[i], res[i], shadow_margin(r), &r->lookup);
@@ -1112,7 +1113,7 @@ void lx_renderer_plan_shadows(struct lx_renderer *r, const struct lx_frame *cons
 	r->planned = false;
 	if (!lights_known(r, f, res, n, &any))
 		return;
-	shadow_draws(r, &r->plans[1 - r->plan], f, res, atlas, n);
+	shadow_draws(r, &r->plans[1 - r->plan], f, res, atlas, n, any);
 	r->planned = true;
 }
 
@@ -1129,10 +1130,8 @@ void lx_renderer_shadow_passes(struct lx_renderer *r, const struct lx_frame *con
 		atlas[i] = r->d.lights[f[i]->light_index].atlas;
 	if (r->planned) /* made ahead for these frames (lx_renderer_plan_shadows) */
 		r->plan = 1 - r->plan;
-	else if (any)
-		shadow_draws(r, &r->plans[r->plan], f, res, atlas, n);
-	else /* nothing drawn: the atlas holds nothing of this frame */
-		memset(r->plans[r->plan].drawn_in, 0, sizeof r->plans[r->plan].drawn_in);
+	else
+		shadow_draws(r, &r->plans[r->plan], f, res, atlas, n, any);
 	r->planned = false;
 	if (!any)
 		return;
