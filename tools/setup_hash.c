@@ -35,7 +35,7 @@ static void mix_maps(const struct lx_shadow_result *r)
 		MIX(m->region), MIX(m->rendered), MIX(m->light_clip), MIX(m->plane), MIX(m->lixel_scale);
 		MIX(m->lixel_stretch), MIX(m->w), MIX(m->h), MIX(m->pancake), MIX(m->bounds), MIX(m->has_screen);
 		if (m->has_screen)
-			MIX(m->screen);
+			MIX(m->screen), MIX(m->screen_served);
 	}
 	MIX(r->warning_count);
 	for (int i = 0; i < r->warning_count; i++)

@@ -96,7 +96,7 @@ struct light_draws {
 };
 
 /* the most spans slab_spans makes of k rectangles (k <= LX_MAX_MAPS) */
-#define SLAB_SPANS(k) ((2 * (k) + 1) * (2 * (k) + 1))
+#define SLAB_SPANS(k) ((4 * (k) + 1) * (4 * (k) + 1))
 /* room for a plane's spans in a frame */
 #define PLANE_SPANS 2048
 
@@ -135,6 +135,7 @@ struct lx_renderer {
 	struct span spans[PLANE_SPANS];    /* a plane's spans */
 	struct span seen[PLANE_SPANS];     /* the same without what another plane hides */
 	struct lx_span parts[PLANE_SPANS]; /* the lookup region's spans in one of them */
+	long span_reads[LX_MAX_MAPS + 1];  /* the last pass's plane spans' pixels by maps read */
 	struct lx_rect merge_in[LX_SPAN_MERGE_MAX], merge_out[3 * LX_SPAN_MERGE_MAX]; /* lx_span_merge's */
 	struct lx_lookup_volumes lookup;   /* this frame's casters seen through each map */
 	/* the planes' pieces this frame: LX_VERTEX_FLOATS per vertex, in a stream buffer */
@@ -1198,57 +1199,90 @@ static struct main_program *variant_for(struct lx_renderer *r, int shading, enum
 	return p;
 }
 
-/* Box cut into horizontal slabs at the rectangles' edges, and each slab into spans:
- * inside rectangles (their masks together: overlapping rectangles read every map of
- * each) and outside every one (mask 0, no lookup). Returns the new count. */
-static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsigned *bit, int nr, struct span *out,
-		      int n)
+/* Sorts n ints in place (a handful: a slab's edges). */
+static void sort_ints(int *v, int n)
 {
-	int ys[2 * LX_MAX_MAPS + 2], ny = 0;
-	ys[ny++] = box.y0, ys[ny++] = box.y1;
-	for (int k = 0; k < nr; k++)
-		ys[ny++] = rect[k].y0, ys[ny++] = rect[k].y1;
-	for (int i = 1; i < ny; i++) /* sort */
-		for (int j = i; j > 0 && ys[j] < ys[j - 1]; j--) {
-			int t = ys[j];
-			ys[j] = ys[j - 1];
-			ys[j - 1] = t;
+	for (int i = 1; i < n; i++)
+		for (int j = i; j > 0 && v[j] < v[j - 1]; j--) {
+			int t = v[j];
+			v[j] = v[j - 1];
+			v[j - 1] = t;
 		}
+}
+
+/* Box cut into horizontal slabs at the rectangles' edges and their sure parts' edges,
+ * and each slab into spans: outside every rectangle (mask 0, no lookup); inside one or
+ * more, the first map whose sure part (sure[k]: pixels its map surely serves, empty
+ * when unknown) holds the span, else every map of those around it. Each map holds every
+ * caster over its rectangle, so any one decides a pixel it surely serves: where two
+ * pieces overlap, a pixel reads one map, not both (on llvmpipe a read costs the same
+ * whether or not it serves; the default scene's near-wall view, 1024x1024: 0.3 ms of a
+ * 5.7 ms frame). Returns the new count. */
+static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const struct lx_rect *sure, const unsigned *bit,
+		      int nr, struct span *out, int n)
+{
+	int ys[4 * LX_MAX_MAPS + 2], ny = 0;
+	ys[ny++] = box.y0, ys[ny++] = box.y1;
+	for (int k = 0; k < nr; k++) {
+		ys[ny++] = rect[k].y0, ys[ny++] = rect[k].y1;
+		if (sure[k].x1 > sure[k].x0 && sure[k].y1 > sure[k].y0)
+			ys[ny++] = sure[k].y0, ys[ny++] = sure[k].y1;
+	}
+	sort_ints(ys, ny);
 	for (int i = 0; i + 1 < ny; i++) {
 		int y0 = ys[i], y1 = ys[i + 1];
 		if (y1 <= y0 || y0 < box.y0 || y1 > box.y1)
 			continue;
-		struct {
-			int a, b;
-			unsigned m;
-		} span[LX_MAX_MAPS], t;
-		int ns = 0;
+		int xs[4 * LX_MAX_MAPS + 2], nx = 0, in[LX_MAX_MAPS], ni = 0;
+		xs[nx++] = box.x0, xs[nx++] = box.x1;
 		for (int k = 0; k < nr; k++)
 			if (rect[k].y0 <= y0 && rect[k].y1 >= y1 && rect[k].x1 > rect[k].x0) {
-				int j = ns++;
-				span[j].a = rect[k].x0, span[j].b = rect[k].x1, span[j].m = bit[k];
-				for (; j > 0 && span[j].a < span[j - 1].a; j--) /* by start */
-					t = span[j], span[j] = span[j - 1], span[j - 1] = t;
+				in[ni++] = k;
+				xs[nx++] = rect[k].x0, xs[nx++] = rect[k].x1;
+				if (sure[k].y0 <= y0 && sure[k].y1 >= y1 && sure[k].x1 > sure[k].x0)
+					xs[nx++] = sure[k].x0, xs[nx++] = sure[k].x1;
 			}
-		int x = box.x0;
-		for (int k = 0; k < ns; k++) {
-			int a = span[k].a, b = span[k].b;
-			unsigned m = span[k].m;
-			while (k + 1 < ns && span[k + 1].a < b) { /* overlapping: one span */
-				k++;
-				b = span[k].b > b ? span[k].b : b;
-				m |= span[k].m;
+		sort_ints(xs, nx);
+		int slab = n;
+		for (int j = 0; j + 1 < nx; j++) {
+			int x0 = xs[j] > box.x0 ? xs[j] : box.x0, x1 = xs[j + 1] < box.x1 ? xs[j + 1] : box.x1;
+			if (x1 <= x0)
+				continue;
+			unsigned m = 0, one = 0;
+			for (int q = 0; q < ni; q++) {
+				const struct lx_rect *a = &rect[in[q]], *b = &sure[in[q]];
+				if (a->x0 <= x0 && a->x1 >= x1) {
+					m |= bit[in[q]];
+					if (!one && b->y0 <= y0 && b->y1 >= y1 && b->x0 <= x0 && b->x1 >= x1)
+						one = bit[in[q]];
+				}
 			}
-			if (a > x)
-				out[n++] = (struct span){0, {x, y0, a, y1}};
-			if (b > a && b > x)
-				out[n++] = (struct span){m, {a > x ? a : x, y0, b, y1}};
-			x = b > x ? b : x;
+			m = one ? one : m;
+			if (n > slab && out[n - 1].mask == m && out[n - 1].box.x1 == x0)
+				out[n - 1].box.x1 = x1; /* the same maps on: one span */
+			else
+				out[n++] = (struct span){m, {x0, y0, x1, y1}};
 		}
-		if (x < box.x1)
-			out[n++] = (struct span){0, {x, y0, box.x1, y1}};
 	}
 	return n;
+}
+
+/* The pixels a plane map surely serves: its screen rectangle where that is what it
+ * serves (screen_served), less two pixels and two lixels for the rounding of a lookup's
+ * coordinates (mediump: about a quarter of a lixel); else none. */
+static struct lx_rect sure_rect(const struct lx_shadow_map *map, int width, int height)
+{
+	/* lixels per pixel along the map's axes (positive wherever a map is built) */
+	double s = fmin(map->lixel_scale / map->lixel_stretch, map->lixel_scale * map->lixel_stretch);
+	if (!map->screen_served || !(map->lixel_stretch > 0) || !(s > 0))
+		return (struct lx_rect){0, 0, 0, 0};
+	double g = 2 + 2 / s;
+	double v[4] = {ceil(map->screen[0] + g), ceil(map->screen[1] + g), floor(map->screen[2] - g),
+		       floor(map->screen[3] - g)};
+	double lim[4] = {width, height, width, height};
+	for (int k = 0; k < 4; k++)
+		v[k] = fmax(0, fmin(lim[k], v[k])); /* NaN-free too: fmin and fmax take the number */
+	return (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
 }
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
@@ -1256,7 +1290,7 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const unsi
 static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res, int id, unsigned mask,
 		       struct span *out, int room)
 {
-	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_MAX_MAPS];
+	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_MAX_MAPS], sure[LX_MAX_MAPS];
 	unsigned bit[LX_MAX_MAPS];
 	struct span first[SLAB_SPANS(LX_MAX_MAPS)];
 	int nf = 0, nr = 0, n = 0;
@@ -1274,10 +1308,11 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		for (int k = 0; k < 4; k++)
 			v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
 		rect[nr] = (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
+		sure[nr] = sure_rect(map, r->d.width, r->d.height);
 		bit[nr++] = 1u << m;
 	}
 	if (nr >= 0)
-		nf = slab_spans(screen, rect, bit, nr, first, 0);
+		nf = slab_spans(screen, rect, sure, bit, nr, first, 0);
 	else
 		first[nf++] = (struct span){mask, screen};
 	for (int i = 0; i < nf; i++) {
@@ -1632,6 +1667,9 @@ static int plane_draws(struct lx_renderer *r, const struct lx_frame *f, const st
 		span = cover_spans(r, f, id, span, &ns);
 	if (!away)
 		span = sure_spans(r, f, res, id, span, &ns);
+	for (int i = 0; i < ns; i++) /* lx_renderer_span_reads */
+		r->span_reads[maps_in(span[i].mask & MAP_BITS)] +=
+			(long)(span[i].box.x1 - span[i].box.x0) * (span[i].box.y1 - span[i].box.y0);
 	struct lx_poly window;
 	lx_plane_window(f, id, &window);
 	/* one draw per set of maps, its spans' pieces together */
@@ -1833,6 +1871,7 @@ static void frame_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 			bool lit_only, struct light_draws *ld)
 {
 	ld->n = 0;
+	memset(r->span_reads, 0, sizeof r->span_reads);
 	/* also for all: the same pieces */
 	lx_lookup_prepare(f, r->d.lights[f->light_index].atlas, res, lookup_margin(r, r->filter), &r->lookup);
 	int order[LX_MAX_PLANES + LX_MAX_CASTERS];
@@ -2293,6 +2332,11 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba)
 }
 
 int lx_renderer_depth_slots(const struct lx_renderer *r) { return r->slots; }
+
+void lx_renderer_span_reads(const struct lx_renderer *r, long *pixels)
+{
+	memcpy(pixels, r->span_reads, sizeof r->span_reads);
+}
 
 bool lx_renderer_covers_short(const struct lx_renderer *r) { return r->covers_short; }
 

@@ -92,6 +92,10 @@ void lx_renderer_write_atlas(struct lx_renderer *r, const uint8_t *rgba);
 bool lx_renderer_atlas_is_depth_texture(struct lx_renderer *r);
 /* The depth slots taken: 1 (the regions cleared every frame) or the desc's depth_slots. */
 int lx_renderer_depth_slots(const struct lx_renderer *r);
+/* The pixels of the planes' spans in the last pass worked out (their window rectangles),
+ * by how many maps they read: pixels[0..LX_MAX_MAPS]. For tests: where two pieces of a
+ * plane overlap, a pixel reads one map. */
+void lx_renderer_span_reads(const struct lx_renderer *r, long *pixels);
 /* Whether some draw of the main pass cannot test two fronts (a GPU short of varyings):
  * then the maps keep every face of the flat boxes (lx_method_options.keep_flat_boxes). */
 bool lx_renderer_covers_short(const struct lx_renderer *r);

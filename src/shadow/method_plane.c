@@ -1253,6 +1253,7 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		/* the piece's rectangle back in window coordinates (undo mirror and twist): its
 		 * bounding box is where the plane's shadows in this piece can fall */
 		mp->has_screen = true;
+		mp->screen_served = ch->on_grid; /* a twisted piece's bounding box holds more than it */
 		mp->screen[0] = mp->screen[1] = INFINITY, mp->screen[2] = mp->screen[3] = -INFINITY;
 		for (int c = 0; c < 4; c++) {
 			double u = (c & 1 ? pc->r[k][2] : pc->r[k][0]) * ch->mx, v = c & 2 ? pc->r[k][3] : pc->r[k][1];

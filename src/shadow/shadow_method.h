@@ -39,6 +39,10 @@ struct lx_shadow_map {
 	 * pass draws the plane without a lookup outside its maps' rectangles. */
 	bool has_screen;
 	double screen[4];
+	/* The map serves every pixel of its plane inside `screen` (a piece aligned with the
+	 * screen's axes, whose rectangle is the one it serves): where two such pieces
+	 * overlap, the main pass reads one of them. */
+	bool screen_served;
 };
 
 /* PSM's kinds of light in post-perspective space (lx_shadow_result.variant) */
