@@ -1269,7 +1269,7 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const stru
 
 /* The pixels a plane map surely serves: its screen rectangle where that is what it
  * serves (screen_served), less two pixels and two lixels for the rounding of a lookup's
- * coordinates (mediump: about a quarter of a lixel); else none. */
+ * coordinates (mediump: about a quarter of a lixel), in to whole blocks; else none. */
 static struct lx_rect sure_rect(const struct lx_shadow_map *map, int width, int height)
 {
 	/* lixels per pixel along the map's axes (positive wherever a map is built) */
@@ -1282,7 +1282,10 @@ static struct lx_rect sure_rect(const struct lx_shadow_map *map, int width, int 
 	double lim[4] = {width, height, width, height};
 	for (int k = 0; k < 4; k++)
 		v[k] = fmax(0, fmin(lim[k], v[k])); /* NaN-free too: fmin and fmax take the number */
-	return (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
+	/* in to whole blocks: a span's edge inside a block costs a part-covered block each
+	 * side (LX_SPAN_ALIGN) */
+	return (struct lx_rect){lx_align_up((int)v[0]), lx_align_up((int)v[1]), lx_align_down((int)v[2]),
+				lx_align_down((int)v[3])};
 }
 
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
@@ -1310,6 +1313,15 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		rect[nr] = (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
 		sure[nr] = sure_rect(map, r->d.width, r->d.height);
 		bit[nr++] = 1u << m;
+	}
+	/* only a rectangle that meets another is cut at its sure part: more cuts, more pieces */
+	for (int k = 0; k < nr; k++) {
+		bool meets = false;
+		for (int j = 0; j < nr && !meets; j++)
+			meets = j != k && rect[k].x0 < rect[j].x1 && rect[j].x0 < rect[k].x1 && rect[k].y0 < rect[j].y1 &&
+				rect[j].y0 < rect[k].y1;
+		if (!meets)
+			sure[k] = (struct lx_rect){0, 0, 0, 0};
 	}
 	if (nr >= 0)
 		nf = slab_spans(screen, rect, sure, bit, nr, first, 0);
