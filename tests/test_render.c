@@ -955,8 +955,8 @@ static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
  * its map serves). The default scene's views at 1024x1024 whose floor comes in
  * pieces that meet or overlap: the floor's spans that read two maps or more are the
  * seams where they meet only (each piece's rectangle less a margin is read alone; before,
- * a row of spans through two pieces read both all along), and the shadows are decided as
- * before (tests/data/filter-none.golden's decision hashes). */
+ * a row of spans through two pieces read both all along). How well the pieces decide is
+ * overlapping_pieces_give_a_lixel_per_pixel's. */
 static void overlapping_pieces_read_one_map(void **state)
 {
 	(void)state;
@@ -983,7 +983,8 @@ static void overlapping_pieces_read_one_map(void **state)
 		lx_method_run_frame(&run, &frame, NULL, &t);
 		/* the floor's pieces that touch or overlap, and the seams where they meet: a
 		 * band 8 pixels wide on either side of each rectangle's edge inside the other
-		 * (sure_rect's margin at a lixel per pixel is 4, the spans' 1) */
+		 * (sure_rect's margin at a lixel per pixel is 4, and up to 3 more to whole
+		 * blocks; the spans' 1) */
 		const struct lx_shadow_result *res = &run.lights[0].result;
 		double seams = 0, area = 0;
 		for (int m = 0; m < res->map_count; m++)

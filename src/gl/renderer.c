@@ -1215,9 +1215,9 @@ static void sort_ints(int *v, int n)
  * more, the first map whose sure part (sure[k]: pixels its map surely serves, empty
  * when unknown) holds the span, else every map of those around it. Each map holds every
  * caster over its rectangle, so any one decides a pixel it surely serves: where two
- * pieces overlap, a pixel reads one map, not both (on llvmpipe a read costs the same
- * whether or not it serves; the default scene's near-wall view, 1024x1024: 0.3 ms of a
- * 5.7 ms frame). Returns the new count. */
+ * pieces meet or overlap, a pixel reads one map, not both (on llvmpipe a read costs the
+ * same whether or not it serves; on the default scene's near-wall view at 1024x1024,
+ * 0.13-0.24 ms of plane-optimal's main pass). Returns the new count. */
 static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const struct lx_rect *sure, const unsigned *bit,
 		      int nr, struct span *out, int n)
 {
