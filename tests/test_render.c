@@ -950,76 +950,6 @@ static void overlapping_pieces_give_a_lixel_per_pixel(void **state)
 	assert_true(pct[0] < 0.5 * pct[1]);
 }
 
-/* Where two pieces of a plane overlap, a pixel reads one of their maps, not both: each
- * holds every caster over its rectangle (on llvmpipe a read costs the same whether or not
- * its map serves). The default scene's views at 1024x1024 whose floor comes in
- * pieces that meet or overlap: the floor's spans that read two maps or more are the
- * seams where they meet only (each piece's rectangle less a margin is read alone; before,
- * a row of spans through two pieces read both all along). How well the pieces decide is
- * overlapping_pieces_give_a_lixel_per_pixel's. */
-static void overlapping_pieces_read_one_map(void **state)
-{
-	(void)state;
-	enum { w = 1024, h = 1024 };
-	char err[512];
-	struct lx_gl_caps caps;
-	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
-	struct lx_scene base;
-	lx_scene_default(&base);
-	struct lx_scene_meshes meshes = {0};
-	assert_true(lx_meshes_build(&base, &meshes));
-	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	struct lx_method_run run;
-	if (lx_method_run_init(&run, "plane", &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
-			       err, sizeof err))
-		fail_msg("%s", err);
-	int views = 0;
-	for (int c = 0; c < lx_config_count; c++) {
-		struct lx_scene scene = base;
-		lx_config_apply(&lx_configs[c], &scene);
-		struct lx_frame frame;
-		assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
-		struct lx_frame_times t;
-		lx_method_run_frame(&run, &frame, NULL, &t);
-		/* the floor's pieces that touch or overlap, and the seams where they meet: a
-		 * band 8 pixels wide on either side of each rectangle's edge inside the other
-		 * (sure_rect's margin at a lixel per pixel is 4, and up to 3 more to whole
-		 * blocks; the spans' 1) */
-		const struct lx_shadow_result *res = &run.lights[0].result;
-		double seams = 0, area = 0;
-		for (int m = 0; m < res->map_count; m++)
-			for (int n = m + 1; n < res->map_count; n++) {
-				const struct lx_shadow_map *a = &res->maps[m], *b = &res->maps[n];
-				if (!a->rendered || !b->rendered || a->plane != 0 || b->plane != 0)
-					continue;
-				double g = 8, x0 = fmax(a->screen[0], b->screen[0]) - g, x1 = fmin(a->screen[2], b->screen[2]) + g;
-				double y0 = fmax(a->screen[1], b->screen[1]) - g, y1 = fmin(a->screen[3], b->screen[3]) + g;
-				if (x1 > x0 && y1 > y0) {
-					seams += 2 * g * (x1 - x0 + y1 - y0);
-					area += (a->screen[2] - a->screen[0]) * (a->screen[3] - a->screen[1]) +
-						(b->screen[2] - b->screen[0]) * (b->screen[3] - b->screen[1]);
-				}
-			}
-		long reads[LX_MAX_MAPS + 1], multi = 0;
-		lx_renderer_span_reads(run.renderer, reads);
-		for (int k = 2; k <= LX_MAX_MAPS; k++)
-			multi += reads[k];
-		if (!(seams > 0))
-			continue; /* the floor in one piece, or in pieces apart */
-		views++;
-		print_message("%-12s floor pieces that meet: %.0f pixels, their seams %.0f; spans reading two maps or "
-			      "more: %ld pixels\n",
-			      lx_configs[c].name, area, seams, multi);
-		if (multi > seams)
-			fail_msg("%s: %ld pixels of spans read two maps or more; the seams hold %.0f", lx_configs[c].name, multi,
-				 seams);
-	}
-	assert_true(views > 0);
-	lx_method_run_free(&run);
-	lx_meshes_free(&meshes);
-	lx_platform_destroy(plat);
-}
-
 /* The default view at 1024x1024 (issue 9): every pixel of the floor and of the wall that
  * reads a map gets at least a lixel. The sampling counts only pixels that ran a lookup:
  * no shadow can fall on the wall where it is seen, it gets no map, and its pixels read
@@ -1300,6 +1230,90 @@ static void lookup_region_changes_no_decision(void **state)
 	print_message("%ld frames compared: identical but for %ld pixels where all read a caster's own texels (no other "
 		      "object blocks the light there)\n", compared, own);
 	decisions_free(&dc);
+}
+
+/* Where two pieces of a plane overlap, a pixel reads one of their maps, not both: each
+ * holds every caster over its rectangle (on llvmpipe a read costs the same whether or not
+ * its map serves). The default scene's views at 1024x1024 whose floor comes in
+ * pieces that meet or overlap: the floor's spans that read two maps or more are the
+ * seams where they meet only (each piece's rectangle less a margin is read alone; before,
+ * a row of spans through two pieces read both all along), and they decide as reading
+ * every map does (--lookup-region all) but on a caster's own texels. How well the
+ * pieces decide is overlapping_pieces_give_a_lixel_per_pixel's. */
+static void overlapping_pieces_read_one_map(void **state)
+{
+	(void)state;
+	enum { w = 1024, h = 1024 };
+	char err[512];
+	struct lx_gl_caps caps;
+	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
+	struct lx_scene base;
+	lx_scene_default(&base);
+	struct lx_scene_meshes meshes = {0};
+	assert_true(lx_meshes_build(&base, &meshes));
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
+	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
+	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
+	struct lx_method_run run;
+	if (lx_method_run_init(&run, "plane", &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
+			       err, sizeof err))
+		fail_msg("%s", err);
+	int views = 0;
+	for (int c = 0; c < lx_config_count; c++) {
+		struct lx_scene scene = base;
+		lx_config_apply(&lx_configs[c], &scene);
+		struct lx_frame frame;
+		assert_true(lx_frame_setup(&frame, &scene, &meshes, 0.4, w, h, err, sizeof err));
+		struct lx_frame_times t;
+		lx_method_run_frame(&run, &frame, NULL, &t);
+		/* the floor's pieces that touch or overlap, and the seams where they meet: a
+		 * band 8 pixels wide on either side of each rectangle's edge inside the other
+		 * (sure_rect's margin at a lixel per pixel is 4, and up to 3 more to whole
+		 * blocks; the spans' 1) */
+		const struct lx_shadow_result *res = &run.lights[0].result;
+		double seams = 0, area = 0;
+		for (int m = 0; m < res->map_count; m++)
+			for (int n = m + 1; n < res->map_count; n++) {
+				const struct lx_shadow_map *a = &res->maps[m], *b = &res->maps[n];
+				if (!a->rendered || !b->rendered || a->plane != 0 || b->plane != 0)
+					continue;
+				double g = 8, x0 = fmax(a->screen[0], b->screen[0]) - g, x1 = fmin(a->screen[2], b->screen[2]) + g;
+				double y0 = fmax(a->screen[1], b->screen[1]) - g, y1 = fmin(a->screen[3], b->screen[3]) + g;
+				if (x1 > x0 && y1 > y0) {
+					seams += 2 * g * (x1 - x0 + y1 - y0);
+					area += (a->screen[2] - a->screen[0]) * (a->screen[3] - a->screen[1]) +
+						(b->screen[2] - b->screen[0]) * (b->screen[3] - b->screen[1]);
+				}
+			}
+		long reads[LX_MAX_MAPS + 1], multi = 0;
+		lx_renderer_span_reads(run.renderer, reads);
+		for (int k = 2; k <= LX_MAX_MAPS; k++)
+			multi += reads[k];
+		if (!(seams > 0))
+			continue; /* the floor in one piece, or in pieces apart */
+		views++;
+		print_message("%-12s floor pieces that meet: %.0f pixels, their seams %.0f; spans reading two maps or "
+			      "more: %ld pixels\n",
+			      lx_configs[c].name, area, seams, multi);
+		if (multi > seams)
+			fail_msg("%s: %ld pixels of spans read two maps or more; the seams hold %.0f", lx_configs[c].name, multi,
+				 seams);
+		for (int k = 0; k < 2; k++) {
+			lx_method_run_set_lookup_everywhere(&run, k == 1);
+			lx_method_run_decision(&run, 0, rgba, obj[k], sh[k]);
+		}
+		lx_method_run_set_lookup_everywhere(&run, false);
+		long wrong = 0, differ = lookup_differences(&frame, obj[0], sh[0], obj[1], sh[1], &wrong);
+		print_message("%-12s against every map read: %ld pixels differ, %ld of them not a caster's own texels\n",
+			      lx_configs[c].name, differ, wrong);
+		assert_int_equal(wrong, 0);
+	}
+	assert_true(views > 0);
+	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
+	lx_method_run_free(&run);
+	lx_meshes_free(&meshes);
+	lx_platform_destroy(plat);
 }
 
 /* Two runs of every method over every standard configuration of both built-in scenes, at
