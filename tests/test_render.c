@@ -1245,18 +1245,16 @@ static void overlapping_pieces_read_one_map(void **state)
 	(void)state;
 	enum { w = 1024, h = 1024 };
 	char err[512];
-	struct lx_gl_caps caps;
-	struct lx_platform *plat = platform_with_caps("osmesa", &caps);
+	struct decisions dc = decisions_alloc(w, h);
+	uint8_t *rgba = dc.rgba, **sh = dc.sh;
+	int16_t **obj = dc.obj;
 	struct lx_scene base;
 	lx_scene_default(&base);
 	struct lx_scene_meshes meshes = {0};
 	assert_true(lx_meshes_build(&base, &meshes));
 	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
-	uint8_t *rgba = malloc((size_t)w * h * 4), *sh[2] = {malloc((size_t)w * h), malloc((size_t)w * h)};
-	int16_t *obj[2] = {malloc((size_t)w * h * sizeof(int16_t)), malloc((size_t)w * h * sizeof(int16_t))};
-	assert_true(rgba && sh[0] && sh[1] && obj[0] && obj[1]);
 	struct lx_method_run run;
-	if (lx_method_run_init(&run, "plane", &base, &meshes, &caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
+	if (lx_method_run_init(&run, "plane", &base, &meshes, &dc.caps, &o, w, h, LX_DEPTH_AUTO, LX_DEFAULT_BIAS_CODES, false,
 			       err, sizeof err))
 		fail_msg("%s", err);
 	int views = 0;
@@ -1310,10 +1308,9 @@ static void overlapping_pieces_read_one_map(void **state)
 		assert_int_equal(wrong, 0);
 	}
 	assert_true(views > 0);
-	free(rgba), free(sh[0]), free(sh[1]), free(obj[0]), free(obj[1]);
 	lx_method_run_free(&run);
 	lx_meshes_free(&meshes);
-	lx_platform_destroy(plat);
+	decisions_free(&dc);
 }
 
 /* Two runs of every method over every standard configuration of both built-in scenes, at

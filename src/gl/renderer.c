@@ -1295,6 +1295,7 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 {
 	struct lx_rect screen = {0, 0, r->d.width, r->d.height}, rect[LX_MAX_MAPS], sure[LX_MAX_MAPS];
 	unsigned bit[LX_MAX_MAPS];
+	const struct lx_shadow_map *of[LX_MAX_MAPS];
 	struct span first[SLAB_SPANS(LX_MAX_MAPS)];
 	int nf = 0, nr = 0, n = 0;
 	for (int m = 0; m < res->map_count && m < LX_MAX_MAPS && nr >= 0; m++) {
@@ -1311,7 +1312,7 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		for (int k = 0; k < 4; k++)
 			v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
 		rect[nr] = (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
-		sure[nr] = sure_rect(map, r->d.width, r->d.height);
+		of[nr] = map;
 		bit[nr++] = 1u << m;
 	}
 	/* only a rectangle that meets another is cut at its sure part: more cuts, more pieces */
@@ -1320,8 +1321,7 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		for (int j = 0; j < nr && !meets; j++)
 			meets = j != k && rect[k].x0 < rect[j].x1 && rect[j].x0 < rect[k].x1 && rect[k].y0 < rect[j].y1 &&
 				rect[j].y0 < rect[k].y1;
-		if (!meets)
-			sure[k] = (struct lx_rect){0, 0, 0, 0};
+		sure[k] = meets ? sure_rect(of[k], r->d.width, r->d.height) : (struct lx_rect){0, 0, 0, 0};
 	}
 	if (nr >= 0)
 		nf = slab_spans(screen, rect, sure, bit, nr, first, 0);
