@@ -147,6 +147,20 @@ static double det4_rows(vec4 r[4])
 /* v4_cross3: det[a; b; q; v] = c . v for random rows and v, c orthogonal to a, b, q; and
  * the projected triangle's orientation it gives: a triangle's clip-space x, y, w
  * determinant equals c(rows) . c(points), so the sign says which way it turns on the screen. */
+/* lx_fmin and lx_fmax, which stand in for fmin and fmax in the set-up: the smaller and
+ * the larger, either way round, and a NaN loses to a number (bounds start at a NaN-free
+ * infinity and must stay finite past a corner that is not). */
+static void min_and_max_let_a_nan_lose(void **state)
+{
+	(void)state;
+	assert_true(lx_fmin(-1, 2) == -1 && lx_fmin(2, -1) == -1 && lx_fmax(-1, 2) == 2 && lx_fmax(2, -1) == 2);
+	assert_true(lx_fmin(NAN, 3) == 3 && lx_fmin(3, NAN) == 3 && lx_fmax(NAN, 3) == 3 && lx_fmax(3, NAN) == 3);
+	assert_true(lx_fmin(INFINITY, 5) == 5 && lx_fmax(-INFINITY, 5) == 5);
+	assert_true(isnan(lx_fmin(NAN, NAN)) && isnan(lx_fmax(NAN, NAN)));
+	vec3 lo = v3_min(v3(1, NAN, -2), v3(0, 4, -3));
+	assert_true(lo.x == 0 && lo.y == 4 && lo.z == -3);
+}
+
 static void cross3_is_the_cofactor_vector(void **state)
 {
 	(void)state;
@@ -228,6 +242,7 @@ int main(void)
 		cmocka_unit_test(look_at_maps_eye_to_origin_and_view_to_minus_z),
 		cmocka_unit_test(projections_map_near_and_far_to_unit_cube),
 		cmocka_unit_test(normalize_guards_zero),
+		cmocka_unit_test(min_and_max_let_a_nan_lose),
 		cmocka_unit_test(cross3_is_the_cofactor_vector),
 		cmocka_unit_test(frustum_box_points_cut_a_box_or_keep_it),
 	};

@@ -1046,6 +1046,16 @@ static void polygon_difference(void **state)
 	assert_near(fabs(lx_poly_area(&out)), 4, 1e-9); /* a hole does not shrink the hull */
 	lx_poly_intersect(&sq, &hole, &out);
 	assert_near(fabs(lx_poly_area(&out)), 1, 1e-12);
+	/* a half-plane that holds all of a polygon keeps it as it is, but for a last corner
+	 * that repeats the first; one that holds none of it leaves nothing */
+	struct lx_poly closed = {5, {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 0}}};
+	lx_poly_clip_halfplane(&closed, 1, 0, 1, &out); /* x >= -1 */
+	assert_int_equal(out.n, 4);
+	assert_memory_equal(out.v, sq.v, 4 * sizeof(vec2));
+	lx_poly_clip_halfplane(&sq, 1, 0, -3, &out); /* x >= 3 */
+	assert_int_equal(out.n, 0);
+	lx_poly_clip_halfplane(&sq, 1, 0, -1, &out); /* x >= 1: half of it */
+	assert_near(fabs(lx_poly_area(&out)), 2, 1e-12);
 }
 
 /* Whether every point lies in the convex counter-clockwise polygon p (on its edges counts). */

@@ -17,7 +17,7 @@ static void dop(const vec2 *pts, int n, struct lx_poly *out)
 		c[i] = cos(2 * M_PI * i / LX_POLY_DOP), s[i] = sin(2 * M_PI * i / LX_POLY_DOP), d[i] = -INFINITY;
 		for (int k = 0; k < n; k++)
 			if (isfinite(pts[k].x) && isfinite(pts[k].y))
-				d[i] = fmax(d[i], c[i] * pts[k].x + s[i] * pts[k].y);
+				d[i] = lx_fmax(d[i], c[i] * pts[k].x + s[i] * pts[k].y);
 	}
 	out->n = 0;
 	if (!isfinite(d[0]))
@@ -103,7 +103,7 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 	 * its own size (and a thousand-trillionth of the points' extent, for those near 0) of
 	 * the last one kept is skipped. A tolerance on the turns instead, scaled by the
 	 * extent squared, cut real corners when a point lay near the light's plane, far out. */
-	double floor_tol = 1e-15 * fmax(p[m - 1].x - p[0].x, yhi - ylo);
+	double floor_tol = 1e-15 * lx_fmax(p[m - 1].x - p[0].x, yhi - ylo);
 	int k = 0;
 	for (int i = 0; i < m; i++) { /* lower hull */
 		if (k > 0 && same_point(h[k - 1], p[i], floor_tol))
@@ -131,10 +131,19 @@ bool lx_poly_hull(const vec2 *pts, int n, struct lx_poly *out)
 static int clip_points(const vec2 *v, int n, double nx, double ny, double c, vec2 *r)
 {
 	double d[LX_POLY_MAX];
-	for (int i = 0; i < n; i++)
-		d[i] = nx * v[i].x + ny * v[i].y + c;
-	int rn = 0;
+	int inside = 0;
 	for (int i = 0; i < n; i++) {
+		d[i] = nx * v[i].x + ny * v[i].y + c;
+		inside += d[i] >= 0;
+	}
+	if (inside == 0)
+		return 0;
+	int rn = 0;
+	if (inside == n) { /* most cuts take nothing: v as it is */
+		memcpy(r, v, (size_t)n * sizeof(vec2));
+		rn = n;
+	}
+	for (int i = 0; i < n && inside < n; i++) {
 		int j = lx_loop_next(i, n);
 		vec2 p = v[i], q = v[j];
 		double dp = d[i], dq = d[j];
@@ -205,9 +214,9 @@ static bool segment_in(const struct lx_poly *b, double side, vec2 p, vec2 q, dou
 		if (f0 < 0 && f1 < 0)
 			*t1 = -1;
 		else if (f0 < 0) /* f1 >= 0 > f0: f0 - f1 < 0 */
-			*t0 = fmax(*t0, f0 / (f0 - f1));
+			*t0 = lx_fmax(*t0, f0 / (f0 - f1));
 		else if (f1 < 0) /* f0 >= 0 > f1: f0 - f1 > 0 */
-			*t1 = fmin(*t1, f0 / (f0 - f1));
+			*t1 = lx_fmin(*t1, f0 / (f0 - f1));
 	}
 	return *t1 > *t0;
 }
@@ -274,8 +283,8 @@ void lx_poly_bounds(const struct lx_poly *p, double *x0, double *y0, double *x1,
 	*x0 = *y0 = INFINITY;
 	*x1 = *y1 = -INFINITY;
 	for (int i = 0; i < p->n; i++) {
-		*x0 = fmin(*x0, p->v[i].x), *x1 = fmax(*x1, p->v[i].x);
-		*y0 = fmin(*y0, p->v[i].y), *y1 = fmax(*y1, p->v[i].y);
+		*x0 = lx_fmin(*x0, p->v[i].x), *x1 = lx_fmax(*x1, p->v[i].x);
+		*y0 = lx_fmin(*y0, p->v[i].y), *y1 = lx_fmax(*y1, p->v[i].y);
 	}
 }
 
@@ -350,7 +359,7 @@ static bool cross_section(const struct lx_poly *p, double y, double *lo, double 
 		vec2 a = p->v[i], b = p->v[lx_loop_next(i, p->n)];
 		if ((a.y <= y) != (b.y <= y)) { /* a.y != b.y: the edge crosses the line */
 			double x = a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
-			*lo = fmin(*lo, x), *hi = fmax(*hi, x);
+			*lo = lx_fmin(*lo, x), *hi = lx_fmax(*hi, x);
 		}
 	}
 	return *lo <= *hi;
@@ -361,7 +370,7 @@ bool lx_poly_rows_inside(const struct lx_poly *p, int y0, int y1, double inset, 
 	double la, ha, lb, hb;
 	if (y1 <= y0 || !cross_section(p, y0 + 0.5, &la, &ha) || !cross_section(p, y1 - 0.5, &lb, &hb))
 		return false;
-	double lo = fmax(la, lb) + inset, hi = fmin(ha, hb) - inset;
+	double lo = lx_fmax(la, lb) + inset, hi = lx_fmin(ha, hb) - inset;
 	if (!(lo <= hi) || !(lo > -1e9 && hi < 1e9)) /* (the callers' windows are far smaller) */
 		return false;
 	*x0 = (int)ceil(lo - 0.5), *x1 = (int)floor(hi - 0.5) + 1; /* centres x + 0.5 in [lo, hi] */
@@ -381,7 +390,7 @@ void lx_poly_shrink(const struct lx_poly *p, double d, struct lx_poly *out)
 		vec2 s = p->v[k], t = p->v[lx_loop_next(k, p->n)];
 		double ex = t.x - s.x, ey = t.y - s.y, len2 = ex * ex + ey * ey, x = ex * (c.y - s.y) - ey * (c.x - s.x);
 		if (len2 > 0) /* a hull leaves no edge of length 0; a guard all the same */
-			least = fmin(least, x * x / len2);
+			least = lx_fmin(least, x * x / len2);
 	}
 	double rho = sqrt(least); /* least >= 0 */
 	if (!(rho > d))

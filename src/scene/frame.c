@@ -150,17 +150,17 @@ bool lx_frame_setup(struct lx_frame *f, const struct lx_scene *s, const struct l
 	for (int id = 0; id < f->object_count; id++) {
 		if (!(in_view >> id & 1))
 			continue; /* out of view: no reason to stretch the depth range */
-		nearest = fmin(nearest, box_distance(v->eye, f->bmin[id], f->bmax[id]));
+		nearest = lx_fmin(nearest, box_distance(v->eye, f->bmin[id], f->bmax[id]));
 		for (int i = 0; i < 8; i++)
-			far = fmax(far, v3_len(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], i), v->eye)));
+			far = lx_fmax(far, v3_len(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], i), v->eye)));
 	}
 	if (!(far > 0)) /* nothing in view: the whole scene's range */
 		for (int i = 0; i < 8; i++)
-			far = fmax(far, v3_len(v3_sub(v3_box_corner(f->scene_min, f->scene_max, i), v->eye)));
+			far = lx_fmax(far, v3_len(v3_sub(v3_box_corner(f->scene_min, f->scene_max, i), v->eye)));
 	double scale = v3_len(v3_sub(f->scene_max, f->scene_min));
 	far = far * 1.01 + 1e-9 * scale + 1e-300; /* a scene of a single point still gets a valid range */
 	v->far = far;
-	v->near = fmin(fmax(box_distance(v->eye, f->view_min, f->view_max) * 0.9, far / 1000), nearest * 0.9);
+	v->near = lx_fmin(lx_fmax(box_distance(v->eye, f->view_min, f->view_max) * 0.9, far / 1000), nearest * 0.9);
 	if (!(v->near >= far * LX_NEAR_MIN_RATIO)) {
 		if (nearest < far * LX_NEAR_MIN_RATIO)
 			note(f, "view: an object %.3g m from the eye is nearer than the near plane (%.3g m, a millionth of "

@@ -61,7 +61,7 @@ static int project_points(const struct lx_light_space *ls, const vec4 *q, int n,
 		double depth;
 		if (project_view(ls, q[i], &g[m], &depth)) {
 			m++;
-			*dlo = fmin(*dlo, depth), *dhi = fmax(*dhi, depth);
+			*dlo = lx_fmin(*dlo, depth), *dhi = lx_fmax(*dhi, depth);
 		}
 	}
 	return m;
@@ -108,8 +108,8 @@ bool lx_shadows_hidden(const struct lx_frame *f)
 		if (!lx_object_can_cast(f, id))
 			continue;
 		vec3 lo = f->bmin[id], hi = f->bmax[id], e = v->eye;
-		vec3 gap = v3(fmax(fmax(lo.x - e.x, e.x - hi.x), 0), fmax(fmax(lo.y - e.y, e.y - hi.y), 0),
-			      fmax(fmax(lo.z - e.z, e.z - hi.z), 0));
+		vec3 gap = v3(lx_fmax(lx_fmax(lo.x - e.x, e.x - hi.x), 0), lx_fmax(lx_fmax(lo.y - e.y, e.y - hi.y), 0),
+			      lx_fmax(lx_fmax(lo.z - e.z, e.z - hi.z), 0));
 		if (v3_len(gap) > reach)
 			continue;
 		int out[6] = {0};
@@ -160,8 +160,8 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 	double cone = 0, rx0 = INFINITY, ry0 = INFINITY, rx1 = -INFINITY, ry1 = -INFINITY, dlo, dhi;
 	for (int i = 0; i < nrec; i++) {
 		q[i] = m4_mul_point(&ls->view, rec[i]);
-		cone = fmax(cone, atan2(sqrt(q[i].x * q[i].x + q[i].y * q[i].y), -q[i].z));
-		rx0 = fmin(rx0, q[i].x), rx1 = fmax(rx1, q[i].x), ry0 = fmin(ry0, q[i].y), ry1 = fmax(ry1, q[i].y);
+		cone = lx_fmax(cone, atan2(sqrt(q[i].x * q[i].x + q[i].y * q[i].y), -q[i].z));
+		rx0 = lx_fmin(rx0, q[i].x), rx1 = lx_fmax(rx1, q[i].x), ry0 = lx_fmin(ry0, q[i].y), ry1 = lx_fmax(ry1, q[i].y);
 	}
 	int n = project_points(ls, q, nrec, pts, &dlo, &dhi);
 	ls->receivers_behind = n < nrec;
@@ -188,7 +188,7 @@ void lx_light_space_build(const struct lx_frame *f, struct lx_light_space *ls)
 				b[0] = b[1] = -INFINITY, b[2] = b[3] = INFINITY;
 				continue;
 			}
-			b[0] = fmin(b[0], g.x), b[1] = fmin(b[1], g.y), b[2] = fmax(b[2], g.x), b[3] = fmax(b[3], g.y);
+			b[0] = lx_fmin(b[0], g.x), b[1] = lx_fmin(b[1], g.y), b[2] = lx_fmax(b[2], g.x), b[3] = lx_fmax(b[3], g.y);
 		}
 	}
 	n = project_points(ls, q, npoints, pts, &dlo, &dhi);
@@ -217,7 +217,7 @@ static bool box_clear_of_rays(const struct lx_light *light, vec3 lo, vec3 hi, ve
 			r_lo[k] = d[k] > 0 ? -INFINITY : r_lo[k];
 			r_hi[k] = d[k] < 0 ? INFINITY : r_hi[k];
 		} else
-			r_lo[k] = fmin(r_lo[k], l[k]), r_hi[k] = fmax(r_hi[k], l[k]);
+			r_lo[k] = lx_fmin(r_lo[k], l[k]), r_hi[k] = lx_fmax(r_hi[k], l[k]);
 		if (c_hi[k] < r_lo[k] || c_lo[k] > r_hi[k])
 			return true;
 	}
@@ -304,8 +304,8 @@ bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, d
 	double znear = ls->znear, zfar = ls->zfar;
 	if (!ls->directional) {
 		if (x0 < -tmax || x1 > tmax || y0 < -tmax || y1 > tmax) {
-			x0 = fmax(x0, -tmax), x1 = fmin(x1, tmax);
-			y0 = fmax(y0, -tmax), y1 = fmin(y1, tmax);
+			x0 = lx_fmax(x0, -tmax), x1 = lx_fmin(x1, tmax);
+			y0 = lx_fmax(y0, -tmax), y1 = lx_fmin(y1, tmax);
 			lx_shadow_warn(warn, "%s: receivers span more than %.0f degrees around the point light; those outside the map are unshadowed",
 				       prefix, 2 * MAX_HALF_ANGLE_DEG);
 		}
@@ -324,13 +324,13 @@ bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, d
 	if (!(y1 - y0 >= pad))
 		y0 -= pad, y1 += pad;
 	/* a sliver of depth margin so the extreme points do not fall on the clip planes */
-	double zpad = fmax((zfar - znear) * 1e-4, ls->directional ? 1e-6 * (ls->size + 1e-300) : znear * 1e-4);
+	double zpad = lx_fmax((zfar - znear) * 1e-4, ls->directional ? 1e-6 * (ls->size + 1e-300) : znear * 1e-4);
 	mat4 proj;
 	bool ok;
 	if (ls->directional)
 		ok = m4_ortho(x0, x1, y0, y1, znear - zpad, zfar + zpad, &proj);
 	else {
-		double n = fmax(znear - zpad, znear * 0.5);
+		double n = lx_fmax(znear - zpad, znear * 0.5);
 		ok = m4_frustum(x0 * n, x1 * n, y0 * n, y1 * n, n, zfar + zpad, &proj);
 	}
 	if (ok) {

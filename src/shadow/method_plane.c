@@ -294,7 +294,7 @@ static double chart_stretch(double along_x, double along_y)
 {
 	if (!(along_x > 0 && along_y > 0))
 		return along_x > 0 ? STRETCH_MAX : along_y > 0 ? 1 / STRETCH_MAX : 1;
-	return fmin(STRETCH_MAX, fmax(1 / STRETCH_MAX, sqrt(along_x / along_y)));
+	return lx_fmin(STRETCH_MAX, lx_fmax(1 / STRETCH_MAX, sqrt(along_x / along_y)));
 }
 
 /* A point, and a polygon, in the chart's frame: twisted and mirrored. */
@@ -383,8 +383,8 @@ static double origin_distance(const struct lx_poly *p)
 	double best = INFINITY;
 	for (int k = 0; k < p->n; k++) {
 		vec2 a = p->v[k], b = p->v[lx_loop_next(k, p->n)], d = {b.x - a.x, b.y - a.y};
-		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? fmin(1, fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
-		best = fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
+		double len2 = d.x * d.x + d.y * d.y, t = len2 > 0 ? lx_fmin(1, lx_fmax(0, -(a.x * d.x + a.y * d.y) / len2)) : 0;
+		best = lx_fmin(best, hypot(a.x + t * d.x, a.y + t * d.y));
 	}
 	return best;
 }
@@ -411,7 +411,7 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	lx_frame_plane_corners(f, i, q);
 	double R = 0;
 	for (int k = 0; k < 4; k++)
-		R = fmax(R, v3_len(v3_sub(q[k], F)));
+		R = lx_fmax(R, v3_len(v3_sub(q[k], F)));
 	vec3 lo = f->bmin[id], hi = f->bmax[id];
 	vec2 flat[8];
 	for (int k = 0; k < 8; k++) {
@@ -573,7 +573,7 @@ static void caster_box_image(const struct lx_frame *f, struct caster_images *im,
 			return;
 		}
 		vec2 w = lx_view_window_point(&f->view, c);
-		b[0] = fmin(b[0], w.x), b[1] = fmin(b[1], w.y), b[2] = fmax(b[2], w.x), b[3] = fmax(b[3], w.y);
+		b[0] = lx_fmin(b[0], w.x), b[1] = lx_fmin(b[1], w.y), b[2] = lx_fmax(b[2], w.x), b[3] = lx_fmax(b[3], w.y);
 	}
 }
 
@@ -636,7 +636,7 @@ static bool take_hidden(const struct lx_frame *f, const struct plane_chart *ch, 
 		hd->some = true;
 		if (!lx_poly_bounds_outside(on, &im->img[id], ex, ey, r))
 			return false;
-		b[0] = fmax(b[0], r[0]), b[1] = fmax(b[1], r[1]), b[2] = fmin(b[2], r[2]), b[3] = fmin(b[3], r[3]);
+		b[0] = lx_fmax(b[0], r[0]), b[1] = lx_fmax(b[1], r[1]), b[2] = lx_fmin(b[2], r[2]), b[3] = lx_fmin(b[3], r[3]);
 	}
 	return b[0] <= b[2] && b[1] <= b[3];
 }
@@ -712,9 +712,9 @@ static bool feet_bound(struct plane_chart *ch)
 	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 	for (int c = 0; c < ch->feet; c++)
 		for (int k = 0; k < 2; k++)
-			r[k] = fmin(r[k], ch->foot[c][k]), r[k + 2] = fmax(r[k + 2], ch->foot[c][k + 2]);
-	ch->x0 = fmax(ch->x0, r[0]), ch->y0 = fmax(ch->y0, r[1]);
-	ch->x1 = fmin(ch->x1, r[2]), ch->y1 = fmin(ch->y1, r[3]);
+			r[k] = lx_fmin(r[k], ch->foot[c][k]), r[k + 2] = lx_fmax(r[k + 2], ch->foot[c][k + 2]);
+	ch->x0 = lx_fmax(ch->x0, r[0]), ch->y0 = lx_fmax(ch->y0, r[1]);
+	ch->x1 = lx_fmin(ch->x1, r[2]), ch->y1 = lx_fmin(ch->y1, r[3]);
 	return true;
 }
 
@@ -829,7 +829,7 @@ static double pieces_area(const struct plane_pieces *pc)
 
 static void rect_union(const double *a, const double *b, double *out)
 {
-	out[0] = fmin(a[0], b[0]), out[1] = fmin(a[1], b[1]), out[2] = fmax(a[2], b[2]), out[3] = fmax(a[3], b[3]);
+	out[0] = lx_fmin(a[0], b[0]), out[1] = lx_fmin(a[1], b[1]), out[2] = lx_fmax(a[2], b[2]), out[3] = lx_fmax(a[3], b[3]);
 }
 
 static void offer_pieces(struct plane_splits *sp, const double (*r)[4], int n)
@@ -919,7 +919,7 @@ static double least_area(const struct plane_splits *sp)
 	double least = pieces_area(&sp->by[1]);
 	for (int k = 2; k <= PIECES_MAX; k++)
 		if (sp->by[k].n > 0)
-			least = fmin(least, pieces_area(&sp->by[k]));
+			least = lx_fmin(least, pieces_area(&sp->by[k]));
 	return least;
 }
 
@@ -938,7 +938,7 @@ static double piece_gain(const struct plane_pieces *from, const struct plane_pie
 {
 	/* areas >= 1: each rectangle counts its last row and column (rect_area) */
 	double one = pieces_area(from), two = pieces_area(to);
-	double before = fmin(1, (double)budget / one), after = fmin(1, (double)budget / two);
+	double before = lx_fmin(1, (double)budget / one), after = lx_fmin(1, (double)budget / two);
 	return after / before - 1 + (two <= budget && one > budget ? PIECE_GAIN_AT_ONE : 0);
 }
 
@@ -1013,7 +1013,7 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 			double uw = sx * (pc->r[p][2] - x0), vh = sy * (pc->r[p][3] - y0);
 			int w = (int)ceil(uw), h = (int)ceil(vh);
 			w = w < 1 ? 1 : w, h = h < 1 ? 1 : h;
-			fit[p] = (struct plane_fit){sx, sy, x0, y0, 0, 0, fmin(w, uw), fmin(h, vh), w, h};
+			fit[p] = (struct plane_fit){sx, sy, x0, y0, 0, 0, lx_fmin(w, uw), lx_fmin(h, vh), w, h};
 			total += (long)w * h;
 			worst = w > worst ? w : h > worst ? h : worst;
 		}
@@ -1023,7 +1023,7 @@ static void fit_scaled(const struct plane_chart *ch, const struct plane_pieces *
 			rows = cols = false;
 			continue;
 		}
-		s *= 0.999 * fmin(sqrt((double)budget / (double)total), (double)side / worst);
+		s *= 0.999 * lx_fmin(sqrt((double)budget / (double)total), (double)side / worst);
 	}
 }
 
@@ -1037,7 +1037,7 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 {
 	if (!g->variable) { /* one piece (plane_build) */
 		double rw = ch->x1 - ch->x0, rh = ch->y1 - ch->y0; /* > 1e-9 (chart_plane) */
-		double k = fmin(1.0, fmin(g->w / rw, g->h / rh));
+		double k = lx_fmin(1.0, lx_fmin(g->w / rw, g->h / rh));
 		*fit = (struct plane_fit){.sx = k, .sy = k, .x0 = ch->x0, .y0 = ch->y0, .w = g->w, .h = g->h};
 		if (k == 1.0 && ch->on_grid && ceil(ch->x1) - floor(ch->x0) <= g->w &&
 		    ceil(ch->y1) - floor(ch->y0) <= g->h) {
@@ -1046,24 +1046,24 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 			fit->x0 = floor(ch->x0);
 			fit->y0 = floor(ch->y0);
 		}
-		fit->uw = fmin(g->w, k * (ch->x1 - fit->x0));
-		fit->vh = fmin(g->h, k * (ch->y1 - fit->y0));
+		fit->uw = lx_fmin(g->w, k * (ch->x1 - fit->x0));
+		fit->vh = lx_fmin(g->h, k * (ch->y1 - fit->y0));
 		return;
 	}
 	int side = atlas->max_side > 1 ? atlas->max_side : 1;
 	double area = 0, wide = 0, tall = 0;
 	for (int k = 0; k < pc->n; k++) {
 		area += (pc->r[k][2] - pc->r[k][0]) * (pc->r[k][3] - pc->r[k][1]); /* > 0: inside the chart's bounds */
-		wide = fmax(wide, pc->r[k][2] - pc->r[k][0]), tall = fmax(tall, pc->r[k][3] - pc->r[k][1]);
+		wide = lx_fmax(wide, pc->r[k][2] - pc->r[k][0]), tall = lx_fmax(tall, pc->r[k][3] - pc->r[k][1]);
 	}
-	double s = sqrt((double)budget / fmax(area, 1e-300));
+	double s = sqrt((double)budget / lx_fmax(area, 1e-300));
 	if (max_lpp > 0)
-		s = fmin(s, sqrt(max_lpp));
+		s = lx_fmin(s, sqrt(max_lpp));
 	/* stretched only short of a lixel per pixel (chart_stretch): from there on a
 	 * similarity keeps lixel centres on pixel centres */
 	double a = s < 1 ? chart_stretch(ch->along_x, ch->along_y) : 1; /* in [1/3, 3] */
 	/* the long sides within the texture (both > 0: inside the chart's bounds) */
-	s = fmin(s, fmin((side - 1) * a / fmax(wide, 1e-9), (side - 1) / (a * fmax(tall, 1e-9))));
+	s = lx_fmin(s, lx_fmin((side - 1) * a / lx_fmax(wide, 1e-9), (side - 1) / (a * lx_fmax(tall, 1e-9))));
 	if (ch->on_grid && s >= 1 && a == 1) {
 		/* whole lixels per pixel, the translation in whole pixels: pixel centres land on
 		 * lixel centres (an even scale puts them on corners, half a lixel off) */
@@ -1087,9 +1087,9 @@ static void fit_plane(const struct plane_chart *ch, const struct plane_pieces *p
 		 * just under one puts lixel centres up to half a lixel off pixel centres along
 		 * every edge (random view 19 of the table, tools/random-views.py --seed 13, the
 		 * floor at 0.995 lixels per pixel: 0.2223% against 0.0027% at one). */
-		s = fmin(s, 1);
+		s = lx_fmin(s, 1);
 		a = chart_stretch(ch->along_x, ch->along_y);
-		s = fmin(s, fmin((side - 1) * a / fmax(wide, 1e-9), (side - 1) / (a * fmax(tall, 1e-9))));
+		s = lx_fmin(s, lx_fmin((side - 1) * a / lx_fmax(wide, 1e-9), (side - 1) / (a * lx_fmax(tall, 1e-9))));
 	}
 	fit_scaled(ch, pc, budget, side, s, a, fit);
 }
@@ -1111,7 +1111,7 @@ static bool plane_zfar(const struct lx_frame *f, const struct lx_plane *P, const
 		double w = v4_dot_point(m4_row(m, 3), q);
 		if (!(w > 0))
 			return false;
-		*zfar = fmax(*zfar, v4_dot_point(m4_row(m, 2), q) / w);
+		*zfar = lx_fmax(*zfar, v4_dot_point(m4_row(m, 2), q) / w);
 	}
 	return isfinite(*zfar);
 }
@@ -1128,7 +1128,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 	vec4 wrow = m4_row(m, 3), zrow = m4_row(m, 2);
 	double wplane = INFINITY;
 	for (int k = 0; k < ch->nw; k++)
-		wplane = fmin(wplane, v4_dot_point(wrow, ch->world[k]));
+		wplane = lx_fmin(wplane, v4_dot_point(wrow, ch->world[k]));
 	vec4 hs[20];
 	int nh = 0;
 	hs[nh++] = v4_lin(1, m4_row(m, 0), -b[0], wrow);
@@ -1144,7 +1144,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		vec3 vert[2048];
 		int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
 		for (int k = 0; k < nv; k++)
-			zfar = fmax(zfar, v4_dot_point(zrow, vert[k]) / v4_dot_point(wrow, vert[k])); /* w >= wmin > 0 there */
+			zfar = lx_fmax(zfar, v4_dot_point(zrow, vert[k]) / v4_dot_point(wrow, vert[k])); /* w >= wmin > 0 there */
 	}
 	bool clipped = false;
 	for (int id = 0; id < f->object_count; id++) {
@@ -1181,7 +1181,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		}
 		for (int k = 0; k < nc; k++) {
 			double w = v4_dot_point(wrow, cv[k]);
-			znear = fmin(znear, v4_dot_point(zrow, cv[k]) / w);
+			znear = lx_fmin(znear, v4_dot_point(zrow, cv[k]) / w);
 			clipped |= w <= wmin * (1 + 1e-9);
 		}
 	}
@@ -1215,8 +1215,8 @@ static bool plane_depth(const struct lx_frame *f, const struct lx_light_space *l
 {
 	double r[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
 	for (int k = 0; k < pc->n; k++)
-		r[0] = fmin(r[0], pc->r[k][0]), r[1] = fmin(r[1], pc->r[k][1]), r[2] = fmax(r[2], pc->r[k][2]),
-		r[3] = fmax(r[3], pc->r[k][3]);
+		r[0] = lx_fmin(r[0], pc->r[k][0]), r[1] = lx_fmin(r[1], pc->r[k][1]), r[2] = lx_fmax(r[2], pc->r[k][2]),
+		r[3] = lx_fmax(r[3], pc->r[k][3]);
 	struct plane_fit ft = {1, 1, r[0], r[1], 0, 0, r[2] - r[0], r[3] - r[1], (int)ceil(r[2] - r[0]), (int)ceil(r[3] - r[1])};
 	ft.w = ft.w < 1 ? 1 : ft.w, ft.h = ft.h < 1 ? 1 : ft.h;
 	mat4 a = piece_matrix(ch, &ft);
@@ -1258,8 +1258,8 @@ static void build_plane_map(const struct lx_atlas *atlas, const struct plane_cha
 		for (int c = 0; c < 4; c++) {
 			double u = (c & 1 ? pc->r[k][2] : pc->r[k][0]) * ch->mx, v = c & 2 ? pc->r[k][3] : pc->r[k][1];
 			double x = ch->cs * u + ch->sn * v, y = -ch->sn * u + ch->cs * v;
-			mp->screen[0] = fmin(mp->screen[0], x), mp->screen[1] = fmin(mp->screen[1], y);
-			mp->screen[2] = fmax(mp->screen[2], x), mp->screen[3] = fmax(mp->screen[3], y);
+			mp->screen[0] = lx_fmin(mp->screen[0], x), mp->screen[1] = lx_fmin(mp->screen[1], y);
+			mp->screen[2] = lx_fmax(mp->screen[2], x), mp->screen[3] = lx_fmax(mp->screen[3], y);
 		}
 	}
 }
@@ -1323,7 +1323,7 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 		return;
 	for (int i = 0; i < np; i++)
 		if (ok[i] && need[i] > budget[i])
-			budget[i] += (long)fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
+			budget[i] += (long)lx_fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
 /* A map that took another's budget (plane_budgets) may hold more lixels than its
@@ -1349,7 +1349,7 @@ static void cut_to_regions(const struct lx_atlas *atlas, int np, const bool *ok,
 			double most = 0;
 			int big = 0;
 			/* lixels per pixel; the scale-1 count >= 1 */
-			double s2 = fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
+			double s2 = lx_fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
 			for (int k = 0; k < pc[i].n; k++) {
 				double l = piece_lixels_most(pc[i].r[k], s2);
 				if (l > most)
@@ -1471,7 +1471,7 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 			vec2 *g = &pts[n + k];
 			if (!lx_light_space_chart(ls, f, (vec4){x[k].x, x[k].y, x[k].z, 1}, g))
 				return false;
-			own[0] = fmin(own[0], g->x), own[1] = fmin(own[1], g->y), own[2] = fmax(own[2], g->x), own[3] = fmax(own[3], g->y);
+			own[0] = lx_fmin(own[0], g->x), own[1] = lx_fmin(own[1], g->y), own[2] = lx_fmax(own[2], g->x), own[3] = lx_fmax(own[3], g->y);
 		}
 		/* a convex caster never shadows its own lit faces: with no other shadow reaching
 		 * it, it needs no lixel */
@@ -1518,8 +1518,8 @@ static bool box_image(const mat4 *m, const vec3 *c, double sx, double sy, bool d
 static double sigma_min(double a, double b, double c, double d)
 {
 	double p = a * a + b * b + c * c + d * d, q = a * d - b * c; /* sum of squares, determinant */
-	double disc = sqrt(fmax(0, p * p - 4 * q * q));
-	return sqrt(fmax(0, 0.5 * (p - disc)));
+	double disc = sqrt(lx_fmax(0, p * p - 4 * q * q));
+	return sqrt(lx_fmax(0, 0.5 * (p - disc)));
 }
 
 /* Lixels per pixel a map gives a box's surfaces along their worst direction: over the
@@ -1543,7 +1543,7 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 		if (!(fabs(det) > 1)) /* seen edge-on, or under a pixel: no pixels to serve */
 			continue;
 		double i11 = p22 / det, i12 = -p12 / det, i21 = -p21 / det, i22 = p11 / det;
-		worst = fmin(worst, sigma_min(l11 * i11 + l12 * i21, l11 * i12 + l12 * i22, l21 * i11 + l22 * i21,
+		worst = lx_fmin(worst, sigma_min(l11 * i11 + l12 * i21, l11 * i12 + l12 * i22, l21 * i11 + l22 * i21,
 					      l21 * i12 + l22 * i22));
 	}
 	return isfinite(worst) ? worst : 0;

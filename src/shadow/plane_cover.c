@@ -56,7 +56,7 @@ static int thin_axis(vec3 lo, vec3 hi)
 {
 	double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
 	int a = ext[0] <= ext[1] && ext[0] <= ext[2] ? 0 : ext[1] <= ext[2] ? 1 : 2;
-	return ext[a] * LX_SLAB_FLATNESS <= fmin(ext[(a + 1) % 3], ext[(a + 2) % 3]) ? a : -1;
+	return ext[a] * LX_SLAB_FLATNESS <= lx_fmin(ext[(a + 1) % 3], ext[(a + 2) % 3]) ? a : -1;
 }
 
 bool lx_slab_front(const struct lx_frame *f, int id, vec3 *c, vec3 *e1, vec3 *e2, vec3 *t)
@@ -110,8 +110,8 @@ static bool beyond_meets_in(const mat4 *m, vec3 lo, vec3 hi, const double r[4])
 				continue;
 			if (!(x.z > 0))
 				continue; /* cannot happen beyond the plane: h.z = 1 + h.w or 1 */
-			u0 = fmin(u0, x.x / x.z), u1 = fmax(u1, x.x / x.z);
-			v0 = fmin(v0, x.y / x.z), v1 = fmax(v1, x.y / x.z);
+			u0 = lx_fmin(u0, x.x / x.z), u1 = lx_fmax(u1, x.x / x.z);
+			v0 = lx_fmin(v0, x.y / x.z), v1 = lx_fmax(v1, x.y / x.z);
 		}
 	return u0 <= r[2] && u1 >= r[0] && v0 <= r[3] && v1 >= r[1];
 }
@@ -229,8 +229,8 @@ static void box_outline(struct lx_plane_covers *c, int p)
 			c->top[p] = -1;
 			return;
 		}
-		r[0] = fmin(r[0], h.x / h.z), r[1] = fmin(r[1], h.y / h.z); /* h.z > 0 */
-		r[2] = fmax(r[2], h.x / h.z), r[3] = fmax(r[3], h.y / h.z);
+		r[0] = lx_fmin(r[0], h.x / h.z), r[1] = lx_fmin(r[1], h.y / h.z); /* h.z > 0 */
+		r[2] = lx_fmax(r[2], h.x / h.z), r[3] = lx_fmax(r[3], h.y / h.z);
 	}
 }
 
@@ -296,13 +296,13 @@ bool lx_slab_sides_shadow(const mat4 *top, const mat4 *bottom, vec3 x)
 	if (!(hb.w > 0) || !(ht.w > 0) || !(hb.z > 0) || !(ht.z > 0))
 		return false; /* not beyond the bottom (beyond it, h.z >= 1 for both) */
 	double ax = hb.x / hb.z, ay = hb.y / hb.z, bx = ht.x / ht.z, by = ht.y / ht.z; /* z > 0 */
-	if (in_unit(ax, ay) || in_unit(bx, by) || fmin(ax, bx) > 1 || fmax(ax, bx) < 0 || fmin(ay, by) > 1 ||
-	    fmax(ay, by) < 0)
+	if (in_unit(ax, ay) || in_unit(bx, by) || lx_fmin(ax, bx) > 1 || lx_fmax(ax, bx) < 0 || lx_fmin(ay, by) > 1 ||
+	    lx_fmax(ay, by) < 0)
 		return false;
 	/* the square's corners on both sides of the segment's line, or on it */
 	double dx = bx - ax, dy = by - ay, e0 = dy * ax - dx * ay;
 	double e1 = e0 - dy, e2 = e0 + dx, e3 = e0 + dx - dy;
-	return fmin(fmin(e0, e1), fmin(e2, e3)) <= 0 && fmax(fmax(e0, e1), fmax(e2, e3)) >= 0;
+	return lx_fmin(lx_fmin(e0, e1), lx_fmin(e2, e3)) <= 0 && lx_fmax(lx_fmax(e0, e1), lx_fmax(e2, e3)) >= 0;
 }
 
 bool lx_plane_covers_shadow(const struct lx_plane_covers *c, int id, vec3 x)
@@ -416,8 +416,8 @@ int lx_scene_covers_needed(const struct lx_scene *s, const struct lx_scene_meshe
 		vec3 lo = m->mesh[id].bmin, hi = m->mesh[id].bmax;
 		if (id >= s->plane_count) { /* its box over its bounce (lx_caster_bottom) */
 			const struct lx_caster *c = &s->casters[id - s->plane_count];
-			lo = v3_add(lo, v3(c->x, fmin(c->low, c->high), c->z));
-			hi = v3_add(hi, v3(c->x, fmax(c->low, c->high), c->z));
+			lo = v3_add(lo, v3(c->x, lx_fmin(c->low, c->high), c->z));
+			hi = v3_add(hi, v3(c->x, lx_fmax(c->low, c->high), c->z));
 		}
 		int beyond = 0;
 		for (int c = 0; c < s->caster_count; c++) /* a flat box's two fronts, any light */

@@ -69,7 +69,7 @@ static bool basis(const vec4 x[5], mat4 *t)
 	}
 	if (!lx_solve(4, a, b, 1e-12))
 		return false;
-	double big = fmax(fmax(fabs(b[0]), fabs(b[1])), fmax(fabs(b[2]), fabs(b[3])));
+	double big = lx_fmax(lx_fmax(fabs(b[0]), fabs(b[1])), lx_fmax(fabs(b[2]), fabs(b[3])));
 	for (int c = 0; c < 4; c++) {
 		if (!(fabs(b[c]) > 1e-9 * big)) /* X_4 lies in the span of three of the others */
 			return false;
@@ -86,7 +86,7 @@ static double residual(const mat4 *m, vec4 x, vec4 y)
 {
 	vec4 v = unit4(m4_mul_v4(m, x)), u = unit4(y);
 	double d = fabs(v4_dot(v, u));
-	return acos(fmin(1.0, d));
+	return acos(lx_fmin(1.0, d));
 }
 
 enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 light, vec4 plane, vec4 inside,
@@ -124,18 +124,18 @@ enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 
 	/* fix the scale by the largest element, never by one entry that may be 0 */
 	double big = 0;
 	for (int i = 0; i < 16; i++)
-		big = fmax(big, fabs(m.m[i]));
+		big = lx_fmax(big, fabs(m.m[i]));
 	if (!(big > 0) || !m4_finite(&m))
 		return LX_PLANE_CAMERA_SINGULAR;
 	for (int i = 0; i < 16; i++)
 		m.m[i] /= big;
 	double r = 0;
 	for (int i = 0; i < 5; i++)
-		r = fmax(r, residual(&m, X[i], Y[i]));
+		r = lx_fmax(r, residual(&m, X[i], Y[i]));
 	/* the fourth corner itself must keep its window x, y too (equation 6) */
 	vec4 q4 = m4_mul_v4(&m, p[3]);
 	if (fabs(q4.w) > 1e-12 * v4_len(q4))
-		r = fmax(r, hypot(q4.x / q4.w - cx[3], q4.y / q4.w - cy[3]) / (W + H));
+		r = lx_fmax(r, hypot(q4.x / q4.w - cx[3], q4.y / q4.w - cy[3]) / (W + H));
 	if (!(r < 1e-7))
 		return LX_PLANE_CAMERA_SINGULAR;
 	/* q > 0 where the map must see */
