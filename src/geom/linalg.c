@@ -36,7 +36,7 @@ static bool solve_columns(int n, double *a, double *b, int m, double eps)
 {
 	double big = 0;
 	for (int i = 0; i < n * n; i++)
-		big = fmax(big, fabs(a[i]));
+		big = lx_fmax(big, fabs(a[i]));
 	if (!(big > 0) || !isfinite(big))
 		return false;
 	for (int c = 0; c < n; c++) {

@@ -127,11 +127,11 @@ static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, cons
 		double u = c.x / c.w, v = c.y / c.w;
 		for (int d = 0; d < nd; d++) {
 			double p = coef[d][0] * u + coef[d][1] * v;
-			t0[d] = fmin(t0[d], p), t1[d] = fmax(t1[d], p);
+			t0[d] = lx_fmin(t0[d], p), t1[d] = lx_fmax(t1[d], p);
 		}
 	}
 	for (int d = 0; d < nd; d++)
-		b0[d] = fmax(b0[d], t0[d]), b1[d] = fmin(b1[d], t1[d]);
+		b0[d] = lx_fmax(b0[d], t0[d]), b1[d] = lx_fmin(b1[d], t1[d]);
 }
 
 /* The directions an image is bounded in, as coefficients of its x and y: x, y, x + y and
@@ -212,9 +212,9 @@ static void image_bounds(const vec4 *c, int n, bool crosses, const double (*coef
 		double x = c[k].x / c[k].w, y = c[k].y / c[k].w; /* w > 0 */
 		for (int d = 0; d < nd; d++) {
 			double v = coef[d][0] * x + coef[d][1] * y;
-			b0[d] = fmin(b0[d], v), b1[d] = fmax(b1[d], v);
+			b0[d] = lx_fmin(b0[d], v), b1[d] = lx_fmax(b1[d], v);
 		}
-		*z0 = fmin(*z0, c[k].z / c[k].w);
+		*z0 = lx_fmin(*z0, c[k].z / c[k].w);
 	}
 	if (!crosses)
 		return;
@@ -282,7 +282,7 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 		vec3 centre = v3_add(f->offset[id], v3(0, r, 0));
 		for (int d = 0; d < nd; d++)
 			if (sphere_range(dir[d], r3, centre, r, &l, &h))
-				b0[d] = fmax(b0[d], l), b1[d] = fmin(b1[d], h);
+				b0[d] = lx_fmax(b0[d], l), b1[d] = lx_fmin(b1[d], h);
 	} else if (id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape != LX_BOX)
 		outline_bounds(f, m, id, coef, nd, b0, b1); /* a cylinder's or cone's octagons */
 	/* grown by the margin and cut to the rays the map serves */
@@ -290,8 +290,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	double grow[MAX_DIRECTIONS];
 	for (int d = 0; d < nd; d++)
 		grow[d] = fabs(coef[d][0]) * ex + fabs(coef[d][1]) * ey;
-	b0[0] = fmax(b0[0], map->bounds[0]), b1[0] = fmin(b1[0], map->bounds[2]);
-	b0[1] = fmax(b0[1], map->bounds[1]), b1[1] = fmin(b1[1], map->bounds[3]);
+	b0[0] = lx_fmax(b0[0], map->bounds[0]), b1[0] = lx_fmin(b1[0], map->bounds[2]);
+	b0[1] = lx_fmax(b0[1], map->bounds[1]), b1[1] = lx_fmin(b1[1], map->bounds[3]);
 	for (int d = 0; d < nd; d++) {
 		b0[d] -= grow[d], b1[d] += grow[d];
 		if (!(b0[d] <= b1[d]))
@@ -477,14 +477,14 @@ static bool band_range(const struct lx_poly *h, double y0, double y1, double *x0
 		double t0 = 0, t1 = 1;
 		if (b.y != a.y) { /* the part of edge ab inside the band */
 			double ta = (y0 - a.y) / (b.y - a.y), tb = (y1 - a.y) / (b.y - a.y);
-			t0 = fmax(0, fmin(ta, tb)), t1 = fmin(1, fmax(ta, tb));
+			t0 = lx_fmax(0, lx_fmin(ta, tb)), t1 = lx_fmin(1, lx_fmax(ta, tb));
 		} else if (a.y < y0 || a.y > y1) {
 			continue;
 		}
 		if (t0 > t1)
 			continue;
 		double xa = a.x + (b.x - a.x) * t0, xb = a.x + (b.x - a.x) * t1;
-		*x0 = fmin(*x0, fmin(xa, xb)), *x1 = fmax(*x1, fmax(xa, xb));
+		*x0 = lx_fmin(*x0, lx_fmin(xa, xb)), *x1 = lx_fmax(*x1, lx_fmax(xa, xb));
 	}
 	return *x0 <= *x1;
 }
@@ -577,8 +577,8 @@ int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned ma
 			/* out to whole blocks: clamped a block beyond `within` (so that a range
 			 * outside it stays outside), aligned, clamped to it */
 			double lo = within.x0 - LX_SPAN_ALIGN, hi = within.x1 + LX_SPAN_ALIGN;
-			int i0 = lx_align_down((int)fmax(lo, fmin(hi, floor(x0) - 1)));
-			int i1 = lx_align_up((int)fmax(lo, fmin(hi, ceil(x1) + 1)));
+			int i0 = lx_align_down((int)lx_fmax(lo, lx_fmin(hi, floor(x0) - 1)));
+			int i1 = lx_align_up((int)lx_fmax(lo, lx_fmin(hi, ceil(x1) + 1)));
 			i0 = i0 < within.x0 ? within.x0 : i0 > within.x1 ? within.x1 : i0;
 			i1 = i1 < within.x0 ? within.x0 : i1 > within.x1 ? within.x1 : i1;
 			if (i1 <= i0)

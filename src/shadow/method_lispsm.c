@@ -12,11 +12,11 @@
 
 double lx_lispsm_n(double z_n, double d, double sin_gamma)
 {
-	d = fmax(d, 0);
+	d = lx_fmax(d, 0);
 	return (z_n + sqrt(z_n * (z_n + d * sin_gamma))) / sin_gamma; /* callers keep sin_gamma >= 0.02 */
 }
 
-static double safe_extent(double n, double d) { return fmax(d, 1e-9 * (n + 1)); }
+static double safe_extent(double n, double d) { return lx_fmax(d, 1e-9 * (n + 1)); }
 
 double lx_lispsm_warp(double y, double n, double d)
 {
@@ -119,10 +119,10 @@ static bool warped_crop(const mat4 *WT, const vec3 *pts, const bool *caster, int
 		vec4 h = m4_mul_v4(WT, (vec4){pts[i].x, pts[i].y, pts[i].z, 1});
 		double x = h.x / h.w, y = h.y / h.w, z = h.z / h.w; /* h.w = y - c.y >= n > 0 */
 		double *b = caster[i] ? c : r;
-		b[0] = fmin(b[0], x), b[2] = fmax(b[2], x), b[1] = fmin(b[1], y), b[3] = fmax(b[3], y);
-		b[4] = caster[i] ? fmax(b[4], z) : fmin(b[4], z);
+		b[0] = lx_fmin(b[0], x), b[2] = lx_fmax(b[2], x), b[1] = lx_fmin(b[1], y), b[3] = lx_fmax(b[3], y);
+		b[4] = caster[i] ? lx_fmax(b[4], z) : lx_fmin(b[4], z);
 	}
-	double ex0 = fmax(r[0], c[0]), ex1 = fmin(r[2], c[2]), ey0 = fmax(r[1], c[1]), ey1 = fmin(r[3], c[3]);
+	double ex0 = lx_fmax(r[0], c[0]), ex1 = lx_fmin(r[2], c[2]), ey0 = lx_fmax(r[1], c[1]), ey1 = lx_fmin(r[3], c[3]);
 	if (!(ex0 < ex1 && ey0 < ey1 && r[4] < c[4]))
 		return false;
 	double zpad = (c[4] - r[4]) * 1e-4;
@@ -148,7 +148,7 @@ static void lispsm_warp(const struct lx_frame *f, const struct lx_light_space *l
 			lx_shadow_warn(out, "lispsm: part of the body lies behind the point light; no warp this frame (uniform)");
 			return;
 		}
-		ylo = fmin(ylo, pts[i].y), yhi = fmax(yhi, pts[i].y);
+		ylo = lx_fmin(ylo, pts[i].y), yhi = lx_fmax(yhi, pts[i].y);
 	}
 	mat4 WT = warp(&lf, ylo, yhi), M0 = m4_mul(&WT, &lf.RS), crop;
 	if (!warped_crop(&WT, pts, caster, n, &crop))

@@ -42,8 +42,8 @@ static bool virtual_camera(const struct lx_frame *f, const struct lx_light_space
 	for (int id = 0; id < f->object_count; id++)
 		if (ls->casting >> id & 1) /* casters that can reach the receivers: not one far off */
 			for (int k = 0; k < 8; k++)
-				cmin = fmin(cmin, v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), cam->eye), v->dir));
-	double slide = fmax(0, v->near - cmin);
+				cmin = lx_fmin(cmin, v3_dot(v3_sub(v3_box_corner(f->bmin[id], f->bmax[id], k), cam->eye), v->dir));
+	double slide = lx_fmax(0, v->near - cmin);
 	vec3 eye = v3_sub(cam->eye, v3_scale(v->dir, slide));
 	mat4 vv, vp;
 	if (!m4_look_at(eye, v3_add(eye, v->dir), cam->up, &vv) ||
@@ -125,8 +125,8 @@ static int psm_crop(const struct lx_frame *f, const struct lx_light_space *ls, c
 			lx_shadow_warn(out, "psm: receivers lie on both sides of the light in PPS; uniform this frame");
 			return -1;
 		}
-		r[0] = fmin(r[0], h.x / h.w), r[2] = fmax(r[2], h.x / h.w), r[1] = fmin(r[1], h.y / h.w), r[3] = fmax(r[3], h.y / h.w);
-		zfar = fmax(zfar, h.z / h.w), zrec = fmin(zrec, h.z / h.w);
+		r[0] = lx_fmin(r[0], h.x / h.w), r[2] = lx_fmax(r[2], h.x / h.w), r[1] = lx_fmin(r[1], h.y / h.w), r[3] = lx_fmax(r[3], h.y / h.w);
+		zfar = lx_fmax(zfar, h.z / h.w), zrec = lx_fmin(zrec, h.z / h.w);
 	}
 	double cb[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY}, znear = INFINITY;
 	for (int id = 0; id < f->object_count; id++)
@@ -140,13 +140,13 @@ static int psm_crop(const struct lx_frame *f, const struct lx_light_space *ls, c
 				map->pancake = true;
 				continue;
 			}
-			cb[0] = fmin(cb[0], h.x / h.w), cb[2] = fmax(cb[2], h.x / h.w), cb[1] = fmin(cb[1], h.y / h.w);
-			cb[3] = fmax(cb[3], h.y / h.w), znear = fmin(znear, h.z / h.w);
+			cb[0] = lx_fmin(cb[0], h.x / h.w), cb[2] = lx_fmax(cb[2], h.x / h.w), cb[1] = lx_fmin(cb[1], h.y / h.w);
+			cb[3] = lx_fmax(cb[3], h.y / h.w), znear = lx_fmin(znear, h.z / h.w);
 		}
-	double ex0 = fmax(r[0], cb[0]), ex1 = fmin(r[2], cb[2]), ey0 = fmax(r[1], cb[1]), ey1 = fmin(r[3], cb[3]);
+	double ex0 = lx_fmax(r[0], cb[0]), ex1 = lx_fmin(r[2], cb[2]), ey0 = lx_fmax(r[1], cb[1]), ey1 = lx_fmin(r[3], cb[3]);
 	/* a receiver nearer the light than every caster must still be inside the depth range */
 	if (map->pancake)
-		znear = fmin(znear, zrec);
+		znear = lx_fmin(znear, zrec);
 	if (!(ex0 < ex1 && ey0 < ey1) || !isfinite(znear) || znear > zfar)
 		return 0;
 	double zpad = (zfar - znear) * 1e-4;

@@ -27,7 +27,7 @@ static void depth_range(const mat4 *m, vec3 p, double *lo, double *hi)
 	vec4 h = m4_mul_point(m, p);
 	if (!(h.w > 0))
 		return;
-	*lo = fmin(*lo, h.z / h.w), *hi = fmax(*hi, h.z / h.w); /* w > 0 */
+	*lo = lx_fmin(*lo, h.z / h.w), *hi = lx_fmax(*hi, h.z / h.w); /* w > 0 */
 }
 
 /* The trapezoid in the uniform map's image: its projection centre q, its axis (from
@@ -76,11 +76,11 @@ static int fit_trapezoid(const struct lx_frame *f, const mat4 *u, const vec2 *pt
 	double tmin = INFINITY, tmax = -INFINITY;
 	for (int i = 0; i < np; i++) {
 		double t = (pts[i].x - top.x) * axis.x + (pts[i].y - top.y) * axis.y;
-		tmin = fmin(tmin, t), tmax = fmax(tmax, t);
+		tmin = lx_fmin(tmin, t), tmax = lx_fmax(tmax, t);
 	}
 	double lambda = tz->lambda = tmax - tmin; /* the trapezoid's height: > 0, the square has extent */
 	double delta = (focus.x - top.x) * axis.x + (focus.y - top.y) * axis.y - tmin;
-	delta = fmin(fmax(delta, 1e-6 * lambda), 0.79 * lambda); /* the focus inside the trapezoid */
+	delta = lx_fmin(lx_fmax(delta, 1e-6 * lambda), 0.79 * lambda); /* the focus inside the trapezoid */
 	/* the 80% rule; the denominator is > 0 because delta < lambda (1 - xi) / 2 = 0.8 lambda */
 	tz->eta = lambda * delta * (1 + TSM_XI) / (lambda - 2 * delta - lambda * TSM_XI);
 	/* frame: origin at the projection centre, y along the centre line */
@@ -90,7 +90,7 @@ static int fit_trapezoid(const struct lx_frame *f, const mat4 *u, const vec2 *pt
 	for (int i = 0; i < np; i++) {
 		double px = (pts[i].x - tz->q.x) * tz->side.x + (pts[i].y - tz->q.y) * tz->side.y;
 		double py = (pts[i].x - tz->q.x) * axis.x + (pts[i].y - tz->q.y) * axis.y; /* >= eta > 0 */
-		slo = fmin(slo, px / py), shi = fmax(shi, px / py);
+		slo = lx_fmin(slo, px / py), shi = lx_fmax(shi, px / py);
 	}
 	tz->mid = (slo + shi) / 2, tz->half = (shi - slo) / 2;
 	return tz->half > 0;
@@ -108,7 +108,7 @@ static double receivers_mid_depth(const struct lx_light_space *ls, const mat4 *u
 	for (int i = 0; i < ls->receiver_count; i++)
 		depth_range(u, ls->receiver_pts[i], &lo, &hi);
 	/* (receivers nearer the light than every caster, z / w < -1, cannot be shadowed) */
-	lo = fmax(lo, -1), hi = fmin(hi, 1);
+	lo = lx_fmax(lo, -1), hi = lx_fmin(hi, 1);
 	return lo <= hi ? 0.5 * (lo + hi) : 0;
 }
 

@@ -116,16 +116,16 @@ static double warp_parameter(const struct xpsm_space *xs, const struct xpsm_poin
 {
 	double ylo = INFINITY, yhi = -INFINITY, zlo = INFINITY, zhi = -INFINITY, clo = INFINITY;
 	for (int i = 0; i < pt->nrec; i++) {
-		ylo = fmin(ylo, pt->rec[i].y), yhi = fmax(yhi, pt->rec[i].y);
-		zlo = fmin(zlo, pt->rec[i].z), zhi = fmax(zhi, pt->rec[i].z);
+		ylo = lx_fmin(ylo, pt->rec[i].y), yhi = lx_fmax(yhi, pt->rec[i].y);
+		zlo = lx_fmin(zlo, pt->rec[i].z), zhi = lx_fmax(zhi, pt->rec[i].z);
 	}
 	for (int i = 0; i < pt->ncas; i++)
-		clo = fmin(clo, pt->cas[i].y);
+		clo = lx_fmin(clo, pt->cas[i].y);
 	*o = v3(xs->a.x, ylo, 0.5 * (zlo + zhi));
 	/* z_n > 0 and sin gamma in [0.02, 1]: n >= 2 z_n > 0 */
 	double n = lx_lispsm_n(xs->z_n, yhi - ylo, xs->sin_gamma);
 	/* w = 1 + (clo - ylo) / n >= eps_w */
-	return fmax(n, (ylo - clo) / (1 - XPSM_EPS_W));
+	return lx_fmax(n, (ylo - clo) / (1 - XPSM_EPS_W));
 }
 
 /* Bounds in the warped space: image x, y and the depth extreme that matters (the
@@ -142,9 +142,9 @@ static struct extent warped_extent(const vec3 *pts, int n, vec3 o, double nn, bo
 		vec3 q = v3_sub(pts[i], o);
 		double w = 1 + q.y / nn; /* nn > 0 */
 		double x = q.x / w, y = q.y / w, z = q.z / w;
-		e.x0 = fmin(e.x0, x), e.x1 = fmax(e.x1, x);
-		e.y0 = fmin(e.y0, y), e.y1 = fmax(e.y1, y);
-		e.z = caster ? fmax(e.z, z) : fmin(e.z, z);
+		e.x0 = lx_fmin(e.x0, x), e.x1 = lx_fmax(e.x1, x);
+		e.y0 = lx_fmin(e.y0, y), e.y1 = lx_fmax(e.y1, y);
+		e.z = caster ? lx_fmax(e.z, z) : lx_fmin(e.z, z);
 	}
 	return e;
 }
@@ -189,7 +189,7 @@ static void xpsm_warp(const struct lx_frame *f, const struct lx_light_space *ls,
 	vec3 o;
 	double n = warp_parameter(&xs, &pt, &o);
 	struct extent r = warped_extent(pt.rec, pt.nrec, o, n, false), c = warped_extent(pt.cas, pt.ncas, o, n, true);
-	double x0 = fmax(r.x0, c.x0), x1 = fmin(r.x1, c.x1), y0 = fmax(r.y0, c.y0), y1 = fmin(r.y1, c.y1);
+	double x0 = lx_fmax(r.x0, c.x0), x1 = lx_fmin(r.x1, c.x1), y0 = lx_fmax(r.y0, c.y0), y1 = lx_fmin(r.y1, c.y1);
 	if (!(x0 < x1 && y0 < y1 && r.z < c.z)) {
 		map->rendered = false; /* casters and receivers do not overlap from the light */
 		return;

@@ -15,7 +15,7 @@ static double farthest_depth(const mat4 *m, vec3 lo, vec3 hi, bool flat)
 		vec4 c = m4_mul_point(m, v3_box_corner(lo, hi, k));
 		if (!(c.w > 0) || !(c.z < c.w) || (!flat && !(c.z > -c.w)))
 			return NAN;
-		far = fmax(far, fmax(c.z / c.w, -1.0)); /* c.w > 0 */
+		far = lx_fmax(far, lx_fmax(c.z / c.w, -1.0)); /* c.w > 0 */
 	}
 	return far;
 }
@@ -83,7 +83,7 @@ bool lx_sure_shadow_window(const struct lx_frame *f, const struct lx_shadow_map 
 			return false;
 		vec4 c = m4_mul_point(m, x), e = m4_mul_point(&f->view.view_proj, x);
 		/* beyond the far plane a receiver's depth is clamped to it */
-		if (!(fmin(c.z / c.w, 1.0) - far >= depth_gap) || !(e.w > 0))
+		if (!(lx_fmin(c.z / c.w, 1.0) - far >= depth_gap) || !(e.w > 0))
 			return false;
 		pix[k] = lx_view_window_point(&f->view, e);
 	}
