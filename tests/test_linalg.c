@@ -144,9 +144,6 @@ static double det4_rows(vec4 r[4])
 	return d;
 }
 
-/* v4_cross3: det[a; b; q; v] = c . v for random rows and v, c orthogonal to a, b, q; and
- * the projected triangle's orientation it gives: a triangle's clip-space x, y, w
- * determinant equals c(rows) . c(points), so the sign says which way it turns on the screen. */
 /* lx_fmin and lx_fmax, which stand in for fmin and fmax in the set-up: the smaller and
  * the larger, either way round, and a NaN loses to a number (bounds start at a NaN-free
  * infinity and must stay finite past a corner that is not). */
@@ -161,6 +158,9 @@ static void min_and_max_let_a_nan_lose(void **state)
 	assert_true(lo.x == 0 && lo.y == 4 && lo.z == -3);
 }
 
+/* v4_cross3: det[a; b; q; v] = c . v for random rows and v, c orthogonal to a, b, q; and
+ * the projected triangle's orientation it gives: a triangle's clip-space x, y, w
+ * determinant equals c(rows) . c(points), so the sign says which way it turns on the screen. */
 static void cross3_is_the_cofactor_vector(void **state)
 {
 	(void)state;

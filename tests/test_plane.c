@@ -1046,10 +1046,19 @@ static void polygon_difference(void **state)
 	assert_near(fabs(lx_poly_area(&out)), 4, 1e-9); /* a hole does not shrink the hull */
 	lx_poly_intersect(&sq, &hole, &out);
 	assert_near(fabs(lx_poly_area(&out)), 1, 1e-12);
-	/* a half-plane that holds all of a polygon keeps it as it is, but for a last corner
-	 * that repeats the first; one that holds none of it leaves nothing */
+}
+
+/* A half-plane that holds all of a polygon keeps it as it is, but for a last corner that
+ * repeats the first; one that holds none of it leaves nothing; one through it, a part. */
+static void halfplane_keeps_all_none_or_part(void **state)
+{
+	(void)state;
+	struct lx_poly sq = {4, {{0, 0}, {2, 0}, {2, 2}, {0, 2}}}, out;
 	struct lx_poly closed = {5, {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {0, 0}}};
 	lx_poly_clip_halfplane(&closed, 1, 0, 1, &out); /* x >= -1 */
+	assert_int_equal(out.n, 4);
+	assert_memory_equal(out.v, sq.v, 4 * sizeof(vec2));
+	lx_poly_clip_halfplane(&sq, 0, 1, 0, &out); /* y >= 0: an edge on the line, all kept */
 	assert_int_equal(out.n, 4);
 	assert_memory_equal(out.v, sq.v, 4 * sizeof(vec2));
 	lx_poly_clip_halfplane(&sq, 1, 0, -3, &out); /* x >= 3 */
@@ -1368,6 +1377,7 @@ int main(void)
 		cmocka_unit_test(fallback_leaves_out_what_nothing_reaches),
 		cmocka_unit_test(hidden_floor_takes_no_lixels),
 		cmocka_unit_test(polygon_difference),
+		cmocka_unit_test(halfplane_keeps_all_none_or_part),
 		cmocka_unit_test(polygon_inset),
 		cmocka_unit_test(polygon_bounds_outside_and_shrink),
 		cmocka_unit_test(slab_underside_left_out_of_maps),

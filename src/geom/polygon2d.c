@@ -142,20 +142,20 @@ static int clip_points(const vec2 *v, int n, double nx, double ny, double c, vec
 	if (inside == n) { /* most cuts take nothing: v as it is */
 		memcpy(r, v, (size_t)n * sizeof(vec2));
 		rn = n;
-	}
-	for (int i = 0; i < n && inside < n; i++) {
-		int j = lx_loop_next(i, n);
-		vec2 p = v[i], q = v[j];
-		double dp = d[i], dq = d[j];
-		if (dp >= 0)
-			r[rn++] = p;
-		if ((dp >= 0) != (dq >= 0)) {
-			double t = dp / (dp - dq); /* signs differ: dp - dq != 0 */
-			vec2 x = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
-			if (!(rn && r[rn - 1].x == x.x && r[rn - 1].y == x.y))
-				r[rn++] = x;
+	} else
+		for (int i = 0; i < n; i++) {
+			int j = lx_loop_next(i, n);
+			vec2 p = v[i], q = v[j];
+			double dp = d[i], dq = d[j];
+			if (dp >= 0)
+				r[rn++] = p;
+			if ((dp >= 0) != (dq >= 0)) {
+				double t = dp / (dp - dq); /* signs differ: dp - dq != 0 */
+				vec2 x = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
+				if (!(rn && r[rn - 1].x == x.x && r[rn - 1].y == x.y))
+					r[rn++] = x;
+			}
 		}
-	}
 	/* no repeated vertices: they make zero-length edges */
 	while (rn > 1 && r[rn - 1].x == r[0].x && r[rn - 1].y == r[0].y)
 		rn--;
