@@ -415,6 +415,27 @@ static void median_equals_sorted_middle(void **state)
 	assert_true(isnan(lx_median(v, 0)));
 }
 
+/* Paired ratios: per view, so a method faster on every view but one is seen as such,
+ * whatever a pooled median says; views without two times are left out. */
+static void paired_ratios_view_by_view(void **state)
+{
+	(void)state;
+	struct lx_paired_ratios p;
+	const double a[] = {3.3, 4.19, 4.0, NAN, 2.0, 5.0}, b[] = {3.5, 4.05, 4.0, 3.0, 0.0, 5.5};
+	lx_paired_ratios(a, b, 6, &p);
+	assert_int_equal(p.count, 4); /* the NaN and the zero time left out */
+	assert_int_equal(p.most_at, 1);
+	assert_true(fabs(p.most - 4.19 / 4.05) < 1e-15 && fabs(p.least - 5.0 / 5.5) < 1e-15);
+	assert_int_equal(p.at_most_one, 3); /* 4.0 / 4.0 = 1 counts */
+	assert_true(fabs(p.median - 0.5 * (3.3 / 3.5 + 1.0)) < 1e-15);
+	lx_paired_ratios(a + 3, b + 3, 2, &p);
+	assert_int_equal(p.count, 0);
+	assert_int_equal(p.most_at, -1);
+	assert_true(isnan(p.median) && isnan(p.most) && isnan(p.least));
+	lx_paired_ratios(a, b, 0, &p);
+	assert_int_equal(p.count, 0);
+}
+
 /* A thin sheet 1 m above the floor covering x < 0: its edge along z at x = 0 casts a
  * straight penumbra. */
 static void edge_scene(struct lx_scene *s, struct lx_light light, struct lx_scene_meshes *m, struct lx_frame *f)
@@ -722,6 +743,7 @@ int main(void)
 		cmocka_unit_test(soft_image_is_deterministic_and_bounded),
 		cmocka_unit_test(soft_error_counts_compared_pixels),
 		cmocka_unit_test(median_equals_sorted_middle),
+		cmocka_unit_test(paired_ratios_view_by_view),
 		cmocka_unit_test(shaded_reference_needs_the_light_image),
 		cmocka_unit_test(one_light_is_the_single_reference),
 		cmocka_unit_test(two_lights_add_as_the_passes_do),

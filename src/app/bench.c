@@ -114,7 +114,9 @@ static void usage(FILE *f)
 		   "the shadow decision, and the soft-edge error of the visibility against a small area\n"
 		   "light. Prints a line per method, filter and configuration, then a summary per run:\n"
 		   "medians of the frame, its shadow passes and its main pass, with ratios to no shadows\n"
-		   "and to uniform. Run with LP_NUM_THREADS=1 to stand in for a fill-limited board GPU.\n"
+		   "and to uniform; then each run's frame over uniform's view by view (per configuration,\n"
+		   "the median of those ratios, their range, how many are at most 1 and where the most\n"
+		   "is). Run with LP_NUM_THREADS=1 to stand in for a fill-limited board GPU.\n"
 		   "\n"
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
@@ -502,11 +504,12 @@ static void print_rows(const struct bench *b)
  * frame times over every frame), the worst mismatch and m_max per plane. */
 struct summary {
 	double frame_ms, lo, hi, mismatch, worst, lookups, soft, beyond, m_max[2];
+	struct lx_paired_ratios by_view; /* its configurations' median frames over uniform's */
 };
 
 static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 {
-	double mis[MAX_CONFIGS], looked[MAX_CONFIGS], soft[MAX_CONFIGS];
+	double mis[MAX_CONFIGS], looked[MAX_CONFIGS], soft[MAX_CONFIGS], own[MAX_CONFIGS], uni_own[MAX_CONFIGS];
 	*s = (struct summary){.frame_ms = median_of(b->all[m][T_FRAME], b->nframes[m]), .lo = INFINITY,
 			      .beyond = uni >= 0 ? -INFINITY : NAN, .m_max = {NAN, NAN}};
 	for (int k = 0; k < b->nframes[m]; k++)
@@ -515,6 +518,7 @@ static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 		const struct row *r = &b->rows[m][c];
 		mis[c] = r->mismatch_pct, s->worst = fmax(s->worst, r->mismatch_worst);
 		looked[c] = r->lookup_pct, soft[c] = r->soft_pct;
+		own[c] = r->frame_ms_median, uni_own[c] = uni >= 0 ? b->rows[uni][c].frame_ms_median : NAN;
 		/* the most this run's mismatch exceeds uniform's on one configuration */
 		if (uni >= 0)
 			s->beyond = fmax(s->beyond, r->mismatch_pct - b->rows[uni][c].mismatch_pct);
@@ -523,6 +527,28 @@ static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 				s->m_max[p] = isnan(s->m_max[p]) ? r->m_max[p] : fmax(s->m_max[p], r->m_max[p]);
 	}
 	s->mismatch = median_of(mis, b->nc), s->lookups = median_of(looked, b->nc), s->soft = median_of(soft, b->nc);
+	lx_paired_ratios(own, uni_own, m == uni ? 0 : b->nc, &s->by_view); /* none for uniform itself */
+}
+
+/* Each run's frame against uniform's, configuration by configuration (lx_paired_ratios). */
+static void print_by_view(const struct bench *b, int uni)
+{
+	if (uni < 0)
+		return;
+	printf("\nframe / uniform's, view by view (each configuration's median frame over uniform's, the same run):\n"
+	       "%-14s %8s %15s %8s  %s\n",
+	       "method", "median", "(min-max)", "<= 1", "the most on");
+	for (int m = 0; m < b->nm; m++) {
+		struct summary s;
+		summarize(b, m, uni, &s);
+		const struct lx_paired_ratios *p = &s.by_view;
+		if (p->count == 0)
+			continue;
+		char range[40], under[24];
+		snprintf(range, sizeof range, "(%.3f-%.3f)", p->least, p->most);
+		snprintf(under, sizeof under, "%d/%d", p->at_most_one, p->count);
+		printf("%-14s %8.3f %15s %8s  %s\n", b->labels[m], p->median, range, under, b->configs[p->most_at]);
+	}
 }
 
 static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
@@ -565,6 +591,7 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	       " of the pixels that ran a shadow lookup; soft%%: the median soft-edge error,\n"
 	       " the mean |visibility - a %.3g-degree area light's| in percent)\n",
 	       b->light_size_deg);
+	print_by_view(b, uni);
 }
 
 /* One result object: a run on a configuration. */
@@ -618,6 +645,15 @@ static void print_json(const struct bench *b)
 		lx_json_key(&j, "depth_slots"), lx_json_int(&j, b->slots[m]);
 		lx_json_key(&j, "ratio_none"), lx_json_number(&j, s.frame_ms / none_ms);
 		lx_json_key(&j, "ratio_uniform"), lx_json_number(&j, s.frame_ms / uni_ms);
+		/* the same view by view: the median of the configurations' ratios, the most and where */
+		lx_json_key(&j, "ratio_uniform_by_view_median"), lx_json_number(&j, s.by_view.median);
+		lx_json_key(&j, "ratio_uniform_by_view_most"), lx_json_number(&j, s.by_view.most);
+		lx_json_key(&j, "ratio_uniform_most_on");
+		if (s.by_view.count > 0)
+			lx_json_string(&j, b->configs[s.by_view.most_at]);
+		else
+			lx_json_number(&j, NAN); /* null: no uniform run */
+		lx_json_key(&j, "views_at_most_uniform"), lx_json_int(&j, s.by_view.at_most_one);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
 		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
 		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, s.lookups);

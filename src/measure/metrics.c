@@ -186,6 +186,28 @@ double lx_median(double *v, long n)
 	return 0.5 * (lower + upper);
 }
 
+void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_ratios *out)
+{
+	*out = (struct lx_paired_ratios){NAN, NAN, NAN, -1, 0, 0};
+	double *r = n > 0 ? malloc((size_t)n * sizeof *r) : NULL;
+	if (!r)
+		return;
+	for (int i = 0; i < n; i++) {
+		/* a time of 0, a NaN (a view not timed) or an infinity gives no ratio */
+		if (!(isfinite(a[i]) && isfinite(b[i]) && a[i] > 0 && b[i] > 0))
+			continue;
+		double q = a[i] / b[i];
+		if (out->count == 0 || q < out->least)
+			out->least = q;
+		if (out->count == 0 || q > out->most)
+			out->most = q, out->most_at = i;
+		out->at_most_one += q <= 1;
+		r[out->count++] = q;
+	}
+	out->median = lx_median(r, out->count); /* NaN for none */
+	free(r);
+}
+
 /* World point of window pixel centre (x + 0.5, y + 0.5) on plane p (equation eq); false
  * when the pixel's ray misses the parallelogram or meets it outside the view depth range. */
 static bool on_plane(const struct lx_frame *f, const struct lx_plane_gram *g, vec4 eq, int x, int y, vec3 *out)

@@ -84,6 +84,20 @@ bool lx_homography_jacobian(const mat3 *h, double x, double y, double *s_max, do
 /* The median of v[0..n-1] (n >= 1); sorts v. */
 double lx_median(double *v, long n);
 
+/* One method's frame against another's, view by view (configurations of one run): a
+ * pooled median over every frame of every view compares whichever views land in each
+ * method's middle, so the pairs say where a method costs more. */
+struct lx_paired_ratios {
+	double median, least, most; /* of the views' ratios a[i] / b[i] */
+	int most_at;                /* the view of the most, -1 when count is 0 */
+	int at_most_one, count;     /* views with a ratio <= 1, views compared */
+};
+
+/* The ratios a[i] / b[i] of n views' median times. A view where either time is not
+ * positive and finite is left out (count says how many were kept; 0: the figures are
+ * NaN). */
+void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_ratios *out);
+
 /* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
  * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
