@@ -176,7 +176,10 @@ static void same_as_highp(const char *texture, const char *now)
  * their shadows, where one floor pixel the exact reference shadows was lit before; 26 by
  * the code that ends spans on whole 4x4 blocks (LX_SPAN_ALIGN), which moved one pixel of
  * 22 shaded images by one level and, in 4, which surface 1 to 3 pixels where two planes
- * or a plane and the background meet show, shadow decisions unchanged). A method or configuration
+ * or a plane and the background meet show, shadow decisions unchanged; XPSM's on the
+ * table's floor-close at mediump by the code that bounds a box caster's volume by the
+ * faces the shadow pass draws, whose lookup spans cut the table top into other pieces:
+ * one pixel on the top's edge now shows the background, as the exact reference does). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

@@ -9,8 +9,33 @@
 #define FACE_MAX 20 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 15 vertices */
 #define MAX_DIRECTIONS 6 /* a caster's image bounded in as many directions (image_directions) */
 
-/* A box's six faces, as v3_box_corner's corners. */
-static const int box_faces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+/* A box's six faces, -x, +x, -y, +y, -z, +z, as v3_box_corner's corners, each wound as a
+ * box caster's mesh winds it (counter-clockwise seen from outside, mesh.c), so that a
+ * shadow pass's culling can be told from its image. */
+static const int box_faces[6][4] = {{0, 4, 6, 2}, {5, 1, 3, 7}, {0, 1, 5, 4}, {6, 7, 3, 2}, {1, 0, 2, 3}, {4, 5, 7, 6}};
+
+/* Whether object id is a box caster, its mesh its box's six faces. */
+static bool box_caster(const struct lx_frame *f, int id)
+{
+	return id >= f->scene->plane_count && f->scene->casters[id - f->scene->plane_count].shape == LX_BOX;
+}
+
+static double coordinate(vec3 v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+
+/* Whether the light shines on face k (box_faces' order) of box [lo, hi]: its point lies
+ * strictly on the face's outer side (a directional light's travels into it). A face in a
+ * plane through the light is turned away, as sort_by_facing and the shadow rule have it;
+ * over a flat face the answer is one. */
+static bool box_face_lit(const struct lx_light *l, vec3 lo, vec3 hi, int k)
+{
+	int axis = k / 2;
+	if (l->directional) {
+		double to = -coordinate(l->direction, axis);
+		return k % 2 ? to > 0 : to < 0;
+	}
+	double at = coordinate(l->position, axis);
+	return k % 2 ? at > coordinate(hi, axis) : at < coordinate(lo, axis);
+}
 
 bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi)
 {
@@ -238,6 +263,30 @@ static void image_bounds(const vec4 *c, int n, bool crosses, const double (*coef
 		}
 }
 
+/* The nearest depth of the faces of a box caster that a shadow pass draws into a map (c:
+ * its corners' clip coordinates, every w > 0). The pass culls faces its image winds
+ * counter-clockwise (second-depth maps), so a lixel of the caster holds a depth of one of
+ * the others, no nearer than their nearest corner (z / w over a flat face is least at a
+ * corner). A face near edge-on counts as drawn: the GL may round its winding either way. */
+static double drawn_faces_depth(const vec4 *c)
+{
+	double z0 = INFINITY;
+	for (int k = 0; k < 6; k++) {
+		const int *q = box_faces[k];
+		double area = 0, size = 0;
+		for (int i = 0; i < 4; i++) {
+			vec4 a = c[q[i]], b = c[q[(i + 1) % 4]]; /* w > 0 */
+			double t = a.x / a.w * (b.y / b.w), u = b.x / b.w * (a.y / a.w);
+			area += t - u, size += fabs(t) + fabs(u);
+		}
+		if (area > 1e-6 * size)
+			continue; /* culled */
+		for (int i = 0; i < 4; i++)
+			z0 = lx_fmin(z0, c[q[i]].z / c[q[i]].w);
+	}
+	return z0;
+}
+
 /* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
  * image bounded in x, y, x + y and x - y (an octagon: tight for the round shapes), and
  * along and across its long axis where it is long and thin, grown by the margin and cut
@@ -273,6 +322,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	double coef[MAX_DIRECTIONS][2], b0[MAX_DIRECTIONS], b1[MAX_DIRECTIONS], z0;
 	int nd = image_directions(c, crosses ? 0 : nc, coef); /* w > 0: served_points', or no crossing */
 	image_bounds(c, nc, crosses, coef, nd, b0, b1, &z0);
+	if (c == corner && !crosses && box_caster(f, id))
+		z0 = lx_fmax(z0, drawn_faces_depth(corner)); /* its faces the pass draws: beyond its nearest */
 	vec4 dir[MAX_DIRECTIONS];
 	for (int d = 0; d < nd; d++)
 		dir[d] = v4_lin(coef[d][0], r0, coef[d][1], r1);
@@ -343,20 +394,25 @@ static void add_point(const struct lx_view *v, vec3 q, struct window_points *w)
 /* The window points of (receiver object id) n (volume): the vertices of an intersection
  * of two convex sets lie on a face of one inside the other, so the receiver's faces
  * clipped by the volume, and for a solid receiver the volume's own vertices inside its
- * box. With `first`, it stops at the first face that meets the volume: whether they meet
- * is then known, and the volume's vertices, the most costly part, are not needed. */
+ * box. A box caster's faces the light does not shine on are left out, and so are those
+ * vertices: the shadow rule darkens such a face whatever a map holds (a flat box's
+ * shading gives it no light either), and inside the box nothing is seen. With `first`, it
+ * stops at the first face that meets the volume: whether they meet is then known, and the
+ * volume's vertices, the most costly part, are not needed. */
 static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl, int np, bool first,
 			       struct window_points *w)
 {
 	static const int quad[1][4] = {{0, 1, 2, 3}};
 	vec3 corner[8], face[6][4];
-	bool solid = receiver_corners(f, id, corner) == 8;
+	bool solid = receiver_corners(f, id, corner) == 8, box = box_caster(f, id);
 	const int(*q)[4] = solid ? box_faces : quad;
 	int faces = solid ? 6 : 1;
 	for (int k = 0; k < faces; k++)
 		for (int i = 0; i < 4; i++)
 			face[k][i] = corner[q[k][i]];
 	for (int k = 0; k < faces; k++) {
+		if (box && !box_face_lit(&f->light, f->bmin[id], f->bmax[id], k))
+			continue;
 		vec3 a[FACE_MAX], b[FACE_MAX];
 		int n = 4;
 		for (int i = 0; i < 4; i++)
@@ -371,7 +427,7 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 		if (first && (w->n > 0 || w->everything))
 			return;
 	}
-	if (!solid)
+	if (!solid || box)
 		return;
 	vec3 vertex[64];
 	int nc = lx_halfspace_vertices(pl, np, vertex, 64);

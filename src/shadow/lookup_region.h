@@ -6,7 +6,8 @@
  *
  * A map shadows a point only where a caster was drawn in front of it: the point's image
  * in the map lies within a few lixels of that caster's image, and its depth lies beyond
- * the caster's nearest depth. For one caster that set is a convex volume in world space,
+ * the caster's nearest depth, or for a box, the nearest depth of the faces the pass draws
+ * of it (second-depth maps: those turned from the map). For one caster that set is a convex volume in world space,
  * half-spaces taken from the rows of the map's matrix (so it holds for every method's
  * warp): the image bounded in x, y and the diagonals, and along and across its long axis
  * where it is long and thin (a shadow cast low), beyond a depth and in front of the
@@ -19,7 +20,9 @@
  * convex closed mesh, so none of its faces turned to the light lies in its own shadow (the
  * face test shadows the others). What a lookup there would read of its own texels is the
  * map's error at its terminator: left out, those pixels are lit, as the exact reference
- * has them. */
+ * has them. For the same reason a box caster's faces turned from the light are not asked
+ * whether another's shadow reaches them (under a low light the table's slab, touching the
+ * legs' tops with its underside, kept them in a map it alone reads). */
 #ifndef LX_LOOKUP_REGION_H
 #define LX_LOOKUP_REGION_H
 #include "polygon2d.h"
@@ -111,7 +114,7 @@ unsigned lx_lookup_maps(const struct lx_lookup_volumes *v, int receiver, unsigne
 /* The maps of the frame whose shadow pass must draw object c, as a mask (v prepared with
  * the largest margin of any filter the main pass may use on them): those where c's
  * volume meets a receiver other than c that reads the map (the receiver's faces clipped
- * by the volume, as the lookup spans do), and with `everywhere`
+ * by the volume, as the lookup spans do; a box's faces the light shines on), and with `everywhere`
  * (--lookup-region all) those c reads itself. Leaving c out of the others changes no
  * lookup of another receiver: a caster's depth shadows a point only inside its volume.
  * Nor one of c's own (see above): c shadows none of its faces turned to the light, and
