@@ -282,8 +282,9 @@ static void extremes_stay_conservative(void **state)
 			lx_meshes_free(&s.meshes);
 		}
 	print_message("%ld shadowed plane pixels at the extremes, every one looked up; %ld (object, map) pairs left "
-		      "out of the shadow pass, %ld points of their receivers outside their volumes\n",
-		      t.checked, left_out, unread_points);
+		      "out of the shadow pass, %ld points of their receivers outside their volumes (%ld points of box "
+		      "receivers' faces turned from the light inside)\n",
+		      t.checked, left_out, unread_points, unlit);
 	assert_true(left_out > 0);
 }
 

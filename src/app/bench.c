@@ -652,8 +652,9 @@ static void print_json(const struct bench *b)
 		if (s.by_view.count > 0)
 			lx_json_string(&j, b->configs[s.by_view.most_at]);
 		else
-			lx_json_number(&j, NAN); /* null: no uniform run */
-		lx_json_key(&j, "views_at_most_uniform"), lx_json_int(&j, s.by_view.at_most_one);
+			lx_json_number(&j, NAN); /* null: uniform itself, or no uniform run */
+		lx_json_key(&j, "views_at_most_uniform");
+		lx_json_number(&j, s.by_view.count > 0 ? s.by_view.at_most_one : NAN);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
 		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
 		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, s.lookups);

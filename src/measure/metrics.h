@@ -94,8 +94,8 @@ struct lx_paired_ratios {
 };
 
 /* The ratios a[i] / b[i] of n views' median times. A view where either time is not
- * positive and finite is left out (count says how many were kept; 0: the figures are
- * NaN). */
+ * positive and finite is left out (count says how many were kept; 0, also when out of
+ * memory: the figures are NaN). */
 void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_ratios *out);
 
 /* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
