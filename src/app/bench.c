@@ -530,8 +530,9 @@ static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 	lx_paired_ratios(own, uni_own, m == uni ? 0 : b->nc, &s->by_view); /* none for uniform itself */
 }
 
-/* Each run's frame against uniform's, configuration by configuration (lx_paired_ratios). */
-static void print_by_view(const struct bench *b, int uni)
+/* Each run's frame against uniform's, configuration by configuration (lx_paired_ratios),
+ * from the runs' summaries. */
+static void print_by_view(const struct bench *b, int uni, const struct summary *sum)
 {
 	if (uni < 0)
 		return;
@@ -539,9 +540,7 @@ static void print_by_view(const struct bench *b, int uni)
 	       "%-14s %8s %15s %8s  %s\n",
 	       "method", "median", "(min-max)", "<= 1", "the most on");
 	for (int m = 0; m < b->nm; m++) {
-		struct summary s;
-		summarize(b, m, uni, &s);
-		const struct lx_paired_ratios *p = &s.by_view;
+		const struct lx_paired_ratios *p = &sum[m].by_view;
 		if (p->count == 0)
 			continue;
 		char range[40], under[24];
@@ -561,6 +560,9 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	int none = method_index(b, "none"), uni = method_index(b, "uniform");
 	double none_ms = none >= 0 ? median_of(b->all[none][T_FRAME], b->nframes[none]) : NAN;
 	double uni_ms = uni >= 0 ? median_of(b->all[uni][T_FRAME], b->nframes[uni]) : NAN;
+	struct summary sum[MAX_RUNS]; /* the summary table's and the view-by-view one's */
+	for (int m = 0; m < b->nm; m++)
+		summarize(b, m, uni, &sum[m]);
 	printf("\n%-14s %9s %15s %7s %8s %9s %8s %8s %8s %8s %10s %9s %9s %8s", "method", "frame ms", "(min-max)",
 	       "/none", "/uniform", "shadow ms", "main ms", "lookups%", "setup us", "again us", "mismatch%", "worst%",
 	       "-uniform", "soft%");
@@ -568,8 +570,7 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 		printf(" %8s", b->scene.planes[p].name);
 	printf("\n");
 	for (int m = 0; m < b->nm; m++) {
-		struct summary s;
-		summarize(b, m, uni, &s);
+		struct summary s = sum[m];
 		char range[40];
 		snprintf(range, sizeof range, "(%.2f-%.2f)", s.lo, s.hi);
 		printf("%-14s %9.3f %15s %7.3f %8.3f %9.3f %8.3f %8.2f %8.1f %8.1f %10.4f %9.4f %9.4f %8.4f", b->labels[m],
@@ -591,7 +592,7 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	       " of the pixels that ran a shadow lookup; soft%%: the median soft-edge error,\n"
 	       " the mean |visibility - a %.3g-degree area light's| in percent)\n",
 	       b->light_size_deg);
-	print_by_view(b, uni);
+	print_by_view(b, uni, sum);
 }
 
 /* One result object: a run on a configuration. */

@@ -263,23 +263,22 @@ static void image_bounds(const vec4 *c, int n, bool crosses, const double (*coef
 		}
 }
 
-/* The nearest depth of the faces of a box caster that a shadow pass draws into a map (c:
- * its corners' clip coordinates, every w > 0). The pass culls faces its image winds
- * counter-clockwise (second-depth maps), so a lixel of the caster holds a depth of one of
- * the others, no nearer than their nearest corner (z / w over a flat face is least at a
- * corner). A face near edge-on counts as drawn: the GL may round its winding either way. */
-static double drawn_faces_depth(const vec4 *c)
+/* The nearest depth of the faces of box caster [lo, hi] that a shadow pass draws into a
+ * map (c: its corners' clip coordinates, every w > 0). The pass keeps a face unless its
+ * plane lies clearly on the side of the map's centre of projection that winds its image
+ * counter-clockwise, which the GL culls (keep_back_faces' rule: second-depth maps), so a
+ * lixel of the caster holds a depth of one of the others, no nearer than their nearest
+ * corner (z / w over a flat face is least at a corner). */
+static double drawn_faces_depth(const mat4 *m, vec3 lo, vec3 hi, const vec4 *c)
 {
-	double z0 = INFINITY;
+	vec4 centre = v4_cross3(m4_row(m, 0), m4_row(m, 1), m4_row(m, 3));
+	double tolerance = 1e-2 * v4_len(centre), z0 = INFINITY;
 	for (int k = 0; k < 6; k++) {
 		const int *q = box_faces[k];
-		double area = 0, size = 0;
-		for (int i = 0; i < 4; i++) {
-			vec4 a = c[q[i]], b = c[q[(i + 1) % 4]]; /* w > 0 */
-			double t = a.x / a.w * (b.y / b.w), u = b.x / b.w * (a.y / a.w);
-			area += t - u, size += fabs(t) + fabs(u);
-		}
-		if (area > 1e-6 * size)
+		vec3 a = v3_box_corner(lo, hi, q[0]), b = v3_box_corner(lo, hi, q[1]), d = v3_box_corner(lo, hi, q[2]);
+		vec4 plane = v4_cross3((vec4){a.x, a.y, a.z, 1}, (vec4){b.x, b.y, b.z, 1}, (vec4){d.x, d.y, d.z, 1});
+		double len = v4_len(plane);
+		if (len > 0 && !(v4_dot(centre, plane) / len < tolerance))
 			continue; /* culled */
 		for (int i = 0; i < 4; i++)
 			z0 = lx_fmin(z0, c[q[i]].z / c[q[i]].w);
@@ -323,7 +322,7 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	int nd = image_directions(c, crosses ? 0 : nc, coef); /* w > 0: served_points', or no crossing */
 	image_bounds(c, nc, crosses, coef, nd, b0, b1, &z0);
 	if (c == corner && !crosses && box_caster(f, id))
-		z0 = lx_fmax(z0, drawn_faces_depth(corner)); /* its faces the pass draws: beyond its nearest */
+		z0 = lx_fmax(z0, drawn_faces_depth(m, lo, hi, corner)); /* its faces the pass draws: beyond its nearest */
 	vec4 dir[MAX_DIRECTIONS];
 	for (int d = 0; d < nd; d++)
 		dir[d] = v4_lin(coef[d][0], r0, coef[d][1], r1);
