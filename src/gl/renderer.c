@@ -169,6 +169,7 @@ struct lx_renderer {
 	bool *fan_kept;
 	int *fan_next;
 	unsigned short *fan_index, *fan_loop;
+	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every caster drawn as its faces */
 	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
 	 * plans[1 - plan] made for the next shadow pass. Each holds kept_room indices. */
 	struct shadow_plan plans[2];
@@ -711,6 +712,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->max_covers = d->map_count > 0 ? lx_scene_covers_needed(d->scene, d->meshes) : 0;
 	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
 	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
+	const char *faces = getenv("LIXEL_ROUND_CASTERS_AS_FACES"); /* a test hook: what the fans decide alike with */
+	r->faces_not_fans = faces && !strcmp(faces, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
@@ -981,7 +984,8 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	 * another that flattens and clips none of it; where the caster reads the map itself,
 	 * over those turned well away only (its own faces at its terminator compare with its
 	 * far side there, as before) */
-	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front;
+	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front &&
+		   !r->faces_not_fans;
 	struct light_seen seen = light_seen(centre);
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
