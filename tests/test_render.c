@@ -1436,7 +1436,8 @@ static void caster_faces_compare_along_their_planes(void **state)
 			       .ref_obj = malloc((size_t)w * h * sizeof(int16_t))};
 	assert_true(s.ref_sh && s.ref_obj);
 	long shadowed = 0;
-	sweep_pairs(&dc, &(struct pair_sweep){w, h, face_setup, face_frame, &s, true, LX_FILTER_NONE, LX_DEPTH_AUTO}, &shadowed);
+	sweep_pairs(&dc, &(struct pair_sweep){w, h, face_setup, face_frame, &s, true, LX_FILTER_NONE, LX_DEPTH_AUTO},
+		    &shadowed);
 	print_message("face against point: %ld casters' pixels lit that point shadowed; %ld against %ld pixels decided "
 		      "otherwise than the exact reference; the thick table under a directional light, plane: %ld against %ld\n",
 		      s.lit, s.wrong[0], s.wrong[1], s.on_plane_map[0], s.on_plane_map[1]);
@@ -1476,7 +1477,8 @@ static void eight_varyings_decide_alike(void **state)
 	small.max_varying_vectors = 8;
 	assert_true(dc.caps.max_varying_vectors > 10); /* llvmpipe's 32: the full set here */
 	long shadowed = 0;
-	sweep_pairs(&dc, &(struct pair_sweep){w, h, eight_setup, eight_frame, &small, false, LX_FILTER_NONE, LX_DEPTH_AUTO}, &shadowed);
+	sweep_pairs(&dc, &(struct pair_sweep){w, h, eight_setup, eight_frame, &small, false, LX_FILTER_NONE, LX_DEPTH_AUTO},
+		    &shadowed);
 	print_message("every method and configuration with 8 varyings: the same decisions (%ld shadowed pixels)\n",
 		      shadowed);
 	assert_true(shadowed > 10000);
@@ -1506,21 +1508,23 @@ static void fan_frame(void *ctx, const char *scene, const char *method, const ch
 	long n = (long)f->view.width * f->view.height, more = 0;
 	for (long i = 0; differ && i < n; i++)
 		more += s->dc->sh[0][i] && !s->dc->sh[1][i];
-	if (more)
-		print_message("%s scene, %s, %s: %ld pixels shadowed with the fans that the faces leave lit\n", scene,
-			      config, method, more);
+	if (differ)
+		print_message("%s scene, %s, %s: %ld pixels decided otherwise, %ld of them shadowed with the fans that the "
+			      "faces leave lit\n",
+			      scene, config, method, differ, more);
 	s->differ += differ, s->more_shadow += more, s->frames++;
 }
 
 /* A round caster drawn as a fan over its faces turned away (or that fan's polygon), with
  * its faces within 30 degrees of edge-on kept where it reads the map itself
- * (FAN_WELL_AWAY), shadows no pixel that its faces turned away leave lit: every method,
- * every standard configuration of both built-in scenes and of the thick table, with no
- * filter on the highp path and with the widest (pcf3x3) on the mediump path's wider
- * margin. Drawn as the polygon alone (FAN_WELL_AWAY 0), 17 pixels turned shadowed in
- * each (the thick table's default view; on mediump also near-wall on the default scene);
- * with the band at 17 degrees this test passed (results.md, "The speed targets", says
- * what did not). */
+ * (FAN_WELL_AWAY), decides every pixel as its faces turned away do (the fan's depths lie
+ * inside the caster, nearer than its far side: where the two differ, the fan shadows):
+ * every method, every standard configuration of both built-in scenes and of the thick
+ * table, with no filter on the highp path and with the widest (pcf3x3) on the mediump
+ * path's wider margin. Drawn as the polygon alone (FAN_WELL_AWAY 0), 17 pixels turned
+ * shadowed in each (the thick table's default view; on mediump also near-wall on the
+ * default scene); with the band at 17 degrees this test passed (results.md, "The speed
+ * targets", says what did not). */
 static void round_casters_fanned_decide_as_faces(void **state)
 {
 	(void)state;
@@ -1530,14 +1534,14 @@ static void round_casters_fanned_decide_as_faces(void **state)
 		enum lx_filter fl = i ? LX_FILTER_PCF3X3 : LX_FILTER_NONE;
 		struct fan_sweep s = {.dc = &dc};
 		long shadowed = 0;
-		sweep_pairs(&dc, &(struct pair_sweep){w, h, fan_setup, fan_frame, &s, true, fl, i ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO},
-			    &shadowed);
+		enum lx_depth_precision precision = i ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO;
+		sweep_pairs(&dc, &(struct pair_sweep){w, h, fan_setup, fan_frame, &s, true, fl, precision}, &shadowed);
 		unsetenv("LIXEL_ROUND_CASTERS_AS_FACES");
 		print_message("fans against faces, %s, filter %s: %ld frames, %ld pixels decided otherwise, %ld of them "
 			      "shadowed with the fans alone (%ld shadowed pixels)\n",
 			      i ? "mediump" : "auto", lx_filter_name(fl), s.frames, s.differ, s.more_shadow, shadowed);
 		assert_true(s.frames > 100 && shadowed > 10000);
-		assert_int_equal(s.more_shadow, 0);
+		assert_int_equal(s.differ, 0);
 	}
 	decisions_free(&dc);
 }
