@@ -1486,7 +1486,8 @@ static void eight_varyings_decide_alike(void **state)
 }
 
 /* round_casters_fanned_decide_as_faces' sweep: run 0 the fans (the default), run 1 every
- * round caster drawn as its faces turned away (LIXEL_ROUND_CASTERS_AS_FACES=1). */
+ * round caster drawn as its faces turned away (LIXEL_ROUND_CASTERS_AS_FACES=1), all else
+ * alike: the fan's outline still cuts the sure shadows. */
 struct fan_sweep {
 	struct decisions *dc;
 	long differ, more_shadow, frames;

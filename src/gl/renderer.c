@@ -169,7 +169,8 @@ struct lx_renderer {
 	bool *fan_kept;
 	int *fan_next;
 	unsigned short *fan_index, *fan_loop;
-	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every caster drawn as its faces */
+	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every caster drawn as its faces, its fan's
+			      * outline (sure_spans) made all the same */
 	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
 	 * plans[1 - plan] made for the next shadow pass. Each holds kept_room indices. */
 	struct shadow_plan plans[2];
@@ -984,8 +985,7 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	 * another that flattens and clips none of it; where the caster reads the map itself,
 	 * over those turned well away only (its own faces at its terminator compare with its
 	 * far side there, as before) */
-	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front &&
-		   !r->faces_not_fans;
+	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front;
 	struct light_seen seen = light_seen(centre);
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
@@ -1018,7 +1018,7 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 			memcpy(r->fan_index + k, index + 3 * t, 3 * sizeof *index);
 			k += 3;
 		}
-	if (k > 0) { /* in place of the faces */
+	if (k > 0 && !r->faces_not_fans) { /* in place of the faces (the test hook: its outline kept, the faces drawn) */
 		memcpy(pl->kept_index + first, r->fan_index, (size_t)k * sizeof *r->fan_index);
 		pl->kept_count = first + k;
 	}
