@@ -1,4 +1,5 @@
 #include "silhouette.h"
+#include "polygon2d.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -129,22 +130,30 @@ static vec4 point_at(const float *pos, unsigned short i)
 	return (vec4){q[0], q[1], q[2], 1};
 }
 
-int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop)
+/* A fan's boundary loop, in order (each edge (apex, a, b) leads from a to b), into loop
+ * (the fan's count / 3 corners); the count written, or -1 where it is not one loop of
+ * three corners or more. */
+static int fan_loop(const unsigned short *fan, int count, int *next, unsigned short *loop)
 {
-	int m = count / 3;
+	int m = count / 3, n = 0;
 	if (m < 3)
-		return count;
-	/* the corners in order: each edge (apex, a, b) leads from a to b */
+		return -1;
 	for (int k = 0; k < count; k += 3)
 		next[fan[k + 1]] = fan[k + 2];
-	int v = fan[1], n = 0;
+	int v = fan[1];
 	do
 		loop[n++] = (unsigned short)v, v = next[v];
 	while (v != fan[1] && v >= 0 && n < m);
 	for (int k = 0; k < count; k += 3)
 		next[fan[k + 1]] = -1;
-	if (n != m || v != fan[1])
-		return count; /* not one loop: cannot happen for lx_silhouette_fan's */
+	return n == m && v == fan[1] ? n : -1;
+}
+
+int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop)
+{
+	int m = fan_loop(fan, count, next, loop);
+	if (m < 0)
+		return count; /* under three corners, or not one loop: neither from lx_silhouette_fan */
 	/* the way the fan's triangles face the light, and every corner turning that way */
 	double way = 0;
 	for (int k = 0; k < count; k += 3)
@@ -165,4 +174,94 @@ int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 cen
 		m = kept;
 	}
 	return out;
+}
+
+/* Where a position's image lies (x, y) as the matrix m (its light clip) projects it; false
+ * behind the light. */
+static bool image_of(const float *pos, const mat4 *m, unsigned short v, vec2 *at)
+{
+	vec4 c = m4_mul_v4(m, point_at(pos, v));
+	if (!(c.w > 0))
+		return false;
+	*at = (vec2){c.x / c.w, c.y / c.w};
+	return true;
+}
+
+/* Twice the signed area of triangle (a, b, c): positive where it turns counter-clockwise. */
+static double turning(vec2 a, vec2 b, vec2 c)
+{
+	return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
+
+/* The angle round `centre` from `from` to p in the loops' turning (`turn` +1 or -1),
+ * 0 to 2 pi. */
+static double turned_by(vec2 centre, double from, int turn, vec2 p)
+{
+	double a = turn * (atan2(p.y - centre.y, p.x - centre.x) - from);
+	a = fmod(a, 2 * M_PI);
+	return a < 0 ? a + 2 * M_PI : a;
+}
+
+int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsigned short *inner, int inner_count,
+		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, unsigned short *out,
+		      int max_out)
+{
+	unsigned short *o = loop;
+	int no = fan_loop(outer, outer_count, next, o);
+	unsigned short *in = no > 0 ? loop + no : NULL;
+	int ni = in ? fan_loop(inner, inner_count, next, in) : -1;
+	if (ni < 0 || 3 * (no + ni) > max_out)
+		return -1;
+	/* the inner loop's images' mean, the point the angles are taken round: inside both
+	 * loops (the outer's image is convex; the inner's is star-shaped round the fan's apex) */
+	vec2 mid = {0, 0}, p, q;
+	for (int j = 0; j < ni; j++) {
+		if (!image_of(pos, light_clip, in[j], &p))
+			return -1;
+		mid.x += p.x / ni, mid.y += p.y / ni; /* ni >= 3 */
+	}
+	double area = 0; /* twice the outer loop's image's, its sign the loops' turning */
+	for (int i = 0; i < no; i++) {
+		if (!image_of(pos, light_clip, o[i], &p) || !image_of(pos, light_clip, o[(i + 1) % no], &q))
+			return -1;
+		area += turning(mid, p, q);
+	}
+	if (!(area != 0))
+		return -1;
+	int turn = area > 0 ? 1 : -1;
+	image_of(pos, light_clip, o[0], &p);
+	double from = atan2(p.y - mid.y, p.x - mid.x);
+	/* from the inner corner last before the outer loop's first, round by angle: each step
+	 * to whichever loop's next corner comes first */
+	int j0 = 0;
+	double last = -1;
+	for (int j = 0; j < ni; j++) {
+		image_of(pos, light_clip, in[j], &p);
+		double a = turned_by(mid, from, turn, p);
+		if (a > last)
+			last = a, j0 = j;
+	}
+	int n = 0;
+	for (int i = 0, j = 0; i < no || j < ni;) {
+		unsigned short a = o[i % no], b = o[(i + 1) % no], c = in[(j0 + j) % ni], d = in[(j0 + j + 1) % ni];
+		vec2 pa, pb, pc, pd;
+		image_of(pos, light_clip, a, &pa), image_of(pos, light_clip, b, &pb);
+		image_of(pos, light_clip, c, &pc), image_of(pos, light_clip, d, &pd);
+		/* along the outer loop (a, b, c) or the inner one (a, d, c): of those whose image
+		 * turns as the loops (as the fans' triangles), the one whose new corner comes
+		 * first round */
+		bool along_outer = i < no && turn * turning(pa, pb, pc) >= 0;
+		bool along_inner = j < ni && turn * turning(pa, pd, pc) >= 0;
+		if (!along_outer && !along_inner)
+			return -1;
+		bool outer_step = !along_inner;
+		if (along_outer && along_inner)
+			outer_step = (i + 1 == no ? 2 * M_PI : turned_by(mid, from, turn, pb)) <= turned_by(mid, from, turn, pd);
+		out[n++] = a, out[n++] = outer_step ? b : d, out[n++] = c;
+		if (outer_step)
+			i++;
+		else
+			j++;
+	}
+	return n;
 }

@@ -53,4 +53,22 @@ int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles
  * not convex. */
 int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop);
 
+/* The band between two fans lx_silhouette_fan wrote over nested sets of one convex mesh's
+ * triangles (outer: a set, inner: a part of it, each one disk, so each fan's boundary is
+ * one loop and both loops turn the same way), drawn as a strip of triangles from corner
+ * to corner of the two loops in place of the band's own triangles: one triangle for each
+ * edge of either loop, wound as the fans' triangles. The loops are walked together by
+ * angle round a point inside both images (light_clip: the caster's light clip matrix),
+ * from the outer loop's first corner, each step along the loop whose triangle's image
+ * turns as the fans' do, and where both do, to whichever loop's next corner comes first
+ * round. The triangles lie inside a convex caster (their corners are its vertices),
+ * between its sides. next: scratch of one int per position, each -1, left so; loop:
+ * scratch of outer_count / 3 + inner_count / 3 indices. Returns the indices written to
+ * out, or -1 where a fan is not one loop of three corners or more, a corner lies behind
+ * the light, the strip needs more than max_out, or at some step neither triangle turns as
+ * the fans' (3 of 600 lights round the default scene's casters in test_scene). */
+int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsigned short *inner, int inner_count,
+		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, unsigned short *out,
+		      int max_out);
+
 #endif
