@@ -213,7 +213,7 @@ int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsign
 	if (ni < 0 || 3 * (no + ni) > max_out)
 		return -1;
 	/* the inner loop's images' mean, the point the angles are taken round: inside both
-	 * loops (the outer's image is convex; the inner's is star-shaped round the fan's apex) */
+	 * loops for a round caster's two caps (each step's triangle is checked all the same) */
 	vec2 mid = {0, 0}, p, q;
 	for (int j = 0; j < ni; j++) {
 		if (!image_of(pos, light_clip, in[j], &p))
