@@ -391,7 +391,8 @@ static int check_band_strip(const float *pos, const unsigned short *welded, cons
 	bool *inner = malloc((size_t)t * sizeof *inner);
 	unsigned short *fan = malloc((size_t)n * sizeof *fan), *strip = malloc((size_t)n * sizeof *strip);
 	unsigned short *loop = malloc((size_t)n * sizeof *loop);
-	assert_true(inner && fan && strip && loop);
+	double *work = malloc((size_t)2 * n * sizeof *work);
+	assert_true(inner && fan && strip && loop && work);
 	double band = 0;
 	for (int k = 0; k < t; k++) {
 		const float *a = pos + 3 * welded[3 * k], *b = pos + 3 * welded[3 * k + 1], *d = pos + 3 * welded[3 * k + 2];
@@ -410,7 +411,7 @@ static int check_band_strip(const float *pos, const unsigned short *welded, cons
 			lc.m[at] = row[r].x, lc.m[4 + at] = row[r].y, lc.m[8 + at] = row[r].z, lc.m[12 + at] = -v3_dot(row[r], L);
 		}
 		lc.m[2] = axis.x, lc.m[6] = axis.y, lc.m[10] = axis.z, lc.m[14] = -v3_dot(axis, L);
-		int got = lx_fan_band_strip(outer, count, fan, ni, pos, &lc, next, loop, strip, n);
+		int got = lx_fan_band_strip(outer, count, fan, ni, pos, &lc, next, loop, work, strip, n);
 		for (int k = 0; k <= np; k++)
 			assert_int_equal(next[k], -1);
 		if (got < 0) /* at some corner neither triangle turns as the faces: the renderer keeps them */
@@ -429,7 +430,7 @@ static int check_band_strip(const float *pos, const unsigned short *welded, cons
 		made = 1;
 	}
 done:
-	free(inner), free(fan), free(strip), free(loop);
+	free(inner), free(fan), free(strip), free(loop), free(work);
 	return made;
 }
 

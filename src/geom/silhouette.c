@@ -203,8 +203,8 @@ static double turned_by(vec2 centre, double from, int turn, vec2 p)
 }
 
 int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsigned short *inner, int inner_count,
-		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, unsigned short *out,
-		      int max_out)
+		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, double *work,
+		      unsigned short *out, int max_out)
 {
 	unsigned short *o = loop;
 	int no = fan_loop(outer, outer_count, next, o);
@@ -212,52 +212,45 @@ int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsign
 	int ni = in ? fan_loop(inner, inner_count, next, in) : -1;
 	if (ni < 0 || 3 * (no + ni) > max_out)
 		return -1;
+	/* each corner's image (outer loop first), once, and below its angle */
+	vec2 *img = (vec2 *)work, mid = {0, 0};
+	double *angle = work + 2 * (no + ni);
+	for (int i = 0; i < no + ni; i++)
+		if (!image_of(pos, light_clip, loop[i], &img[i]))
+			return -1;
 	/* the inner loop's images' mean, the point the angles are taken round: inside both
 	 * loops for a round caster's two caps (each step's triangle is checked all the same) */
-	vec2 mid = {0, 0}, p, q;
-	for (int j = 0; j < ni; j++) {
-		if (!image_of(pos, light_clip, in[j], &p))
-			return -1;
-		mid.x += p.x / ni, mid.y += p.y / ni; /* ni >= 3 */
-	}
+	for (int j = 0; j < ni; j++)
+		mid.x += img[no + j].x / ni, mid.y += img[no + j].y / ni; /* ni >= 3 */
 	double area = 0; /* twice the outer loop's image's, its sign the loops' turning */
-	for (int i = 0; i < no; i++) {
-		if (!image_of(pos, light_clip, o[i], &p) || !image_of(pos, light_clip, o[(i + 1) % no], &q))
-			return -1;
-		area += turning(mid, p, q);
-	}
+	for (int i = 0; i < no; i++)
+		area += turning(mid, img[i], img[(i + 1) % no]);
 	if (!(area != 0))
 		return -1;
 	int turn = area > 0 ? 1 : -1;
-	image_of(pos, light_clip, o[0], &p);
-	double from = atan2(p.y - mid.y, p.x - mid.x);
+	double from = atan2(img[0].y - mid.y, img[0].x - mid.x);
+	for (int i = 0; i < no + ni; i++)
+		angle[i] = turned_by(mid, from, turn, img[i]);
 	/* from the inner corner last before the outer loop's first, round by angle: each step
 	 * to whichever loop's next corner comes first */
 	int j0 = 0;
-	double last = -1;
-	for (int j = 0; j < ni; j++) {
-		image_of(pos, light_clip, in[j], &p);
-		double a = turned_by(mid, from, turn, p);
-		if (a > last)
-			last = a, j0 = j;
-	}
+	for (int j = 1; j < ni; j++)
+		if (angle[no + j] > angle[no + j0])
+			j0 = j;
 	int n = 0;
 	for (int i = 0, j = 0; i < no || j < ni;) {
-		unsigned short a = o[i % no], b = o[(i + 1) % no], c = in[(j0 + j) % ni], d = in[(j0 + j + 1) % ni];
-		vec2 pa, pb, pc, pd;
-		image_of(pos, light_clip, a, &pa), image_of(pos, light_clip, b, &pb);
-		image_of(pos, light_clip, c, &pc), image_of(pos, light_clip, d, &pd);
+		int a = i % no, b = (i + 1) % no, c = no + (j0 + j) % ni, d = no + (j0 + j + 1) % ni;
 		/* along the outer loop (a, b, c) or the inner one (a, d, c): of those whose image
 		 * turns as the loops (as the fans' triangles), the one whose new corner comes
 		 * first round */
-		bool along_outer = i < no && turn * turning(pa, pb, pc) >= 0;
-		bool along_inner = j < ni && turn * turning(pa, pd, pc) >= 0;
+		bool along_outer = i < no && turn * turning(img[a], img[b], img[c]) >= 0;
+		bool along_inner = j < ni && turn * turning(img[a], img[d], img[c]) >= 0;
 		if (!along_outer && !along_inner)
 			return -1;
 		bool outer_step = !along_inner;
 		if (along_outer && along_inner)
-			outer_step = (i + 1 == no ? 2 * M_PI : turned_by(mid, from, turn, pb)) <= turned_by(mid, from, turn, pd);
-		out[n++] = a, out[n++] = outer_step ? b : d, out[n++] = c;
+			outer_step = (i + 1 == no ? 2 * M_PI : angle[b]) <= angle[d];
+		out[n++] = loop[a], out[n++] = loop[outer_step ? b : d], out[n++] = loop[c];
 		if (outer_step)
 			i++;
 		else

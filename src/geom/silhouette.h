@@ -63,12 +63,13 @@ int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 cen
  * turns as the fans' do, and where both do, to whichever loop's next corner comes first
  * round. The triangles lie inside a convex caster (their corners are its vertices),
  * between its sides. next: scratch of one int per position, each -1, left so; loop:
- * scratch of outer_count / 3 + inner_count / 3 indices. Returns the indices written to
+ * scratch of outer_count / 3 + inner_count / 3 indices; work: of outer_count +
+ * inner_count doubles (each corner's image and angle, found once). Returns the indices written to
  * out, or -1 where a fan is not one loop of three corners or more, a corner lies behind
  * the light, the strip needs more than max_out, or at some step neither triangle turns as
  * the fans' (3 of 600 lights round the default scene's casters in test_scene). */
 int lx_fan_band_strip(const unsigned short *outer, int outer_count, const unsigned short *inner, int inner_count,
-		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, unsigned short *out,
-		      int max_out);
+		      const float *pos, const mat4 *light_clip, int *next, unsigned short *loop, double *work,
+		      unsigned short *out, int max_out);
 
 #endif

@@ -170,10 +170,11 @@ struct lx_renderer {
 	int *fan_next;
 	unsigned short *fan_index, *fan_loop;
 	/* where the caster reads the map itself: the faces turned away by more than BAND_FACES
-	 * (band_kept), their fan, both fans' loops and the strip across the band between them
-	 * and the faces turned well away (keep_band) */
+	 * (band_kept), their fan, both fans' loops, their corners' images and angles (work) and
+	 * the strip across the band between them and the faces turned well away (keep_band) */
 	bool *band_kept;
 	unsigned short *band_fan, *band_loop, *band_strip;
+	double *band_work;
 	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every caster drawn as its faces, its fan's
 			      * outline (sure_spans) made all the same */
 	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
@@ -574,12 +575,13 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 	r->band_fan = malloc((size_t)most * sizeof(unsigned short));
 	r->band_loop = malloc((size_t)most * sizeof(unsigned short));
 	r->band_strip = malloc((size_t)most * sizeof(unsigned short));
+	r->band_work = malloc((size_t)2 * most * sizeof(double)); /* both fans' indices, each at most `most` */
 	for (int i = 0; r->fan_next && i <= most; i++)
 		r->fan_next[i] = -1;
 	bool plans = r->plans[0].kept_index && r->plans[0].outline_index && r->plans[1].kept_index &&
 		     r->plans[1].outline_index;
 	if (!r->facing_index || !plans || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop || !r->band_kept ||
-	    !r->band_fan || !r->band_loop || !r->band_strip) {
+	    !r->band_fan || !r->band_loop || !r->band_strip || !r->band_work) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -693,7 +695,7 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	for (int k = 0; k < 2; k++)
 		free(r->plans[k].kept_index), free(r->plans[k].outline_index);
 	free(r->fan_kept), free(r->fan_next), free(r->fan_index), free(r->fan_loop);
-	free(r->band_kept), free(r->band_fan), free(r->band_loop), free(r->band_strip);
+	free(r->band_kept), free(r->band_fan), free(r->band_loop), free(r->band_strip), free(r->band_work);
 	free(r);
 }
 
@@ -921,7 +923,7 @@ static bool in_front(const vec4 *pl, const vec4 *front)
  * the faces left lit (one in test_render's 210 frames with the strip from the edge-on). */
 #define BAND_FACES 0.2
 
-/* The light as turned_away_by takes it, from the map's centre of projection in the
+/* The light as turned_from_light takes it, from the map's centre of projection in the
  * object's space (homogeneous): a point, or a direction (of either sign). */
 struct light_seen {
 	bool point;
@@ -935,17 +937,18 @@ static struct light_seen light_seen(vec4 centre)
 	return (struct light_seen){false, v3(centre.x, centre.y, centre.z)};
 }
 
-/* Whether triangle t of caster id (its plane pl) is turned away from the light by more
- * than `by` (a cosine, as FAN_WELL_AWAY). */
-static bool turned_away_by(const struct lx_renderer *r, int id, int t, struct light_seen l, vec4 pl, double by)
+/* How far triangle t of caster id (its plane pl) is turned from the light: the cosine of
+ * its normal's angle with the direction to the light, unsigned (FAN_WELL_AWAY and
+ * BAND_FACES are taken against it); 0 where either has no length. */
+static double turned_from_light(const struct lx_renderer *r, int id, int t, struct light_seen l, vec4 pl)
 {
 	vec3 n = v3(pl.x, pl.y, pl.z), to = l.at;
 	if (l.point) { /* from the triangle's first corner */
 		const float *q = r->fan_pos[id] + 3 * r->welded[id][3 * t];
 		to = v3_sub(l.at, v3(q[0], q[1], q[2]));
 	}
-	double len = v3_len(to);
-	return len > 0 && fabs(v3_dot(n, to)) > by * len * v3_len(n);
+	double size = v3_len(to) * v3_len(n);
+	return size > 0 ? fabs(v3_dot(n, to)) / size : 0;
 }
 
 /* Whether every triangle of a fan (indices first to k in fan_index) faces away from the
@@ -1037,10 +1040,11 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	struct light_seen seen = light_seen(centre);
 	for (int t = 0; t < n; t++) {
 		double side = v4_dot(centre, plane[t]);
+		double turned = fan && reads_itself && side < 0 ? turned_from_light(r, id, t, seen, plane[t]) : 0;
 		if (fan)
-			r->fan_kept[t] = side < 0 && (!reads_itself || turned_away_by(r, id, t, seen, plane[t], FAN_WELL_AWAY));
+			r->fan_kept[t] = side < 0 && (!reads_itself || turned > FAN_WELL_AWAY);
 		if (fan && reads_itself)
-			r->band_kept[t] = side < 0 && turned_away_by(r, id, t, seen, plane[t], BAND_FACES);
+			r->band_kept[t] = side < 0 && turned > BAND_FACES;
 		if (side < tolerance && !(front && in_front(&plane[t], front)) &&
 		    pl->kept_count + 3 <= r->kept_room) { /* room: every triangle, map and light */
 			memcpy(pl->kept_index + pl->kept_count, index + 3 * t, 3 * sizeof *index);
@@ -1063,7 +1067,7 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 		int outer = lx_silhouette_fan(r->welded[id], r->adj[id], n, r->band_kept, (unsigned short)r->fan_apex[id],
 					      r->fan_next, r->band_fan, room);
 		strip = lx_fan_band_strip(r->band_fan, outer, r->fan_index, k, r->fan_pos[id], &lc, r->fan_next, r->band_loop,
-					  r->band_strip, room);
+					  r->band_work, r->band_strip, room);
 	}
 	if (k > 0) /* its polygon where convex: the same lixels, shorter inner edges */
 		k = lx_fan_as_polygon(r->fan_index, k, r->fan_pos[id], centre, r->fan_next, r->fan_loop);
