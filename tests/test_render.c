@@ -1517,8 +1517,10 @@ static void fan_frame(void *ctx, const char *scene, const char *method, const ch
 }
 
 /* A round caster drawn as a fan over its faces turned away (or that fan's polygon), with
- * its faces within 30 degrees of edge-on kept where it reads the map itself
- * (FAN_WELL_AWAY), decides every pixel as its faces turned away do (the fan's depths lie
+ * its far side within 30 degrees of edge-on kept where it reads the map itself
+ * (FAN_WELL_AWAY: the faces within 11.5 degrees, BAND_FACES, and a strip across the rest;
+ * with the strip from the edge-on, one pixel of XPSM's on the thick table's default view
+ * turned shadowed), decides every pixel as its faces turned away do (the fan's depths lie
  * inside the caster, nearer than its far side: where the two differ, the fan shadows):
  * every method, every standard configuration of both built-in scenes and of the thick
  * table, with no filter on the highp path and with the widest (pcf3x3) on the mediump
