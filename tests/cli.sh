@@ -86,10 +86,15 @@ map_lixels() {
 # plane-optimal is the default: floor, wall and fallback maps, the plane maps shaped per
 # frame within their budgets (350^2 lixels), the fallback 128x128; a plane no shadow
 # reaches gets no map (the default view's wall: the casters' shadows all fall on the
-# floor), the low light's long shadows reach the wall
-"$lixel" render --config low --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr" &&
+# floor), the low light's long shadows reach the wall. With --plane-density budget the
+# wall map spends its budget (many lixels a pixel at 160x120); by default it is only as
+# dense as the casters reading it need: fewer lixels
+"$lixel" render --config low --plane-density budget --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr" &&
   n=$(map_lixels wall "$tmp/json") && [ -n "$n" ] && [ "$n" -gt 60000 ] && [ "$n" -le 122500 ] && ok ||
-  no "low light: the wall map holds '$n' lixels, expected its 350^2 budget mostly used: $(cat "$tmp/json" "$tmp/stderr")"
+  no "low light, --plane-density budget: the wall map holds '$n' lixels, expected its 350^2 budget mostly used: $(cat "$tmp/json" "$tmp/stderr")"
+"$lixel" render --config low --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr" &&
+  r=$(map_lixels wall "$tmp/json") && [ -n "$r" ] && [ "$r" -gt 0 ] && [ "$r" -lt "${n:-0}" ] && ok ||
+  no "low light: the wall map holds '$r' lixels, expected fewer than the budget's '$n' (readers' density): $(cat "$tmp/json" "$tmp/stderr")"
 if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json" 2>"$tmp/stderr"; then
   for key in '"method": "plane"' '"name": "fallback", "x": [0-9]*, "y": [0-9]*, "w": 128, "h": 128' \
       '"lixels": 261384' '"lpp_spread": 1[,}]' '"aniso_max": 1[,}]' '"atlas_fill": 0\.[0-9]'; do
@@ -148,6 +153,7 @@ grep -q '"atlas": \[1982, 632\]' "$tmp/b-fixed.json" && grep -q '"atlas": \[2048
   no "--region-shape fitted gave a square: $(cat "$tmp/json")"
 expect_bad "region shape" render --region-shape round $out
 expect_bad "budget split" render --budget-split half $out
+expect_bad "plane density" render --plane-density most $out
 expect_bad "max lpp" render --plane-max-lpp 0 $out
 expect_bad "removed method option" render --method plane/corner $out
 expect_bad "method option" render --method plane/round $out

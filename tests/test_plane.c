@@ -248,6 +248,9 @@ static void shared_budgets_hand_on_the_rest(void **state)
 		struct setup fx, sh;
 		struct lx_method_options of = LX_METHOD_OPTIONS_DEFAULT, os = LX_METHOD_OPTIONS_DEFAULT;
 		os.shared_budget = true;
+		/* what the budgets give, past a lixel per pixel too: the readers' density, which
+		 * lowers a map there, is readers_set_the_density_past_one's */
+		of.plane_dense_budget = os.plane_dense_budget = true;
 		int c = k / 4, table = k % 2, z = k / 2 % 2;
 		memset(&fx, 0, sizeof fx);
 		table ? lx_scene_table(&fx.scene) : lx_scene_default(&fx.scene);
@@ -319,6 +322,82 @@ static void shared_budgets_hand_on_the_rest(void **state)
 		lx_meshes_free(&t.meshes);
 	}
 	assert_true(compared >= 3 * lx_config_count && lent >= 4 && short_alone >= 1 && raised >= 1);
+}
+
+/* Past a lixel per pixel a plane map is only as dense as the casters reading it need
+ * (method_plane.c, readers_scale): against the budget's density (plane_dense_budget) on
+ * every standard configuration of both scenes at 320x240 and 1024x1024, each plane map is
+ * the same map or the same at a smaller whole-number scale, never short of a lixel per
+ * pixel where the budget gives one; the casters another's shadow may reach (the others
+ * look nothing up) keep reading every plane map they read.
+ * Some are lowered (the default scene's low light: the wall from 2x2 lixels a pixel to
+ * one) and some kept (its floor, read by the cone at 3x3; the floor under the table seen
+ * from below its top at 320x240, read by the legs). Under a filter nothing moves. */
+static void readers_set_the_density_past_one(void **state)
+{
+	(void)state;
+	static const int sizes[2][2] = {{320, 240}, {1024, 1024}};
+	int compared = 0, lowered = 0, kept = 0, moved_filtered = 0;
+	for (int k = 0; k < 4 * lx_config_count + 2; k++) {
+		struct setup bu, rd;
+		struct lx_method_options ob = LX_METHOD_OPTIONS_DEFAULT, orr = LX_METHOD_OPTIONS_DEFAULT;
+		ob.plane_dense_budget = true;
+		bool below = k >= 4 * lx_config_count; /* the table seen from below its top */
+		int c = below ? 0 : k / 4, table = below || k % 2, z = below ? 0 : k / 2 % 2;
+		orr.filtered = below && k % 2; /* the second: filtered */
+		memset(&bu, 0, sizeof bu);
+		table ? lx_scene_table(&bu.scene) : lx_scene_default(&bu.scene);
+		if (below) {
+			bu.scene.camera.eye = (vec3){0, 0.5, 3};
+			bu.scene.camera.at = (vec3){0, 0.5, 0};
+		} else
+			lx_config_apply(&lx_configs[c], &bu.scene);
+		memset(&rd, 0, sizeof rd);
+		rd.scene = bu.scene;
+		double t = below ? 0.4 : 0;
+		assert_true(build_with(&bu, "plane", sizes[z][0], sizes[z][1], t, &ob));
+		assert_true(build_with(&rd, "plane", sizes[z][0], sizes[z][1], t, &orr));
+		char what[96];
+		snprintf(what, sizeof what, "%s scene, %s, %dx%d%s", table ? "table" : "default",
+			 below ? "from below the top" : lx_configs[c].name, sizes[z][0], sizes[z][1],
+			 orr.filtered ? ", filtered" : "");
+		assert_int_equal(bu.res.map_count, rd.res.map_count);
+		for (int m = 0; m < rd.res.map_count; m++) {
+			const struct lx_shadow_map *a = &bu.res.maps[m], *b = &rd.res.maps[m];
+			if (a->rendered != b->rendered || a->plane != b->plane)
+				fail_msg("%s: map %d drawn or placed otherwise", what, m);
+			if (!a->rendered || a->plane < 0)
+				continue;
+			compared++;
+			double sa = a->lixel_scale, sb = b->lixel_scale;
+			bool same = sa == sb && a->w == b->w && a->h == b->h;
+			if (!same && !(sa > 1 && sb >= 1 && sb < sa && sb == floor(sb) && b->lixel_stretch == 1))
+				fail_msg("%s: map %d at scale %.4f (%dx%d) against the budget's %.4f (%dx%d)", what, m, sb, b->w, b->h,
+					 sa, a->w, a->h);
+			lowered += !same;
+			kept += same && sa > 1;
+			if (orr.filtered && !same)
+				moved_filtered++;
+			if (below && m == 1 && !(same && sa > 1))
+				fail_msg("%s: the floor map at scale %.4f, expected the budget's (above one) for the legs", what, sb);
+		}
+		for (int id = rd.scene.plane_count; id < rd.frame.object_count; id++) {
+			unsigned plane_reads = 0, fb = 1u << (bu.res.map_count - 1);
+			for (int m = 0; m < bu.res.map_count - 1; m++)
+				plane_reads |= bu.res.maps[m].plane >= 0 ? 1u << m : 0;
+			unsigned ra = bu.res.object_maps[id] & plane_reads, rb = rd.res.object_maps[id] & plane_reads;
+			if (rd.res.shadow_reaches[id] != bu.res.shadow_reaches[id])
+				fail_msg("%s: object %d reached otherwise", what, id);
+			if (rd.res.shadow_reaches[id] && (bu.res.object_maps[id] & fb) && (ra & ~rb))
+				fail_msg("%s: object %d reads plane maps %#x, %#x with the budget's density", what, id, rb, ra);
+		}
+		lx_meshes_free(&bu.meshes);
+		lx_meshes_free(&rd.meshes);
+	}
+	print_message("%d plane maps compared with the budget's density: %d lowered to what their readers need, %d kept "
+		      "above a lixel per pixel\n", compared, lowered, kept);
+	assert_int_equal(moved_filtered, 0);
+	assert_true(compared >= 2 * lx_config_count && lowered >= 5 && kept >= 1);
 }
 
 /* A frame's maps do not depend on the frames before it: a build on an atlas that packed
@@ -1362,6 +1441,7 @@ int main(void)
 		cmocka_unit_test(sweep_is_one_affine_map_on_every_plane),
 		cmocka_unit_test(shared_plane_points_give_the_same_figures),
 		cmocka_unit_test(shared_budgets_hand_on_the_rest),
+		cmocka_unit_test(readers_set_the_density_past_one),
 		cmocka_unit_test(maps_do_not_depend_on_the_frame_before),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),

@@ -30,7 +30,7 @@ bool lx_arg_text(const char *opt, const char *value, const struct lx_arg_text *t
 bool lx_arg_scene(const char *arg, struct lx_scene *s);
 
 /* The maps' options shared by render and bench: --region-shape square|fitted,
- * --budget-split fixed|shared, --plane-max-lpp X, --lookup-region footprint|all, --depth-slots N,
+ * --budget-split fixed|shared, --plane-density readers|budget, --plane-max-lpp X, --lookup-region footprint|all, --depth-slots N,
  * --light-budget S,...
  * Returns 0 when opt is one of them and
  * its value is good, 2 (after the one line) when the value is bad, -1 for another option. */
@@ -68,7 +68,7 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
 	"                       --measure computes it when a filter is on or this is given\n"
 #define LX_PLANE_OPTION_NAMES \
-	"--region-shape", "--budget-split", "--plane-max-lpp", "--lookup-region", "--caster-depth", "--depth-slots", \
+	"--region-shape", "--budget-split", "--plane-density", "--plane-max-lpp", "--lookup-region", "--caster-depth", "--depth-slots", \
 		"--light-budget"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
@@ -79,8 +79,12 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       or shared (a map also hands on the rest its whole-number\n" \
 	"                       scale leaves, and what is left goes to the fallback unless\n" \
 	"                       --plane-max-lpp caps them)\n" \
+	"  --plane-density D    plane maps past a lixel per pixel: readers (default: only as\n" \
+	"                       dense as the casters that read a map need, a lixel per pixel\n" \
+	"                       on their surfaces; a map none reads takes one lixel a pixel)\n" \
+	"                       or budget (as dense as the budget allows: more fill)\n" \
 	"  --plane-max-lpp X    plane maps: at most X lixels per pixel (less shadow-pass fill;\n" \
-	"                       default none: every lixel of the budget)\n" \
+	"                       default none)\n" \
 	"  --lookup-region R    footprint (default: a receiver pixel looks its maps up only\n" \
 	"                       where a caster's shadow can fall on it) or all (everywhere: the\n" \
 	"                       same shadows, more fill)\n" \

@@ -80,6 +80,12 @@ int lx_method_run_set_filter(struct lx_method_run *mr, enum lx_filter filter, ch
 	if (!lx_renderer_set_filter(mr->renderer, filter, err, errlen))
 		return 1;
 	mr->filter = filter;
+	/* a filter reads lixels around the one a pixel falls in: the plane maps' density
+	 * shapes their own pixels' edges too (method_plane.c, readers_scale) */
+	mr->options.filtered = filter != LX_FILTER_NONE;
+	for (int i = 0; i < mr->light_count; i++)
+		mr->lights[i].options.filtered = mr->options.filtered;
+	mr->ahead_ready = false; /* made with the filter before */
 	return 0;
 }
 

@@ -37,7 +37,8 @@ struct lx_method_run {
 	 * calls' `next`): for frame ahead_of, each light's in ahead[], in ahead_us (and
 	 * ahead_again_us); taken by the call that draws that frame, dropped by any other.
 	 * The frame is all it depends on: the lights' options are fixed at init (the
-	 * setters change the renderer's main pass, not the set-up). */
+	 * setters change the renderer's main pass, not the set-up, but for the filter,
+	 * which drops it). */
 	bool ahead_ready;
 	double ahead_us, ahead_again_us;
 	struct lx_frame ahead_of;

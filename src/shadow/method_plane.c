@@ -1456,10 +1456,11 @@ static int fallback_points(const struct lx_frame *f, int id, vec3 *x)
 /* The fallback's rays on G ([Kapoulkine]'s unit cube clipping, on its own receivers): the
  * casters in view that another object's shadow can reach, by the corners of their faces
  * the fallback serves (fallback_points; their surfaces are receivers no plane map serves),
- * and the visible part of each plane that needs it, within what the casters cover. False
- * when a point cannot be charted on G (a receiver behind the point light). */
+ * and the visible part of each plane that needs it, within what the casters cover
+ * (reached: those casters, as far as it got). False when a point cannot be charted on G
+ * (a receiver behind the point light). */
 static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_space *ls, const bool *in_view,
-			    const bool *needs, struct lx_poly *want)
+			    const bool *needs, bool *reached, struct lx_poly *want)
 {
 	vec2 pts[LX_OUTLINE_POINTS * (LX_MAX_PLANES + LX_MAX_CASTERS) + 32 * LX_MAX_PLANES];
 	int n = 0;
@@ -1475,7 +1476,8 @@ static bool fallback_wanted(const struct lx_frame *f, const struct lx_light_spac
 		}
 		/* a convex caster never shadows its own lit faces: with no other shadow reaching
 		 * it, it needs no lixel */
-		if (m > 0 && lx_light_space_shadowed_by_other(ls, f, id, own))
+		reached[id] = m > 0 && lx_light_space_shadowed_by_other(ls, f, id, own);
+		if (reached[id])
 			n += m;
 	}
 	for (int p = 0; p < f->scene->plane_count; p++) {
@@ -1549,6 +1551,31 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 	return isfinite(worst) ? worst : 0;
 }
 
+/* A caster's densities (box_density) in the fallback (*dfb) and in each plane map (dens,
+ * -1 for a map it cannot read): false where it takes none of them (reaching behind the
+ * eye, the rule of lx_shadow_receiver_maps, or no face seen larger than a pixel). */
+static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int id,
+			     double *dfb, double *dens)
+{
+	const struct lx_shadow_map *fb = &out->maps[fbm];
+	vec3 c[8];
+	vec2 pix[8];
+	int faces[6][3];
+	for (int k = 0; k < 8; k++)
+		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
+		return false;
+	int nf = box_faces(f, c, 0, faces);
+	*dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
+	if (!(*dfb > 0))
+		return false;
+	for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
+		const struct lx_shadow_map *pm = &out->maps[m];
+		dens[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
+	}
+	return true;
+}
+
 /* Which maps a caster's own surfaces read. A plane map holds every caster in front of
  * its plane, so it can serve a caster's rays too, and often more densely than the small
  * fallback; but seen from the eye a caster may be squeezed in it along some direction (a
@@ -1560,29 +1587,13 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
 			       struct lx_shadow_result *out)
 {
-	const struct lx_shadow_map *fb = &out->maps[fbm];
-	if (!fb->rendered)
+	if (!out->maps[fbm].rendered)
 		return;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		if (!in_view[id])
-			continue;
-		vec3 c[8];
-		vec2 pix[8];
-		int faces[6][3];
-		for (int k = 0; k < 8; k++)
-			c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-		if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
-			continue; /* reaching behind the eye: the rule of lx_shadow_receiver_maps (the fallback) */
-		int nf = box_faces(f, c, 0, faces);
-		double dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
-		if (!(dfb > 0))
+		double dfb, dens[LX_MAX_MAPS];
+		if (!in_view[id] || !caster_densities(f, out, fbm, id, &dfb, dens))
 			continue;
 		/* the densest LX_MAX_READS - 1 of them (a draw reads at most LX_MAX_READS) */
-		double dens[LX_MAX_MAPS];
-		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
-			const struct lx_shadow_map *pm = &out->maps[m];
-			dens[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
-		}
 		unsigned mask = 1u << fbm;
 		for (int k = 0; k < LX_MAX_READS - 1; k++) {
 			int best = -1;
@@ -1596,22 +1607,47 @@ static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in
 	}
 }
 
+/* The whole-number scale plane i's maps need, at most their scale k now (k > 1, a
+ * similarity). Past a lixel per pixel the extra lixels change no decision on the plane's
+ * own pixels, whose centres already fall on lixel centres: they serve only the casters
+ * that read the maps (choose_caster_maps), and they cost fill, a caster's image growing
+ * with the map (0.19 ms of shadow pass under the default scene's low light at 3x3 lixels
+ * a pixel). So each caster reading one of them asks for a lixel per pixel in its worst
+ * direction, and no less than the fallback's (else it would read the fallback instead),
+ * as far as k gives it; a map no caster reads takes one lixel a pixel. */
+static double readers_scale(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int plane, double k)
+{
+	double need = 1;
+	for (int id = f->scene->plane_count; id < f->object_count; id++) {
+		double dfb, dens[LX_MAX_MAPS];
+		unsigned reads = out->object_maps[id];
+		if (!out->shadow_reaches[id] || !(reads & 1u << fbm) || !caster_densities(f, out, fbm, id, &dfb, dens))
+			continue; /* no lookup on it (no other's shadow reaches it), or not one of choose_caster_maps */
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+			if (reads & 1u << m && out->maps[m].plane == plane && dens[m] > 0) /* > 0: it read it */
+				need = lx_fmax(need, ceil(k * lx_fmax(dfb, 1) / dens[m] - 1e-9));
+	}
+	return lx_fmin(need, k);
+}
+
 /* The fallback map (map fbm, region np): the receivers no plane map takes, and the maps
- * each caster reads. */
+ * each caster reads (in_view: the objects in view, for choose_caster_maps), and which
+ * casters another's shadow may reach (out->shadow_reaches). */
 static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			   const struct lx_light_space *ls, const struct plane_chart *ch, int np, int fbm,
-			   struct lx_shadow_result *out)
+			   bool *in_view, struct lx_shadow_result *out)
 {
 	struct lx_shadow_map *fb = &out->maps[fbm];
 	bool needs[LX_MAX_PLANES] = {false};
 	for (int i = 0; i < f->scene->plane_count; i++)
 		needs[i] = i >= np || (ch[i].needs_fallback && !out->maps[i].rendered);
-	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
-	for (int id = f->scene->plane_count; id < f->object_count; id++)
+	for (int id = f->scene->plane_count; id < f->object_count; id++) {
 		in_view[id] = !box_out_of_view(&f->view, f->bmin[id], f->bmax[id]);
+		out->shadow_reaches[id] = in_view[id]; /* unless fallback_wanted finds none reaches it */
+	}
 	struct lx_poly want;
 	double x0 = -INFINITY, x1 = INFINITY, y0 = -INFINITY, y1 = INFINITY;
-	if (fallback_wanted(f, ls, in_view, needs, &want)) {
+	if (fallback_wanted(f, ls, in_view, needs, out->shadow_reaches, &want)) {
 		if (want.n < 3)
 			return; /* no receiver off the planes in view */
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
@@ -1628,6 +1664,50 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np);
 	choose_caster_maps(f, fbm, in_view, out);
+}
+
+/* What plane_build settles for each plane map before building it. */
+struct plane_plan {
+	int np;
+	bool ok[PLANE_MAPS]; /* the plane has a map */
+	struct plane_chart ch[PLANE_MAPS];
+	struct plane_pieces pc[PLANE_MAPS];
+	mat4 depth[PLANE_MAPS];
+	long budget[PLANE_MAPS];
+	double max_lpp[PLANE_MAPS]; /* its density cap (0 or less: none) */
+};
+
+/* The plane maps of the plan: plane i's in map i, its spare pieces' in the maps after
+ * the planes', in the planes' order. */
+static void build_plane_maps(const struct lx_atlas *atlas, const struct plane_plan *pl, struct lx_shadow_result *out)
+{
+	for (int i = 0, next = pl->np; i < pl->np; i++) {
+		struct lx_shadow_map *more[PIECES_MAX - 1];
+		for (int k = 1; pl->ok[i] && k < pl->pc[i].n; k++)
+			more[k - 1] = &out->maps[next++];
+		if (pl->ok[i])
+			build_plane_map(atlas, &pl->ch[i], &pl->pc[i], &pl->depth[i], i, pl->budget[i], pl->max_lpp[i],
+					&out->maps[i], more);
+	}
+}
+
+/* Caps the density of each plane map past a lixel per pixel at what the casters reading
+ * it need (readers_scale); true when one is lowered, to be built again. */
+static bool lower_to_readers(const struct lx_frame *f, int fbm, struct plane_plan *pl,
+			     const struct lx_shadow_result *out)
+{
+	bool lowered = false;
+	for (int i = 0; i < pl->np; i++) {
+		const struct lx_shadow_map *m = &out->maps[i];
+		if (!pl->ok[i] || !m->rendered || m->lixel_stretch != 1 || !(m->lixel_scale > 1))
+			continue; /* short of a lixel per pixel, or at one */
+		double k = readers_scale(f, out, fbm, i, m->lixel_scale);
+		if (k < m->lixel_scale) {
+			pl->max_lpp[i] = pl->max_lpp[i] > 0 ? lx_fmin(pl->max_lpp[i], k * k) : k * k;
+			lowered = true;
+		}
+	}
+	return lowered;
 }
 
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
@@ -1650,24 +1730,20 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	lx_light_space_build(f, &ls);
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
-	struct plane_chart ch[PLANE_MAPS];
+	struct plane_plan pl = {.np = np};
 	struct caster_images images;
 	memset(images.state, 0, sizeof images.state);
 	struct foot_parts parts; /* one plane's at a time */
-	bool ok[PLANE_MAPS];
-	long budget[PLANE_MAPS];
-	struct plane_pieces pc[PLANE_MAPS];
-	mat4 depth[PLANE_MAPS];
 	/* the atlas's spare pieces (plane_regions), for planes whose footprints cluster */
 	int spare = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece ? atlas->count - np - 1 : 0;
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	struct plane_splits sp[PLANE_MAPS];
 	for (int i = 0; i < np; i++) {
-		ch[i].unmapped = out->slab_out;
-		covered_part(f, &out->covers, i, &ch[i].covered);
-		ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &ch[i], &parts);
-		if (ok[i])
-			plane_splits(&ch[i], spare > 0, own, &sp[i]); /* share_pieces keeps within the spare ones */
+		pl.ch[i].unmapped = out->slab_out;
+		covered_part(f, &out->covers, i, &pl.ch[i].covered);
+		pl.ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &pl.ch[i], &parts);
+		if (pl.ok[i])
+			plane_splits(&pl.ch[i], spare > 0, own, &sp[i]); /* share_pieces keeps within the spare ones */
 		/* Where its pieces still hold more pixels than the budget has lixels, the feet
 		 * leave out what casters hide from the eye (take_hidden): a shadow there is never
 		 * seen. Not before: within the budget it buys no density, and a smaller rectangle
@@ -1675,36 +1751,43 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		 * 1024x1024 one 586x205 against two of 76,000 lixels together, 0.13 ms more shadow
 		 * pass in interleaved runs). */
 		bool hid_some = false;
-		if (ok[i] && least_area(&sp[i]) > (double)own) {
-			ok[i] = hidden_feet(f, &ch[i], &parts, &images, &hid_some);
-			if (ok[i] && hid_some) /* else the same feet: the same splits */
-				plane_splits(&ch[i], spare > 0, own, &sp[i]);
+		if (pl.ok[i] && least_area(&sp[i]) > (double)own) {
+			pl.ok[i] = hidden_feet(f, &pl.ch[i], &parts, &images, &hid_some);
+			if (pl.ok[i] && hid_some) /* else the same feet: the same splits */
+				plane_splits(&pl.ch[i], spare > 0, own, &sp[i]);
 		}
 	}
 	int take[PLANE_MAPS];
-	share_pieces(sp, ok, np, spare, own, take);
+	share_pieces(sp, pl.ok, np, spare, own, take);
 	for (int i = 0; i < np; i++) {
-		if (!ok[i])
+		if (!pl.ok[i])
 			continue;
-		pc[i] = sp[i].by[take[i]];
+		pl.pc[i] = sp[i].by[take[i]];
 		/* no caster in front of a receiver there: no map (its pieces stay unused) */
-		ok[i] = plane_depth(f, &ls, &ch[i], &pc[i], out, &f->scene->planes[i], &depth[i]);
+		pl.ok[i] = plane_depth(f, &ls, &pl.ch[i], &pl.pc[i], out, &f->scene->planes[i], &pl.depth[i]);
 	}
-	plane_budgets(atlas, o, ch, pc, ok, np, budget);
+	plane_budgets(atlas, o, pl.ch, pl.pc, pl.ok, np, pl.budget);
 	if (!o->shared_budget) { /* the regions hold their own budgets: shared ones hold all */
 		int free = spare;
 		for (int i = 0; i < np; i++)
-			free -= ok[i] ? pc[i].n - 1 : 0;
-		cut_to_regions(atlas, np, ok, free, pc, budget);
+			free -= pl.ok[i] ? pl.pc[i].n - 1 : 0;
+		cut_to_regions(atlas, np, pl.ok, free, pl.pc, pl.budget);
 	}
-	for (int i = 0, next = np; i < np; i++) {
-		struct lx_shadow_map *more[PIECES_MAX - 1];
-		for (int k = 1; ok[i] && k < pc[i].n; k++)
-			more[k - 1] = &out->maps[next++];
-		if (ok[i])
-			build_plane_map(atlas, &ch[i], &pc[i], &depth[i], i, budget[i], o->plane_max_lpp, &out->maps[i], more);
+	for (int i = 0; i < np; i++)
+		pl.max_lpp[i] = o->plane_max_lpp;
+	build_plane_maps(atlas, &pl, out);
+	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
+	build_fallback(f, atlas, o, &ls, pl.ch, np, fbm, in_view, out);
+	/* past a lixel per pixel, only as dense as the casters reading a map need it; the
+	 * fallback keeps its size (with shared budgets what the first fit left it), and the
+	 * casters choose again among the smaller maps. Not under a filter: it reads a box of
+	 * lixels, narrower on the screen the denser the map, so there the extra lixels shape
+	 * the plane's own edges (directional at 320x240, pcf3x3, at a lixel per pixel: a
+	 * soft-edge error of 0.253% against 0.047% at 25) */
+	if (!o->plane_dense_budget && !o->filtered && lower_to_readers(f, fbm, &pl, out)) {
+		build_plane_maps(atlas, &pl, out);
+		choose_caster_maps(f, fbm, in_view, out);
 	}
-	build_fallback(f, atlas, o, &ls, ch, np, fbm, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",

@@ -57,6 +57,10 @@ struct lx_shadow_result {
 	/* Per object, the maps it reads (a bit mask), where the method chose them; 0: the
 	 * rule of lx_shadow_receiver_maps. */
 	unsigned object_maps[LX_MAX_PLANES + LX_MAX_CASTERS];
+	/* Per caster in view, whether another object's shadow may reach it, where the method
+	 * found it (the plane method: its fallback's receivers, or every one where that is not
+	 * known); the others look no map up. */
+	bool shadow_reaches[LX_MAX_PLANES + LX_MAX_CASTERS];
 	/* The frame's lit fronts and the ones each object tests (lx_plane_covers; none for a
 	 * method without maps), and the flat boxes' faces the maps leave out
 	 * (lx_slab_faces_left_out; none with keep_flat_boxes): found once a frame, before the
@@ -73,6 +77,10 @@ struct lx_method_options {
 	int fallback_lixels; /* the plane-optimal method's fallback map (128) */
 	bool square_regions; /* plane maps: the paper's square maps, not shapes fitted per frame */
 	bool shared_budget;  /* plane maps: one needing less than its budget hands the rest on */
+	bool plane_dense_budget; /* plane maps: as dense as the budget allows, past a lixel per pixel
+				  * too (else only as dense as the casters reading them need) */
+	bool filtered; /* the main pass filters its lookups (set with the filter): the plane maps
+			* take the budget's density, which shapes their own pixels' edges */
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
 	bool plane_twist;     /* plane maps: the paper's twist (the floor/wall line level), not screen-aligned */
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
