@@ -1551,12 +1551,18 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 	return isfinite(worst) ? worst : 0;
 }
 
-/* A caster's densities (box_density) in the fallback (*dfb) and in each plane map (dens,
- * -1 for a map it cannot read): false where it takes none of them (reaching behind the
+/* A caster's densities (box_density) in the fallback and in each plane map (-1 for a map
+ * it cannot read). */
+struct caster_density {
+	double fallback, map[LX_MAX_MAPS];
+};
+
+/* The densities of caster id: false where it takes none of the maps (reaching behind the
  * eye, the rule of lx_shadow_receiver_maps, or no face seen larger than a pixel). */
 static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int id,
-			     double *dfb, double *dens)
+			     struct caster_density *d)
 {
+	double *dfb = &d->fallback, *dens = d->map;
 	const struct lx_shadow_map *fb = &out->maps[fbm];
 	vec3 c[8];
 	vec2 pix[8];
@@ -1576,6 +1582,22 @@ static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_re
 	return true;
 }
 
+/* The maps a caster of densities d reads: the densest LX_MAX_READS - 1 plane maps that
+ * give it at least the fallback's (a draw reads at most LX_MAX_READS), then the fallback. */
+static unsigned densest_maps(const struct lx_shadow_result *out, int fbm, const struct caster_density *d)
+{
+	unsigned mask = 1u << fbm;
+	for (int k = 0; k < LX_MAX_READS - 1; k++) {
+		int best = -1;
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+			if (!(mask & 1u << m) && d->map[m] >= d->fallback && (best < 0 || d->map[m] > d->map[best]))
+				best = m;
+		if (best >= 0)
+			mask |= 1u << best;
+	}
+	return mask;
+}
+
 /* Which maps a caster's own surfaces read. A plane map holds every caster in front of
  * its plane, so it can serve a caster's rays too, and often more densely than the small
  * fallback; but seen from the eye a caster may be squeezed in it along some direction (a
@@ -1583,28 +1605,15 @@ static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_re
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
  * its faces at least the fallback's lixels per pixel in their worst direction (the
  * densest three of them), then the fallback (which covers every caster in view another's
- * shadow can reach). */
+ * shadow can reach). Each one's densities in cd[id]. */
 static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
-			       struct lx_shadow_result *out)
+			       struct lx_shadow_result *out, struct caster_density *cd)
 {
 	if (!out->maps[fbm].rendered)
 		return;
-	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		double dfb, dens[LX_MAX_MAPS];
-		if (!in_view[id] || !caster_densities(f, out, fbm, id, &dfb, dens))
-			continue;
-		/* the densest LX_MAX_READS - 1 of them (a draw reads at most LX_MAX_READS) */
-		unsigned mask = 1u << fbm;
-		for (int k = 0; k < LX_MAX_READS - 1; k++) {
-			int best = -1;
-			for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
-				if (!(mask & 1u << m) && dens[m] >= dfb && (best < 0 || dens[m] > dens[best]))
-					best = m;
-			if (best >= 0)
-				mask |= 1u << best;
-		}
-		out->object_maps[id] = mask;
-	}
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		if (in_view[id] && caster_densities(f, out, fbm, id, &cd[id]))
+			out->object_maps[id] = densest_maps(out, fbm, &cd[id]);
 }
 
 /* The whole-number scale plane i's maps need, at most their scale k now (k > 1, a
@@ -1615,27 +1624,35 @@ static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in
  * a pixel). So each caster reading one of them asks for a lixel per pixel in its worst
  * direction, and no less than the fallback's (else it would read the fallback instead),
  * as far as k gives it; a map no caster reads takes one lixel a pixel. */
-static double readers_scale(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int plane, double k)
+static double readers_scale(const struct lx_frame *f, const struct lx_shadow_result *out,
+			    const struct caster_density *cd, int fbm, int plane, double k)
 {
 	double need = 1;
 	for (int id = f->scene->plane_count; id < f->object_count; id++) {
-		double dfb, dens[LX_MAX_MAPS];
 		unsigned reads = out->object_maps[id];
-		if (!out->shadow_reaches[id] || !(reads & 1u << fbm) || !caster_densities(f, out, fbm, id, &dfb, dens))
-			continue; /* no lookup on it (no other's shadow reaches it), or not one of choose_caster_maps */
-		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
-			if (reads & 1u << m && out->maps[m].plane == plane && dens[m] > 0) /* > 0: it read it */
-				need = lx_fmax(need, ceil(k * lx_fmax(dfb, 1) / dens[m] - 1e-9));
+		if (!out->shadow_reaches[id] || !(reads & 1u << fbm))
+			continue; /* no lookup on it (no other's shadow reaches it), or no maps chosen */
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
+			if (!(reads & 1u << m) || out->maps[m].plane != plane)
+				continue;
+			/* read: its density d >= the fallback's > 0; the slack keeps a whole number
+			 * from rounding up, the check the fallback's density after lower_to_readers'
+			 * scaling, in its operations */
+			double d = cd[id].map[m], kn = ceil(k * lx_fmax(cd[id].fallback, 1) / d - 1e-9);
+			if (d * (1 / k * kn) < cd[id].fallback)
+				kn++;
+			need = lx_fmax(need, kn);
+		}
 	}
 	return lx_fmin(need, k);
 }
 
 /* The fallback map (map fbm, region np): the receivers no plane map takes, and the maps
- * each caster reads (in_view: the objects in view, for choose_caster_maps), and which
- * casters another's shadow may reach (out->shadow_reaches). */
+ * each caster reads (in_view: the objects in view, for choose_caster_maps; cd: their
+ * densities), and which casters another's shadow may reach (out->shadow_reaches). */
 static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			   const struct lx_light_space *ls, const struct plane_chart *ch, int np, int fbm,
-			   bool *in_view, struct lx_shadow_result *out)
+			   bool *in_view, struct caster_density *cd, struct lx_shadow_result *out)
 {
 	struct lx_shadow_map *fb = &out->maps[fbm];
 	bool needs[LX_MAX_PLANES] = {false};
@@ -1663,7 +1680,7 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np);
-	choose_caster_maps(f, fbm, in_view, out);
+	choose_caster_maps(f, fbm, in_view, out, cd);
 }
 
 /* What plane_build settles for each plane map before building it. */
@@ -1677,37 +1694,55 @@ struct plane_plan {
 	double max_lpp[PLANE_MAPS]; /* its density cap (0 or less: none) */
 };
 
-/* The plane maps of the plan: plane i's in map i, its spare pieces' in the maps after
- * the planes', in the planes' order. */
-static void build_plane_maps(const struct lx_atlas *atlas, const struct plane_plan *pl, struct lx_shadow_result *out)
+/* The plane maps of the plan, of the planes in the mask `planes`: plane i's in map i, its
+ * spare pieces' in the maps after the planes', in the planes' order. */
+static void build_plane_maps(const struct lx_atlas *atlas, const struct plane_plan *pl, unsigned planes,
+			     struct lx_shadow_result *out)
 {
 	for (int i = 0, next = pl->np; i < pl->np; i++) {
 		struct lx_shadow_map *more[PIECES_MAX - 1];
 		for (int k = 1; pl->ok[i] && k < pl->pc[i].n; k++)
 			more[k - 1] = &out->maps[next++];
-		if (pl->ok[i])
+		if (pl->ok[i] && planes & 1u << i)
 			build_plane_map(atlas, &pl->ch[i], &pl->pc[i], &pl->depth[i], i, pl->budget[i], pl->max_lpp[i],
 					&out->maps[i], more);
 	}
 }
 
 /* Caps the density of each plane map past a lixel per pixel at what the casters reading
- * it need (readers_scale); true when one is lowered, to be built again. */
-static bool lower_to_readers(const struct lx_frame *f, int fbm, struct plane_plan *pl,
-			     const struct lx_shadow_result *out)
+ * it need (readers_scale) and builds the lowered ones again. Their densities for each
+ * caster shrink with their scale (a caster's image in a piece is the chart's, scaled), and
+ * the casters choose their maps again among them. */
+static void lower_to_readers(const struct lx_frame *f, const struct lx_atlas *atlas, int fbm, struct plane_plan *pl,
+			     struct caster_density *cd, struct lx_shadow_result *out)
 {
-	bool lowered = false;
+	double ratio[PLANE_MAPS];
+	unsigned lowered = 0;
 	for (int i = 0; i < pl->np; i++) {
 		const struct lx_shadow_map *m = &out->maps[i];
+		ratio[i] = 1;
 		if (!pl->ok[i] || !m->rendered || m->lixel_stretch != 1 || !(m->lixel_scale > 1))
 			continue; /* short of a lixel per pixel, or at one */
-		double k = readers_scale(f, out, fbm, i, m->lixel_scale);
+		double k = readers_scale(f, out, cd, fbm, i, m->lixel_scale);
 		if (k < m->lixel_scale) {
 			pl->max_lpp[i] = pl->max_lpp[i] > 0 ? lx_fmin(pl->max_lpp[i], k * k) : k * k;
-			lowered = true;
+			ratio[i] = 1 / m->lixel_scale; /* > 0: past 1 */
+			lowered |= 1u << i;
 		}
 	}
-	return lowered;
+	if (!lowered)
+		return;
+	build_plane_maps(atlas, pl, lowered, out);
+	for (int i = 0; i < pl->np; i++)
+		ratio[i] *= lowered & 1u << i ? out->maps[i].lixel_scale : 1;
+	for (int id = f->scene->plane_count; id < f->object_count; id++) {
+		if (!(out->object_maps[id] & 1u << fbm))
+			continue; /* no maps chosen */
+		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++)
+			if (out->maps[m].plane >= 0 && lowered & 1u << out->maps[m].plane && cd[id].map[m] > 0)
+				cd[id].map[m] *= ratio[out->maps[m].plane];
+		out->object_maps[id] = densest_maps(out, fbm, &cd[id]);
+	}
 }
 
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
@@ -1730,7 +1765,8 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	lx_light_space_build(f, &ls);
 	if (ls.empty)
 		return; /* no shadow can fall in the view: no pass at all */
-	struct plane_plan pl = {.np = np};
+	struct plane_plan pl; /* not zeroed: every field of planes 0..np-1 is set below */
+	pl.np = np;
 	struct caster_images images;
 	memset(images.state, 0, sizeof images.state);
 	struct foot_parts parts; /* one plane's at a time */
@@ -1775,19 +1811,18 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	}
 	for (int i = 0; i < np; i++)
 		pl.max_lpp[i] = o->plane_max_lpp;
-	build_plane_maps(atlas, &pl, out);
+	build_plane_maps(atlas, &pl, ~0u, out);
 	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
-	build_fallback(f, atlas, o, &ls, pl.ch, np, fbm, in_view, out);
+	struct caster_density cd[LX_MAX_PLANES + LX_MAX_CASTERS];
+	build_fallback(f, atlas, o, &ls, pl.ch, np, fbm, in_view, cd, out);
 	/* past a lixel per pixel, only as dense as the casters reading a map need it; the
 	 * fallback keeps its size (with shared budgets what the first fit left it), and the
 	 * casters choose again among the smaller maps. Not under a filter: it reads a box of
 	 * lixels, narrower on the screen the denser the map, so there the extra lixels shape
 	 * the plane's own edges (directional at 320x240, pcf3x3, at a lixel per pixel: a
 	 * soft-edge error of 0.253% against 0.047% at 25) */
-	if (!o->plane_dense_budget && !o->filtered && lower_to_readers(f, fbm, &pl, out)) {
-		build_plane_maps(atlas, &pl, out);
-		choose_caster_maps(f, fbm, in_view, out);
-	}
+	if (!o->plane_dense_budget && !o->filtered)
+		lower_to_readers(f, atlas, fbm, &pl, cd, out);
 }
 
 const struct lx_shadow_method lx_method_plane = {.name = "plane",
