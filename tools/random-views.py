@@ -5,12 +5,14 @@ views for a given seed), rendered once per method with `lixel render --measure -
 prints, per scene, each method's mean and median mismatch, how many views it is more than
 0.01 points worse than uniform on, and its worst such excess. Two renders run at a time.
 Usage: random-views.py LIXEL [--seed N] [--views N] [--size WxH] [--methods LIST] [--worst N]
-                       [--depth-precision P]
+                       [--depth-precision P] [--against SPEC]
   LIXEL     the lixel binary (build/lixel)
   --depth-precision  as lixel render takes it (auto, highp, mediump, texture; default:
             lixel's own): mediump measures the fp16 path a Mali-400 takes
   --worst   also list, per scene and method, the N views it is furthest above uniform on,
             with the render options that give each view
+  --against also count, per scene and method, the views it is above, at and below this
+            method spec on (added to the methods when missing): two settings view by view
   --methods comma-separated method specs as lixel render --method takes them (default
             uniform,plane,plane/similar,plane/shared,plane/shared/similar); uniform is
             added first when missing, being the reference of the counts"""
@@ -51,10 +53,13 @@ def main():
     ap.add_argument("--methods", default="uniform,plane,plane/similar,plane/shared,plane/shared/similar")
     ap.add_argument("--worst", type=int, default=0)
     ap.add_argument("--depth-precision", choices=("auto", "highp", "mediump", "texture"))
+    ap.add_argument("--against")
     a = ap.parse_args()
     methods = [m for m in a.methods.split(",") if m]
     if "uniform" not in methods:
         methods.insert(0, "uniform")
+    if a.against and a.against not in methods:
+        methods.append(a.against)
     vs = views(a.seed, a.views)
     tmp = tempfile.mkdtemp(prefix="lixel-views-")
     env = dict(os.environ, LP_NUM_THREADS="1")
@@ -92,6 +97,10 @@ def main():
             over = [pct[m][k] - pct["uniform"][k] for k in ks]
             print("  %-22s mean %.4f%%  median %.4f%%  more than 0.01 points above uniform on %d  worst %+.4f" %
                   (m, statistics.mean(vals), statistics.median(vals), sum(d > 0.01 for d in over), max(over)))
+        for m in [m for m in methods if a.against and m != a.against]:
+            d = [pct[m][k] - pct[a.against][k] for k in ks]
+            print("  %-22s against %s: above on %d (at most %+.4f points), the same on %d, below on %d" %
+                  (m, a.against, sum(x > 0 for x in d), max(d), sum(x == 0 for x in d), sum(x < 0 for x in d)))
         for m in methods[1:] if a.worst > 0 else []:
             for k in sorted(ks, key=lambda k: pct["uniform"][k] - pct[m][k])[:a.worst]:
                 _, eye, at, light, t = vs[k]
