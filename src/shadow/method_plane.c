@@ -1620,10 +1620,11 @@ static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in
  * similarity). Past a lixel per pixel the extra lixels change no decision on the plane's
  * own pixels, whose centres already fall on lixel centres: they serve only the casters
  * that read the maps (choose_caster_maps), and they cost fill, a caster's image growing
- * with the map (0.19 ms of shadow pass under the default scene's low light at 3x3 lixels
- * a pixel). So each caster reading one of them asks for a lixel per pixel in its worst
- * direction, and no less than the fallback's (else it would read the fallback instead),
- * as far as k gives it; a map no caster reads takes one lixel a pixel. */
+ * with the map (close to the default scene's floor at 1024x1024, 0.10 ms of shadow pass
+ * at 3x3 lixels a pixel against one). So each caster reading one of them asks for a
+ * lixel per pixel in its worst direction, and no less than the fallback's (else it would
+ * read the fallback instead), as far as k gives it; a map no caster reads takes one
+ * lixel a pixel. */
 static double readers_scale(const struct lx_frame *f, const struct lx_shadow_result *out,
 			    const struct caster_density *cd, int fbm, int plane, double k)
 {
@@ -1635,9 +1636,9 @@ static double readers_scale(const struct lx_frame *f, const struct lx_shadow_res
 		for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 			if (!(reads & 1u << m) || out->maps[m].plane != plane)
 				continue;
-			/* read: its density d >= the fallback's > 0; the slack keeps a whole number
-			 * from rounding up, the check the fallback's density after lower_to_readers'
-			 * scaling, in its operations */
+			/* read: its density d >= the fallback's > 0. The slack keeps an exact whole
+			 * number from rounding up; the check redoes lower_to_readers' scaling, in its
+			 * operations, so that the caster still finds the map as dense as the fallback */
 			double d = cd[id].map[m], kn = ceil(k * lx_fmax(cd[id].fallback, 1) / d - 1e-9);
 			if (d * (1 / k * kn) < cd[id].fallback)
 				kn++;
