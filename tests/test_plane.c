@@ -332,7 +332,8 @@ static void shared_budgets_hand_on_the_rest(void **state)
  * look nothing up) keep reading every plane map they read.
  * Some are lowered (the default scene's low light: the wall from 2x2 lixels a pixel to
  * one) and some kept (its floor, read by the cone at 3x3; the floor under the table seen
- * from below its top at 320x240, read by the legs). Under a filter nothing moves. */
+ * from below its top at 320x240, read by the legs). Under a filter nothing moves; under
+ * a cap the readers ask within it. */
 static void readers_set_the_density_past_one(void **state)
 {
 	(void)state;
@@ -394,6 +395,20 @@ static void readers_set_the_density_past_one(void **state)
 		lx_meshes_free(&bu.meshes);
 		lx_meshes_free(&rd.meshes);
 	}
+	/* under a cap (--plane-max-lpp 4) the readers ask within it: the low light's floor,
+	 * which the cone reads at 3x3 but would find less dense than the fallback at the cap's
+	 * 2x2 (0.41 against 0.44 lixels per pixel in its worst direction), is read by none and
+	 * goes to one, as the wall */
+	struct setup cap;
+	struct lx_method_options oc = LX_METHOD_OPTIONS_DEFAULT;
+	oc.plane_max_lpp = 4;
+	memset(&cap, 0, sizeof cap);
+	lx_scene_default(&cap.scene);
+	lx_config_apply(lx_config_find("low"), &cap.scene);
+	assert_true(build_with(&cap, "plane", 1024, 1024, 0, &oc));
+	assert_true(cap.res.maps[0].rendered && cap.res.maps[1].rendered);
+	assert_true(cap.res.maps[0].lixel_scale == 1 && cap.res.maps[1].lixel_scale == 1);
+	lx_meshes_free(&cap.meshes);
 	print_message("%d plane maps compared with the budget's density: %d lowered to what their readers need, %d kept "
 		      "above a lixel per pixel\n", compared, lowered, kept);
 	assert_int_equal(moved_filtered, 0);
