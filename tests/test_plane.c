@@ -382,10 +382,10 @@ static void readers_set_the_density_past_one(void **state)
 			if (below && m == 1 && !(same && sa > 1))
 				fail_msg("%s: the floor map at scale %.4f, expected the budget's (above one) for the legs", what, sb);
 		}
+		unsigned plane_reads = 0, fb = 1u << (bu.res.map_count - 1); /* the plane maps; the fallback, last */
+		for (int m = 0; m < bu.res.map_count - 1; m++)
+			plane_reads |= bu.res.maps[m].plane >= 0 ? 1u << m : 0;
 		for (int id = rd.scene.plane_count; id < rd.frame.object_count; id++) {
-			unsigned plane_reads = 0, fb = 1u << (bu.res.map_count - 1);
-			for (int m = 0; m < bu.res.map_count - 1; m++)
-				plane_reads |= bu.res.maps[m].plane >= 0 ? 1u << m : 0;
 			unsigned ra = bu.res.object_maps[id] & plane_reads, rb = rd.res.object_maps[id] & plane_reads;
 			if (rd.res.shadow_reaches[id] != bu.res.shadow_reaches[id])
 				fail_msg("%s: object %d reached otherwise", what, id);

@@ -1562,7 +1562,6 @@ struct caster_density {
 static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int id,
 			     struct caster_density *d)
 {
-	double *dfb = &d->fallback, *dens = d->map;
 	const struct lx_shadow_map *fb = &out->maps[fbm];
 	vec3 c[8];
 	vec2 pix[8];
@@ -1572,12 +1571,12 @@ static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_re
 	if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 		return false;
 	int nf = box_faces(f, c, 0, faces);
-	*dfb = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
-	if (!(*dfb > 0))
+	d->fallback = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
+	if (!(d->fallback > 0))
 		return false;
 	for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
 		const struct lx_shadow_map *pm = &out->maps[m];
-		dens[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
+		d->map[m] = pm->rendered && pm->plane >= 0 ? box_density(pm, pm->w, pm->h, c, pix, faces, nf) : -1;
 	}
 	return true;
 }
