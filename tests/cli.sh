@@ -28,7 +28,7 @@ expect_bad() {
 "$lixel" render --help >"$tmp/help" 2>&1 && ok || no "lixel render --help exit status"
 for opt in --method --scene --config --size --eye --at --fov --light --light-dir --time --platform --out --measure --json \
     --plane-lixels --fallback-lixels --uniform-lixels --filter --light-size --lookup-region --caster-depth \
-    --depth-slots; do
+    --caster-maps --plane-density --depth-slots; do
   grep -q -- "$opt" "$tmp/help" && ok || no "render --help does not describe $opt"
 done
 
@@ -103,6 +103,11 @@ if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png"
   n=$(map_lixels floor "$tmp/json")
   [ -n "$n" ] && [ "$n" -gt 60000 ] && [ "$n" -le 122500 ] && ok || no "plane map floor holds '$n' lixels, expected its 350^2 budget mostly used"
   [ "$(map_lixels wall "$tmp/json")" = 0 ] && ok || no "default view: a wall map, where no shadow falls: $(cat "$tmp/json")"
+  # with --caster-maps fallback no caster reads the floor map (the ball did, under the
+  # cone's shadow): a lixel a pixel, far fewer lixels
+  "$lixel" render --caster-maps fallback --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json2" 2>"$tmp/stderr" &&
+    f=$(map_lixels floor "$tmp/json2") && [ -n "$f" ] && [ "$f" -gt 0 ] && [ "$f" -lt $((${n:-0} / 4)) ] && ok ||
+    no "--caster-maps fallback: the floor map holds '$f' lixels, expected under a quarter of the default's '$n': $(cat "$tmp/json2" "$tmp/stderr")"
   grep -qiE 'nan|inf' "$tmp/json" && no "plane JSON holds NaN or Infinity" || ok
   # the depth path the self-test chose (llvmpipe: the depth texture)
   grep -q '"depth_path": "highp24-texture", "depth_selftest": "passed"' "$tmp/json" && ok || no "depth path: $(cat "$tmp/json")"
@@ -154,6 +159,8 @@ grep -q '"atlas": \[1982, 632\]' "$tmp/b-fixed.json" && grep -q '"atlas": \[2048
 expect_bad "region shape" render --region-shape round $out
 expect_bad "budget split" render --budget-split half $out
 expect_bad "plane density" render --plane-density most $out
+expect_bad "caster maps" render --caster-maps nearest $out
+expect_bad "caster maps in the bench" bench --caster-maps dense,fallback --configs default --frames 1
 expect_bad "max lpp" render --plane-max-lpp 0 $out
 expect_bad "removed method option" render --method plane/corner $out
 expect_bad "method option" render --method plane/round $out

@@ -415,6 +415,54 @@ static void readers_set_the_density_past_one(void **state)
 	assert_true(compared >= 2 * lx_config_count && lowered >= 5 && kept >= 1);
 }
 
+/* --caster-maps fallback (caster_fallback_only): on every standard configuration of both
+ * scenes at 1024x1024 each caster reads the fallback alone, and no plane map is denser
+ * than a lixel per pixel (none of them read by a caster), the same maps drawn for the same
+ * planes, the same casters reached, as by default; by default some caster reads a plane
+ * map (the default view's ball the floor's, which the cone's shadow reaches). */
+static void casters_read_the_fallback_alone(void **state)
+{
+	(void)state;
+	int views = 0, plane_readers = 0;
+	for (int k = 0; k < 2 * lx_config_count; k++) {
+		struct setup d, fo;
+		struct lx_method_options od = LX_METHOD_OPTIONS_DEFAULT, of = LX_METHOD_OPTIONS_DEFAULT;
+		of.caster_fallback_only = true;
+		bool table = k % 2;
+		const char *config = lx_configs[k / 2].name;
+		memset(&d, 0, sizeof d);
+		table ? lx_scene_table(&d.scene) : lx_scene_default(&d.scene);
+		lx_config_apply(&lx_configs[k / 2], &d.scene);
+		memset(&fo, 0, sizeof fo);
+		fo.scene = d.scene;
+		assert_true(build_with(&d, "plane", 1024, 1024, 0, &od));
+		assert_true(build_with(&fo, "plane", 1024, 1024, 0, &of));
+		int fbm = fo.res.map_count - 1; /* the fallback, last */
+		assert_int_equal(d.res.map_count, fo.res.map_count);
+		for (int m = 0; m < fo.res.map_count; m++) {
+			const struct lx_shadow_map *a = &d.res.maps[m], *b = &fo.res.maps[m];
+			if (a->rendered != b->rendered || a->plane != b->plane)
+				fail_msg("%s scene, %s: map %d drawn or placed otherwise", table ? "table" : "default", config, m);
+			if (b->rendered && b->plane >= 0 && !(b->lixel_scale <= 1))
+				fail_msg("%s scene, %s: map %d at %.4f lixels a pixel along each axis, read by no caster",
+					 table ? "table" : "default", config, m, b->lixel_scale);
+		}
+		for (int id = fo.scene.plane_count; id < fo.frame.object_count; id++) {
+			unsigned want = fo.res.maps[fbm].rendered ? 1u << fbm : 0;
+			if (lx_shadow_receiver_maps(&fo.res, id) != want || fo.res.shadow_reaches[id] != d.res.shadow_reaches[id])
+				fail_msg("%s scene, %s: caster %d reads maps %#x, expected the fallback's %#x",
+					 table ? "table" : "default", config, id, lx_shadow_receiver_maps(&fo.res, id), want);
+			plane_readers += (lx_shadow_receiver_maps(&d.res, id) & ~(1u << fbm)) != 0;
+		}
+		views++;
+		lx_meshes_free(&d.meshes);
+		lx_meshes_free(&fo.meshes);
+	}
+	print_message("%d views: casters read the fallback alone; by default %d casters read a plane map\n", views,
+		      plane_readers);
+	assert_true(views == 2 * lx_config_count && plane_readers >= 1);
+}
+
 /* A frame's maps do not depend on the frames before it: a build on an atlas that packed
  * another view's maps (the fallback's size, the plane maps' shapes) gives the same maps as
  * on a fresh one. Every configuration of both scenes after every other one's, with fixed
@@ -1457,6 +1505,7 @@ int main(void)
 		cmocka_unit_test(shared_plane_points_give_the_same_figures),
 		cmocka_unit_test(shared_budgets_hand_on_the_rest),
 		cmocka_unit_test(readers_set_the_density_past_one),
+		cmocka_unit_test(casters_read_the_fallback_alone),
 		cmocka_unit_test(maps_do_not_depend_on_the_frame_before),
 		cmocka_unit_test(every_shadow_is_covered),
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),

@@ -117,6 +117,7 @@ static const struct two_way two_ways[] = {
 	{"--region-shape", "fitted", "square", "fitted or square", offsetof(struct lx_method_options, square_regions)},
 	{"--budget-split", "fixed", "shared", "fixed or shared", offsetof(struct lx_method_options, shared_budget)},
 	{"--plane-density", "readers", "budget", "readers or budget", offsetof(struct lx_method_options, plane_dense_budget)},
+	{"--caster-maps", "dense", "fallback", "dense or fallback", offsetof(struct lx_method_options, caster_fallback_only)},
 	{"--lookup-region", "footprint", "all", "footprint or all", offsetof(struct lx_method_options, lookup_everywhere)},
 	{"--caster-depth", "point", "face", "point or face", offsetof(struct lx_method_options, caster_face_depth)},
 };

@@ -68,7 +68,7 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       angular diameter, 0 to 20 degrees (default 0.5, about the sun's); render\n" \
 	"                       --measure computes it when a filter is on or this is given\n"
 #define LX_PLANE_OPTION_NAMES \
-	"--region-shape", "--budget-split", "--plane-density", "--plane-max-lpp", "--lookup-region", "--caster-depth", "--depth-slots", \
+	"--region-shape", "--budget-split", "--plane-density", "--caster-maps", "--plane-max-lpp", "--lookup-region", "--caster-depth", "--depth-slots", \
 		"--light-budget"
 #define LX_PLANE_OPTION_HELP \
 	"  --region-shape S     plane maps: fitted (default: each map's shape follows its\n" \
@@ -79,6 +79,11 @@ int lx_arg_filter(const char *cmd, const char *opt, const char *value, enum lx_f
 	"                       or shared (a map also hands on the rest its whole-number\n" \
 	"                       scale leaves, and what is left goes to the fallback unless\n" \
 	"                       --plane-max-lpp caps them)\n" \
+	"  --caster-maps M      what a caster's own surfaces read: dense (default: first the\n" \
+	"                       plane maps denser on it than the fallback, each of which then\n" \
+	"                       holds the caster's far side as its faces) or fallback (the\n" \
+	"                       fallback alone: less shadow-pass work, coarser shadows of\n" \
+	"                       casters on casters)\n" \
 	"  --plane-density D    plane maps past a lixel per pixel: readers (default: only as\n" \
 	"                       dense as the casters that read a map need, a lixel per pixel\n" \
 	"                       on their surfaces; a map none reads takes one lixel a pixel)\n" \

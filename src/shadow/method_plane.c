@@ -1604,7 +1604,12 @@ static unsigned densest_maps(const struct lx_shadow_result *out, int fbm, const 
  * tall), or lie beyond its depth range. A caster reads, in order, the plane maps that give
  * its faces at least the fallback's lixels per pixel in their worst direction (the
  * densest three of them), then the fallback (which covers every caster in view another's
- * shadow can reach). Each one's densities in cd[id]. */
+ * shadow can reach). Each one's densities in cd[id]. Each plane map a caster reads then
+ * draws it as its faces near its silhouette, not as a fan (renderer.c): the facing
+ * view's ball, under the cone's shadow, is 234 triangles in each of the floor's two
+ * pieces, where its fan is 52. --caster-maps fallback (caster_fallback_only) leaves this out: each
+ * caster reads the fallback alone, for less shadow-pass work and coarser shadows of
+ * casters on casters (docs/plane-optimal.md, "Casters' maps"). */
 static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
 			       struct lx_shadow_result *out, struct caster_density *cd)
 {
@@ -1680,7 +1685,8 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np);
-	choose_caster_maps(f, fbm, in_view, out, cd);
+	if (!o->caster_fallback_only)
+		choose_caster_maps(f, fbm, in_view, out, cd);
 }
 
 /* What plane_build settles for each plane map before building it. */

@@ -83,6 +83,8 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 			o->plane_twist = opt[0] == 't';
 		else if (!strcmp(opt, "budget") || !strcmp(opt, "readers"))
 			o->plane_dense_budget = opt[0] == 'b';
+		else if (!strcmp(opt, "casterdense") || !strcmp(opt, "casterfallback"))
+			o->caster_fallback_only = opt[6] == 'f';
 		else if (!strcmp(opt, "uncapped"))
 			o->plane_max_lpp = -1;
 		else if (!strcmp(opt, "onepiece"))
@@ -92,7 +94,7 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
 			o->plane_max_lpp = lpp;
 		else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, budget, readers, uncapped, onepiece, similar, stretch, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, budget, readers, casterdense, casterfallback, uncapped, onepiece, similar, stretch, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
 				 spec, opt, LX_MAX_LIGHTS, LX_DEPTH_SLOTS_MAX);
 			return NULL;
 		}

@@ -79,6 +79,9 @@ struct lx_method_options {
 	bool shared_budget;  /* plane maps: one needing less than its budget hands the rest on */
 	bool plane_dense_budget; /* plane maps: as dense as the budget allows, past a lixel per pixel
 				  * too (else only as dense as the casters reading them need) */
+	bool caster_fallback_only; /* a caster reads the fallback alone (--caster-maps fallback), not
+				    * first the plane maps denser on it: less shadow-pass work, coarser
+				    * shadows of casters on casters */
 	bool filtered; /* the main pass filters its lookups (set with the filter): the plane maps
 			* take the budget's density, which shapes their own pixels' edges */
 	double plane_max_lpp; /* plane maps: the highest density given, lixels per pixel (0 or less: no cap) */
