@@ -103,8 +103,8 @@ if "$lixel" render --measure --json --size 160x120 --frames 1 --out "$tmp/p.png"
   n=$(map_lixels floor "$tmp/json")
   [ -n "$n" ] && [ "$n" -gt 60000 ] && [ "$n" -le 122500 ] && ok || no "plane map floor holds '$n' lixels, expected its 350^2 budget mostly used"
   [ "$(map_lixels wall "$tmp/json")" = 0 ] && ok || no "default view: a wall map, where no shadow falls: $(cat "$tmp/json")"
-  # with --caster-maps fallback no caster reads the floor map (the ball did, under the
-  # cone's shadow): a lixel a pixel, far fewer lixels
+  # with --caster-maps fallback no caster reads the floor map (the ball did, which the
+  # cylinder's shadow may reach): a lixel a pixel, far fewer lixels
   "$lixel" render --caster-maps fallback --json --size 160x120 --frames 1 --out "$tmp/p.png" >"$tmp/json2" 2>"$tmp/stderr" &&
     f=$(map_lixels floor "$tmp/json2") && [ -n "$f" ] && [ "$f" -gt 0 ] && [ "$f" -lt $((${n:-0} / 4)) ] && ok ||
     no "--caster-maps fallback: the floor map holds '$f' lixels, expected under a quarter of the default's '$n': $(cat "$tmp/json2" "$tmp/stderr")"

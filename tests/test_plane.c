@@ -419,7 +419,7 @@ static void readers_set_the_density_past_one(void **state)
  * scenes at 1024x1024 each caster reads the fallback alone, and no plane map is denser
  * than a lixel per pixel (none of them read by a caster), the same maps drawn for the same
  * planes, the same casters reached, as by default; by default some caster reads a plane
- * map (the default view's ball the floor's, which the cone's shadow reaches). */
+ * map (the default view's ball the floor's, which the cylinder's shadow may reach). */
 static void casters_read_the_fallback_alone(void **state)
 {
 	(void)state;

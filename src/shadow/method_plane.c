@@ -1607,9 +1607,9 @@ static unsigned densest_maps(const struct lx_shadow_result *out, int fbm, const 
  * shadow can reach). Each one's densities in cd[id]. Each plane map a caster reads then
  * draws it as its faces near its silhouette, not as a fan (renderer.c): the facing
  * view's ball, under the cone's shadow, is 234 triangles in each of the floor's two
- * pieces, where its fan is 52. --caster-maps fallback (caster_fallback_only) leaves this out: each
- * caster reads the fallback alone, for less shadow-pass work and coarser shadows of
- * casters on casters (docs/plane-optimal.md, "Casters' maps"). */
+ * pieces, where its fan is 52. --caster-maps fallback (caster_fallback_only) leaves
+ * this out: each caster reads the fallback alone, for less shadow-pass work and coarser
+ * shadows of casters on casters (docs/plane-optimal.md, "Casters' maps"). */
 static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
 			       struct lx_shadow_result *out, struct caster_density *cd)
 {
