@@ -419,11 +419,14 @@ static void readers_set_the_density_past_one(void **state)
  * scenes at 1024x1024 each caster reads the fallback alone, and no plane map is denser
  * than a lixel per pixel (none of them read by a caster), the same maps drawn for the same
  * planes, the same casters reached, as by default; by default some caster reads a plane
- * map (the default view's ball the floor's, which the cylinder's shadow may reach). */
+ * map (the default view's ball the floor's, which the cylinder's shadow may reach). The
+ * plane maps take a lixel per pixel from the first fit, so with shared budgets what they
+ * leave goes to the fallback, which is never smaller than by default and on some view
+ * larger. */
 static void casters_read_the_fallback_alone(void **state)
 {
 	(void)state;
-	int views = 0, plane_readers = 0;
+	int views = 0, plane_readers = 0, fallback_grew = 0;
 	for (int k = 0; k < 2 * lx_config_count; k++) {
 		struct setup d, fo;
 		struct lx_method_options od = LX_METHOD_OPTIONS_DEFAULT, of = LX_METHOD_OPTIONS_DEFAULT;
@@ -454,13 +457,28 @@ static void casters_read_the_fallback_alone(void **state)
 					 table ? "table" : "default", config, id, lx_shadow_receiver_maps(&fo.res, id), want);
 			plane_readers += (lx_shadow_receiver_maps(&d.res, id) & ~(1u << fbm)) != 0;
 		}
+		struct setup ds, fs;
+		od.shared_budget = of.shared_budget = true;
+		memset(&ds, 0, sizeof ds);
+		memset(&fs, 0, sizeof fs);
+		ds.scene = fs.scene = d.scene;
+		assert_true(build_with(&ds, "plane", 1024, 1024, 0, &od));
+		assert_true(build_with(&fs, "plane", 1024, 1024, 0, &of));
+		const struct lx_shadow_map *fd = &ds.res.maps[fbm], *ff = &fs.res.maps[fbm];
+		if (ff->rendered && (long)ff->w * ff->h < (long)fd->w * fd->h)
+			fail_msg("%s scene, %s, shared budgets: the fallback %dx%d, by default %dx%d", table ? "table" : "default",
+				 config, ff->w, ff->h, fd->w, fd->h);
+		fallback_grew += ff->rendered && (long)ff->w * ff->h > (long)fd->w * fd->h;
 		views++;
 		lx_meshes_free(&d.meshes);
 		lx_meshes_free(&fo.meshes);
+		lx_meshes_free(&ds.meshes);
+		lx_meshes_free(&fs.meshes);
 	}
-	print_message("%d views: casters read the fallback alone; by default %d casters read a plane map\n", views,
-		      plane_readers);
-	assert_true(views == 2 * lx_config_count && plane_readers >= 1);
+	print_message("%d views: casters read the fallback alone; by default %d casters read a plane map; with shared "
+		      "budgets the fallback larger on %d\n",
+		      views, plane_readers, fallback_grew);
+	assert_true(views == 2 * lx_config_count && plane_readers >= 1 && fallback_grew >= 1);
 }
 
 /* A frame's maps do not depend on the frames before it: a build on an atlas that packed

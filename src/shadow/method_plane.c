@@ -1815,8 +1815,11 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 			free -= pl.ok[i] ? pl.pc[i].n - 1 : 0;
 		cut_to_regions(atlas, np, pl.ok, free, pl.pc, pl.budget);
 	}
+	/* where no caster reads a plane map (--caster-maps fallback), the readers' density is
+	 * a lixel per pixel from the first fit, which lower_to_readers would build again */
+	bool unread = o->caster_fallback_only && !o->plane_dense_budget && !o->filtered;
 	for (int i = 0; i < np; i++)
-		pl.max_lpp[i] = o->plane_max_lpp;
+		pl.max_lpp[i] = unread ? (o->plane_max_lpp > 0 ? lx_fmin(o->plane_max_lpp, 1) : 1) : o->plane_max_lpp;
 	build_plane_maps(atlas, &pl, ~0u, out);
 	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
 	struct caster_density cd[LX_MAX_PLANES + LX_MAX_CASTERS];
