@@ -20,13 +20,17 @@
  * the image of the caster's n points (object space floats, as the GL gets them: corners
  * of its convex mesh, so their image's hull lies within the image the map holds; pts[3 k]
  * onwards, or pts[3 index[k]] with an index; pts NULL: a box caster, whose mesh's corners
- * are its bounds' 8, and n is 8) and inside the rays the map serves (map->bounds), and its depth in the
- * map exceeds the caster's farthest by `depth_gap` (in the map's normalized depth, -1 to
- * 1) or more. False, and win empty, where there is none to give: the caster reaches
- * behind the light or outside the map's depth range (a map that flattens casters onto
- * its near plane, map->plane < 0, may have them nearer), or lies too near the plane (a
- * leg standing on the floor), the polygon's points lie behind the light or the eye, or
- * nothing is left of the image. */
+ * are its bounds' 8, and n is 8; of a box reaching behind the light, the part in front)
+ * and inside the rays the map serves (map->bounds), in front of the light and beyond the
+ * eye's near plane, and its depth in the map exceeds the caster's by `depth_gap` (in the
+ * map's normalized depth, -1 to 1) or more: beyond the caster's farthest, or else ray by
+ * ray, the plane's depth along each ray (linear in clip coordinates) against the points
+ * the caster lies within. False, and win empty, where there is none to give: the
+ * caster's points (pts) reach behind the light, or it lies too near the plane (a leg
+ * standing on the floor) or beyond the map's far plane, or nothing is left of the
+ * image. Where a plane map's near plane clips the caster (one next to the light, which
+ * the method warns of) a lookup may call a pixel of the window lit that lies in the
+ * caster's shadow all the same. */
 bool lx_sure_shadow_window(const struct lx_frame *f, const struct lx_shadow_map *map, int w, int h, int id,
 			   const float *pts, const unsigned short *index, int n, int plane, double inset, double depth_gap, struct lx_poly *win);
 
