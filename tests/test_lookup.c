@@ -1260,6 +1260,29 @@ static void sure_shadows_lie_in_the_casters_shadows(void **state)
 			check_sure(&s, what, &t);
 			lx_meshes_free(&s.meshes);
 		}
+	/* and at the extremes: the eye a millimetre above the floor, the light inside a
+	 * caster, on the floor, under it, far away, directional along the floor */
+	const struct {
+		vec3 eye, at, light;
+		bool directional;
+	} ext[] = {{{0.5, 0.001, 3.5}, {0, 0.5, -3}, {1, 4, 2}, false},  {{0, 2.5, 6}, {0, 0.5, 0}, {-1.2, 0.6, 0.4}, false},
+		   {{0, 2.5, 6}, {0, 0.5, 0}, {2, 0, 1}, false},	  {{0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}, false},
+		   {{0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}, false}, {{0, 2.5, 6}, {0, 0.5, 0}, {1, -0.01, 0.2}, true}};
+	for (size_t k = 0; k < sizeof ext / sizeof ext[0]; k++)
+		FOR_METHODS(method) {
+			lx_scene_default(&s.scene);
+			s.scene.camera.eye = ext[k].eye, s.scene.camera.at = ext[k].at;
+			s.scene.light = (struct lx_light){.directional = ext[k].directional, .position = ext[k].light,
+							  .direction = v3(0, -1, 0)};
+			if (ext[k].directional)
+				v3_normalize(ext[k].light, &s.scene.light.direction);
+			if (!build(&s, method, W, H, 0.0))
+				continue;
+			char what[96];
+			snprintf(what, sizeof what, "default scene, extreme %zu, %s", k, method);
+			check_sure(&s, what, &t);
+			lx_meshes_free(&s.meshes);
+		}
 	print_message("%ld sure shadows of a caster on a plane in a map (%ld of a box, the same from its bounds; %ld in "
 		      "a plane map under a light near the wall or facing the camera, %ld pixels); %ld plane pixels inside "
 		      "them, each in the caster's exact shadow and served by the map\n",
