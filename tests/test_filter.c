@@ -179,7 +179,14 @@ static void same_as_highp(const char *texture, const char *now)
  * or a plane and the background meet show, shadow decisions unchanged; XPSM's on the
  * table's floor-close at mediump by the code that bounds a box caster's volume by the
  * faces the shadow pass draws, whose lookup spans cut the table top into other pieces:
- * one pixel on the top's edge now shows the background, as the exact reference does). A method or configuration
+ * one pixel on the top's edge now shows the background, as the exact reference does; 10
+ * by the code that bounds a round caster's lookup volume in sixteen directions, whose
+ * spans cut the floor into other pieces: one pixel of 7 images one level of lighting,
+ * and where the floor meets the background seen from close to it, one pixel of 5 (TSM,
+ * LiSPSM, XPSM) another surface: the table's two the floor, as the exact reference
+ * does, where they showed the background; the default scene's TSM the background where
+ * it showed the floor, and its LiSPSM and XPSM at mediump another surface where they
+ * showed the background (the reference: the floor); no shadow decision changed). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

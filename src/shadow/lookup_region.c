@@ -6,8 +6,8 @@
 #include <string.h>
 
 #define VOLUME_PLANES LX_LOOKUP_VOLUME_PLANES
-#define FACE_MAX 20 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 15 vertices */
-#define MAX_DIRECTIONS 6 /* a caster's image bounded in as many directions (image_directions) */
+#define FACE_MAX 28 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 23 vertices */
+#define MAX_DIRECTIONS 10 /* a caster's image bounded in as many directions (image_directions) */
 
 /* A box's six faces, -x, +x, -y, +y, -z, +z, as v3_box_corner's corners, each wound as a
  * box caster's mesh winds it (counter-clockwise seen from outside, mesh.c), so that a
@@ -160,16 +160,21 @@ static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, cons
 }
 
 /* The directions an image is bounded in, as coefficients of its x and y: x, y, x + y and
- * x - y (an octagon: tight for round shapes), and where the image of the n points c (clip
- * coordinates, w > 0) is long and thin, its long axis and the one across it too: a shadow
- * cast low, often at a slant, which the octagon bounds loosely. Returns their count. */
+ * x - y (an octagon), for a round caster (`round`) those halfway between too (a 16-gon:
+ * in a plane map a sphere's or cone's image is a long curved shape at a slant, which the
+ * octagon bounded loosely; under the light near the wall at 1920x1080 the floor's
+ * lookups fell from 8.18% of the pixels to 4.72%), and where the image of the n points c
+ * (clip coordinates, w > 0) is long and thin, its long axis and the one across it too: a
+ * shadow cast low, often at a slant. Returns their count. */
 #define LONG_THIN 4.0 /* the ratio of the points' variances along and across the long axis */
-static int image_directions(const vec4 *c, int n, double (*coef)[2])
+static int image_directions(const vec4 *c, int n, bool round, double (*coef)[2])
 {
-	static const double octagon[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
-	memcpy(coef, octagon, sizeof octagon);
+	static const double t = 0.41421356237309503; /* tan(pi / 8) */
+	const double sixteen[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, t}, {t, 1}, {-t, 1}, {1, -t}};
+	int nd = round ? 8 : 4;
+	memcpy(coef, sixteen, (size_t)nd * sizeof sixteen[0]);
 	if (n < 2)
-		return 4;
+		return nd;
 	double mx = 0, my = 0, sxx = 0, syy = 0, sxy = 0;
 	for (int k = 0; k < n; k++)
 		mx += c[k].x / c[k].w, my += c[k].y / c[k].w;
@@ -181,10 +186,10 @@ static int image_directions(const vec4 *c, int n, double (*coef)[2])
 	/* the covariance's eigenvalues, half +- root, and its long axis's angle */
 	double half = 0.5 * (sxx + syy), root = sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
 	if (!(half + root > LONG_THIN * (half - root)) || !isfinite(half + root))
-		return 4;
+		return nd;
 	double a = 0.5 * atan2(2 * sxy, sxx - syy), ca = cos(a), sa = sin(a);
-	coef[4][0] = ca, coef[4][1] = sa, coef[5][0] = -sa, coef[5][1] = ca;
-	return 6;
+	coef[nd][0] = ca, coef[nd][1] = sa, coef[nd + 1][0] = -sa, coef[nd + 1][1] = ca;
+	return nd + 2;
 }
 
 /* The box [lo, hi]'s part inside the rays `map` serves (its bounds), as the map's clip
@@ -319,7 +324,8 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 			c = served, nc = k, crosses = false;
 	}
 	double coef[MAX_DIRECTIONS][2], b0[MAX_DIRECTIONS], b1[MAX_DIRECTIONS], z0;
-	int nd = image_directions(c, crosses ? 0 : nc, coef); /* w > 0: served_points', or no crossing */
+	int nd = image_directions(c, crosses ? 0 : nc, !box_caster(f, id) && id >= f->scene->plane_count,
+				  coef); /* w > 0: served_points', or no crossing */
 	image_bounds(c, nc, crosses, coef, nd, b0, b1, &z0);
 	if (c == corner && !crosses && box_caster(f, id))
 		z0 = lx_fmax(z0, drawn_faces_depth(m, lo, hi, corner)); /* its faces the pass draws: beyond its nearest */

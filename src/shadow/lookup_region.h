@@ -65,7 +65,7 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
  * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
-#define LX_LOOKUP_VOLUME_PLANES 15 /* a caster's fourteen at most, and the eye's near plane */
+#define LX_LOOKUP_VOLUME_PLANES 23 /* a caster's twenty-two at most, and the eye's near plane */
 
 /* One frame's casters seen through each map, built once (lx_lookup_prepare) and asked
  * for each receiver: per map and caster the half-spaces where it can shadow a point
