@@ -162,8 +162,7 @@ static void check_scene(struct setup *s, const char *what, struct tally *tally)
 	static struct lx_lookup_volumes v;
 	lx_lookup_prepare(&s->frame, &s->atlas, &s->res, LX_LOOKUP_MARGIN_HIGHP, &v);
 	for (int m = 0; m < s->res.map_count; m++)
-		for (int c = 0; c < s->frame.object_count; c++)
-		{
+		for (int c = 0; c < s->frame.object_count; c++) {
 			/* an octagon's eight planes (a round caster's 16-gon's sixteen), depth, light, eye */
 			bool round = c >= s->scene.plane_count && s->scene.casters[c - s->scene.plane_count].shape != LX_BOX;
 			tally->long_thin += v.count[m][c] > (round ? 19 : 11);
@@ -1234,7 +1233,8 @@ static void check_sure(struct setup *s, const char *what, void *ctx)
 				bool is_box = s->scene.casters[c - s->scene.plane_count].shape == LX_BOX;
 				bool got_box = is_box && lx_sure_shadow_window(&s->frame, map, g->w, g->h, c, NULL, NULL, 8, id,
 										LX_LOOKUP_MARGIN_HIGHP, 1e-6, &box);
-				if (got && got_box) { /* the renderer's way for a box: its bounds' corners, no points */
+				if (got && is_box) { /* the renderer's way for a box: its bounds' corners, no points */
+					assert_true(got_box);
 					assert_int_equal(box.n, win.n);
 					for (int k = 0; k < win.n; k++)
 						assert_true(fabs(box.v[k].x - win.v[k].x) + fabs(box.v[k].y - win.v[k].y) < 1e-3);
