@@ -11,6 +11,11 @@
  * (0 when they do not meet). Duplicates are possible and harmless. */
 int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int max_out);
 
+/* The corners of box [lo, hi]'s six faces, each clipped by the np half-spaces
+ * planes[j] . (x, y, z, 1) >= 0 (a convex part of the box: the hull of these points),
+ * repeats and all, into out (at most max_out); returns their count. */
+int lx_box_clip_points(vec3 lo, vec3 hi, const vec4 *planes, int np, vec3 *out, int max_out);
+
 /* Sutherland-Hodgman: the part of convex polygon in[n] where p . (x, y, z, 1) >= 0, into
  * out (at most max_out vertices); returns its count. */
 int lx_clip_polygon(const vec3 *in, int n, vec4 p, vec3 *out, int max_out);

@@ -170,8 +170,9 @@ static void outline_bounds(const struct lx_frame *f, const mat4 *m, int id, cons
 #define LONG_THIN 4.0 /* the ratio of the points' variances along and across the long axis */
 static int image_directions(const vec4 *c, int n, bool caster, double (*coef)[2])
 {
-	static const double t = 0.41421356237309503; /* tan(pi / 8) */
-	const double sixteen[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, t}, {t, 1}, {-t, 1}, {1, -t}};
+	static const double sixteen[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, /* and at tan(pi / 8): */
+					     {1, 0.41421356237309503}, {0.41421356237309503, 1},
+					     {-0.41421356237309503, 1}, {1, -0.41421356237309503}};
 	int nd = caster ? 8 : 4;
 	memcpy(coef, sixteen, (size_t)nd * sizeof sixteen[0]);
 	if (n < 2)
