@@ -248,35 +248,50 @@ static void shadowed_points_are_looked_up(void **state)
 static long assert_unread(const struct setup *s, const struct lx_lookup_volumes *v, int id, int m, const char *what,
 			  long *unlit);
 
-/* The extremes: the eye a millimetre above the floor, the light inside a caster, on the
- * floor, under it, far away; each still a partition with every shadowed pixel in it, and
- * every caster the shadow pass leaves out of a map unread there. */
+/* The extremes, on the default scene: the eye a millimetre above the floor, the light
+ * inside a caster, on the floor, under it, far away, and a directional light along the
+ * floor (light: its direction then). */
+static const struct {
+	const char *name;
+	vec3 eye, at, light;
+	bool directional;
+} extremes[] = {
+	{"eye 1 mm above the floor", {0.5, 0.001, 3.5}, {0, 0.5, -3}, {1, 4, 2}, false},
+	{"light inside the sphere", {0, 2.5, 6}, {0, 0.5, 0}, {-1.2, 0.6, 0.4}, false},
+	{"light on the floor", {0, 2.5, 6}, {0, 0.5, 0}, {2, 0, 1}, false},
+	{"light under the floor", {0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}, false},
+	{"light far away", {0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}, false},
+	{"directional light along the floor", {0, 2.5, 6}, {0, 0.5, 0}, {1, -0.01, 0.2}, true},
+};
+enum { EXTREMES = sizeof extremes / sizeof extremes[0] };
+
+/* Extreme k set up for `method` into s, its name in what; false where the method makes
+ * no frame of it. */
+static bool build_extreme(struct setup *s, size_t k, const char *method, char *what, size_t len)
+{
+	lx_scene_default(&s->scene);
+	s->scene.camera.eye = extremes[k].eye, s->scene.camera.at = extremes[k].at;
+	s->scene.light = (struct lx_light){.directional = extremes[k].directional, .position = extremes[k].light,
+					   .direction = v3(0, -1, 0)};
+	if (extremes[k].directional)
+		v3_normalize(extremes[k].light, &s->scene.light.direction);
+	snprintf(what, len, "%s, %s", extremes[k].name, method);
+	return build(s, method, W, H, 0.0);
+}
+
+/* At the extremes each receiver is still a partition with every shadowed pixel in it,
+ * and every caster the shadow pass leaves out of a map unread there. */
 static void extremes_stay_conservative(void **state)
 {
 	(void)state;
-	struct {
-		const char *name;
-		vec3 eye, at, light;
-	} cases[] = {
-		{"eye 1 mm above the floor", {0.5, 0.001, 3.5}, {0, 0.5, -3}, {1, 4, 2}},
-		{"light inside the sphere", {0, 2.5, 6}, {0, 0.5, 0}, {-1.2, 0.6, 0.4}},
-		{"light on the floor", {0, 2.5, 6}, {0, 0.5, 0}, {2, 0, 1}},
-		{"light under the floor", {0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}},
-		{"light far away", {0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}},
-	};
 	struct tally t = {0};
 	long left_out = 0, unread_points = 0, unlit = 0;
-	for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+	for (size_t k = 0; k < EXTREMES; k++)
 		FOR_METHODS(method) {
 			struct setup s;
-			lx_scene_default(&s.scene);
-			s.scene.camera.eye = cases[k].eye, s.scene.camera.at = cases[k].at;
-			s.scene.light = (struct lx_light){.directional = false, .position = cases[k].light,
-							  .direction = v3(0, -1, 0)};
-			if (!build(&s, method, W, H, 0.0))
-				continue;
 			char what[96];
-			snprintf(what, sizeof what, "%s, %s", cases[k].name, method);
+			if (!build_extreme(&s, k, method, what, sizeof what))
+				continue;
 			check_scene(&s, what, &t);
 			/* and the shadow pass leaves a caster out of a map only where nothing reads it */
 			static struct lx_lookup_volumes v;
@@ -1269,26 +1284,12 @@ static void sure_shadows_lie_in_the_casters_shadows(void **state)
 			check_sure(&s, what, &t);
 			lx_meshes_free(&s.meshes);
 		}
-	/* and at the extremes: the eye a millimetre above the floor, the light inside a
-	 * caster, on the floor, under it, far away, directional along the floor */
-	const struct {
-		vec3 eye, at, light;
-		bool directional;
-	} ext[] = {{{0.5, 0.001, 3.5}, {0, 0.5, -3}, {1, 4, 2}, false},  {{0, 2.5, 6}, {0, 0.5, 0}, {-1.2, 0.6, 0.4}, false},
-		   {{0, 2.5, 6}, {0, 0.5, 0}, {2, 0, 1}, false},	  {{0, 2.5, 6}, {0, 0.5, 0}, {0, -2, 0}, false},
-		   {{0, 2.5, 6}, {0, 0.5, 0}, {1e6, 2e6, 1e6}, false}, {{0, 2.5, 6}, {0, 0.5, 0}, {1, -0.01, 0.2}, true}};
-	for (size_t k = 0; k < sizeof ext / sizeof ext[0]; k++)
+	/* and at the extremes */
+	for (size_t k = 0; k < EXTREMES; k++)
 		FOR_METHODS(method) {
-			lx_scene_default(&s.scene);
-			s.scene.camera.eye = ext[k].eye, s.scene.camera.at = ext[k].at;
-			s.scene.light = (struct lx_light){.directional = ext[k].directional, .position = ext[k].light,
-							  .direction = v3(0, -1, 0)};
-			if (ext[k].directional)
-				v3_normalize(ext[k].light, &s.scene.light.direction);
-			if (!build(&s, method, W, H, 0.0))
-				continue;
 			char what[96];
-			snprintf(what, sizeof what, "default scene, extreme %zu, %s", k, method);
+			if (!build_extreme(&s, k, method, what, sizeof what))
+				continue;
 			check_sure(&s, what, &t);
 			lx_meshes_free(&s.meshes);
 		}
