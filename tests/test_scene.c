@@ -485,7 +485,7 @@ static int check_fans(const struct lx_mesh *me, int id, bool round, uint64_t *se
 			fail_msg("object %d, light %d: the fan covers %.12g of the faces' %.12g (a triangle %.3g the other way)",
 				 id, trial, covered, faces, least);
 		/* a convex caster's silhouette is convex: drawn as its polygon, the same image */
-		int cut = lx_fan_as_polygon(fan, count, pos, (vec4){L.x, L.y, L.z, 1}, next, loop);
+		int cut = lx_fan_as_polygon(fan, count, pos, (vec4){L.x, L.y, L.z, 1}, NULL, next, loop);
 		assert_int_equal(cut, count - 6);
 		covered = least = 0;
 		for (int k = 0; k < cut; k += 3) {
@@ -556,7 +556,7 @@ static int octagon_fan(double r2, unsigned short *fan, float *pos, int *next, un
 		fan[3 * i] = 8, fan[3 * i + 1] = (unsigned short)i, fan[3 * i + 2] = (unsigned short)((i + 1) % 8);
 	}
 	pos[24] = pos[25] = pos[26] = 0; /* the apex */
-	return lx_fan_as_polygon(fan, 24, pos, (vec4){0, 0, 5, 1}, next, loop);
+	return lx_fan_as_polygon(fan, 24, pos, (vec4){0, 0, 5, 1}, NULL, next, loop);
 }
 
 /* A fan's polygon replaces it only where convex: a corner pulled in past its neighbours'
@@ -594,6 +594,63 @@ static void fan_polygons_only_where_convex(void **state)
 			fan_area += (double)pos[3 * ((i + 1) % 8)] * pos[3 * i + 1] - (double)pos[3 * i] * pos[3 * ((i + 1) % 8) + 1];
 		assert_near(area, -fan_area, 1e-6);
 	}
+}
+
+/* Half the length of the inner edges of n indices of triangles (pos: x, y at z = 0), each
+ * inner edge counted in both its triangles; the summed area (twice, signed) in *area. */
+static double inner_edges(const unsigned short *tri, int n, const float *pos, double *area)
+{
+	double all = 0, outer = 0;
+	*area = 0;
+	for (int k = 0; k < n; k += 3)
+		for (int e = 0; e < 3; e++) {
+			const float *a = pos + 3 * tri[k + e], *b = pos + 3 * tri[k + (e + 1) % 3], *c = pos + 3 * tri[k + (e + 2) % 3];
+			all += hypot(b[0] - a[0], b[1] - a[1]);
+			int d = abs(tri[k + e] - tri[k + (e + 1) % 3]);
+			if (d == 1 || d == 5) /* neighbours round the hexagon */
+				outer += hypot(b[0] - a[0], b[1] - a[1]);
+			if (e == 0)
+				*area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+		}
+	return (all - outer) / 2;
+}
+
+/* A box's silhouette as long as a table leg's shadow under a low light (a hexagon 10 m by
+ * 10 cm) is cut at its shortest inner edges where the image is known: one along its
+ * length and two across its ends, against two along it the cheap way; both cover the
+ * hexagon once, wound as the fan. */
+static void short_polygons_cut_along_their_length_once(void **state)
+{
+	(void)state;
+	/* clockwise seen from the light at (0, 0, 5), as a box's faces turned away are */
+	const float corner[6][2] = {{0, 0.05f}, {10, 0.05f}, {10.05f, 0}, {10, -0.05f}, {0, -0.05f}, {-0.05f, 0}};
+	float pos[21];
+	for (int i = 0; i < 6; i++)
+		pos[3 * i] = corner[i][0], pos[3 * i + 1] = corner[i][1], pos[3 * i + 2] = 0;
+	pos[18] = 5, pos[19] = 0, pos[20] = 0; /* the apex */
+	mat4 image = m4_identity(); /* x and y as they are, w = 1 */
+	double cut[2], area[2];
+	for (int way = 0; way < 2; way++) {
+		unsigned short fan[18], loop[6];
+		int next[7];
+		for (int i = 0; i < 7; i++)
+			next[i] = -1;
+		for (int i = 0; i < 6; i++)
+			fan[3 * i] = 6, fan[3 * i + 1] = (unsigned short)i, fan[3 * i + 2] = (unsigned short)((i + 1) % 6);
+		int n = lx_fan_as_polygon(fan, 18, pos, (vec4){0, 0, 5, 1}, way ? &image : NULL, next, loop);
+		assert_int_equal(n, 12);
+		for (int k = 0; k < n; k++)
+			assert_true(fan[k] < 6);
+		for (int k = 0; k < n; k += 3) { /* each clockwise, as the fan */
+			const float *a = pos + 3 * fan[k], *b = pos + 3 * fan[k + 1], *c = pos + 3 * fan[k + 2];
+			assert_true((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) < 0);
+		}
+		cut[way] = inner_edges(fan, n, pos, &area[way]);
+	}
+	print_message("inner edges: %.3f m the cheap way, %.3f m the shortest\n", cut[0], cut[1]);
+	assert_near(area[0], area[1], 1e-6);
+	assert_near(area[1], -2 * (10 * 0.1 + 0.05 * 0.1), 1e-5); /* twice the hexagon's, clockwise */
+	assert_true(cut[1] < 10.3 && cut[0] > 20);
 }
 
 /* A flat-faced object (a plane, a box) carries each face's normal as its shading normal,
@@ -941,6 +998,7 @@ int main(void)
 		cmocka_unit_test(caster_meshes_are_closed_and_outward),
 		cmocka_unit_test(silhouette_fans_cover_the_faces_turned_away),
 		cmocka_unit_test(fan_polygons_only_where_convex),
+		cmocka_unit_test(short_polygons_cut_along_their_length_once),
 		cmocka_unit_test(flat_meshes_carry_their_face_normals),
 		cmocka_unit_test(draw_order_draws_what_hides_first),
 		cmocka_unit_test(rows_inside_a_polygon),

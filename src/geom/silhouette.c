@@ -149,7 +149,55 @@ static int fan_loop(const unsigned short *fan, int count, int *next, unsigned sh
 	return n == m && v == fan[1] ? n : -1;
 }
 
-int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop)
+/* Where a position's image lies (x, y) as the matrix m (its light clip) projects it; false
+ * behind the light. */
+static bool image_of(const float *pos, const mat4 *m, unsigned short v, vec2 *at)
+{
+	vec4 c = m4_mul_v4(m, point_at(pos, v));
+	if (!(c.w > 0))
+		return false;
+	*at = (vec2){c.x / c.w, c.y / c.w};
+	return true;
+}
+
+/* The most corners of a polygon cut at its shortest inner edges (lx_fan_as_polygon): a
+ * box's silhouette has four or six; a round caster's, more, cut the cheap way. */
+#define SHORT_CUT_MAX 8
+
+/* Convex polygon loop[0, m) (3 <= m <= SHORT_CUT_MAX; its corners' images at[]) cut into
+ * the m - 2 triangles whose inner edges are shortest in all (the classic programme over
+ * the parts between two corners), each wound in the loop's order, into out; returns the
+ * indices written. */
+static int cut_shortest(const unsigned short *loop, const vec2 *at, int m, unsigned short *out)
+{
+	double best[SHORT_CUT_MAX][SHORT_CUT_MAX] = {{0}};
+	int split[SHORT_CUT_MAX][SHORT_CUT_MAX] = {{0}};
+	for (int len = 2; len < m; len++)
+		for (int i = 0; i + len < m; i++) {
+			int j = i + len;
+			best[i][j] = INFINITY, split[i][j] = i + 1;
+			for (int k = i + 1; k < j; k++) {
+				double c = best[i][k] + best[k][j] + (k - i > 1 ? hypot(at[i].x - at[k].x, at[i].y - at[k].y) : 0) +
+					   (j - k > 1 ? hypot(at[k].x - at[j].x, at[k].y - at[j].y) : 0);
+				if (c < best[i][j])
+					best[i][j] = c, split[i][j] = k;
+			}
+		}
+	int part[4 * SHORT_CUT_MAX], np = 0, n = 0; /* (i, j) pairs still to cut */
+	part[np++] = 0, part[np++] = m - 1;
+	while (np > 0) {
+		int j = part[--np], i = part[--np];
+		if (j - i < 2)
+			continue;
+		int k = split[i][j];
+		out[n++] = loop[i], out[n++] = loop[k], out[n++] = loop[j];
+		part[np++] = i, part[np++] = k, part[np++] = k, part[np++] = j;
+	}
+	return n;
+}
+
+int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, const mat4 *light_clip, int *next,
+		      unsigned short *loop)
 {
 	int m = fan_loop(fan, count, next, loop);
 	if (m < 0)
@@ -163,6 +211,12 @@ int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 cen
 		if (!(way * v4_dot(centre, v4_cross3(a, b, c)) >= 0))
 			return count; /* a corner turns the other way: not convex */
 	}
+	vec2 at[SHORT_CUT_MAX];
+	bool seen = light_clip && m <= SHORT_CUT_MAX;
+	for (int i = 0; seen && i < m; i++)
+		seen = image_of(pos, light_clip, loop[i], &at[i]) && isfinite(at[i].x) && isfinite(at[i].y);
+	if (seen)
+		return cut_shortest(loop, at, m, fan);
 	int out = 0;
 	while (m > 2) { /* (0, 1, 2), (2, 3, 4), ...; the even corners stay for the next round */
 		int kept = 0;
@@ -174,17 +228,6 @@ int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 cen
 		m = kept;
 	}
 	return out;
-}
-
-/* Where a position's image lies (x, y) as the matrix m (its light clip) projects it; false
- * behind the light. */
-static bool image_of(const float *pos, const mat4 *m, unsigned short v, vec2 *at)
-{
-	vec4 c = m4_mul_v4(m, point_at(pos, v));
-	if (!(c.w > 0))
-		return false;
-	*at = (vec2){c.x / c.w, c.y / c.w};
-	return true;
 }
 
 /* Twice the signed area of triangle (a, b, c): positive where it turns counter-clockwise. */

@@ -47,11 +47,17 @@ int lx_silhouette_fan(const unsigned short *index, const int *adj, int triangles
  * edge crosses once for each triangle beside it; against the fan's spokes, one from the
  * apex to each corner, these edges are about half as long in all (20 radii for 32
  * corners, 23 for 46), and there are two triangles fewer. The triangles lie inside a
- * convex caster (their corners are its vertices), as the apex's did. pos: the indices' positions (x, y, z floats); next:
+ * convex caster (their corners are its vertices), as the apex's did. A polygon of at most
+ * eight corners (a box's silhouette has four or six), all in front of the light, is cut
+ * instead at the inner edges shortest in all as light_clip (not NULL) projects them, its
+ * image's units what counts (the map's lixels): a box's image as long as a table leg's
+ * shadow under a low light has one inner edge along it, against two the other way. pos:
+ * the indices' positions (x, y, z floats); next:
  * scratch of one int per position, each -1, left so; loop: scratch of count / 3 indices.
  * Returns the new count of indices, or count with the fan unchanged where the polygon is
  * not convex. */
-int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, int *next, unsigned short *loop);
+int lx_fan_as_polygon(unsigned short *fan, int count, const float *pos, vec4 centre, const mat4 *light_clip, int *next,
+		      unsigned short *loop);
 
 /* The band between two fans lx_silhouette_fan wrote over nested sets of one convex mesh's
  * triangles (outer: a set, inner: a part of it, each one disk, so each fan's boundary is
