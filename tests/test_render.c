@@ -1493,13 +1493,19 @@ struct fan_sweep {
 	long differ, more_shadow, frames;
 };
 
+/* A renderer's test hook set for a sweep's run 1, cleared for run 0. */
+static void hook_in_run(const char *hook, int k)
+{
+	if (k == 1)
+		setenv(hook, "1", 1);
+	else
+		unsetenv(hook);
+}
+
 static void fan_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
 {
 	(void)ctx, (void)o, (void)caps;
-	if (k == 1)
-		setenv("LIXEL_ROUND_CASTERS_AS_FACES", "1", 1);
-	else
-		unsetenv("LIXEL_ROUND_CASTERS_AS_FACES");
+	hook_in_run("LIXEL_ROUND_CASTERS_AS_FACES", k);
 }
 
 static void fan_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
@@ -1562,10 +1568,7 @@ struct box_sweep {
 static void box_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
 {
 	(void)ctx, (void)o, (void)caps;
-	if (k == 1)
-		setenv("LIXEL_BOXES_AS_FACES", "1", 1);
-	else
-		unsetenv("LIXEL_BOXES_AS_FACES");
+	hook_in_run("LIXEL_BOXES_AS_FACES", k);
 }
 
 static void box_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,

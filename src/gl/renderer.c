@@ -1044,7 +1044,7 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	 * triangles for its faces' four or six, cut at its shortest inner edges: under the
 	 * table scene's low light each leg's image runs the whole floor map, and each block an
 	 * inner edge crosses is shaded once for each triangle beside it (the shadow passes
-	 * 0.04 ms shorter at 1024x1024, measured frame by frame). Its depths lie inside it,
+	 * 0.05 ms shorter at 1024x1024, measured frame by frame). Its depths lie inside it,
 	 * nearer than its far side: a receiver touching it (a leg's foot on the floor) may
 	 * compare as shadowed over a lixel more, so not in coarser maps */
 	bool round = round_caster(r, id);
@@ -1131,9 +1131,9 @@ static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const st
 			pl->drawn[i][id] = lx_lookup_caster_maps(&r->lookup, id, r->d.lookup_everywhere);
 			/* the maps its own main-pass draws read, asked as object_draws asks with its
 			 * own margin, no wider than this one's: it reads none this keeps out. Asked
-			 * only where keep_back_faces takes it, for a round caster's fan, in a map
-			 * that draws it (lx_lookup_any clips the receiver's faces by each volume:
-			 * asked of every object, 6-17 us of the table's shadow_draws) */
+			 * only where keep_back_faces takes it, for a caster's fan (a box's polygon),
+			 * in a map that draws it (lx_lookup_any clips the receiver's faces by each
+			 * volume: asked of every object, 6-17 us of the table's shadow_draws) */
 			unsigned reads = pl->drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
