@@ -596,18 +596,19 @@ static void fan_polygons_only_where_convex(void **state)
 	}
 }
 
-/* Half the length of the inner edges of n indices of triangles (pos: x, y at z = 0), each
- * inner edge counted in both its triangles; the summed area (twice, signed) in *area. */
-static double inner_edges(const unsigned short *tri, int n, const float *pos, double *area)
+/* The length of the inner edges of a polygon's n corners (0 to n - 1 round it) cut into
+ * triangles (k indices of tri; pos: x, y at z = 0), each inner edge counted once; the
+ * triangles' summed area (twice, signed) in *area. */
+static double inner_edges(const unsigned short *tri, int k, int n, const float *pos, double *area)
 {
 	double all = 0, outer = 0;
 	*area = 0;
-	for (int k = 0; k < n; k += 3)
+	for (int t = 0; t < k; t += 3)
 		for (int e = 0; e < 3; e++) {
-			const float *a = pos + 3 * tri[k + e], *b = pos + 3 * tri[k + (e + 1) % 3], *c = pos + 3 * tri[k + (e + 2) % 3];
+			const float *a = pos + 3 * tri[t + e], *b = pos + 3 * tri[t + (e + 1) % 3], *c = pos + 3 * tri[t + (e + 2) % 3];
 			all += hypot(b[0] - a[0], b[1] - a[1]);
-			int d = abs(tri[k + e] - tri[k + (e + 1) % 3]);
-			if (d == 1 || d == 5) /* neighbours round the hexagon */
+			int d = abs(tri[t + e] - tri[t + (e + 1) % 3]);
+			if (d == 1 || d == n - 1) /* neighbours round the polygon: an outer edge, in one triangle */
 				outer += hypot(b[0] - a[0], b[1] - a[1]);
 			if (e == 0)
 				*area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
@@ -615,42 +616,70 @@ static double inner_edges(const unsigned short *tri, int n, const float *pos, do
 	return (all - outer) / 2;
 }
 
+/* Polygon pos[0, n) (n corners, then the apex) as its fan, cut by lx_fan_as_polygon with
+ * `image` (NULL: the cheap way): each triangle of its corners and wound as the fan
+ * (clockwise), n - 2 of them; returns their inner edges' length, their area in *area. */
+static double cut_polygon(const float *pos, int n, const mat4 *image, double *area)
+{
+	unsigned short fan[24], loop[8];
+	int next[9];
+	for (int i = 0; i <= n; i++)
+		next[i] = -1;
+	for (int i = 0; i < n; i++)
+		fan[3 * i] = (unsigned short)n, fan[3 * i + 1] = (unsigned short)i, fan[3 * i + 2] = (unsigned short)((i + 1) % n);
+	int k = lx_fan_as_polygon(fan, 3 * n, pos, (vec4){0, 0, 5, 1}, image, next, loop);
+	assert_int_equal(k, 3 * (n - 2));
+	for (int i = 0; i < k; i++)
+		assert_true(fan[i] < n);
+	for (int i = 0; i < k; i += 3) {
+		const float *a = pos + 3 * fan[i], *b = pos + 3 * fan[i + 1], *c = pos + 3 * fan[i + 2];
+		assert_true((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) < 0);
+	}
+	return inner_edges(fan, k, n, pos, area);
+}
+
 /* A box's silhouette as long as a table leg's shadow under a low light (a hexagon 10 m by
  * 10 cm) is cut at its shortest inner edges where the image is known: one along its
  * length and two across its ends, against two along it the cheap way; both cover the
- * hexagon once, wound as the fan. */
+ * hexagon once, wound as the fan. So too 300 random convex polygons of 4 to 8 corners
+ * (on stretched ellipses): the same area, inner edges no longer than the cheap way's. */
 static void short_polygons_cut_along_their_length_once(void **state)
 {
 	(void)state;
 	/* clockwise seen from the light at (0, 0, 5), as a box's faces turned away are */
 	const float corner[6][2] = {{0, 0.05f}, {10, 0.05f}, {10.05f, 0}, {10, -0.05f}, {0, -0.05f}, {-0.05f, 0}};
-	float pos[21];
+	float pos[27];
 	for (int i = 0; i < 6; i++)
 		pos[3 * i] = corner[i][0], pos[3 * i + 1] = corner[i][1], pos[3 * i + 2] = 0;
 	pos[18] = 5, pos[19] = 0, pos[20] = 0; /* the apex */
 	mat4 image = m4_identity(); /* x and y as they are, w = 1 */
-	double cut[2], area[2];
-	for (int way = 0; way < 2; way++) {
-		unsigned short fan[18], loop[6];
-		int next[7];
-		for (int i = 0; i < 7; i++)
-			next[i] = -1;
-		for (int i = 0; i < 6; i++)
-			fan[3 * i] = 6, fan[3 * i + 1] = (unsigned short)i, fan[3 * i + 2] = (unsigned short)((i + 1) % 6);
-		int n = lx_fan_as_polygon(fan, 18, pos, (vec4){0, 0, 5, 1}, way ? &image : NULL, next, loop);
-		assert_int_equal(n, 12);
-		for (int k = 0; k < n; k++)
-			assert_true(fan[k] < 6);
-		for (int k = 0; k < n; k += 3) { /* each clockwise, as the fan */
-			const float *a = pos + 3 * fan[k], *b = pos + 3 * fan[k + 1], *c = pos + 3 * fan[k + 2];
-			assert_true((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) < 0);
-		}
-		cut[way] = inner_edges(fan, n, pos, &area[way]);
-	}
-	print_message("inner edges: %.3f m the cheap way, %.3f m the shortest\n", cut[0], cut[1]);
+	double area[2], cheap = cut_polygon(pos, 6, NULL, &area[0]), shortest = cut_polygon(pos, 6, &image, &area[1]);
+	print_message("inner edges: %.3f m the cheap way, %.3f m the shortest\n", cheap, shortest);
 	assert_near(area[0], area[1], 1e-6);
 	assert_near(area[1], -2 * (10 * 0.1 + 0.05 * 0.1), 1e-5); /* twice the hexagon's, clockwise */
-	assert_true(cut[1] < 10.3 && cut[0] > 20);
+	assert_true(shortest < 10.3 && cheap > 20);
+	uint64_t seed = 3;
+	int shorter = 0;
+	for (int trial = 0; trial < 300; trial++) {
+		int n = 4 + trial % 5;
+		double a = 0.2 + 5 * test_rand(&seed), b = 0.2 + 5 * test_rand(&seed), turn = 2 * M_PI * test_rand(&seed);
+		double step[8], sum = 0;
+		for (int i = 0; i < n; i++)
+			sum += step[i] = 0.3 + test_rand(&seed);
+		double t = 0;
+		for (int i = 0; i < n; i++, t += step[i - 1] / sum) { /* clockwise round the ellipse */
+			double x = a * cos(-2 * M_PI * t), y = b * sin(-2 * M_PI * t);
+			pos[3 * i] = (float)(x * cos(turn) - y * sin(turn)), pos[3 * i + 1] = (float)(x * sin(turn) + y * cos(turn));
+			pos[3 * i + 2] = 0;
+		}
+		pos[3 * n] = pos[3 * n + 1] = pos[3 * n + 2] = 0; /* the apex, inside */
+		cheap = cut_polygon(pos, n, NULL, &area[0]), shortest = cut_polygon(pos, n, &image, &area[1]);
+		assert_near(area[0], area[1], 1e-4 * fabs(area[0]));
+		assert_true(shortest <= cheap * (1 + 1e-9));
+		shorter += shortest < cheap * (1 - 1e-6);
+	}
+	print_message("300 random convex polygons: the shortest cut shorter than the cheap way in %d\n", shorter);
+	assert_true(shorter > 50);
 }
 
 /* A flat-faced object (a plane, a box) carries each face's normal as its shading normal,
