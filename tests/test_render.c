@@ -1394,6 +1394,20 @@ static void face_setup(void *ctx, int k, struct lx_method_options *o, const stru
 	o->caster_face_depth = k == 0;
 }
 
+/* Each of the two runs' decisions (dc) against the exact reference of frame f (into ref_obj
+ * and ref_sh): the pixels decided otherwise, false or missing shadow, into wrong[k]. */
+static void runs_against_reference(const struct lx_frame *f, const struct decisions *dc, int16_t *ref_obj,
+				   uint8_t *ref_sh, long wrong[2])
+{
+	long n = (long)f->view.width * f->view.height;
+	assert_true(lx_reference_image(f, ref_obj, ref_sh, 2));
+	for (int k = 0; k < 2; k++) {
+		struct lx_mismatch mm;
+		lx_mismatch_compare(ref_obj, ref_sh, dc->obj[k], dc->sh[k], n, &mm);
+		wrong[k] = mm.false_shadow + mm.missing_shadow;
+	}
+}
+
 static void face_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
 		       long differ)
 {
@@ -1408,13 +1422,12 @@ static void face_frame(void *ctx, const char *scene, const char *method, const c
 				 method, i, dc->obj[0][i], dc->sh[0][i] ? "shadowed" : "lit", dc->sh[1][i] ? "shadowed" : "lit");
 		s->lit++;
 	}
-	assert_true(lx_reference_image(f, s->ref_obj, s->ref_sh, 2));
+	long wrong[2];
+	runs_against_reference(f, dc, s->ref_obj, s->ref_sh, wrong);
 	for (int k = 0; k < 2; k++) {
-		struct lx_mismatch mm;
-		lx_mismatch_compare(s->ref_obj, s->ref_sh, dc->obj[k], dc->sh[k], n, &mm);
-		s->wrong[k] += mm.false_shadow + mm.missing_shadow;
+		s->wrong[k] += wrong[k];
 		if (!strcmp(scene, "thick") && !strcmp(method, "plane") && !strcmp(config, "directional"))
-			s->on_plane_map[k] = mm.false_shadow + mm.missing_shadow;
+			s->on_plane_map[k] = wrong[k];
 	}
 }
 
@@ -1485,41 +1498,67 @@ static void eight_varyings_decide_alike(void **state)
 	decisions_free(&dc);
 }
 
-/* round_casters_fanned_decide_as_faces' sweep: run 0 the fans (the default), run 1 every
- * round caster drawn as its faces turned away (LIXEL_ROUND_CASTERS_AS_FACES=1), all else
- * alike: the fan's outline still cuts the sure shadows. */
-struct fan_sweep {
+/* A sweep with a renderer's test hook (`hook`=1) in run 1 and not in run 0, all else
+ * alike: round_casters_fanned_decide_as_faces' (LIXEL_ROUND_CASTERS_AS_FACES: every round
+ * caster drawn as its faces turned away; the fan's outline still cuts the sure shadows)
+ * and box_polygons_decide_no_worse's (LIXEL_BOXES_AS_FACES: every box so). Counted: the
+ * pixels the runs decide otherwise, those shadowed in run 0 alone (more_shadow), and
+ * with ref_sh, where they part, each run's pixels otherwise than the exact reference. */
+struct hook_sweep {
+	const char *hook;
 	struct decisions *dc;
-	long differ, more_shadow, frames;
+	uint8_t *ref_sh;
+	int16_t *ref_obj;
+	long differ, more_shadow, frames, wrong[2];
 };
 
-/* A renderer's test hook set for a sweep's run 1, cleared for run 0. */
-static void hook_in_run(const char *hook, int k)
+static void hook_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
 {
+	(void)o, (void)caps;
+	const struct hook_sweep *s = ctx;
 	if (k == 1)
-		setenv(hook, "1", 1);
+		setenv(s->hook, "1", 1);
 	else
-		unsetenv(hook);
+		unsetenv(s->hook);
 }
 
-static void fan_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
+static void hook_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
+		       long differ)
 {
-	(void)ctx, (void)o, (void)caps;
-	hook_in_run("LIXEL_ROUND_CASTERS_AS_FACES", k);
-}
-
-static void fan_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
-		      long differ)
-{
-	struct fan_sweep *s = ctx;
-	long n = (long)f->view.width * f->view.height, more = 0;
-	for (long i = 0; differ && i < n; i++)
+	struct hook_sweep *s = ctx;
+	long n = (long)f->view.width * f->view.height, more = 0, wrong[2] = {0, 0};
+	s->differ += differ, s->frames++;
+	if (!differ)
+		return;
+	for (long i = 0; i < n; i++)
 		more += s->dc->sh[0][i] && !s->dc->sh[1][i];
-	if (differ)
-		print_message("%s scene, %s, %s: %ld pixels decided otherwise, %ld of them shadowed with the fans that the "
-			      "faces leave lit\n",
-			      scene, config, method, differ, more);
-	s->differ += differ, s->more_shadow += more, s->frames++;
+	s->more_shadow += more;
+	if (s->ref_sh) {
+		runs_against_reference(f, s->dc, s->ref_obj, s->ref_sh, wrong);
+		s->wrong[0] += wrong[0], s->wrong[1] += wrong[1];
+	}
+	print_message("%s scene, %s, %s: %ld pixels decided otherwise, %ld of them shadowed without %s alone; otherwise "
+		      "than the reference %ld and %ld\n",
+		      scene, config, method, differ, more, s->hook, wrong[0], wrong[1]);
+}
+
+/* The two paths the hook sweeps take: highp (auto) unfiltered; the widest reach
+ * (pcf3x3) on mediump's wider margin. */
+static const struct {
+	enum lx_filter filter;
+	enum lx_depth_precision precision;
+	const char *name;
+} hook_paths[2] = {{LX_FILTER_NONE, LX_DEPTH_AUTO, "auto"}, {LX_FILTER_PCF3X3, LX_DEPTH_MEDIUMP, "mediump"}};
+
+/* Sweep s (its hook, its decisions at w x h) on hook_paths[i]; the hook left unset. */
+static long sweep_hook(struct hook_sweep *s, int i, int w, int h)
+{
+	long shadowed = 0;
+	sweep_pairs(s->dc,
+		    &(struct pair_sweep){w, h, hook_setup, hook_frame, s, true, hook_paths[i].filter, hook_paths[i].precision},
+		    &shadowed);
+	unsetenv(s->hook);
+	return shadowed;
 }
 
 /* A round caster drawn as a fan over its faces turned away (or that fan's polygon), with
@@ -1539,56 +1578,17 @@ static void round_casters_fanned_decide_as_faces(void **state)
 	(void)state;
 	enum { w = 320, h = 240 };
 	struct decisions dc = decisions_alloc(w, h);
-	for (int i = 0; i < 2; i++) { /* highp (auto) unfiltered; the widest reach, on mediump's wider margin */
-		enum lx_filter fl = i ? LX_FILTER_PCF3X3 : LX_FILTER_NONE;
-		struct fan_sweep s = {.dc = &dc};
-		long shadowed = 0;
-		enum lx_depth_precision precision = i ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO;
-		sweep_pairs(&dc, &(struct pair_sweep){w, h, fan_setup, fan_frame, &s, true, fl, precision}, &shadowed);
-		unsetenv("LIXEL_ROUND_CASTERS_AS_FACES");
+	for (int i = 0; i < 2; i++) {
+		struct hook_sweep s = {.hook = "LIXEL_ROUND_CASTERS_AS_FACES", .dc = &dc};
+		long shadowed = sweep_hook(&s, i, w, h);
 		print_message("fans against faces, %s, filter %s: %ld frames, %ld pixels decided otherwise, %ld of them "
 			      "shadowed with the fans alone (%ld shadowed pixels)\n",
-			      i ? "mediump" : "auto", lx_filter_name(fl), s.frames, s.differ, s.more_shadow, shadowed);
+			      hook_paths[i].name, lx_filter_name(hook_paths[i].filter), s.frames, s.differ, s.more_shadow,
+			      shadowed);
 		assert_true(s.frames > 100 && shadowed > 10000);
 		assert_int_equal(s.differ, 0);
 	}
 	decisions_free(&dc);
-}
-
-/* box_polygons_decide_no_worse's sweep: run 0 the boxes' polygons (the default), run 1
- * every box drawn as its faces turned away (LIXEL_BOXES_AS_FACES=1); where they part, both
- * against the exact reference. */
-struct box_sweep {
-	struct decisions *dc;
-	uint8_t *ref_sh;
-	int16_t *ref_obj;
-	long differ, frames, wrong[2];
-};
-
-static void box_setup(void *ctx, int k, struct lx_method_options *o, const struct lx_gl_caps **caps)
-{
-	(void)ctx, (void)o, (void)caps;
-	hook_in_run("LIXEL_BOXES_AS_FACES", k);
-}
-
-static void box_frame(void *ctx, const char *scene, const char *method, const char *config, const struct lx_frame *f,
-		      long differ)
-{
-	struct box_sweep *s = ctx;
-	long n = (long)f->view.width * f->view.height, wrong[2];
-	s->differ += differ, s->frames++;
-	if (!differ)
-		return;
-	assert_true(lx_reference_image(f, s->ref_obj, s->ref_sh, 2));
-	for (int k = 0; k < 2; k++) {
-		struct lx_mismatch mm;
-		lx_mismatch_compare(s->ref_obj, s->ref_sh, s->dc->obj[k], s->dc->sh[k], n, &mm);
-		wrong[k] = mm.false_shadow + mm.missing_shadow;
-		s->wrong[k] += wrong[k];
-	}
-	print_message("%s scene, %s, %s: %ld pixels decided otherwise; otherwise than the reference %ld with the "
-		      "polygons, %ld with the faces\n",
-		      scene, config, method, differ, wrong[0], wrong[1]);
 }
 
 /* A box drawn into a plane's map it does not read as its silhouette's polygon (four or
@@ -1609,15 +1609,12 @@ static void box_polygons_decide_no_worse(void **state)
 	int16_t *ref_obj = malloc((size_t)w * h * sizeof(int16_t));
 	assert_true(ref_sh && ref_obj);
 	for (int i = 0; i < 2; i++) {
-		enum lx_filter fl = i ? LX_FILTER_PCF3X3 : LX_FILTER_NONE;
-		struct box_sweep s = {.dc = &dc, .ref_sh = ref_sh, .ref_obj = ref_obj};
-		long shadowed = 0;
-		enum lx_depth_precision precision = i ? LX_DEPTH_MEDIUMP : LX_DEPTH_AUTO;
-		sweep_pairs(&dc, &(struct pair_sweep){w, h, box_setup, box_frame, &s, true, fl, precision}, &shadowed);
-		unsetenv("LIXEL_BOXES_AS_FACES");
+		struct hook_sweep s = {.hook = "LIXEL_BOXES_AS_FACES", .dc = &dc, .ref_sh = ref_sh, .ref_obj = ref_obj};
+		long shadowed = sweep_hook(&s, i, w, h);
 		print_message("box polygons against faces, %s, filter %s: %ld frames, %ld pixels decided otherwise (%ld "
 			      "shadowed pixels); there otherwise than the reference %ld with the polygons, %ld with the faces\n",
-			      i ? "mediump" : "auto", lx_filter_name(fl), s.frames, s.differ, shadowed, s.wrong[0], s.wrong[1]);
+			      hook_paths[i].name, lx_filter_name(hook_paths[i].filter), s.frames, s.differ, shadowed, s.wrong[0],
+			      s.wrong[1]);
 		assert_true(s.frames > 100 && shadowed > 10000);
 		assert_true(s.differ * 10000 < shadowed); /* a pixel here and there */
 		assert_true(s.wrong[0] <= s.wrong[1]);

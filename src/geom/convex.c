@@ -94,7 +94,7 @@ int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int
 				out[n++] = bfaces[f][i];
 		return n;
 	}
-/* The box's planes written directly: a flat box (zero height) keeps both y planes. */
+	/* The box's planes written directly: a flat box (zero height) keeps both y planes. */
 	vec4 bplanes[6] = {{1, 0, 0, -bmin.x}, {-1, 0, 0, bmax.x}, {0, 1, 0, -bmin.y},
 			   {0, -1, 0, bmax.y}, {0, 0, 1, -bmin.z}, {0, 0, -1, bmax.z}};
 	/* Every vertex of the intersection lies on a face of one volume, inside the other. */

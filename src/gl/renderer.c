@@ -1083,12 +1083,12 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 		strip = lx_fan_band_strip(r->band_fan, outer, r->fan_index, k, r->fan_pos[id], &lc, r->fan_next, r->band_loop,
 					  r->band_work, r->band_strip, room);
 	}
-	/* the object's image in the map's lixels, for a short polygon's cut */
-	mat4 scale = m4_identity();
-	scale.m[0] = 0.5 * g->w, scale.m[5] = 0.5 * g->h;
-	mat4 lixels = m4_mul(&scale, &lc);
-	if (k > 0) /* its polygon where convex: the same lixels, shorter inner edges */
+	if (k > 0) { /* its polygon where convex: the same lixels, shorter inner edges (cut by its image in lixels) */
+		mat4 scale = m4_identity();
+		scale.m[0] = 0.5 * g->w, scale.m[5] = 0.5 * g->h;
+		mat4 lixels = m4_mul(&scale, &lc);
 		k = lx_fan_as_polygon(r->fan_index, k, r->fan_pos[id], centre, &lixels, r->fan_next, r->fan_loop);
+	}
 	if (k >= faces)
 		k = -1; /* a box's fan that did not turn polygon */
 	if (k > 0 && reads_itself)

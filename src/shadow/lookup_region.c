@@ -295,10 +295,9 @@ static double drawn_faces_depth(const mat4 *m, vec3 lo, vec3 hi, const vec4 *c)
 
 /* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
  * image bounded in x, y, x + y and x - y (an octagon; a caster's a 16-gon,
- * image_directions), and
- * along and across its long axis where it is long and thin, grown by the margin and cut
- * to the rays the map serves, swept beyond the caster's nearest depth. Returns the count,
- * or -1 when it shadows nothing there. */
+ * image_directions), and along and across its long axis where it is long and thin,
+ * grown by the margin and cut to the rays the map serves, swept beyond the caster's
+ * nearest depth. Returns the count, or -1 when it shadows nothing there. */
 static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *map, int id, const double margin[2],
 			 vec4 *pl)
 {
