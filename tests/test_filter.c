@@ -186,7 +186,11 @@ static void same_as_highp(const char *texture, const char *now)
  * LiSPSM, XPSM) another surface: the table's two the floor, as the exact reference
  * does, where they showed the background; the default scene's TSM the background where
  * it showed the floor, and its LiSPSM and XPSM at mediump another surface where they
- * showed the background (the reference: the floor); no shadow decision changed). A method or configuration
+ * showed the background (the reference: the floor); no shadow decision changed; 7 by the
+ * code that ends a box caster's lookup volume at its lit faces, whose spans cut the
+ * table's floor seen from close to it into other pieces: one pixel on the floor's far
+ * edge (uniform, PSM and TSM at both precisions, plane-optimal at highp) now shows the
+ * background, as the exact reference does). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

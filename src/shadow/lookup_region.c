@@ -6,7 +6,7 @@
 #include <string.h>
 
 #define VOLUME_PLANES LX_LOOKUP_VOLUME_PLANES
-#define FACE_MAX 28 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 23 vertices */
+#define FACE_MAX 31 /* a quad clipped by VOLUME_PLANES planes: at most 4 + 26 vertices */
 #define MAX_DIRECTIONS 10 /* a caster's image bounded in as many directions (image_directions) */
 
 /* A box's six faces, -x, +x, -y, +y, -z, +z, as v3_box_corner's corners, each wound as a
@@ -293,11 +293,32 @@ static double drawn_faces_depth(const mat4 *m, vec3 lo, vec3 hi, const vec4 *c)
 	return z0;
 }
 
+/* Box caster [lo, hi]'s faces the light shines on, as the half-spaces on their inner
+ * sides (each a billionth of the box's coordinates out, so that a receiver in a face's
+ * plane, as the table top in the slab's top, stays as it was), appended to pl (count
+ * *n). False when the box casts nowhere (cannot happen: add_plane's unit normals). */
+static bool behind_lit_faces(const struct lx_frame *f, vec3 lo, vec3 hi, vec4 *pl, int *n)
+{
+	double slack = 1e-9 * (fabs(lo.x) + fabs(lo.y) + fabs(lo.z) + fabs(hi.x) + fabs(hi.y) + fabs(hi.z));
+	for (int k = 0; k < 6; k++) {
+		if (!box_face_lit(&f->light, lo, hi, k))
+			continue;
+		int axis = k / 2;
+		double sign = k % 2 ? -1 : 1; /* the inner side: x >= lo (k even), x <= hi (k odd) */
+		double at = coordinate(k % 2 ? hi : lo, axis);
+		vec4 h = {axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0, -sign * at + slack};
+		if (!add_plane(pl, n, h))
+			return false;
+	}
+	return true;
+}
+
 /* The volume where caster `id` can shadow a point through `map`, as half-spaces: its
  * image bounded in x, y, x + y and x - y (an octagon; a caster's a 16-gon,
  * image_directions), and along and across its long axis where it is long and thin,
  * grown by the margin and cut to the rays the map serves, swept beyond the caster's
- * nearest depth. Returns the count, or -1 when it shadows nothing there. */
+ * nearest depth, and a box's behind its lit faces (behind_lit_faces). Returns the count,
+ * or -1 when it shadows nothing there. */
 static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *map, int id, const double margin[2],
 			 vec4 *pl)
 {
@@ -363,7 +384,7 @@ static int caster_volume(const struct lx_frame *f, const struct lx_shadow_map *m
 	 * path's rounding; and in front of the light */
 	if ((isfinite(z0) && !add_plane(pl, &n, v4_lin(1, r2, -(z0 - 0.01), r3))) || !add_plane(pl, &n, r3))
 		return -1;
-	return n;
+	return box_caster(f, id) && !behind_lit_faces(f, lo, hi, pl, &n) ? -1 : n;
 }
 
 /* The corners of receiver object id, returns how many: a plane's quad in order (4), a
@@ -436,16 +457,12 @@ static void receiver_in_volume(const struct lx_frame *f, int id, const vec4 *pl,
 	}
 	if (!solid || box)
 		return;
-	vec3 vertex[64];
-	int nc = lx_halfspace_vertices(pl, np, vertex, 64);
-	vec3 lo = f->bmin[id], hi = f->bmax[id];
-	double tol = 1e-9 * (fabs(lo.x) + fabs(lo.y) + fabs(lo.z) + fabs(hi.x) + fabs(hi.y) + fabs(hi.z));
-	for (int i = 0; i < nc; i++) {
-		vec3 c = vertex[i];
-		if (c.x >= lo.x - tol && c.y >= lo.y - tol && c.z >= lo.z - tol && c.x <= hi.x + tol && c.y <= hi.y + tol &&
-		    c.z <= hi.z + tol)
-			add_point(&f->view, c, w);
-	}
+	vec3 vertex[64], bounds[2] = {f->bmin[id], f->bmax[id]};
+	double tol = 1e-9 * (fabs(bounds[0].x) + fabs(bounds[0].y) + fabs(bounds[0].z) + fabs(bounds[1].x) +
+			     fabs(bounds[1].y) + fabs(bounds[1].z));
+	int nc = lx_halfspace_vertices(pl, np, bounds, tol, vertex, 64); /* the volume's corners inside its box */
+	for (int i = 0; i < nc; i++)
+		add_point(&f->view, vertex[i], w);
 }
 
 void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,

@@ -12,8 +12,14 @@
  * warp): the image bounded in x, y and the diagonals, and along and across its long axis
  * where it is long and thin (a shadow cast low), beyond a depth and in front of the
  * light; of a box reaching behind the light, the image of its part inside the rays the
- * map serves. Its part inside the receiver and in front of the eye, projected, bounds
- * the pixels.
+ * map serves. A box's volume also lies behind each of its faces the light shines on: a
+ * ray enters a convex caster through one of them, and every point past that lies on the
+ * inner side of all of them. Those planes are the world's, where the depth bound is the
+ * map's: a plane-optimal map's depth is its light camera's, skewed across the rays, and
+ * one bound from a caster's nearest corner left in its volume receivers beside it and
+ * nearer the light (under the table scene's low light the slab's lit side, beside the
+ * legs' tops, read two floor maps). Its part inside the receiver and in front of the eye,
+ * projected, bounds the pixels.
  *
  * A receiver's own volume is left out: a plane's holds none of it where a lookup is
  * drawn (a plane turned away from the light is drawn without one), and a caster is a
@@ -65,7 +71,7 @@ bool lx_shadow_map_sees_box(const struct lx_shadow_map *map, vec3 lo, vec3 hi);
  * plane of interest (one quad) does not turn its front, which the pass culls, to the map. */
 bool lx_shadow_map_draws(const struct lx_shadow_map *map, const struct lx_frame *f, int id);
 
-#define LX_LOOKUP_VOLUME_PLANES 23 /* a caster's twenty-two at most, and the eye's near plane */
+#define LX_LOOKUP_VOLUME_PLANES 26 /* a caster's twenty-five at most, and the eye's near plane */
 
 /* One frame's casters seen through each map, built once (lx_lookup_prepare) and asked
  * for each receiver: per map and caster the half-spaces where it can shadow a point

@@ -428,7 +428,7 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	vec4 cut_box[7] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y},
 			   {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}, {-pi.x, -pi.y, -pi.z, level - pi.w}};
 	vec3 pts[FOOT_POINTS];
-	int n = lx_halfspace_vertices(cut_box, 7, pts, FOOT_POINTS);
+	int n = lx_halfspace_vertices(cut_box, 7, NULL, 0, pts, FOOT_POINTS);
 	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out) : FOOT_EMPTY;
 	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
 }
@@ -1142,7 +1142,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 	if (!plane_zfar(f, P, &ch->wanted, m, &zfar)) { /* rare: the receiver volume in the cone */
 		nh += receiver_faces(f, ls, hs + nh);
 		vec3 vert[2048];
-		int nv = lx_halfspace_vertices(hs, nh, vert, 2048);
+		int nv = lx_halfspace_vertices(hs, nh, NULL, 0, vert, 2048);
 		for (int k = 0; k < nv; k++)
 			zfar = lx_fmax(zfar, v4_dot_point(zrow, vert[k]) / v4_dot_point(wrow, vert[k])); /* w >= wmin > 0 there */
 	}
@@ -1177,7 +1177,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 			vec4 obox[6] = {{1, 0, 0, -f->bmin[id].x}, {-1, 0, 0, f->bmax[id].x}, {0, 1, 0, -f->bmin[id].y},
 					{0, -1, 0, f->bmax[id].y}, {0, 0, 1, -f->bmin[id].z}, {0, 0, -1, f->bmax[id].z}};
 			memcpy(cb + ncone, obox, sizeof obox);
-			nc = lx_halfspace_vertices(cb, ncone + 6, cv, 512);
+			nc = lx_halfspace_vertices(cb, ncone + 6, NULL, 0, cv, 512);
 		}
 		for (int k = 0; k < nc; k++) {
 			double w = v4_dot_point(wrow, cv[k]);

@@ -201,7 +201,7 @@ bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct 
 	return window->n >= 3 && fabs(lx_poly_area(window)) > 1e-6;
 }
 
-int lx_halfspace_vertices(const vec4 *planes, int n, vec3 *out, int max_out)
+int lx_halfspace_vertices(const vec4 *planes, int n, const vec3 *box, double tol, vec3 *out, int max_out)
 {
 	/* Each triple of planes meets in p = -(d1 (n2 x n3) + d2 (n3 x n1) + d3 (n1 x n2)) / det,
 	 * det = n1 . (n2 x n3) (Cramer's rule; this runs every frame, so no general solver).
@@ -228,7 +228,9 @@ int lx_halfspace_vertices(const vec4 *planes, int n, vec3 *out, int max_out)
 							 v3_scale(cij, planes[k].w)),
 						  -1 / det);
 				double pscale = fabs(p.x) + fabs(p.y) + fabs(p.z);
-				bool inside = isfinite(pscale);
+				bool inside = isfinite(pscale) &&
+					      (!box || (p.x >= box[0].x - tol && p.y >= box[0].y - tol && p.z >= box[0].z - tol &&
+							p.x <= box[1].x + tol && p.y <= box[1].y + tol && p.z <= box[1].z + tol));
 				for (int q = 0; q < n && inside; q++)
 					inside = v3_dot(nn[q], p) + planes[q].w >= -1e-9 * (scale[q] * pscale + fabs(planes[q].w));
 				if (inside && count < max_out)
