@@ -777,19 +777,25 @@ static void legs_left_out_under_the_slab(void **state)
 		if (s.res.maps[m].rendered && s.res.maps[m].plane < 0)
 			fallback = m;
 	assert_true(fallback >= 0);
+	/* the legs stand on the floor; the slab's underside touches their tops */
+	bool leg[LX_MAX_PLANES + LX_MAX_CASTERS] = {false};
+	int slab = -1, legs_n = 0;
+	for (int id = s.scene.plane_count; id < s.frame.object_count; id++)
+		if (is_box(&s.frame, id) && s.frame.bmin[id].y < 1e-6)
+			leg[id] = true, legs_n++;
+	for (int id = s.scene.plane_count; id < s.frame.object_count; id++)
+		for (int l = 0; l < s.frame.object_count && slab < 0; l++)
+			if (leg[l] && !leg[id] && is_box(&s.frame, id) && fabs(s.frame.bmin[id].y - s.frame.bmax[l].y) < 1e-6)
+				slab = id;
+	assert_int_equal(legs_n, 4);
+	assert_true(slab >= 0);
 	long left = 0, unlit = 0;
-	int slab = -1;
-	for (int id = s.scene.plane_count; id < s.frame.object_count; id++) {
-		if (!is_box(&s.frame, id))
-			continue;
-		if (slab < 0 || s.frame.bmax[id].y > s.frame.bmax[slab].y)
-			slab = id; /* the highest box caster: the slab (the others are legs) */
-		if (v.count[fallback][id] >= 0 && !(lx_lookup_caster_maps(&v, id, false) >> fallback & 1)) {
+	for (int id = 0; id < s.frame.object_count; id++)
+		if (leg[id] && v.count[fallback][id] >= 0 && !(lx_lookup_caster_maps(&v, id, false) >> fallback & 1)) {
 			assert_unread(&s, &v, id, fallback, "table scene, low, plane", &unlit);
 			left++;
 		}
-	}
-	/* the legs' volumes alone (the boxes under the slab) through the plane maps */
+	/* the legs' volumes alone through the plane maps */
 	static struct lx_lookup_volumes legs;
 	legs = v;
 	unsigned plane_maps = 0;
@@ -797,8 +803,7 @@ static void legs_left_out_under_the_slab(void **state)
 	for (int m = 0; m < s.res.map_count; m++) {
 		plane_maps |= (unsigned)(s.res.maps[m].rendered && s.res.maps[m].plane >= 0) << m;
 		for (int id = 0; id < s.frame.object_count; id++) {
-			bool leg = id != slab && is_box(&s.frame, id) && s.frame.bmax[id].y <= s.frame.bmin[slab].y + 1e-9;
-			if (!leg || !(plane_maps >> m & 1))
+			if (!leg[id] || !(plane_maps >> m & 1))
 				legs.count[m][id] = -1;
 			leg_volumes += legs.count[m][id] >= 0;
 		}

@@ -67,9 +67,9 @@ bool lx_plane_visible(const struct lx_view *v, const struct lx_plane *p, struct 
 
 /* Vertices of the intersection of half-spaces a x + b y + c z + d >= 0 (bounded), by
  * solving every triple of planes; with `box` (its lo and hi corners), only those within
- * tol of it (a triple's point is tested against the box before the n half-spaces: a
- * lookup volume of 26 planes, asked for its corners inside a receiver's box, took a third
- * of the main pass's CPU work on the default view). Returns the count. */
+ * tol of it (a triple's point is tested against the box before the n half-spaces: the
+ * corners of lookup volumes of up to 26 planes inside a receiver's box were 44% of the
+ * default view's lookup work, timed in a loop). Returns the count. */
 int lx_halfspace_vertices(const vec4 *planes, int n, const vec3 *box, double tol, vec3 *out, int max_out);
 
 #endif
