@@ -63,6 +63,12 @@ int lx_box_clip_points(vec3 lo, vec3 hi, const vec4 *planes, int np, vec3 *out, 
 	return clip_faces(faces, planes, np, out, 0, max_out);
 }
 
+void lx_box_halfspaces(vec3 lo, vec3 hi, vec4 out[6])
+{
+	out[0] = (vec4){1, 0, 0, -lo.x}, out[1] = (vec4){-1, 0, 0, hi.x}, out[2] = (vec4){0, 1, 0, -lo.y};
+	out[3] = (vec4){0, -1, 0, hi.y}, out[4] = (vec4){0, 0, 1, -lo.z}, out[5] = (vec4){0, 0, -1, hi.z};
+}
+
 int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int max_out)
 {
 	vec3 centre = v3(0, 0, 0);
@@ -95,8 +101,8 @@ int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int
 		return n;
 	}
 	/* The box's planes written directly: a flat box (zero height) keeps both y planes. */
-	vec4 bplanes[6] = {{1, 0, 0, -bmin.x}, {-1, 0, 0, bmax.x}, {0, 1, 0, -bmin.y},
-			   {0, -1, 0, bmax.y}, {0, 0, 1, -bmin.z}, {0, 0, -1, bmax.z}};
+	vec4 bplanes[6];
+	lx_box_halfspaces(bmin, bmax, bplanes);
 	/* Every vertex of the intersection lies on a face of one volume, inside the other. */
 	int n = clip_faces(ffaces, bplanes, 6, out, 0, max_out);
 	return clip_faces(bfaces, fplanes, 6, out, n, max_out);

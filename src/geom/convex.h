@@ -16,6 +16,11 @@ int lx_frustum_box_points(const vec3 fc[8], vec3 bmin, vec3 bmax, vec3 *out, int
  * repeats and all, into out (at most max_out); returns their count. */
 int lx_box_clip_points(vec3 lo, vec3 hi, const vec4 *planes, int np, vec3 *out, int max_out);
 
+/* Box [lo, hi] as the half-spaces p . (x, y, z, 1) >= 0 on the inner sides of its faces,
+ * one a face in the order -x, +x, -y, +y, -z, +z (a flat box keeps both of its flat
+ * axis's). */
+void lx_box_halfspaces(vec3 lo, vec3 hi, vec4 out[6]);
+
 /* Sutherland-Hodgman: the part of convex polygon in[n] where p . (x, y, z, 1) >= 0, into
  * out (at most max_out vertices); returns its count. */
 int lx_clip_polygon(const vec3 *in, int n, vec4 p, vec3 *out, int max_out);

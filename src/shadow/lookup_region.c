@@ -294,22 +294,18 @@ static double drawn_faces_depth(const mat4 *m, vec3 lo, vec3 hi, const vec4 *c)
 }
 
 /* Box caster [lo, hi]'s faces the light shines on, as the half-spaces on their inner
- * sides (each a billionth of the box's coordinates out, so that a receiver in a face's
- * plane, as the table top in the slab's top, stays as it was), appended to pl (count
- * *n). False when the box casts nowhere (cannot happen: add_plane's unit normals). */
+ * sides (lx_box_halfspaces, in box_faces' order; each a billionth of the box's
+ * coordinates out, so that a receiver in a face's plane, as the table top in the slab's
+ * top, stays as it was), appended to pl (count *n). False when the box casts nowhere
+ * (cannot happen: unit normals). */
 static bool behind_lit_faces(const struct lx_frame *f, vec3 lo, vec3 hi, vec4 *pl, int *n)
 {
 	double slack = 1e-9 * (fabs(lo.x) + fabs(lo.y) + fabs(lo.z) + fabs(hi.x) + fabs(hi.y) + fabs(hi.z));
-	for (int k = 0; k < 6; k++) {
-		if (!box_face_lit(&f->light, lo, hi, k))
-			continue;
-		int axis = k / 2;
-		double sign = k % 2 ? -1 : 1; /* the inner side: x >= lo (k even), x <= hi (k odd) */
-		double at = coordinate(k % 2 ? hi : lo, axis);
-		vec4 h = {axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0, -sign * at + slack};
-		if (!add_plane(pl, n, h))
+	vec4 inner[6];
+	lx_box_halfspaces(lo, hi, inner);
+	for (int k = 0; k < 6; k++)
+		if (box_face_lit(&f->light, lo, hi, k) && !add_plane(pl, n, v4_lin(1, inner[k], slack, (vec4){0, 0, 0, 1})))
 			return false;
-	}
 	return true;
 }
 

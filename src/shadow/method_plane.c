@@ -110,9 +110,8 @@ static int receiver_faces(const struct lx_frame *f, const struct lx_light_space 
 		all[n++] = v4_lin(1, m4_row(vp, 3), -1, m4_row(vp, r));
 	}
 	vec3 lo = f->lit_min, hi = f->lit_max; /* the objects in view that the light reaches: the only receivers */
-	vec4 box[6] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y}, {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}};
-	for (int k = 0; k < 6; k++)
-		all[n++] = box[k];
+	lx_box_halfspaces(lo, hi, all + n);
+	n += 6;
 	const vec3 *pts = ls->receiver_pts;
 	int np = ls->receiver_count;
 	double size = v3_len(v3_sub(hi, lo)) + 1e-300;
@@ -425,8 +424,9 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 		return FOOT_OPEN;
 	double level = dl - 0.5 * r_min * dl / R; /* < dl: r_min, dl, R > 0 */
 	/* the box's six faces' half-spaces and pi . x <= level */
-	vec4 cut_box[7] = {{1, 0, 0, -lo.x}, {-1, 0, 0, hi.x}, {0, 1, 0, -lo.y}, {0, -1, 0, hi.y},
-			   {0, 0, 1, -lo.z}, {0, 0, -1, hi.z}, {-pi.x, -pi.y, -pi.z, level - pi.w}};
+	vec4 cut_box[7];
+	lx_box_halfspaces(lo, hi, cut_box);
+	cut_box[6] = (vec4){-pi.x, -pi.y, -pi.z, level - pi.w};
 	vec3 pts[FOOT_POINTS];
 	int n = lx_halfspace_vertices(cut_box, 7, NULL, 0, pts, FOOT_POINTS);
 	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out) : FOOT_EMPTY;
@@ -1174,9 +1174,7 @@ static bool fit_depth(const struct lx_frame *f, const struct lx_light_space *ls,
 		} else {
 			vec4 cb[11];
 			memcpy(cb, hs, (size_t)ncone * sizeof(vec4));
-			vec4 obox[6] = {{1, 0, 0, -f->bmin[id].x}, {-1, 0, 0, f->bmax[id].x}, {0, 1, 0, -f->bmin[id].y},
-					{0, -1, 0, f->bmax[id].y}, {0, 0, 1, -f->bmin[id].z}, {0, 0, -1, f->bmax[id].z}};
-			memcpy(cb + ncone, obox, sizeof obox);
+			lx_box_halfspaces(f->bmin[id], f->bmax[id], cb + ncone);
 			nc = lx_halfspace_vertices(cb, ncone + 6, NULL, 0, cv, 512);
 		}
 		for (int k = 0; k < nc; k++) {
