@@ -80,6 +80,17 @@ varying vec4 v_slope01; // d depth / d (s, t) of the face in maps 0 (xy) and 1 (
 varying vec4 v_slope23;
 #endif
 #endif
+#ifdef LX_SELF
+// LX_SELF (the RGBA path): the draw is a caster's faces turned towards the light. A ray
+// from the light meets a convex caster on such a face first, so none of its own texels
+// can shadow them: a texel whose alpha byte (shadow_depth.frag) holds this object's id is
+// passed over. Its maps may then hold its far side's outline, a polygon nearer the light
+// than that side, where the faces near its silhouette had to be drawn for its own lookups.
+float lx_other(vec4 texel)
+{
+	return float(abs(texel.a * 255.0 - u_object_id) > 0.5);
+}
+#endif
 #if LX_FILTER > 0
 // --filter pcf2x2 (1) or pcf3x3 (2): several texels of the map around the point, each
 // compared, the results averaged (shaders_es/pcf.glsl)
@@ -285,7 +296,8 @@ void main()
 #if LX_FILTER > 0
 	shadowed = found * lx_filtered_shadow(p, box); /* the share of the footprint in shadow */
 #else
-	float stored = lx_decode_code(texture2D(u_atlas, p.xy));
+	vec4 texel = texture2D(u_atlas, p.xy);
+	float stored = lx_decode_code(texel);
 #ifdef LX_FACE_PLANE
 #ifdef LX_FORCE_MEDIUMP
 	// fp16 cannot tell where in its lixel a point of a wide atlas lies: the face's
@@ -298,6 +310,9 @@ void main()
 #endif
 #endif
 	shadowed = found * float(lx_depth_code(p.z) > stored + u_bias);
+#ifdef LX_SELF
+	shadowed *= lx_other(texel);
+#endif
 #endif
 #endif
 #endif

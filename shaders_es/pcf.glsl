@@ -5,10 +5,16 @@ uniform vec4 u_clamp[LX_READS]; // per map read: the texel centres at its atlas 
 uniform vec4 u_texel;          // the atlas's size in texels (w, h) and one texel (1 / w, 1 / h)
 
 // 1.0 where the texel at atlas point t, clamped into the map's region, holds a depth
-// nearer the light than code d by more than the bias (one NEAREST compare), else 0.0
+// nearer the light than code d by more than the bias (one NEAREST compare), and with
+// LX_SELF another object's (main.frag), else 0.0
 float lx_closer(vec2 t, vec4 box, float d)
 {
-	return float(d > lx_decode_code(texture2D(u_atlas, clamp(t, box.xy, box.zw))) + u_bias);
+	vec4 texel = texture2D(u_atlas, clamp(t, box.xy, box.zw));
+#ifdef LX_SELF
+	return float(d > lx_decode_code(texel) + u_bias) * lx_other(texel);
+#else
+	return float(d > lx_decode_code(texel) + u_bias);
+#endif
 }
 
 #if LX_FILTER == 1

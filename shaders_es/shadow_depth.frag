@@ -4,10 +4,15 @@ precision highp float;
 #else
 precision mediump float;
 #endif
-// Writes the light depth of the fragment, encoded in RGBA8; on the depth-texture path
+// Writes the light depth of the fragment, encoded in RGBA8, and in the alpha byte which
+// object drew it (u_caster: (id + 0.25) / 255), so that a convex caster's lit faces can
+// pass over their own texels (main.frag, LX_SELF); on the depth-texture path
 // (LX_DEPTH_TEXTURE) the rasterizer's depth is the map and there is no colour to write.
 //!include depth_rgba.glsl
 varying vec2 v_zw;
+#ifndef LX_DEPTH_TEXTURE
+uniform float u_caster;
+#endif
 
 void main()
 {
@@ -15,6 +20,6 @@ void main()
 	gl_FragColor = vec4(1.0); // no colour attachment: nothing of it is kept
 #else
 	// w > 0 for every fragment that survived clipping
-	gl_FragColor = lx_encode_depth(v_zw.x / v_zw.y * 0.5 + 0.5);
+	gl_FragColor = vec4(lx_encode_depth(v_zw.x / v_zw.y * 0.5 + 0.5).rgb, u_caster);
 #endif
 }

@@ -1623,6 +1623,95 @@ static void box_polygons_decide_no_worse(void **state)
 	decisions_free(&dc);
 }
 
+/* The atlas's alpha byte (the RGBA8 paths): every texel holds the id of the object drawn
+ * there, or 255 where none is (the clear colour), and LIXEL_NO_CASTER_IDS=1 leaves it 255
+ * throughout; the default scene's three casters each leave theirs. */
+static void atlas_ids(struct decisions *dc, bool ids, int *distinct)
+{
+	enum { w = 320, h = 240 };
+	char err[512];
+	struct lx_scene base;
+	assert_true(lx_scene_builtin("default", &base));
+	struct lx_scene_meshes meshes = {0};
+	assert_true(lx_meshes_build(&base, &meshes));
+	if (!ids)
+		setenv("LIXEL_NO_CASTER_IDS", "1", 1);
+	struct lx_method_run run;
+	struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+	if (lx_method_run_init(&run, "plane", &base, &meshes, &dc->caps, &o, w, h, LX_DEPTH_HIGHP, LX_DEFAULT_BIAS_CODES,
+			       false, err, sizeof err))
+		fail_msg("plane: %s", err);
+	unsetenv("LIXEL_NO_CASTER_IDS");
+	struct lx_frame frame;
+	assert_true(lx_frame_setup(&frame, &base, &meshes, 0.4, w, h, err, sizeof err));
+	lx_method_run_shadows(&run, &frame);
+	const struct lx_atlas *a = &run.lights[0].atlas;
+	size_t n = (size_t)a->texture_width * a->texture_height;
+	uint8_t *tex = malloc(n * 4);
+	assert_non_null(tex);
+	lx_renderer_read_atlas(run.renderer, tex);
+	bool seen[256] = {false};
+	for (size_t i = 0; i < n; i++)
+		seen[tex[4 * i + 3]] = true;
+	*distinct = 0;
+	for (int id = 0; id < 255; id++) {
+		if (seen[id] && id >= meshes.count)
+			fail_msg("an alpha byte of %d in the atlas, past the %d objects", id, meshes.count);
+		*distinct += seen[id];
+	}
+	assert_true(seen[255]);
+	free(tex);
+	lx_method_run_free(&run);
+	lx_meshes_free(&meshes);
+}
+
+/* A caster's faces turned towards the light pass over their own texels, known by the id
+ * in the atlas's alpha byte (the RGBA8 paths, main.frag's LX_SELF): a convex caster never
+ * shadows them. Its maps then need not hold its faces near its silhouette (the band,
+ * keep_back_faces), and the pixels where that decides otherwise than the band with the
+ * ids off (LIXEL_NO_CASTER_IDS=1, as the depth-texture path draws) are no worse against
+ * the exact reference in all: every method, every standard configuration of both built-in
+ * scenes and of the thick table, unfiltered on the highp path and with the widest filter
+ * (pcf3x3) on the mediump path. */
+static void casters_pass_over_their_own_texels(void **state)
+{
+	(void)state;
+	enum { w = 320, h = 240 };
+	struct decisions dc = decisions_alloc(w, h);
+	int distinct[2];
+	atlas_ids(&dc, true, &distinct[0]);
+	atlas_ids(&dc, false, &distinct[1]);
+	print_message("the default view's atlas: %d objects' ids in its alpha bytes, %d with the ids off\n", distinct[0],
+		      distinct[1]);
+	assert_true(distinct[0] >= 3);
+	assert_int_equal(distinct[1], 0);
+	uint8_t *ref_sh = malloc((size_t)w * h);
+	int16_t *ref_obj = malloc((size_t)w * h * sizeof(int16_t));
+	assert_true(ref_sh && ref_obj);
+	static const struct {
+		enum lx_filter filter;
+		enum lx_depth_precision precision;
+		const char *name;
+	} paths[2] = {{LX_FILTER_NONE, LX_DEPTH_HIGHP, "highp"}, {LX_FILTER_PCF3X3, LX_DEPTH_MEDIUMP, "mediump"}};
+	for (int i = 0; i < 2; i++) {
+		struct hook_sweep s = {.hook = "LIXEL_NO_CASTER_IDS", .dc = &dc, .ref_sh = ref_sh, .ref_obj = ref_obj};
+		long shadowed = 0;
+		sweep_pairs(&dc, &(struct pair_sweep){w, h, hook_setup, hook_frame, &s, true, paths[i].filter,
+						      paths[i].precision},
+			    &shadowed);
+		unsetenv(s.hook);
+		print_message("ids against the band, %s, filter %s: %ld frames, %ld pixels decided otherwise (%ld shadowed "
+			      "pixels), %ld of them shadowed with the ids alone; there otherwise than the reference %ld "
+			      "with the ids, %ld with the band\n",
+			      paths[i].name, lx_filter_name(paths[i].filter), s.frames, s.differ, shadowed, s.more_shadow,
+			      s.wrong[0], s.wrong[1]);
+		assert_true(s.frames > 100 && shadowed > 10000);
+		assert_true(s.wrong[0] <= s.wrong[1]);
+	}
+	free(ref_sh), free(ref_obj);
+	decisions_free(&dc);
+}
+
 /* The two runs' atlases (run[0] RGBA8, run[1] a depth texture) read back as codes: the
  * largest difference is returned (the RGBA8 path's shader interpolates z and w in single
  * precision, the rasterizer its own depth, so they part by tens of codes on triangles
@@ -2329,6 +2418,7 @@ int main(void)
 		cmocka_unit_test_teardown(eight_varyings_decide_alike, close_shared_platform),
 		cmocka_unit_test_teardown(round_casters_fanned_decide_as_faces, close_shared_platform),
 		cmocka_unit_test_teardown(box_polygons_decide_no_worse, close_shared_platform),
+		cmocka_unit_test_teardown(casters_pass_over_their_own_texels, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
 		cmocka_unit_test_teardown(depth_texture_path_decides_as_highp, close_shared_platform),
 		cmocka_unit_test_teardown(depth_slots_decide_as_clearing_every_frame, close_shared_platform),

@@ -14,7 +14,7 @@
 struct batch {
 	char dir[64];
 	int files;
-	char list[524288];
+	char list[1048576];
 };
 
 static void write_variant(struct batch *b, const char *file, const char *defines, bool lima, const char *tag)
@@ -81,6 +81,11 @@ static void main_variants(struct batch *b, int max_varyings)
 								snprintf(tag, sizeof tag, "main-%d-%d-%d-%d-%d-%d-%d-%d", max_varyings, maps,
 									 reads, decision, face, path, filter, cover);
 								write_main_variant(b, &v, "", filter, tag);
+								v.self_id = true; /* a caster's own texels passed over (LX_SELF) */
+								if (lx_main_self(&v)) {
+									strncat(tag, "-self", sizeof tag - strlen(tag) - 1);
+									write_main_variant(b, &v, "", filter, tag);
+								}
 							}
 }
 

@@ -178,6 +178,8 @@ struct lx_renderer {
 	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every round caster drawn as its faces, its
 			      * fan's outline (sure_spans) made all the same */
 	bool boxes_as_faces; /* LIXEL_BOXES_AS_FACES=1: every box drawn as its faces */
+	bool no_ids; /* LIXEL_NO_CASTER_IDS=1: no ids in the atlas's alpha (caster_ids), as the
+		      * depth-texture path draws */
 	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
 	 * plans[1 - plan] made for the next shadow pass. Each holds kept_room indices. */
 	struct shadow_plan plans[2];
@@ -189,7 +191,7 @@ struct lx_renderer {
 	int texture_width, texture_height; /* the atlas texture's, which every light's part shares */
 	GLuint target_color, target_depth, target_fbo;
 	GLuint shadow_prog, clear_prog, clear_vbo;
-	GLint shadow_light_clip, shadow_pancake;
+	GLint shadow_light_clip, shadow_pancake, shadow_caster;
 	/* main-pass variants, built when first used: [shading][filter][faces][how many maps a
 	 * draw reads][how many planes' covers it tests] (whichever maps: a draw puts theirs in
 	 * the first slots, set_maps; the faces: object_draws; LX_FACES_AWAY reads none, its
@@ -216,6 +218,14 @@ static bool depth_texture(const struct lx_renderer *r) { return r->d.depth == LX
 /* Casters' faces drawn with LX_FACES_CASTER: --caster-depth face (else as
  * LX_FACES_TOWARD). */
 static bool face_plane(const struct lx_renderer *r) { return r->d.caster_face_depth; }
+/* Each texel's alpha byte holds the id of the object that drew it (shadow_depth.frag), so
+ * that a caster's faces turned towards the light pass over their own (LX_SELF): a convex
+ * caster cannot shadow them. Then no caster need draw its faces near its silhouette into a
+ * map it reads (keep_back_faces). The depth-texture path has no colour to hold it. */
+static bool caster_ids(const struct lx_renderer *r) { return !depth_texture(r) && !r->no_ids; }
+_Static_assert(LX_MAX_PLANES + LX_MAX_CASTERS < 255, "an object's id and the clear colour's 255 in one byte");
+/* Casters' faces turned towards the light drawn as LX_FACES_CASTER (else LX_FACES_TOWARD). */
+static bool caster_faces(const struct lx_renderer *r) { return face_plane(r) || caster_ids(r); }
 
 static void to_float(const mat4 *m, float out[16])
 {
@@ -256,7 +266,7 @@ static struct lx_main_variant variant_of(const struct lx_renderer *r, int shadin
 	return (struct lx_main_variant){.maps = r->d.map_count, .reads = reads, .decision = shading == SHADING_DECISION,
 					.faces = faces, .path = r->d.depth, .filtered = filter != LX_FILTER_NONE,
 					.projective = shading_bit(shading, SHADING_PROJECTIVE), .covers = covers,
-					.max_varyings = r->d.caps->max_varying_vectors};
+					.max_varyings = r->d.caps->max_varying_vectors, .self_id = caster_ids(r)};
 }
 
 static bool main_program(struct main_program *p, const struct lx_renderer *r, int shading, enum lx_faces faces,
@@ -367,7 +377,7 @@ static bool filter_programs(struct lx_renderer *r, enum lx_filter filter, char *
 	for (int i = -1; i < r->d.light_count; i++) {
 		int shading = i < 0 ? SHADING_DECISION : light_shading(r, i);
 		for (int faces = 0; faces < face_rules(r); faces++) {
-			if (faces == LX_FACES_CASTER && !face_plane(r))
+			if (faces == LX_FACES_CASTER && !caster_faces(r))
 				continue; /* drawn as LX_FACES_TOWARD (variant_for) */
 			int reads = faces == LX_FACES_AWAY ? 0 : most_reads(r);
 			struct main_program *p = &r->variant[shading][filter][faces][reads][0];
@@ -510,6 +520,7 @@ static bool renderer_programs(struct lx_renderer *r, char *err, size_t errlen)
 		return false;
 	r->shadow_light_clip = lx_gl.GetUniformLocation(r->shadow_prog, "u_light_clip");
 	r->shadow_pancake = lx_gl.GetUniformLocation(r->shadow_prog, "u_pancake");
+	r->shadow_caster = lx_gl.GetUniformLocation(r->shadow_prog, "u_caster");
 	r->clear_prog = lx_program_build("atlas_clear.vert", "atlas_clear.frag", NULL, err, errlen);
 	return r->clear_prog != 0;
 }
@@ -731,6 +742,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	const char *faces = getenv("LIXEL_ROUND_CASTERS_AS_FACES"), *boxes = getenv("LIXEL_BOXES_AS_FACES");
 	r->faces_not_fans = faces && !strcmp(faces, "1");
 	r->boxes_as_faces = boxes && !strcmp(boxes, "1");
+	const char *ids = getenv("LIXEL_NO_CASTER_IDS");
+	r->no_ids = ids && !strcmp(ids, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
@@ -1046,7 +1059,8 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	 * inner edge crosses is shaded once for each triangle beside it (the shadow passes
 	 * 0.05 ms shorter at 1024x1024, measured frame by frame). Its depths lie inside it,
 	 * nearer than its far side: a receiver touching it (a leg's foot on the floor) may
-	 * compare as shadowed over a lixel more, so not in coarser maps */
+	 * compare as shadowed over a lixel more, so not in coarser maps. With the casters'
+	 * ids in the atlas (caster_ids) no caster reads its own texels: reads_itself false */
 	bool round = round_caster(r, id);
 	bool fan = r->fan_apex[id] >= 0 && (map->plane >= 0 || box_in_depth_range(r, id, &lc)) && !front &&
 		   (round || (map->plane >= 0 && !reads_itself && !r->boxes_as_faces));
@@ -1133,8 +1147,11 @@ static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const st
 			 * own margin, no wider than this one's: it reads none this keeps out. Asked
 			 * only where keep_back_faces takes it, for a caster's fan (a box's polygon),
 			 * in a map that draws it (lx_lookup_any clips the receiver's faces by each
-			 * volume: asked of every object, 6-17 us of the table's shadow_draws) */
-			unsigned reads = pl->drawn[i][id] && r->fan_apex[id] >= 0 ? caster_reads(r, id, r->lookup.reads[id]) : 0;
+			 * volume: asked of every object, 6-17 us of the table's shadow_draws); not
+			 * with ids in the atlas, where its own texels shadow none of it */
+			unsigned reads = pl->drawn[i][id] && r->fan_apex[id] >= 0 && !caster_ids(r)
+						 ? caster_reads(r, id, r->lookup.reads[id])
+						 : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
 					keep_back_faces(r, pl, f[i], &res[i]->maps[m], &atlas[i]->regions[res[i]->maps[m].region],
@@ -1166,6 +1183,8 @@ static void draw_map(struct lx_renderer *r, const struct shadow_plan *pl, const 
 		if (!(drawn[id] & 1u << m) || k->count == 0)
 			continue; /* no fill and no vertices for what no lookup reads */
 		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, k->light_clip);
+		/* its id in the alpha byte, rounded or truncated alike; 255 (none) as cleared */
+		lx_gl.Uniform1f(r->shadow_caster, caster_ids(r) ? ((float)id + 0.25f) / 255.0f : 1.0f);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
 		lx_gl.DrawElements(GL_TRIANGLES, k->count, GL_UNSIGNED_SHORT,
@@ -1258,7 +1277,7 @@ static int maps_in(unsigned mask)
 static struct main_program *variant_for(struct lx_renderer *r, int shading, enum lx_faces faces, unsigned *mask,
 				       int covers)
 {
-	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !face_plane(r)))
+	if (r->d.map_count == 0 || (faces == LX_FACES_CASTER && !caster_faces(r)))
 		faces = LX_FACES_TOWARD;
 	if (faces == LX_FACES_AWAY)
 		*mask = 0;
@@ -1815,7 +1834,7 @@ static int object_draws(struct lx_renderer *r, const struct lx_frame *f, const s
 	if (id >= r->d.scene->plane_count || (!mask && !covers)) {
 		mask = caster_reads(r, id, mask);
 		bool sides = r->d.map_count > 0 && (decision || !r->flat[id]);
-		enum lx_faces toward = face_plane(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
+		enum lx_faces toward = caster_faces(r) ? LX_FACES_CASTER : LX_FACES_TOWARD; /* one variant for a run of draws */
 		/* its faces turned towards the light read the maps only in runs a shadow can reach */
 		bool cull = culls_back_faces(f, id, r->d.scene->plane_count);
 		int first = r->facing_count, lit = 0,

@@ -141,6 +141,11 @@ bool lx_main_face_plane(const struct lx_main_variant *v)
 	       varyings_fit(v, lx_main_varyings(v->reads, false, true, v->projective, cover_rows(v, lx_main_covers(v))));
 }
 
+bool lx_main_self(const struct lx_main_variant *v)
+{
+	return v->self_id && v->maps > 0 && v->reads > 0 && v->faces == LX_FACES_CASTER && v->path != LX_DEPTH_TEXTURE;
+}
+
 void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len)
 {
 	const char *p = lx_shadow_defines(v->path);
@@ -152,9 +157,9 @@ void lx_main_defines(const struct lx_main_variant *v, char *out, size_t len)
 	int covers = lx_main_covers(v);
 	bool edges = reads > 0 && v->path != LX_DEPTH_MEDIUMP &&
 		     varyings_fit(v, lx_main_varyings(reads, true, plane, v->projective, cover_rows(v, covers)));
-	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s%s%s",
+	snprintf(out, len, "#define LX_SHADOWED %d\n#define LX_READS %d\n#define LX_FACE_TEST %d\n%s%s%s%s%s%s%s%s",
 		 v->maps > 0, reads, v->maps > 0 && v->faces == LX_FACES_TESTED, away ? "#define LX_FACE_AWAY 1\n" : "",
 		 v->decision ? "#define LX_DECISION 1\n" : "", p ? p : "", edges ? "#define LX_EDGES 1\n" : "",
-		 plane ? "#define LX_FACE_PLANE 1\n" : "", covers > 0 ? "#define LX_COVER 1\n" : "",
-		 covers > 1 ? "#define LX_COVER2 1\n" : "");
+		 plane ? "#define LX_FACE_PLANE 1\n" : "", lx_main_self(v) ? "#define LX_SELF 1\n" : "",
+		 covers > 0 ? "#define LX_COVER 1\n" : "", covers > 1 ? "#define LX_COVER2 1\n" : "");
 }

@@ -17,7 +17,8 @@ char *lx_shader_text(const char *name, const char *text, const char *defines, bo
  * some of each, the shader tests each (LX_FACE_TEST); every face turned away (LX_FACE_AWAY,
  * read nothing: shadowed); or as LX_FACES_TOWARD, a caster's faces, each compared along
  * its plane at the centre of the lixel read (LX_FACE_PLANE, main.vert and main.frag: no
- * acne at the caster's silhouette in a coarse map; --caster-depth face). */
+ * acne at the caster's silhouette in a coarse map; --caster-depth face) and passing over
+ * its own texels (LX_SELF, self_id below). */
 enum lx_faces { LX_FACES_TOWARD, LX_FACES_TESTED, LX_FACES_AWAY, LX_FACES_CASTER, LX_FACES_COUNT };
 
 /* A main-pass variant: how many maps the method has, how many of them a draw reads (0 to
@@ -35,6 +36,10 @@ struct lx_main_variant {
 	bool filtered, projective;
 	int covers; /* 0 to LX_MAX_COVERS */
 	int max_varyings;
+	/* the atlas's alpha bytes hold which object drew each texel (shadow_depth.frag): a
+	 * LX_FACES_CASTER draw reading maps passes over its own (LX_SELF, main.frag); not on
+	 * the depth-texture path, which has no colour */
+	bool self_id;
 };
 /* The varying vectors main.vert writes for a draw reading `reads` maps: the light's
  * direction and the normal, a point per map, with edges an edge vector per map, with a
@@ -53,6 +58,9 @@ int lx_main_covers(const struct lx_main_variant *v);
  * which give way first); on the mediump path the face's nearest depth over half a lixel
  * each way (main.frag). */
 bool lx_main_face_plane(const struct lx_main_variant *v);
+/* Whether a variant passes over the caster's own texels (LX_SELF): self_id, faces
+ * LX_FACES_CASTER, reading maps, off the depth-texture path; filtered or not. */
+bool lx_main_self(const struct lx_main_variant *v);
 /* The main pass's defines for a variant: besides the above, where it reads maps off the
  * mediump path and the varyings hold them, the served test on edge functions (LX_EDGES;
  * else the test compares the divided point, which needs no varying: a VideoCore IV has 8,

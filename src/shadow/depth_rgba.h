@@ -2,7 +2,8 @@
  *
  * ES 2.0 boards may lack depth textures, so light depth d in [0, 1] is stored in an
  * RGBA8 colour texel as a 24-bit integer n = min(floor(d * (2^24 - 1)), 2^24 - 1):
- *   R = n >> 16, G = (n >> 8) & 255, B = n & 255, A = 255 (written).
+ *   R = n >> 16, G = (n >> 8) & 255, B = n & 255, A = 255 (written here; the shadow
+ *   pass writes the drawing object's id there, shadow_depth.frag).
  * - d = 1.0 (the far plane) encodes as 0xFFFFFF, the same as the clear colour
  *   (1, 1, 1, 1): far never wraps to 0. d > 1 and NaN clamp to far, d < 0 to 0.
  * - Each byte b is written as (b + 0.25) / 255, so the driver's float-to-unorm8
