@@ -1770,6 +1770,82 @@ static void sure_shadows_begin_at_the_silhouette(void **state)
 	decisions_free(&dc);
 }
 
+/* Texels of the default scene's facing view in which the shadow passes with and without
+ * LIXEL_WHOLE_BANDS=1 differ (plane-optimal at 640x480, the depth-texture path). */
+static long band_texels_moved(struct decisions *dc)
+{
+	enum { w = 640, h = 480 }; /* at 320x240 the band's rectangle is most of the ball's image */
+	char err[512];
+	struct lx_scene base;
+	assert_true(lx_scene_builtin("default", &base));
+	struct lx_scene_meshes meshes = {0};
+	assert_true(lx_meshes_build(&base, &meshes));
+	struct lx_scene scene = base;
+	const struct lx_config *facing = lx_config_find("facing");
+	assert_non_null(facing);
+	lx_config_apply(facing, &scene);
+	struct lx_frame frame;
+	assert_true(lx_frame_setup(&frame, &scene, &meshes, 0, w, h, err, sizeof err));
+	uint8_t *tex[2] = {NULL, NULL};
+	size_t n = 0;
+	for (int k = 0; k < 2; k++) {
+		if (k)
+			setenv("LIXEL_WHOLE_BANDS", "1", 1);
+		struct lx_method_run run;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		o.depth_slots = 1; /* each frame's codes as written */
+		if (lx_method_run_init(&run, "plane", &base, &meshes, &dc->caps, &o, w, h, LX_DEPTH_TEXTURE,
+				       LX_DEFAULT_BIAS_CODES, false, err, sizeof err))
+			fail_msg("plane: %s", err);
+		unsetenv("LIXEL_WHOLE_BANDS");
+		lx_method_run_shadows(&run, &frame);
+		const struct lx_atlas *a = &run.lights[0].atlas;
+		n = (size_t)a->texture_width * a->texture_height;
+		tex[k] = malloc(n * 4);
+		assert_non_null(tex[k]);
+		lx_renderer_read_atlas(run.renderer, tex[k]);
+		lx_method_run_free(&run);
+	}
+	long moved = 0;
+	for (size_t i = 0; i < n; i++)
+		moved += memcmp(tex[0] + 4 * i, tex[1] + 4 * i, 4) != 0;
+	free(tex[0]), free(tex[1]);
+	lx_meshes_free(&meshes);
+	return moved;
+}
+
+/* A round caster reading a map itself keeps its band (its far side near its silhouette,
+ * drawn as faces and a strip) only around the image of its own faces that read the map
+ * (band_rect), and its polygon elsewhere, in scissored draws: the same decisions as the
+ * whole band (LIXEL_WHOLE_BANDS=1) on every method and standard configuration of both
+ * built-in scenes and the thick table, on the depth-texture path with no filter and with
+ * the widest (pcf3x3, whose reach the rectangle's margin holds); and on the default
+ * scene's facing view the atlas does change (the ball's faces read the floor's map in 4
+ * triangles). */
+static void bands_kept_where_their_caster_reads(void **state)
+{
+	(void)state;
+	enum { w = 640, h = 480 };
+	struct decisions dc = decisions_alloc(w, h);
+	long moved = band_texels_moved(&dc);
+	print_message("the facing view's atlas: %ld texels differ from the whole band's\n", moved);
+	assert_true(moved > 0);
+	for (int i = 0; i < 2; i++) {
+		enum lx_filter filter = i ? LX_FILTER_PCF3X3 : LX_FILTER_NONE;
+		struct hook_sweep s = {.hook = "LIXEL_WHOLE_BANDS", .dc = &dc};
+		long shadowed = 0;
+		sweep_pairs(&dc, &(struct pair_sweep){w, h, hook_setup, hook_frame, &s, true, filter, LX_DEPTH_TEXTURE},
+			    &shadowed);
+		unsetenv(s.hook);
+		print_message("bands where read against whole, filter %s: %ld frames, %ld pixels decided otherwise (%ld "
+			      "shadowed pixels)\n",
+			      lx_filter_name(filter), s.frames, s.differ, shadowed);
+		assert_true(s.frames > 100 && shadowed > 10000);
+		assert_int_equal(s.differ, 0);
+	}
+	decisions_free(&dc);
+}
+
 /* The two runs' atlases (run[0] RGBA8, run[1] a depth texture) read back as codes: the
  * largest difference is returned (the RGBA8 path's shader interpolates z and w in single
  * precision, the rasterizer its own depth, so they part by tens of codes on triangles
@@ -2478,6 +2554,7 @@ int main(void)
 		cmocka_unit_test_teardown(box_polygons_decide_no_worse, close_shared_platform),
 		cmocka_unit_test_teardown(casters_pass_over_their_own_texels, close_shared_platform),
 		cmocka_unit_test_teardown(sure_shadows_begin_at_the_silhouette, close_shared_platform),
+		cmocka_unit_test_teardown(bands_kept_where_their_caster_reads, close_shared_platform),
 		cmocka_unit_test_teardown(depth_selftest_picks_the_path, close_shared_platform),
 		cmocka_unit_test_teardown(depth_texture_path_decides_as_highp, close_shared_platform),
 		cmocka_unit_test_teardown(depth_slots_decide_as_clearing_every_frame, close_shared_platform),

@@ -111,6 +111,12 @@ struct kept_draw {
 	int first, count;
 	float light_clip[16];
 	int outline_first, outline_count;
+	/* a caster that reads the map itself only around its own faces that read it
+	 * (band_rect): there the triangles above, scissored to rect (lixels of the map's
+	 * region: x0, y0, x1, y1), elsewhere the polygon over all its faces turned away
+	 * (whole_count indices from whole_first); whole_count 0: the triangles above alone */
+	int whole_first, whole_count;
+	int rect[4];
 };
 struct shadow_plan {
 	struct kept_draw kept[LX_MAX_LIGHTS][LX_MAX_MAPS][LX_MAX_PLANES + LX_MAX_CASTERS];
@@ -179,6 +185,7 @@ struct lx_renderer {
 	bool faces_not_fans; /* LIXEL_ROUND_CASTERS_AS_FACES=1: every round caster drawn as its faces, its
 			      * fan's outline (sure_spans) made all the same */
 	bool boxes_as_faces; /* LIXEL_BOXES_AS_FACES=1: every box drawn as its faces */
+	bool whole_bands; /* LIXEL_WHOLE_BANDS=1: a band kept whole where only some faces read (band_rect) */
 	bool no_ids; /* LIXEL_NO_CASTER_IDS=1: no ids in the atlas's alpha (caster_ids), as the
 		      * depth-texture path draws */
 	/* plans[plan]: the last shadow pass's work, which the main pass reads; planned:
@@ -571,8 +578,9 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 		triangles += meshes->mesh[i].vertex_count;
 	r->facing_room = triangles * r->d.light_count; /* every light's main pass */
 	r->facing_index = malloc((size_t)r->facing_room * sizeof(unsigned short) + 1);
-	/* at most every triangle in every map of every light */
-	r->kept_room = triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
+	/* at most every triangle in every map of every light, twice: a caster reading a map
+	 * around a few faces only keeps its polygon beside its band (band_rect) */
+	r->kept_room = 2 * triangles * r->d.light_count * (r->d.map_count > 0 ? r->d.map_count : 1);
 	for (int k = 0; k < 2; k++) {
 		r->plans[k].kept_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
 		r->plans[k].outline_index = malloc((size_t)r->kept_room * sizeof(unsigned short) + 1);
@@ -744,6 +752,8 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	const char *faces = getenv("LIXEL_ROUND_CASTERS_AS_FACES"), *boxes = getenv("LIXEL_BOXES_AS_FACES");
 	r->faces_not_fans = faces && !strcmp(faces, "1");
 	r->boxes_as_faces = boxes && !strcmp(boxes, "1");
+	const char *bands = getenv("LIXEL_WHOLE_BANDS");
+	r->whole_bands = bands && !strcmp(bands, "1");
 	const char *ids = getenv("LIXEL_NO_CASTER_IDS");
 	r->no_ids = ids && !strcmp(ids, "1");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
@@ -1138,6 +1148,100 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	pl->kept[light][m][id].first = first, pl->kept[light][m][id].count = pl->kept_count - first;
 }
 
+/* Where caster id's faces that read map m may read it (band_rect), in lixels of its
+ * region g, into rect (x0, y0, x1, y1): the images of the runs of its triangles the main
+ * pass may draw with a lookup of a map in `reads` (as sort_by_facing asks, with the
+ * shadow pass's wider margin), grown by that margin and a lixel. Only there need the map
+ * hold its band (its far side near its silhouette, keep_back_faces): a lit face reads the
+ * lixel its point falls in, or with a filter those around it. False where that is most
+ * of its image or cannot be told (a run's corner behind the light): the band whole. On
+ * the default scene's facing view the ball's faces read the floor's map in 4 triangles. */
+static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count);
+static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map,
+		      const struct lx_region *g, int id, unsigned reads, int *rect)
+{
+	const struct lx_mesh *me = &r->d.meshes->mesh[id];
+	/* none for a box, which keeps its faces in a map it reads (its polygon lies nearer
+	 * than its far side), nor where object_draws reads the maps from every face it draws:
+	 * --lookup-region all, a flat-shaded caster's shaded draw, a mesh sort_by_facing
+	 * cannot sort */
+	if (!round_caster(r, id) || r->fan_apex[id] < 0 || r->faces_not_fans || r->whole_bands || r->d.lookup_everywhere ||
+	    r->flat[id] || me->vertex_count > 65536 || !r->run_box[id] || g->w < 1 || g->h < 1)
+		return false;
+	mat4 t = m4_translate(f->offset[id]), lc = m4_mul(&map->light_clip, &t); /* the object's */
+	double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, size[2] = {g->w, g->h};
+	double img_lo[2] = {INFINITY, INFINITY}, img_hi[2] = {-INFINITY, -INFINITY};
+	bool cull = culls_back_faces(f, id, r->d.scene->plane_count);
+	const struct lx_light *l = &f->light;
+	int tris = me->vertex_count / 3;
+	for (int k = 0; k * RUN_TRIANGLES < tris; k++) {
+		vec3 a = r->run_box[id][2 * k], b = r->run_box[id][2 * k + 1];
+		for (int c = 0; c < 8; c++) { /* the image, from the runs' boxes */
+			vec4 q = m4_mul_point(&lc, v3_box_corner(a, b, c));
+			if (!(q.w > 0))
+				return false;
+			img_lo[0] = fmin(img_lo[0], q.x / q.w), img_hi[0] = fmax(img_hi[0], q.x / q.w);
+			img_lo[1] = fmin(img_lo[1], q.y / q.w), img_hi[1] = fmax(img_hi[1], q.y / q.w);
+		}
+		if (!lx_lookup_box_may_meet(&r->lookup, id, reads, v3_add(a, f->offset[id]), v3_add(b, f->offset[id])))
+			continue;
+		/* the run's faces that read: turned towards the light and, where the GL culls,
+		 * not turned away from the eye by more than sort_by_facing leaves to it */
+		for (int tr = k * RUN_TRIANGLES; tr < (k + 1) * RUN_TRIANGLES && tr < tris; tr++) {
+			const float *v = me->v + (size_t)tr * 3 * LX_VERTEX_FLOATS;
+			vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
+			vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
+			vec3 to_eye = v3_sub(f->view.eye, p);
+			double e = v3_dot(n, to_eye);
+			if (!(v3_dot(n, to_light) > 0) || (cull && e < 0 && e * e > 1e-4 * v3_dot(n, n) * v3_dot(to_eye, to_eye)))
+				continue;
+			for (int c = 0; c < 3; c++) {
+				const float *u = v + (size_t)c * LX_VERTEX_FLOATS;
+				vec4 q = m4_mul_point(&lc, v3(u[0], u[1], u[2]));
+				if (!(q.w > 0))
+					return false;
+				lo[0] = fmin(lo[0], q.x / q.w), hi[0] = fmax(hi[0], q.x / q.w);
+				lo[1] = fmin(lo[1], q.y / q.w), hi[1] = fmax(hi[1], q.y / q.w);
+			}
+		}
+	}
+	double grow = shadow_margin(r) + 1, image = 1;
+	for (int d = 0; d < 2; d++) { /* clip space to the region's lixels */
+		double x0 = (lo[d] * 0.5 + 0.5) * size[d] - grow, x1 = (hi[d] * 0.5 + 0.5) * size[d] + grow;
+		if (!(hi[d] >= lo[d]))
+			x0 = x1 = 0; /* no face reads: an empty rectangle, the band nowhere */
+		rect[d] = (int)fmax(0, fmin(size[d], floor(x0)));
+		rect[d + 2] = (int)fmax(0, fmin(size[d], ceil(x1)));
+		image *= fmax(0, img_hi[d] - img_lo[d]) * 0.5 * size[d];
+	}
+	/* worth four more draws of the polygon where the band keeps under 30% of the image
+	 * (its runs' boxes' bounds): at 40% on uniform's default view the shadow passes took
+	 * 0.03 ms longer, at 2% on facing 0.04 ms shorter (frame by frame) */
+	return (double)(rect[2] - rect[0]) * (rect[3] - rect[1]) < 0.3 * image;
+}
+
+/* Kept draw k of a caster that reads its map only inside k->rect, in region g: the band's
+ * triangles there, the polygon over all its faces turned away around it, each inside a
+ * scissor (the four strips around the rectangle, then the rectangle). */
+static void draw_split(const struct lx_region *g, const struct kept_draw *k)
+{
+	const int *q = k->rect;
+	const int strip[4][4] = {{0, 0, g->w, q[1]}, {0, q[3], g->w, g->h}, {0, q[1], q[0], q[3]}, {q[2], q[1], g->w, q[3]}};
+	lx_gl.Enable(GL_SCISSOR_TEST);
+	for (int s = 0; s < 4; s++)
+		if (strip[s][2] > strip[s][0] && strip[s][3] > strip[s][1]) {
+			lx_gl.Scissor(g->x + strip[s][0], g->y + strip[s][1], strip[s][2] - strip[s][0], strip[s][3] - strip[s][1]);
+			lx_gl.DrawElements(GL_TRIANGLES, k->whole_count, GL_UNSIGNED_SHORT,
+					   (const void *)((size_t)k->whole_first * sizeof(unsigned short)));
+		}
+	if (q[2] > q[0] && q[3] > q[1]) {
+		lx_gl.Scissor(g->x + q[0], g->y + q[1], q[2] - q[0], q[3] - q[1]);
+		lx_gl.DrawElements(GL_TRIANGLES, k->count, GL_UNSIGNED_SHORT,
+				   (const void *)((size_t)k->first * sizeof(unsigned short)));
+	}
+	lx_gl.Disable(GL_SCISSOR_TEST);
+}
+
 /* Of the maps in mask a caster reads as a receiver, those its main-pass draws read with the
  * frame's lookup volumes (r->lookup): the ones that can serve a point of it in view, none
  * where no shadow can fall on it (--lookup-region all: every one). A wider margin keeps
@@ -1178,9 +1282,17 @@ static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const st
 						 : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
 				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
-					keep_back_faces(r, pl, f[i], &res[i]->maps[m], &atlas[i]->regions[res[i]->maps[m].region],
-							light, m, id,
-							res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL, reads & 1u << m);
+					const struct lx_region *g = &atlas[i]->regions[res[i]->maps[m].region];
+					const vec4 *front = res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL;
+					int rect[4] = {0, 0, 0, 0}, whole_first = 0, whole_count = 0;
+					if (reads & 1u << m && band_rect(r, f[i], &res[i]->maps[m], g, id, reads, rect)) {
+						keep_back_faces(r, pl, f[i], &res[i]->maps[m], g, light, m, id, front, false);
+						whole_first = pl->kept[light][m][id].first, whole_count = pl->kept[light][m][id].count;
+					}
+					keep_back_faces(r, pl, f[i], &res[i]->maps[m], g, light, m, id, front, reads & 1u << m);
+					struct kept_draw *kd = &pl->kept[light][m][id];
+					kd->whole_first = whole_first, kd->whole_count = whole_count;
+					memcpy(kd->rect, rect, sizeof rect);
 					if (pl->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
 						pl->drawn_in[light][id] |= 1u << m;
 				}
@@ -1211,8 +1323,11 @@ static void draw_map(struct lx_renderer *r, const struct shadow_plan *pl, const 
 		lx_gl.Uniform1f(r->shadow_caster, caster_ids(r) ? ((float)id + 0.25f) / 255.0f : 1.0f);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
-		lx_gl.DrawElements(GL_TRIANGLES, k->count, GL_UNSIGNED_SHORT,
-				   (const void *)((size_t)k->first * sizeof(unsigned short)));
+		if (k->whole_count > 0)
+			draw_split(g, k);
+		else
+			lx_gl.DrawElements(GL_TRIANGLES, k->count, GL_UNSIGNED_SHORT,
+					   (const void *)((size_t)k->first * sizeof(unsigned short)));
 	}
 }
 
