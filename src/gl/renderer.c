@@ -1156,6 +1156,24 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
  * lixel its point falls in, or with a filter those around it. False where that is most
  * of its image or cannot be told (a run's corner behind the light): the band whole. On
  * the default scene's facing view the ball's faces read the floor's map in 4 triangles. */
+/* Triangle t of object id's mesh m in frame f, as the main pass draws it: FACE_UNSEEN
+ * where the GL culls (cull) and it is turned away from the eye by more than a hundredth
+ * of edge-on, FACE_AWAY where it is turned away from the light or lies in a plane
+ * through it, else FACE_TOWARD. The shader's v_facing, dot(face normal, to the light),
+ * is one value over a flat triangle: its first vertex's, in world space. */
+enum face_side { FACE_TOWARD, FACE_AWAY, FACE_UNSEEN };
+static enum face_side face_side(const struct lx_mesh *m, const struct lx_frame *f, int id, int t, bool cull)
+{
+	const float *v = m->v + (size_t)t * 3 * LX_VERTEX_FLOATS;
+	vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
+	vec3 to_light = f->light.directional ? v3_scale(f->light.direction, -1) : v3_sub(f->light.position, p);
+	vec3 to_eye = v3_sub(f->view.eye, p);
+	double e = v3_dot(n, to_eye);
+	if (cull && e < 0 && e * e > 1e-4 * v3_dot(n, n) * v3_dot(to_eye, to_eye))
+		return FACE_UNSEEN;
+	return v3_dot(n, to_light) > 0 ? FACE_TOWARD : FACE_AWAY;
+}
+
 static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count);
 static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map,
 		      const struct lx_region *g, int id, unsigned reads, int *rect)
@@ -1172,7 +1190,6 @@ static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const str
 	double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, size[2] = {g->w, g->h};
 	double img_lo[2] = {INFINITY, INFINITY}, img_hi[2] = {-INFINITY, -INFINITY};
 	bool cull = culls_back_faces(f, id, r->d.scene->plane_count);
-	const struct lx_light *l = &f->light;
 	int tris = me->vertex_count / 3;
 	for (int k = 0; k * RUN_TRIANGLES < tris; k++) {
 		vec3 a = r->run_box[id][2 * k], b = r->run_box[id][2 * k + 1];
@@ -1185,16 +1202,11 @@ static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const str
 		}
 		if (!lx_lookup_box_may_meet(&r->lookup, id, reads, v3_add(a, f->offset[id]), v3_add(b, f->offset[id])))
 			continue;
-		/* the run's faces that read: turned towards the light and, where the GL culls,
-		 * not turned away from the eye by more than sort_by_facing leaves to it */
+		/* the run's faces that read: turned towards the light and drawn (sort_by_facing) */
 		for (int tr = k * RUN_TRIANGLES; tr < (k + 1) * RUN_TRIANGLES && tr < tris; tr++) {
-			const float *v = me->v + (size_t)tr * 3 * LX_VERTEX_FLOATS;
-			vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
-			vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
-			vec3 to_eye = v3_sub(f->view.eye, p);
-			double e = v3_dot(n, to_eye);
-			if (!(v3_dot(n, to_light) > 0) || (cull && e < 0 && e * e > 1e-4 * v3_dot(n, n) * v3_dot(to_eye, to_eye)))
+			if (face_side(me, f, id, tr, cull) != FACE_TOWARD)
 				continue;
+			const float *v = me->v + (size_t)tr * 3 * LX_VERTEX_FLOATS;
 			for (int c = 0; c < 3; c++) {
 				const float *u = v + (size_t)c * LX_VERTEX_FLOATS;
 				vec4 q = m4_mul_point(&lc, v3(u[0], u[1], u[2]));
@@ -1855,23 +1867,13 @@ static int sort_by_facing(struct lx_renderer *r, const struct lx_frame *f, int i
 	enum { LOOKUP, LIT, AWAY, UNSEEN };
 	unsigned char group[65536 / 3];
 	int tris = m->vertex_count / 3, count[4] = {0, 0, 0, 0};
-	const struct lx_light *l = &f->light;
 	for (int k = 0; k * RUN_TRIANGLES < tris; k++) {
 		bool reads = !cut || !r->run_box[id] ||
 			     lx_lookup_box_may_meet(&r->lookup, id, mask, v3_add(r->run_box[id][2 * k], f->offset[id]),
 						    v3_add(r->run_box[id][2 * k + 1], f->offset[id]));
 		for (int t = k * RUN_TRIANGLES; t < (k + 1) * RUN_TRIANGLES && t < tris; t++) {
-			/* the shader's v_facing, dot(face normal, to the light), is one value over a
-			 * flat triangle: its first vertex's, in world space */
-			const float *v = m->v + (size_t)t * 3 * LX_VERTEX_FLOATS;
-			vec3 p = v3_add(v3(v[0], v[1], v[2]), f->offset[id]), n = v3(v[6], v[7], v[8]);
-			vec3 to_light = l->directional ? v3_scale(l->direction, -1) : v3_sub(l->position, p);
-			vec3 to_eye = v3_sub(f->view.eye, p);
-			double e = v3_dot(n, to_eye);
-			group[t] = cull && e < 0 && e * e > 1e-4 * v3_dot(n, n) * v3_dot(to_eye, to_eye) ? UNSEEN
-				   : !(v3_dot(n, to_light) > 0)						? AWAY
-				   : reads								? LOOKUP
-													: LIT;
+			enum face_side side = face_side(m, f, id, t, cull);
+			group[t] = side == FACE_UNSEEN ? UNSEEN : side == FACE_AWAY ? AWAY : reads ? LOOKUP : LIT;
 			count[group[t]]++;
 		}
 	}
