@@ -602,8 +602,8 @@ static bool renderer_buffers(struct lx_renderer *r, char *err, size_t errlen)
 		r->fan_next[i] = -1;
 	bool plans = r->plans[0].kept_index && r->plans[0].outline_index && r->plans[1].kept_index &&
 		     r->plans[1].outline_index;
-	if (!r->facing_index || !plans || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop || !r->band_kept || !r->away_kept ||
-	    !r->band_fan || !r->band_loop || !r->band_strip || !r->band_work) {
+	if (!r->facing_index || !plans || !r->fan_kept || !r->fan_next || !r->fan_index || !r->fan_loop || !r->band_kept ||
+	    !r->away_kept || !r->band_fan || !r->band_loop || !r->band_strip || !r->band_work) {
 		snprintf(err, errlen, "out of memory");
 		return false;
 	}
@@ -717,7 +717,8 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	for (int k = 0; k < 2; k++)
 		free(r->plans[k].kept_index), free(r->plans[k].outline_index);
 	free(r->fan_kept), free(r->fan_next), free(r->fan_index), free(r->fan_loop);
-	free(r->band_kept), free(r->away_kept), free(r->band_fan), free(r->band_loop), free(r->band_strip), free(r->band_work);
+	free(r->band_kept), free(r->away_kept), free(r->band_fan), free(r->band_loop), free(r->band_strip);
+	free(r->band_work);
 	free(r);
 }
 
@@ -1148,14 +1149,6 @@ static void keep_back_faces(struct lx_renderer *r, struct shadow_plan *pl, const
 	pl->kept[light][m][id].first = first, pl->kept[light][m][id].count = pl->kept_count - first;
 }
 
-/* Where caster id's faces that read map m may read it (band_rect), in lixels of its
- * region g, into rect (x0, y0, x1, y1): the images of the runs of its triangles the main
- * pass may draw with a lookup of a map in `reads` (as sort_by_facing asks, with the
- * shadow pass's wider margin), grown by that margin and a lixel. Only there need the map
- * hold its band (its far side near its silhouette, keep_back_faces): a lit face reads the
- * lixel its point falls in, or with a filter those around it. False where that is most
- * of its image or cannot be told (a run's corner behind the light): the band whole. On
- * the default scene's facing view the ball's faces read the floor's map in 4 triangles. */
 /* Triangle t of object id's mesh m in frame f, as the main pass draws it: FACE_UNSEEN
  * where the GL culls (cull) and it is turned away from the eye by more than a hundredth
  * of edge-on, FACE_AWAY where it is turned away from the light or lies in a plane
@@ -1175,6 +1168,16 @@ static enum face_side face_side(const struct lx_mesh *m, const struct lx_frame *
 }
 
 static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count);
+
+/* Where caster id's faces that read map m may read it (band_rect), in lixels of its
+ * region g, into rect (x0, y0, x1, y1): the images of the runs of its triangles the main
+ * pass may draw with a lookup of a map in `reads` (as sort_by_facing asks, with the
+ * shadow pass's wider margin), grown by that margin and a lixel. Only there need the map
+ * hold its band (its far side near its silhouette, keep_back_faces): a lit face reads the
+ * lixel its point falls in, or with a filter those around it. False where that is 30%
+ * of its image or more, or cannot be told (a run's corner behind the light): the band
+ * whole. On the default scene's facing view the ball's faces read the floor's map in 4
+ * triangles. */
 static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const struct lx_shadow_map *map,
 		      const struct lx_region *g, int id, unsigned reads, int *rect)
 {
@@ -1230,6 +1233,30 @@ static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const str
 	 * (its runs' boxes' bounds): at 40% on uniform's default view the shadow passes took
 	 * 0.03 ms longer, at 2% on facing 0.04 ms shorter (frame by frame) */
 	return (double)(rect[2] - rect[0]) * (rect[3] - rect[1]) < 0.3 * image;
+}
+
+/* Object id's kept triangles in map m of light `light` (keep_back_faces; reads: the maps
+ * the caster reads itself), with the polygon beside a band kept only where its faces read
+ * (band_rect), and the map marked as drawing it. */
+static void keep_map_draw(struct lx_renderer *r, struct shadow_plan *pl, const struct lx_frame *f,
+			  const struct lx_shadow_result *res, const struct lx_atlas *atlas, int light, int m, int id,
+			  unsigned reads)
+{
+	const struct lx_shadow_map *map = &res->maps[m];
+	const struct lx_region *g = &atlas->regions[map->region];
+	const vec4 *front = res->slab_face_out[id] ? &res->slab_front[id] : NULL;
+	bool itself = reads & 1u << m;
+	int rect[4] = {0, 0, 0, 0}, whole_first = 0, whole_count = 0;
+	if (itself && band_rect(r, f, map, g, id, reads, rect)) {
+		keep_back_faces(r, pl, f, map, g, light, m, id, front, false);
+		whole_first = pl->kept[light][m][id].first, whole_count = pl->kept[light][m][id].count;
+	}
+	keep_back_faces(r, pl, f, map, g, light, m, id, front, itself);
+	struct kept_draw *kd = &pl->kept[light][m][id];
+	kd->whole_first = whole_first, kd->whole_count = whole_count;
+	memcpy(kd->rect, rect, sizeof rect);
+	if (kd->count > 0 && !res->slab_face_out[id])
+		pl->drawn_in[light][id] |= 1u << m;
 }
 
 /* Kept draw k of a caster that reads its map only inside k->rect, in region g: the band's
@@ -1293,21 +1320,8 @@ static void shadow_draws(struct lx_renderer *r, struct shadow_plan *pl, const st
 						 ? caster_reads(r, id, r->lookup.reads[id])
 						 : 0;
 			for (int m = 0; m < res[i]->map_count; m++)
-				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered) {
-					const struct lx_region *g = &atlas[i]->regions[res[i]->maps[m].region];
-					const vec4 *front = res[i]->slab_face_out[id] ? &res[i]->slab_front[id] : NULL;
-					int rect[4] = {0, 0, 0, 0}, whole_first = 0, whole_count = 0;
-					if (reads & 1u << m && band_rect(r, f[i], &res[i]->maps[m], g, id, reads, rect)) {
-						keep_back_faces(r, pl, f[i], &res[i]->maps[m], g, light, m, id, front, false);
-						whole_first = pl->kept[light][m][id].first, whole_count = pl->kept[light][m][id].count;
-					}
-					keep_back_faces(r, pl, f[i], &res[i]->maps[m], g, light, m, id, front, reads & 1u << m);
-					struct kept_draw *kd = &pl->kept[light][m][id];
-					kd->whole_first = whole_first, kd->whole_count = whole_count;
-					memcpy(kd->rect, rect, sizeof rect);
-					if (pl->kept[light][m][id].count > 0 && !res[i]->slab_face_out[id])
-						pl->drawn_in[light][id] |= 1u << m;
-				}
+				if (pl->drawn[i][id] & 1u << m && res[i]->maps[m].rendered)
+					keep_map_draw(r, pl, f[i], res[i], atlas[i], light, m, id, reads);
 		}
 	}
 }
@@ -1332,7 +1346,8 @@ static void draw_map(struct lx_renderer *r, const struct shadow_plan *pl, const 
 			continue; /* no fill and no vertices for what no lookup reads */
 		lx_gl.UniformMatrix4fv(r->shadow_light_clip, 1, GL_FALSE, k->light_clip);
 		/* its id in the alpha byte, rounded or truncated alike; 255 (none) as cleared */
-		lx_gl.Uniform1f(r->shadow_caster, caster_ids(r) ? ((float)id + 0.25f) / 255.0f : 1.0f);
+		if (r->shadow_caster >= 0) /* not on the depth-texture path */
+			lx_gl.Uniform1f(r->shadow_caster, caster_ids(r) ? ((float)id + 0.25f) / 255.0f : 1.0f);
 		lx_gl.BindBuffer(GL_ARRAY_BUFFER, r->shadow_vbo[id]);
 		lx_gl.VertexAttribPointer(LX_ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (const void *)0);
 		if (k->whole_count > 0)
