@@ -722,6 +722,13 @@ void lx_renderer_destroy(struct lx_renderer *r)
 	free(r);
 }
 
+/* Whether test hook `name` is set to 1 in the environment. */
+static bool hook_set(const char *name)
+{
+	const char *v = getenv(name);
+	return v && !strcmp(v, "1");
+}
+
 struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *err, size_t errlen)
 {
 	const struct lx_gl_caps *caps = d->caps;
@@ -747,16 +754,10 @@ struct lx_renderer *lx_renderer_create(const struct lx_renderer_desc *d, char *e
 	r->d = *d;
 	r->objects = d->meshes->count;
 	r->max_covers = d->map_count > 0 ? lx_scene_covers_needed(d->scene, d->meshes) : 0;
-	const char *whole = getenv("LIXEL_CLEAR_WHOLE_ATLAS");
-	r->d.clear_whole_atlas |= whole && !strcmp(whole, "1");
+	r->d.clear_whole_atlas |= hook_set("LIXEL_CLEAR_WHOLE_ATLAS");
 	/* test hooks: what the fans decide alike with, what the boxes' polygons are measured against */
-	const char *faces = getenv("LIXEL_ROUND_CASTERS_AS_FACES"), *boxes = getenv("LIXEL_BOXES_AS_FACES");
-	r->faces_not_fans = faces && !strcmp(faces, "1");
-	r->boxes_as_faces = boxes && !strcmp(boxes, "1");
-	const char *bands = getenv("LIXEL_WHOLE_BANDS");
-	r->whole_bands = bands && !strcmp(bands, "1");
-	const char *ids = getenv("LIXEL_NO_CASTER_IDS");
-	r->no_ids = ids && !strcmp(ids, "1");
+	r->faces_not_fans = hook_set("LIXEL_ROUND_CASTERS_AS_FACES"), r->boxes_as_faces = hook_set("LIXEL_BOXES_AS_FACES");
+	r->whole_bands = hook_set("LIXEL_WHOLE_BANDS"), r->no_ids = hook_set("LIXEL_NO_CASTER_IDS");
 	/* the mediump path compares 11-bit codes: one code there is 8192 of the 24-bit ones */
 	r->bias_uniform = (float)(mediump(r) ? fmax(d->bias_codes / 8192.0, 1.0) : d->bias_codes);
 	/* slots need the 24-bit depth texture (a slot keeps 24 - log2(slots) bits) and a GPU
@@ -1169,6 +1170,18 @@ static enum face_side face_side(const struct lx_mesh *m, const struct lx_frame *
 
 static bool culls_back_faces(const struct lx_frame *f, int id, int plane_count);
 
+/* Point x's image through clip matrix lc (divided) into the bounds lo, hi; false where it
+ * lies behind the light, and the bounds with it. */
+static bool image_bounds(const mat4 *lc, vec3 x, double lo[2], double hi[2])
+{
+	vec4 q = m4_mul_point(lc, x);
+	if (!(q.w > 0))
+		return false;
+	lo[0] = fmin(lo[0], q.x / q.w), hi[0] = fmax(hi[0], q.x / q.w);
+	lo[1] = fmin(lo[1], q.y / q.w), hi[1] = fmax(hi[1], q.y / q.w);
+	return true;
+}
+
 /* Where caster id's faces that read map m may read it (band_rect), in lixels of its
  * region g, into rect (x0, y0, x1, y1): the images of the runs of its triangles the main
  * pass may draw with a lookup of a map in `reads` (as sort_by_facing asks, with the
@@ -1196,13 +1209,9 @@ static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const str
 	int tris = me->vertex_count / 3;
 	for (int k = 0; k * RUN_TRIANGLES < tris; k++) {
 		vec3 a = r->run_box[id][2 * k], b = r->run_box[id][2 * k + 1];
-		for (int c = 0; c < 8; c++) { /* the image, from the runs' boxes */
-			vec4 q = m4_mul_point(&lc, v3_box_corner(a, b, c));
-			if (!(q.w > 0))
+		for (int c = 0; c < 8; c++) /* the image, from the runs' boxes */
+			if (!image_bounds(&lc, v3_box_corner(a, b, c), img_lo, img_hi))
 				return false;
-			img_lo[0] = fmin(img_lo[0], q.x / q.w), img_hi[0] = fmax(img_hi[0], q.x / q.w);
-			img_lo[1] = fmin(img_lo[1], q.y / q.w), img_hi[1] = fmax(img_hi[1], q.y / q.w);
-		}
 		if (!lx_lookup_box_may_meet(&r->lookup, id, reads, v3_add(a, f->offset[id]), v3_add(b, f->offset[id])))
 			continue;
 		/* the run's faces that read: turned towards the light and drawn (sort_by_facing) */
@@ -1210,14 +1219,10 @@ static bool band_rect(struct lx_renderer *r, const struct lx_frame *f, const str
 			if (face_side(me, f, id, tr, cull) != FACE_TOWARD)
 				continue;
 			const float *v = me->v + (size_t)tr * 3 * LX_VERTEX_FLOATS;
-			for (int c = 0; c < 3; c++) {
-				const float *u = v + (size_t)c * LX_VERTEX_FLOATS;
-				vec4 q = m4_mul_point(&lc, v3(u[0], u[1], u[2]));
-				if (!(q.w > 0))
+			for (int c = 0; c < 3; c++)
+				if (!image_bounds(&lc, v3(v[c * LX_VERTEX_FLOATS], v[c * LX_VERTEX_FLOATS + 1], v[c * LX_VERTEX_FLOATS + 2]),
+						  lo, hi))
 					return false;
-				lo[0] = fmin(lo[0], q.x / q.w), hi[0] = fmax(hi[0], q.x / q.w);
-				lo[1] = fmin(lo[1], q.y / q.w), hi[1] = fmax(hi[1], q.y / q.w);
-			}
 		}
 	}
 	double grow = shadow_margin(r) + 1, image = 1;
