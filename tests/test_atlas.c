@@ -316,8 +316,9 @@ static void real_part(enum part_kind kind, struct lx_atlas *a)
 		assert_int_equal(a->count, 7);
 		assert_true(a->regions[0].variable && a->regions[0].budget == 350 * 350);
 		assert_true(a->regions[1].variable && a->regions[1].budget == 350 * 350);
-		/* the fallback: 128^2, and in a frame without a plane map every lixel of the three */
-		assert_true(a->regions[2].variable && a->regions[2].budget == 128 * 128 && a->regions[2].w == 128 &&
+		/* the fallback: 128^2 at start, up to a plane's budget in a frame with a plane
+		 * without a map, and in a frame without a plane map every lixel of the three */
+		assert_true(a->regions[2].variable && a->regions[2].budget == 350 * 350 && a->regions[2].w == 128 &&
 			    a->regions[2].h == 128 && a->regions[2].alone == 2 * 350 * 350 + 128 * 128);
 		for (int r = 3; r < 7; r++)
 			assert_true(a->regions[r].variable && a->regions[r].counted == 0);
@@ -329,7 +330,10 @@ static void real_part(enum part_kind kind, struct lx_atlas *a)
 
 /* Plane-optimal's own regions (real_part): each plane map cut into up to four pieces, of
  * the four spare regions, its budget shared among them in any shares and aspects from
- * 1:32 to 32:1; every frame packs without shrinking anything, apart and in the texture. */
+ * 1:32 to 32:1; or, in a third of the frames, the wall without a map, the floor holding
+ * up to both budgets in pieces of at most one each, and the fallback what the floor
+ * leaves of the wall's, up to 350x350 (fallback_side); every frame packs without
+ * shrinking anything, apart and in the texture. */
 static void plane_pieces_fit(void **state)
 {
 	(void)state;
@@ -340,12 +344,22 @@ static void plane_pieces_fit(void **state)
 	for (int trial = 0; trial < 3000; trial++) {
 		struct lx_atlas at = start;
 		int w[7] = {0}, h[7] = {0}, spare = 4, pieces = 0;
+		bool mapless = trial % 3 == 2; /* the wall */
+		double borrowed = mapless ? test_rand(&s) : 0; /* of the wall's budget, by the floor */
 		w[2] = h[2] = 128;
-		for (int p = 0; p < 2; p++) {
+		if (mapless) { /* what the floor leaves, as far as the one-map density asks */
+			double side = sqrt(128.0 * 128 + 350.0 * 350 * (1 - borrowed)) * (0.3 + 0.7 * test_rand(&s));
+			w[2] = h[2] = side < 128 ? 128 : side > 350 ? 350 : (int)side;
+		}
+		for (int p = 0; p < (mapless ? 1 : 2); p++) {
 			int n = 1 + (int)(test_rand(&s) * (1 + (spare < 3 ? spare : 3)));
-			double share[4], total = 0, used = 0.5 + 0.5 * test_rand(&s); /* of the plane's budget */
+			double share[4], total = 0, used = (0.5 + 0.5 * test_rand(&s)) * (1 + borrowed); /* of the budget */
+			if (used > 1 && n < 2)
+				n = 2; /* a region holds one budget at most: more is cut into a spare piece */
 			for (int k = 0; k < n; k++)
 				total += share[k] = 0.05 + test_rand(&s);
+			for (int k = 0; k < n && used > 1; k++) /* each piece within one budget */
+				share[k] = fmin(share[k], total / used);
 			for (int k = 0; k < n; k++) {
 				int r = k == 0 ? p : 3 + pieces++;
 				shape((long)(350.0 * 350 * used * share[k] / total), pow(32, 2 * test_rand(&s) - 1), &w[r], &h[r]);

@@ -822,8 +822,103 @@ static void fallback_alone_takes_every_budget(void **state)
 			      k == 0 ? "default view" : k == 1 ? "view 72" : "view 72, at most 1 lixel per pixel", plane_maps, side,
 			      side);
 		assert_int_equal(plane_maps, k == 0 ? 1 : 0);
-		assert_int_equal(side, k == 1 ? 511 : 128);
+		if (k == 0) /* the wall's idle budget (idle_plane_budget_goes_to_the_fallback) */
+			assert_true(side > 128 && side <= 350);
+		else
+			assert_int_equal(side, k == 1 ? 511 : 128);
 		lx_meshes_free(&s.meshes);
+	}
+}
+
+/* The lixels per unit of G that map clip gives along the light view's axis `axis` (0: x,
+ * 1: y) at point p, for a map `side` lixels across: the map's NDC moves by 2 across it. */
+static double g_density(const struct lx_light_space *ls, const mat4 *clip, vec3 p, int axis, int side)
+{
+	vec4 r = m4_row(&ls->view, axis), a = m4_mul_point(clip, p);
+	vec4 q = m4_mul_point(&ls->view, p); /* its depth along the light's axis: -q.z */
+	double h = 1e-4 * ls->size;
+	vec4 b = m4_mul_point(clip, v3_add(p, v3_scale(v3(r.x, r.y, r.z), h)));
+	double da = axis ? b.y / b.w - a.y / a.w : b.x / b.w - a.x / a.w, dg = ls->directional ? h : h / -q.z;
+	return fabs(da) / dg * 0.5 * side;
+}
+
+/* With fixed budgets a plane without a map this frame hands what the other plane's map
+ * does not take to the fallback, up to a plane's budget and up to the density of a
+ * one-map frame (every budget, 511x511, over C_tot as uniform maps it) along the
+ * fallback's sparser axis, and up to what its casters need (a lixel per pixel; at 160x120
+ * far less than that); with both planes mapped, or a density cap, it keeps 128x128.
+ * Random view 186 of the default scene (seed 7, 640x480), the wall without a map: the
+ * box near the eye read the 128x128 fallback, 0.0458% against uniform's 0.0112%
+ * (test_render idle_budget_serves_the_casters). */
+static void idle_plane_budget_goes_to_the_fallback(void **state)
+{
+	(void)state;
+	static const struct {
+		const char *what;
+		bool table;
+		const char *config;
+		int w, h;
+		double max_lpp;
+		int mapless; /* planes without a map */
+		bool grows, needed; /* needed: its casters' need (fallback_need) sets its side */
+	} cases[] = {
+		{"default view", false, NULL, 1024, 768, 0, 1, true, false},
+		{"facing", false, "facing", 1024, 1024, 0, 1, true, false},
+		{"horizon, 1920x1080", false, "horizon", 1920, 1080, 0, 1, true, false},
+		{"table, low", true, "low", 1024, 1024, 0, 1, true, false},
+		{"default view, 160x120", false, NULL, 160, 120, 0, 1, true, true},
+		{"table, default view", true, NULL, 1024, 768, 0, 0, false, false},
+		{"default view, at most 1 lixel per pixel", false, NULL, 1024, 768, 1, 1, false, false},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		struct setup s, u;
+		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
+		o.plane_max_lpp = cases[i].max_lpp;
+		for (int k = 0; k < 2; k++) {
+			struct setup *x = k ? &u : &s;
+			memset(x, 0, sizeof *x);
+			cases[i].table ? lx_scene_table(&x->scene) : lx_scene_default(&x->scene);
+			if (cases[i].config)
+				lx_config_apply(lx_config_find(cases[i].config), &x->scene);
+			assert_true(build_with(x, k ? "uniform" : "plane", cases[i].w, cases[i].h, 0, &o));
+		}
+		int mapless = 0, side = 0, fbm = -1;
+		for (int m = 0; m < s.res.map_count; m++) {
+			const struct lx_shadow_map *map = &s.res.maps[m];
+			if (m < 2)
+				mapless += !map->rendered;
+			if (map->rendered && map->plane < 0)
+				fbm = m, side = s.atlas.regions[map->region].w;
+		}
+		assert_true(fbm >= 0 && u.res.maps[0].rendered);
+		/* the densities at the first caster in view, the one-map frame's from uniform's
+		 * matrix at 511 lixels */
+		struct lx_light_space ls;
+		lx_light_space_build(&s.frame, &ls);
+		int id = s.scene.plane_count;
+		vec3 p = v3_scale(v3_add(s.frame.bmin[id], s.frame.bmax[id]), 0.5);
+		double ratio = INFINITY; /* along the fallback's sparser axis */
+		for (int axis = 0; axis < 2; axis++)
+			ratio = fmin(ratio, g_density(&ls, &s.res.maps[fbm].light_clip, p, axis, side) /
+						    g_density(&ls, &u.res.maps[0].light_clip, p, axis, 511));
+		print_message("%-40s %d plane%s without a map, the fallback %dx%d: %.3f of the one-map density along its sparser axis\n",
+			      cases[i].what, mapless, mapless == 1 ? "" : "s", side, side, ratio);
+		assert_int_equal(mapless, cases[i].mapless);
+		if (!cases[i].grows) {
+			assert_int_equal(side, 128);
+		} else {
+			assert_true(side > 128 && side <= 350);
+			/* as dense as the one-map frame along both axes, no denser along both, but
+			 * for the side's rounding down; at a plane's budget, or where the casters
+			 * need fewer lixels (a small image), less dense */
+			assert_true(ratio <= 1 + 1e-6);
+			if (cases[i].needed)
+				assert_true(side < 350 && ratio < 0.9);
+			else if (side < 350)
+				assert_true(ratio >= (double)side / (side + 1) - 1e-6);
+		}
+		lx_meshes_free(&s.meshes);
+		lx_meshes_free(&u.meshes);
 	}
 }
 
@@ -1529,6 +1624,7 @@ int main(void)
 		cmocka_unit_test(a_lit_fronts_shadow_is_left_to_its_test),
 		cmocka_unit_test(scattered_shadows_take_pieces),
 		cmocka_unit_test(fallback_alone_takes_every_budget),
+		cmocka_unit_test(idle_plane_budget_goes_to_the_fallback),
 		cmocka_unit_test(just_short_of_one_is_snapped),
 		cmocka_unit_test(receiver_maps_keep_the_first_four),
 		cmocka_unit_test(degenerate_configurations),

@@ -297,15 +297,23 @@ bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out)
 	return true;
 }
 
+bool lx_light_space_clamp(const struct lx_light_space *ls, double r[4])
+{
+	const double tmax = tan(MAX_HALF_ANGLE_DEG * M_PI / 180);
+	if (ls->directional || !(r[0] < -tmax || r[2] > tmax || r[1] < -tmax || r[3] > tmax))
+		return false;
+	r[0] = lx_fmax(r[0], -tmax), r[1] = lx_fmax(r[1], -tmax), r[2] = lx_fmin(r[2], tmax), r[3] = lx_fmin(r[3], tmax);
+	return true;
+}
+
 bool lx_light_space_map(const struct lx_light_space *ls, double x0, double x1, double y0, double y1, mat4 *clip,
 			struct lx_shadow_result *warn, const char *prefix)
 {
-	const double tmax = tan(MAX_HALF_ANGLE_DEG * M_PI / 180);
 	double znear = ls->znear, zfar = ls->zfar;
 	if (!ls->directional) {
-		if (x0 < -tmax || x1 > tmax || y0 < -tmax || y1 > tmax) {
-			x0 = lx_fmax(x0, -tmax), x1 = lx_fmin(x1, tmax);
-			y0 = lx_fmax(y0, -tmax), y1 = lx_fmin(y1, tmax);
+		double r[4] = {x0, y0, x1, y1};
+		if (lx_light_space_clamp(ls, r)) {
+			x0 = r[0], y0 = r[1], x1 = r[2], y1 = r[3];
 			lx_shadow_warn(warn, "%s: receivers span more than %.0f degrees around the point light; those outside the map are unshadowed",
 				       prefix, 2 * MAX_HALF_ANGLE_DEG);
 		}

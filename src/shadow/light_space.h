@@ -63,6 +63,9 @@ double lx_light_space_front(const struct lx_light_space *ls, const struct lx_fra
 /* C_tot: the rays both receivers and casters need, as a polygon on G; false (with
  * *unbounded set) when one frustum cannot hold them without clamping. */
 bool lx_light_space_wanted(const struct lx_light_space *ls, struct lx_poly *out);
+/* Rectangle r (x0, y0, x1, y1 on G) cut to the cone of 150 degrees that a point light's
+ * map covers at most; true when it was cut. */
+bool lx_light_space_clamp(const struct lx_light_space *ls, double r[4]);
 /* The light-clip matrix of a conventional map covering the rectangle [x0, x1] x [y0, y1]
  * of G and the depth range; clamps a point light's cone to 150 degrees and warns
  * (prefix names the method). False when no valid frustum exists. */

@@ -35,10 +35,11 @@ static int plane_regions(const struct lx_scene *s, const struct lx_method_option
 		out[n++] = (struct lx_region_request){s->planes[i].name, o->plane_lixels, o->plane_lixels, most, false, 0};
 	/* with shared budgets the fallback grows by what the plane maps leave; with fixed
 	 * ones, in a frame without a plane map, it takes the planes' budgets too, as far as
-	 * the atlas holds it alone (fallback_side) */
+	 * the atlas holds it alone, and in a frame with a plane without a map, up to a plane's
+	 * budget (fallback_side) */
 	long fb = (long)o->fallback_lixels * o->fallback_lixels;
 	bool grows = !o->square_regions && planes > 0;
-	long fb_most = grows ? (o->shared_budget ? budget * planes + fb : fb) : 0;
+	long fb_most = grows ? (o->shared_budget ? budget * planes + fb : planes > 1 && budget > fb ? budget : fb) : 0;
 	long fb_alone = grows && !o->shared_budget && !(o->plane_max_lpp > 0) ? budget * planes + fb : 0;
 	out[n++] = (struct lx_region_request){"fallback", o->fallback_lixels, o->fallback_lixels, fb_most, false, fb_alone};
 	if (!o->square_regions && planes > 0) {
@@ -1369,25 +1370,60 @@ static void cut_to_regions(const struct lx_atlas *atlas, int np, const bool *ok,
 	}
 }
 
+/* The side of a one-map frame's fallback (every budget, a square over C_tot: as uniform
+ * maps it) scaled to the fallback's rectangle fb (x0, y0, x1, y1 on G): the side at which
+ * the fallback is as dense as that map along both axes. 0 where either rectangle is not
+ * charted or has no extent. */
+static double one_map_side(const struct lx_light_space *ls, const double *fb, long total)
+{
+	struct lx_poly want;
+	double u[4], r[4] = {fb[0], fb[1], fb[2], fb[3]};
+	if (!lx_light_space_wanted(ls, &want) || want.n < 3)
+		return 0;
+	lx_poly_bounds(&want, &u[0], &u[1], &u[2], &u[3]);
+	lx_light_space_clamp(ls, u);
+	lx_light_space_clamp(ls, r);
+	double uw = u[2] - u[0], uh = u[3] - u[1], ratio = lx_fmax((r[2] - r[0]) / uw, (r[3] - r[1]) / uh);
+	if (!(uw > 0 && uh > 0 && isfinite(ratio))) /* no extent, or a side unbounded */
+		return 0;
+	return floor(sqrt((double)total)) * ratio;
+}
+
 /* The fallback's side, square: its own lixels, and with shared budgets what the plane
  * maps leave unused this frame (a map at a whole-number scale, or none). With fixed
  * budgets a frame without any plane map is a one-map frame: the fallback serves every
  * receiver, and takes the planes' budgets too (as uniform does all of them), as far as
- * the atlas holds it alone. Under a density cap it keeps its own: the cap is there to
- * spend less fill. */
+ * the atlas holds it alone; a plane without a map this frame hands it what the other
+ * maps do not take (plane_budgets), as far as makes it as dense as that one map would be
+ * (one_map_side), no more than a plane's budget (its region's limit) and no more than the
+ * casters it serves need (`need`, fallback_need): on random views where the wall had no
+ * map and the fallback at 128x128 served a box near the eye, plane lost to uniform by up
+ * to 0.05 points. Under a density cap it keeps its own: the cap is there to spend less
+ * fill. fb: the fallback's rectangle on G. */
 static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_options *o, const struct lx_shadow_result *out,
-			 int np)
+			 int np, const struct lx_light_space *ls, const double *fb, double need)
 {
 	if (o->plane_max_lpp > 0)
 		return o->fallback_lixels;
-	long own = (long)o->fallback_lixels * o->fallback_lixels, left = (long)np * o->plane_lixels * o->plane_lixels;
-	bool plane_maps = false;
+	long own = (long)o->fallback_lixels * o->fallback_lixels, plane = (long)o->plane_lixels * o->plane_lixels;
+	long left = (long)np * plane, used = 0;
+	int mapless = np;
 	for (int m = 0; m < out->map_count; m++)
 		if (out->maps[m].rendered && out->maps[m].plane >= 0) /* the fallback's plane is -1 */
-			left -= (long)out->maps[m].w * out->maps[m].h, plane_maps = true;
-	if (!o->shared_budget && (plane_maps || atlas->regions[np].alone == 0))
-		return o->fallback_lixels;
-	long side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
+			used += (long)out->maps[m].w * out->maps[m].h;
+	for (int i = 0; i < np; i++)
+		mapless -= out->maps[i].rendered;
+	left -= used;
+	long side;
+	if (o->shared_budget || (mapless == np && atlas->regions[np].alone > 0)) {
+		side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
+	} else {
+		/* fixed budgets: the mapless planes' lixels that the others did not borrow */
+		long idle = (long)mapless * plane - lx_fmax(0, (double)(used - (long)(np - mapless) * plane));
+		double most = lx_fmin(lx_fmin(sqrt((double)own + (double)idle), sqrt((double)atlas->regions[np].budget)),
+				      lx_fmin(one_map_side(ls, fb, own + (long)np * plane), need));
+		side = mapless > 0 && idle > 0 && most > o->fallback_lixels ? (long)floor(most) : o->fallback_lixels;
+	}
 	side = side < o->fallback_lixels ? o->fallback_lixels : side;
 	return (int)(side < atlas->max_side ? side : atlas->max_side);
 }
@@ -1552,12 +1588,14 @@ static double box_density(const struct lx_shadow_map *m, int w, int h, const vec
 /* A caster's densities (box_density) in the fallback and in each plane map (-1 for a map
  * it cannot read). */
 struct caster_density {
+	bool known; /* in view and taking maps (caster_densities) */
 	double fallback, map[LX_MAX_MAPS];
 };
 
-/* The densities of caster id: false where it takes none of the maps (reaching behind the
- * eye, the rule of lx_shadow_receiver_maps, or no face seen larger than a pixel). */
-static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int id,
+/* The densities of caster id, the fallback's as if `side` lixels square: false where it
+ * takes none of the maps (reaching behind the eye, the rule of lx_shadow_receiver_maps,
+ * or no face seen larger than a pixel). */
+static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int side, int id,
 			     struct caster_density *d)
 {
 	const struct lx_shadow_map *fb = &out->maps[fbm];
@@ -1569,7 +1607,7 @@ static bool caster_densities(const struct lx_frame *f, const struct lx_shadow_re
 	if (!box_image(&f->view.view_proj, c, 0.5 * f->view.width, 0.5 * f->view.height, false, pix))
 		return false;
 	int nf = box_faces(f, c, 0, faces);
-	d->fallback = box_density(fb, fb->w, fb->h, c, pix, faces, nf); /* this frame's size (plane_build) */
+	d->fallback = box_density(fb, side, side, c, pix, faces, nf);
 	if (!(d->fallback > 0))
 		return false;
 	for (int m = 0; m < out->map_count && m < LX_MAX_MAPS; m++) {
@@ -1607,15 +1645,46 @@ static unsigned densest_maps(const struct lx_shadow_result *out, int fbm, const 
  * view's ball, under the cone's shadow, is 234 triangles in each of the floor's two
  * pieces, where its fan is 52. --caster-maps fallback (caster_fallback_only) leaves
  * this out: each caster reads the fallback alone, for less shadow-pass work and coarser
- * shadows of casters on casters (docs/plane-optimal.md, "Casters' maps"). */
-static void choose_caster_maps(const struct lx_frame *f, int fbm, const bool *in_view,
-			       struct lx_shadow_result *out, struct caster_density *cd)
+ * shadows of casters on casters (docs/plane-optimal.md, "Casters' maps"). cd: the
+ * densities (casters_densities), the fallback's with fixed budgets at its own 128,
+ * whatever a plane without a map hands it this frame, which then serves what reads the
+ * fallback and takes no caster off the plane maps (taken at its grown size, the casters left the
+ * floor's maps on the default view and on horizon at 1024x1024, 0.0051% -> 0.0070% and
+ * 0.0094% -> 0.0125%, and the main pass on horizon took 0.14 ms more). */
+static void choose_caster_maps(const struct lx_frame *f, int fbm, struct lx_shadow_result *out,
+			       const struct caster_density *cd)
 {
-	if (!out->maps[fbm].rendered)
-		return;
 	for (int id = f->scene->plane_count; id < f->object_count; id++)
-		if (in_view[id] && caster_densities(f, out, fbm, id, &cd[id]))
+		if (cd[id].known)
 			out->object_maps[id] = densest_maps(out, fbm, &cd[id]);
+}
+
+/* Each caster's densities in cd (caster_densities, the fallback's as if `side` lixels
+ * square; known: in view and taking maps). */
+static void casters_densities(const struct lx_frame *f, const struct lx_shadow_result *out, int fbm, int side,
+			      const bool *in_view, struct caster_density *cd)
+{
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		cd[id].known = in_view[id] && caster_densities(f, out, fbm, side, id, &cd[id]);
+}
+
+/* The fallback's side past which it gives no caster it serves more than a lixel per pixel
+ * in its worst direction (box_density; cd: their densities at `side`): as with the plane
+ * maps past one (readers_scale), more would change no decision on the caster's own pixels
+ * and cost fill (at 160x120 the default view's fallback took 350x350 where 128x128 gives
+ * each caster several). Only the casters another's shadow reaches look it up; INFINITY
+ * where a plane reads it (needs), whose density is not known here. */
+static double fallback_need(const struct lx_frame *f, const struct lx_shadow_result *out, const bool *needs,
+			    const struct caster_density *cd, int side)
+{
+	double need = 0;
+	for (int i = 0; i < f->scene->plane_count; i++)
+		if (needs[i])
+			return INFINITY;
+	for (int id = f->scene->plane_count; id < f->object_count; id++)
+		if (cd[id].known && out->shadow_reaches[id]) /* known: its density > 0 */
+			need = lx_fmax(need, side / cd[id].fallback);
+	return need;
 }
 
 /* The whole-number scale plane i's maps need, at most their scale k now (k > 1, a
@@ -1677,14 +1746,23 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 		lx_poly_bounds(&want, &x0, &y0, &x1, &y1);
 	}
 	fb->rendered = lx_light_space_map(ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
+	if (!fb->rendered)
+		return;
 	/* its size this frame, before the atlas is packed (whose region still has the last
 	 * frame's): a fixed region's, or its own, with more where no plane map is drawn or
-	 * with shared budgets what the planes leave (fallback_side) */
+	 * with shared budgets what the planes leave (fallback_side). With fixed budgets the
+	 * casters' densities are taken at its own side, before it (choose_caster_maps) */
+	bool own = !o->shared_budget;
+	if (own)
+		casters_densities(f, out, fbm, o->fallback_lixels, in_view, cd);
 	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
-		fb->w = fb->h = fallback_side(atlas, o, out, np);
+		fb->w = fb->h = fallback_side(atlas, o, out, np, ls, (double[4]){x0, y0, x1, y1},
+					      own ? fallback_need(f, out, needs, cd, o->fallback_lixels) : INFINITY);
+	if (!own)
+		casters_densities(f, out, fbm, fb->w, in_view, cd);
 	if (!o->caster_fallback_only)
-		choose_caster_maps(f, fbm, in_view, out, cd);
+		choose_caster_maps(f, fbm, out, cd);
 }
 
 /* What plane_build settles for each plane map before building it. */
