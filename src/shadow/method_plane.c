@@ -1420,9 +1420,10 @@ static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_op
 	} else {
 		/* fixed budgets: the mapless planes' lixels that the others did not borrow */
 		long idle = (long)mapless * plane - lx_fmax(0, (double)(used - (long)(np - mapless) * plane));
-		double most = lx_fmin(lx_fmin(sqrt((double)own + (double)idle), sqrt((double)atlas->regions[np].budget)),
-				      lx_fmin(one_map_side(ls, fb, own + (long)np * plane), need));
-		side = mapless > 0 && idle > 0 && most > o->fallback_lixels ? (long)floor(most) : o->fallback_lixels;
+		double most = lx_fmin(lx_fmin(sqrt((double)own + (double)idle), sqrt((double)atlas->regions[np].budget)), need);
+		side = o->fallback_lixels;
+		if (mapless > 0 && idle > 0 && most > side) /* one_map_side intersects two hulls: only where it may bind */
+			side = (long)floor(lx_fmin(most, one_map_side(ls, fb, own + (long)np * plane)));
 	}
 	side = side < o->fallback_lixels ? o->fallback_lixels : side;
 	return (int)(side < atlas->max_side ? side : atlas->max_side);
