@@ -55,7 +55,9 @@ static void render_usage(FILE *f)
 		"  --uniform-lixels N   side of the one-map methods' map (default 512)\n"
 		"  --plane-lixels N     each plane-optimal map holds N^2 lixels, in a shape fitted\n"
 		"                       per frame (default 350)\n"
-		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128)\n"
+		"  --fallback-lixels N  side of the plane-optimal fallback map (default 128; in a\n"
+		"                       frame where a plane has no map it grows from that plane's\n"
+		"                       idle lixels, up to --plane-lixels)\n"
 		LX_PLANE_OPTION_HELP
 		LX_DEPTH_OPTION_HELP
 		"  -h, --help           this text\n"
