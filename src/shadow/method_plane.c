@@ -1419,7 +1419,7 @@ static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_op
 		side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
 	} else {
 		/* fixed budgets: the mapless planes' lixels that the others did not borrow */
-		long idle = (long)mapless * plane - lx_fmax(0, (double)(used - (long)(np - mapless) * plane));
+		long borrowed = used - (long)(np - mapless) * plane, idle = (long)mapless * plane - (borrowed > 0 ? borrowed : 0);
 		double most = lx_fmin(lx_fmin(sqrt((double)own + (double)idle), sqrt((double)atlas->regions[np].budget)), need);
 		side = o->fallback_lixels;
 		if (mapless > 0 && idle > 0 && most > side) /* one_map_side intersects two hulls: only where it may bind */
@@ -1749,19 +1749,20 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 	fb->rendered = lx_light_space_map(ls, x0, x1, y0, y1, &fb->light_clip, out, "fallback");
 	if (!fb->rendered)
 		return;
-	/* its size this frame, before the atlas is packed (whose region still has the last
-	 * frame's): a fixed region's, or its own, with more where no plane map is drawn or
-	 * with shared budgets what the planes leave (fallback_side). With fixed budgets the
-	 * casters' densities are taken at its own side, before it (choose_caster_maps) */
-	bool own = !o->shared_budget;
-	if (own)
-		casters_densities(f, out, fbm, o->fallback_lixels, in_view, cd);
+	/* the casters' densities at its own side; its size this frame, before the atlas is
+	 * packed (whose region still has the last frame's): a fixed region's, or its own, with
+	 * more where a plane has no map or with shared budgets what the planes leave
+	 * (fallback_side). With shared budgets the casters choose against that size (a density
+	 * scales with the side), with fixed ones against its own (choose_caster_maps) */
+	int side = o->fallback_lixels;
+	casters_densities(f, out, fbm, side, in_view, cd);
 	fb->w = atlas->regions[np].w, fb->h = atlas->regions[np].h;
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np, ls, (double[4]){x0, y0, x1, y1},
-					      own ? fallback_need(f, out, needs, cd, o->fallback_lixels) : INFINITY);
-	if (!own)
-		casters_densities(f, out, fbm, fb->w, in_view, cd);
+					      o->shared_budget ? INFINITY : fallback_need(f, out, needs, cd, side));
+	for (int id = f->scene->plane_count; o->shared_budget && id < f->object_count; id++)
+		if (cd[id].known)
+			cd[id].fallback *= (double)fb->w / side;
 	if (!o->caster_fallback_only)
 		choose_caster_maps(f, fbm, out, cd);
 }
