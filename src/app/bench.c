@@ -592,9 +592,9 @@ static void print_text(const struct bench *b, const struct lx_gl_caps *caps)
 	printf("(-uniform: the most a method's mismatch exceeds uniform's on one configuration, in percentage\n"
 	       " points; the two plane columns: worst m_max over the configurations, lixel spans in pixels;\n"
 	       " shadow ms and main ms: medians of the shadow passes and of the main pass, apart, the main\n"
-	       " pass's CPU work and the next frame's set-up done while the maps are drawn, in shadow ms;\n"
-	       " lookups%%: the median share of the pixels that ran a shadow lookup; soft%%: the median\n"
-	       " soft-edge error, the mean |visibility - a %.3g-degree area light's| in percent)\n",
+	       " pass's CPU work done while the maps are drawn, in shadow ms; lookups%%: the median share\n"
+	       " of the pixels that ran a shadow lookup; soft%%: the median soft-edge error,\n"
+	       " the mean |visibility - a %.3g-degree area light's| in percent)\n",
 	       b->light_size_deg);
 	print_by_view(b, uni, sum);
 }

@@ -210,29 +210,23 @@ static void main_passes(struct lx_method_run *mr)
 	lx_renderer_main_pass(mr->renderer, l.frames, l.results, mr->light_count);
 }
 
-/* The shadow passes sent and flushed, then, while the GL draws them, the next frame's
- * set-up and the main pass's CPU work (on one llvmpipe thread 40-140 us a frame that the
- * frame no longer waits for; on a board the GPU's work beside the CPU's). The set-up
- * comes first: after the driver has taken the shadow passes' few draws it finds more of
- * its code and data in the CPU's caches than after the main pass's many (results.md,
- * "The set-up made while the maps are drawn"). A method without maps has nothing to
- * overlap. */
-static void shadows_then_main_prepared(struct lx_method_run *mr, const struct lx_frame *next)
+/* The shadow passes sent and flushed, the main pass's CPU work done while the GL draws
+ * them (on one llvmpipe thread 40-140 us a frame that the frame no longer waits for; on a
+ * board the GPU's work beside the CPU's). A method without maps has nothing to overlap. */
+static void shadows_then_main_prepared(struct lx_method_run *mr)
 {
 	shadow_passes(mr);
-	lx_renderer_flush();
-	if (next)
-		mr->ahead_us = build_ahead(mr, next);
 	if (mr->lights[0].atlas.count == 0)
 		return;
 	struct light_lists l = light_lists(mr);
+	lx_renderer_flush();
 	lx_renderer_main_prepare(mr->renderer, l.frames, l.results, mr->light_count);
 }
 
-/* The set-up once more, after the frame's own and its shadow-pass plan, into copies that
- * nothing reads: the frame's set-up finds the CPU's caches as the driver's work on the
- * frame before left them and takes longer than the same work done again while it is
- * still cached (results.md's runs). Returns the repeat's time in us. */
+/* The set-up once more, right after the frame's own, into copies that nothing reads:
+ * after the previous frame's glFinish llvmpipe's rasterizer has run through the CPU's
+ * caches, and the frame's set-up takes 1.5 to 1.9 times as long as the same work done
+ * again at once (results.md's runs). Returns the repeat's time in us. */
 static double setup_again_us(const struct lx_method_run *mr, const struct lx_frame *f)
 {
 	double t0 = now_ms();
@@ -245,13 +239,14 @@ static double setup_again_us(const struct lx_method_run *mr, const struct lx_fra
 	return (now_ms() - t0) * 1e3;
 }
 
-/* The main pass handed to the GL, then, while it draws, the next frame's shadow-pass CPU
- * work from its set-up made ahead (and the set-up's repeat, timed). */
+/* The main pass handed to the GL, then, while it draws, the next frame's set-up (and its
+ * repeat, timed); returns when the GL is done. */
 static void main_then_ahead(struct lx_method_run *mr, const struct lx_frame *next)
 {
 	main_passes(mr);
 	if (next) {
 		lx_renderer_flush();
+		mr->ahead_us = build_ahead(mr, next);
 		plan_ahead(mr);
 		mr->ahead_again_us = mr->setup_again ? setup_again_us(mr, next) : NAN;
 	}
@@ -265,7 +260,7 @@ void lx_method_run_frame(struct lx_method_run *mr, const struct lx_frame *f, con
 	double t1 = now_ms(), setup = ahead ? mr->ahead_us : (t1 - t0) * 1e3;
 	double again = ahead ? mr->ahead_again_us : mr->setup_again ? setup_again_us(mr, f) : NAN;
 	double t1b = now_ms();
-	shadows_then_main_prepared(mr, next);
+	shadows_then_main_prepared(mr);
 	lx_renderer_finish();
 	double t2 = now_ms();
 	main_then_ahead(mr, next);
@@ -284,7 +279,7 @@ void lx_method_run_shadows(struct lx_method_run *mr, const struct lx_frame *f)
 void lx_method_run_draw(struct lx_method_run *mr, const struct lx_frame *f, const struct lx_frame *next)
 {
 	set_up(mr, f);
-	shadows_then_main_prepared(mr, next);
+	shadows_then_main_prepared(mr);
 	main_then_ahead(mr, next);
 }
 

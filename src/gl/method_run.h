@@ -33,7 +33,7 @@ struct lx_method_run {
 	int width, height;
 	enum lx_filter filter; /* the main pass's shadow filter (none unless set) */
 	bool setup_again;      /* lx_method_run_frame times the set-up a second time (the bench) */
-	/* The next frame's set-up, made while the GL drew the last frame's shadow passes (the
+	/* The next frame's set-up, made while the GL drew the last frame's main pass (the
 	 * calls' `next`): for frame ahead_of, each light's in ahead[], in ahead_us (and
 	 * ahead_again_us); taken by the call that draws that frame, dropped by any other.
 	 * The frame is all it depends on: the lights' options are fixed at init (the
@@ -55,10 +55,10 @@ struct lx_frame_times {
 	bool setup_ahead; /* the set-up ran ahead: the frame did not wait for it */
 	double setup_again_us; /* with setup_again: the same work done again at once, on copies,
 				* the CPU awake; the frame does not pay it. NAN otherwise. */
-	double shadow_ms; /* shadow passes, glFinish'ed (and the next frame's set-up and the main
-			   * pass's CPU work, done while the GL draws them) */
-	double main_ms;   /* main pass (every light's), glFinish'ed (and the next frame's
-			   * shadow-pass CPU work, done while the GL draws it) */
+	double shadow_ms; /* shadow passes, glFinish'ed (and the main pass's CPU work, done while
+			   * the GL draws them) */
+	double main_ms;   /* main pass (every light's), glFinish'ed (and the next frame's set-up,
+			   * done while the GL draws it) */
 	double frame_ms;  /* all three; the set-up only where it ran in the frame */
 };
 
