@@ -76,7 +76,7 @@ GL_OBJ = $(patsubst %.c,$(BUILD)/%.o,$(notdir $(GL_SRC)))
 TESTS = test_gpio test_kms_select test_display_loss test_linalg test_number test_json test_button test_board test_depth_rgba test_atlas test_lookup test_shaders test_scene test_uniform test_plane test_warps test_reference test_run_order test_render test_extremes test_filter
 TEST_BINS = $(TESTS:%=$(BUILD)/tests/%)
 
-.PHONY: all run slide setup-hash check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build
+.PHONY: all run slide setup-hash setup-time check check-layers soak deps deps-check deps-asan deps-fuzz install uninstall clean asan fuzz fuzz-build
 
 all: $(BUILD)/lixel
 
@@ -124,6 +124,15 @@ setup-hash: $(BUILD)/setup-hash
 	$(BUILD)/setup-hash $(SETUP_HASH_ARGS)
 
 $(BUILD)/setup-hash: tools/setup_hash.c $(CORE_LIB) | $(BUILD)
+	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $< $(CORE_LIB) $(PKG_PNG_LIBS) -lm -o $@
+
+# The set-up timed without a GL, warm, with its data evicted and with the branch
+# predictor worn out (tools/setup_time.c): figures, no verdict (SETUP_TIME_ARGS: -n, -s,
+# methods).
+setup-time: $(BUILD)/setup-time
+	$(BUILD)/setup-time $(SETUP_TIME_ARGS)
+
+$(BUILD)/setup-time: tools/setup_time.c $(CORE_LIB) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $< $(CORE_LIB) $(PKG_PNG_LIBS) -lm -o $@
 
 $(BUILD)/slide_embedded.c: tests/data/slide.png tools/embed-binary.sh | $(BUILD)
@@ -177,7 +186,7 @@ $(BUILD)/gpio_button_v2_check.o: src/kiosk/gpio_button.c src/kiosk/gpio_button.h
 check: deps-check check-layers
 	@$(MAKE) --no-print-directory $(CHECK_JOBS) \
 		$(BUILD)/lixel $(TEST_BINS) $(BUILD)/tests/destroy_window $(BUILD)/gpio_button_v2_check.o $(BUILD)/core_alone \
-		$(BUILD)/setup-hash
+		$(BUILD)/setup-hash $(BUILD)/setup-time
 	@sh tests/run-tests.sh $(BUILD)
 
 # The kiosk under Xvfb for SOAK_SECONDS (default 600): a key every 50 ms, its own memory sampled.
