@@ -126,8 +126,8 @@ setup-hash: $(BUILD)/setup-hash
 $(BUILD)/setup-hash: tools/setup_hash.c $(CORE_LIB) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $< $(CORE_LIB) $(PKG_PNG_LIBS) -lm -o $@
 
-# The set-up timed without a GL, warm, with its data evicted and with the branch
-# predictor worn out (tools/setup_time.c): figures, no verdict (SETUP_TIME_ARGS: -n, -s,
+# The set-up timed without a GL, warm and after work that wears the CPU's caches and
+# branch predictor (tools/setup_time.c): figures, no verdict (SETUP_TIME_ARGS: -n, -s,
 # methods).
 setup-time: $(BUILD)/setup-time
 	$(BUILD)/setup-time $(SETUP_TIME_ARGS)
