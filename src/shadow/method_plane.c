@@ -1760,9 +1760,10 @@ static void build_fallback(const struct lx_frame *f, const struct lx_atlas *atla
 	if (atlas->regions[np].variable)
 		fb->w = fb->h = fallback_side(atlas, o, out, np, ls, (double[4]){x0, y0, x1, y1},
 					      o->shared_budget ? INFINITY : fallback_need(f, out, needs, cd, side));
-	for (int id = f->scene->plane_count; o->shared_budget && id < f->object_count; id++)
-		if (cd[id].known)
-			cd[id].fallback *= (double)fb->w / side;
+	if (o->shared_budget) /* the casters choose against the grown side: a density scales with it */
+		for (int id = f->scene->plane_count; id < f->object_count; id++)
+			if (cd[id].known)
+				cd[id].fallback *= (double)fb->w / side;
 	if (!o->caster_fallback_only)
 		choose_caster_maps(f, fbm, out, cd);
 }
