@@ -1406,23 +1406,23 @@ static int fallback_side(const struct lx_atlas *atlas, const struct lx_method_op
 	if (o->plane_max_lpp > 0)
 		return o->fallback_lixels;
 	long own = (long)o->fallback_lixels * o->fallback_lixels, plane = (long)o->plane_lixels * o->plane_lixels;
-	long left = (long)np * plane, used = 0;
+	long used = 0;
 	int mapless = np;
 	for (int m = 0; m < out->map_count; m++)
 		if (out->maps[m].rendered && out->maps[m].plane >= 0) /* the fallback's plane is -1 */
 			used += (long)out->maps[m].w * out->maps[m].h;
 	for (int i = 0; i < np; i++)
 		mapless -= out->maps[i].rendered;
-	left -= used;
-	long side;
+	long side = o->fallback_lixels;
 	if (o->shared_budget || (mapless == np && atlas->regions[np].alone > 0)) {
+		long left = (long)np * plane - used;
 		side = (long)floor(sqrt((double)own + (double)(left > 0 ? left : 0)));
 	} else {
-		/* fixed budgets: the mapless planes' lixels that the others did not borrow */
+		/* fixed budgets: the mapless planes' lixels that the others did not borrow (none
+		 * where every plane has a map) */
 		long borrowed = used - (long)(np - mapless) * plane, idle = (long)mapless * plane - (borrowed > 0 ? borrowed : 0);
 		double most = lx_fmin(lx_fmin(sqrt((double)own + (double)idle), sqrt((double)atlas->regions[np].budget)), need);
-		side = o->fallback_lixels;
-		if (mapless > 0 && idle > 0 && most > side) /* one_map_side intersects two hulls: only where it may bind */
+		if (idle > 0 && most > side) /* one_map_side intersects two hulls: only where it may bind */
 			side = (long)floor(lx_fmin(most, one_map_side(ls, fb, own + (long)np * plane)));
 	}
 	side = side < o->fallback_lixels ? o->fallback_lixels : side;
