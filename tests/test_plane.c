@@ -135,6 +135,61 @@ static void m33_zero_is_solved(void **state)
 	lx_meshes_free(&me);
 }
 
+/* The metrics' pixel points (lx_pixel_on_plane, a row's rays made once) against
+ * lx_window_on_plane's two unprojections for each pixel: the same pixels on each plane but
+ * where the ray meets the parallelogram's edge or the view's depth range within rounding,
+ * the same points to a billionth of the scene, on the standard views and random ones,
+ * among them views looking along a plane (the horizon, the eye on the floor). */
+static void pixel_points_match_the_unprojection(void **state)
+{
+	(void)state;
+	uint64_t seed = 77;
+	long compared = 0, on = 0, edge = 0;
+	for (int k = 0; k < 60; k++) {
+		struct setup s;
+		memset(&s, 0, sizeof s);
+		lx_scene_default(&s.scene);
+		if (k < lx_config_count)
+			lx_config_apply(&lx_configs[k], &s.scene);
+		else {
+			s.scene.camera.eye = v3(test_rand(&seed) * 12 - 6, k % 4 ? test_rand(&seed) * 6 : 1e-9, test_rand(&seed) * 12 - 4.9);
+			s.scene.camera.at = v3(test_rand(&seed) * 6 - 3, k % 4 ? test_rand(&seed) * 2.5 : 1e-9, test_rand(&seed) * 6 - 4);
+		}
+		int w = 97 + k, h = 61 + 2 * k;
+		assert_true(build(&s, "uniform", w, h, 0));
+		for (int p = 0; p < s.scene.plane_count; p++) {
+			const struct lx_plane *pl = &s.scene.planes[p];
+			struct lx_plane_gram g = lx_plane_gram(pl);
+			double size = v3_len(pl->edge1) + v3_len(pl->edge2);
+			for (int y = 0; y < h; y += 3)
+				for (int x = 0; x < w; x += 2) {
+					vec3 a = v3(0, 0, 0), b = v3(0, 0, 0);
+					double t = -1;
+					bool got = lx_pixel_on_plane(&s.frame, p, x, y, &a);
+					bool want = lx_window_on_plane(&s.frame.view, lx_plane_equation(pl), x + 0.5, y + 0.5, &b, &t) &&
+						    t >= 0 && t <= 1 && lx_plane_gram_contains(&g, b);
+					compared++;
+					on += got;
+					if (got != want) { /* only where rounding decides: at the depth range's ends or an edge */
+						vec3 r = v3_sub(want ? b : a, g.corner);
+						double su = (v3_dot(r, g.edge1) * g.e22 - v3_dot(r, g.edge2) * g.e12) / g.det,
+						       sv = (v3_dot(r, g.edge2) * g.e11 - v3_dot(r, g.edge1) * g.e12) / g.det;
+						double near_edge = fmin(fmin(fabs(su), fabs(su - 1)), fmin(fabs(sv), fabs(sv - 1)));
+						if (!(near_edge < 1e-9 || fabs(t) < 1e-9 || fabs(t - 1) < 1e-9))
+							fail_msg("view %d, plane %d, pixel (%d, %d): on the plane %d, by the unprojection %d (t %g)",
+								 k, p, x, y, got, want, t);
+						edge++;
+					} else if (got && !(v3_len(v3_sub(a, b)) <= 1e-9 * size))
+						fail_msg("view %d, plane %d, pixel (%d, %d): point %g %g %g against %g %g %g", k, p, x, y,
+							 a.x, a.y, a.z, b.x, b.y, b.z);
+				}
+		}
+		lx_meshes_free(&s.meshes);
+	}
+	print_message("%ld pixel rays compared, %ld on a plane, %ld decided otherwise at an edge\n", compared, on, edge);
+	assert_true(on > compared / 4);
+}
+
 /* Sampling of one setup's plane maps: one affine image of the screen on every pixel each
  * serves (lpp and lixel span each within 1.001 over them), lpp = scale^2 (1 where the
  * budget suffices), and aniso = stretch^2: a similarity unless stretched, which only a
@@ -142,6 +197,8 @@ static void m33_zero_is_solved(void **state)
 static int check_sampling(const struct setup *s, const char *what, int *stretched)
 {
 	int checked = 0;
+	struct lx_plane_sampling per_plane[LX_MAX_PLANES]; /* a plane's pieces share its figures */
+	bool sampled[LX_MAX_PLANES] = {false}, any[LX_MAX_PLANES] = {false};
 	for (int k = 0; k < s->res.warning_count; k++) /* every map packed as sized: none shrunk */
 		if (strstr(s->res.warnings[k], "atlas:"))
 			fail_msg("%s: %s", what, s->res.warnings[k]);
@@ -154,9 +211,13 @@ static int check_sampling(const struct setup *s, const char *what, int *stretche
 		const struct lx_region *g = &s->atlas.regions[map->region];
 		if (g->w != map->w || g->h != map->h) /* the region holds the map's lixels (cut_to_regions) */
 			fail_msg("%s: map %d sized %dx%d, placed %dx%d", what, m, map->w, map->h, g->w, g->h);
-		struct lx_plane_sampling ps;
-		if (!lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, NULL, &ps))
+		if (!sampled[map->plane])
+			any[map->plane] = lx_plane_sampling(&s->frame, &s->atlas, &s->res, map->plane, NULL, NULL, NULL,
+							    &per_plane[map->plane]),
+			sampled[map->plane] = true;
+		if (!any[map->plane])
 			continue;
+		const struct lx_plane_sampling ps = per_plane[map->plane];
 		double k2 = map->lixel_scale * map->lixel_scale, st = map->lixel_stretch;
 		double aniso = fmax(st * st, 1 / (st * st));
 		if (!(fabs(ps.aniso_max - aniso) <= 1e-3 * aniso && ps.lpp_max / ps.lpp_min <= 1.001 &&
@@ -1614,6 +1675,7 @@ int main(void)
 		cmocka_unit_test(clipped_footprints_bound_the_planes),
 		cmocka_unit_test(camera_matches_closed_form),
 		cmocka_unit_test(m33_zero_is_solved),
+		cmocka_unit_test(pixel_points_match_the_unprojection),
 		cmocka_unit_test(sweep_is_one_affine_map_on_every_plane),
 		cmocka_unit_test(shared_plane_points_give_the_same_figures),
 		cmocka_unit_test(shared_budgets_hand_on_the_rest),

@@ -186,7 +186,11 @@ unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object)
 
 int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p)
 {
-	unsigned mask = lx_shadow_receiver_maps(r, object);
+	return lx_shadow_select_map_in(r, lx_shadow_receiver_maps(r, object), p);
+}
+
+int lx_shadow_select_map_in(const struct lx_shadow_result *r, unsigned mask, vec3 p)
+{
 	for (int i = 0; i < r->map_count; i++) {
 		const struct lx_shadow_map *m = &r->maps[i];
 		if (!m->rendered || !(mask & 1u << i))

@@ -187,6 +187,9 @@ unsigned lx_shadow_receiver_maps(const struct lx_shadow_result *r, int object);
 /* The map the main pass would use for world point p of receiver object `object` (the
  * shader's choice, in double): the first of its maps that serves p, or -1. */
 int lx_shadow_select_map(const struct lx_shadow_result *r, int object, vec3 p);
+/* The same among the maps in mask (lx_shadow_receiver_maps of the object, worked out once
+ * for the many points of one receiver). */
+int lx_shadow_select_map_in(const struct lx_shadow_result *r, unsigned mask, vec3 p);
 
 /* The shadow passes cull front faces in the map's image, so a face turned towards the
  * light must wind counter-clockwise there. A warp built in a mirrored space (a point
