@@ -29,10 +29,7 @@ trap 'rm -rf "$logs"' EXIT
 {
   echo "script cli"
   [ -x "$build/tests/test_filter" ] && echo "program test_filter"
-  # test_render, the longest, as two jobs of every other test each (LIXEL_TEST_SHARD): on
-  # two cores the other slot finishes the rest of the list long before one job would
-  [ -x "$build/tests/test_render" ] && echo "program test_render 1/2" && echo "program test_render 2/2"
-  [ -x "$build/tests/test_extremes" ] && echo "program test_extremes"
+  for name in test_render test_extremes; do [ -x "$build/tests/$name" ] && echo "program $name"; done
   [ -n "${SOAK_SECONDS:-}" ] && echo "script soak"
   for name in ${FUZZ_SECONDS:+${FUZZ_NAMES:-}}; do echo "fuzz $name"; done
   for t in "$build"/tests/test_*; do
@@ -45,10 +42,7 @@ trap 'rm -rf "$logs"' EXIT
 # Mesa's llvmpipe and OSMesa keep allocations of their own past exit (JIT code, context
 # caches) that LeakSanitizer cannot attribute: GL-linked programs run under ASan and UBSan
 # without the leak check, the GL-free ones with it.
-run_one='kind=$1 name=$2 shard=${3:-} build=$RUN_BUILD logs=$RUN_LOGS start=$(date +%s)
-  log=$name${shard:+-$(echo "$shard" | tr / o)}
-  export LIXEL_TEST_SHARD=$shard
-  [ -n "$shard" ] || unset LIXEL_TEST_SHARD
+run_one='kind=$1 name=$2 build=$RUN_BUILD logs=$RUN_LOGS start=$(date +%s)
   case $kind:$name in
     program:test_render | program:test_extremes | program:test_filter) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$build/tests/$name" ;;
     program:*) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=1" "$build/tests/$name" ;;
@@ -56,9 +50,9 @@ run_one='kind=$1 name=$2 shard=${3:-} build=$RUN_BUILD logs=$RUN_LOGS start=$(da
     script:kiosk) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_x11.sh "$build/lixel" ;;
     script:soak) ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" sh tests/kiosk_soak.sh "$build/lixel" ;;
     fuzz:*) sh tools/fuzz.sh "${FUZZ_DIR:-$build/fuzz}" "$FUZZ_SECONDS" "$name" ;;
-  esac >"$logs/$log.log" 2>&1
-  echo $? >"$logs/$log.rc"
-  echo $(($(date +%s) - start)) >"$logs/$log.secs"'
+  esac >"$logs/$name.log" 2>&1
+  echo $? >"$logs/$name.rc"
+  echo $(($(date +%s) - start)) >"$logs/$name.secs"'
 export RUN_BUILD=$build RUN_LOGS=$logs FUZZ_SECONDS=${FUZZ_SECONDS:-}
 # The kiosk test waits on key presses and windows most of its time: it runs beside the
 # pool, not in one of its slots (2-3 s less in all on two cores, cold shader cache).
@@ -68,15 +62,14 @@ xargs -P "$jobs" -L 1 sh -c "$run_one" sh <"$logs/jobs"
 wait "$kiosk_pid"
 echo "script kiosk" >>"$logs/jobs"
 
-while read -r kind name shard; do
-  log=$name${shard:+-$(echo "$shard" | tr / o)}
-  echo "== $name${shard:+ (tests $shard)} ($(cat "$logs/$log.secs" 2>/dev/null) s)"
-  cat "$logs/$log.log"
-  if [ "$(cat "$logs/$log.rc" 2>/dev/null)" = 0 ]; then
+while read -r kind name; do
+  echo "== $name ($(cat "$logs/$name.secs" 2>/dev/null) s)"
+  cat "$logs/$name.log"
+  if [ "$(cat "$logs/$name.rc" 2>/dev/null)" = 0 ]; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))
-    failed_names="$failed_names $name${shard:+ ($shard)}"
+    failed_names="$failed_names $name"
   fi
 done <"$logs/jobs"
 [ -n "$failed_names" ] && echo "failed:$failed_names"

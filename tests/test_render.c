@@ -2615,9 +2615,5 @@ int main(void)
 	};
 	if (getenv("LIXEL_TEST_ONLY")) /* one test by name (a developer's rerun) */
 		cmocka_set_test_filter(getenv("LIXEL_TEST_ONLY"));
-	struct CMUnitTest mine[sizeof tests / sizeof tests[0]];
-	int n = test_shard(tests, (int)(sizeof tests / sizeof tests[0]), mine);
-	if (n < 0)
-		return 2;
-	return _cmocka_run_group_tests("render", mine, (size_t)n, NULL, reference_cache_clear);
+	return cmocka_run_group_tests_name("render", tests, NULL, reference_cache_clear);
 }

@@ -7,7 +7,6 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <cmocka.h>
 #include "scene.h"
 
@@ -39,24 +38,6 @@ static inline void test_scene_load(const char *name, struct lx_scene *s)
 	snprintf(path, sizeof path, "%s/%s", LX_TEST_DATA, name);
 	if (!lx_scene_load(path, s, err, sizeof err))
 		fail_msg("%s", err);
-}
-
-/* LIXEL_TEST_SHARD=k/n (1 <= k <= n): of a program's n tests, every n-th from the k-th,
- * into out (room for count), so that the test pool runs a long program as n jobs side
- * by side; unset: all of them. Returns how many, or -1 (with a line on stderr) for a
- * value that is not k/n. */
-static inline int test_shard(const struct CMUnitTest *tests, int count, struct CMUnitTest *out)
-{
-	const char *v = getenv("LIXEL_TEST_SHARD");
-	int k = 1, n = 1, end = 0;
-	if (v && (sscanf(v, "%d/%d%n", &k, &n, &end) != 2 || v[end] || n < 1 || k < 1 || k > n)) {
-		fprintf(stderr, "LIXEL_TEST_SHARD=%s: expected k/n with 1 <= k <= n\n", v);
-		return -1;
-	}
-	int m = 0;
-	for (int i = k - 1; i < count; i += n)
-		out[m++] = tests[i];
-	return m;
 }
 
 #endif
