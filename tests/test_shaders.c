@@ -231,6 +231,10 @@ struct varyings_case {
 	int want, limit;
 };
 
+/* lx_main_varyings counts what main.vert writes, for every count of maps read, with and
+ * without a face plane and a projective light, with no, one or two covers; under a
+ * VideoCore IV's 8 no variant writes more (edges give way first, then the face plane,
+ * then a second cover), and without a limit every variant keeps all. */
 static void variants_fit_the_varyings(void **state)
 {
 	(void)state;
