@@ -65,6 +65,10 @@ static void whole_numbers(void **state)
 	assert_int_equal(lx_number_whole("0x4", 0, 100, &l), LX_NUMBER_NOT_DECIMAL);
 	assert_int_equal(lx_number_whole("-", 0, 100, &l), LX_NUMBER_NOT_DECIMAL);
 	assert_int_equal(lx_number_whole("99999999999999999999999", 0, 100, &l), LX_NUMBER_OVERFLOW);
+	assert_int_equal(lx_number_whole("9223372036854775808", 0, 100, &l), LX_NUMBER_OVERFLOW); /* 2^63 */
+	/* past a 32-bit long, yet a 64-bit number: out of range on every board */
+	assert_int_equal(lx_number_whole("4294967296", 0, 100, &l), LX_NUMBER_OUT_OF_RANGE);
+	assert_int_equal(lx_number_whole("-2147483649", -10, 10, &l), LX_NUMBER_OUT_OF_RANGE);
 	assert_int_equal(lx_number_int("2147483648", 0, 2147483647, &i), LX_NUMBER_OUT_OF_RANGE);
 	assert_int_equal(i, 3);
 	assert_int_equal(lx_number_int("101", 0, 100, &i), LX_NUMBER_OUT_OF_RANGE);

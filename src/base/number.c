@@ -62,13 +62,15 @@ enum lx_number_error lx_number_whole(const char *s, long lo, long hi, long *out)
 	const char *p = s + (*s == '-');
 	if (p == digits(p) || *digits(p))
 		return LX_NUMBER_NOT_DECIMAL;
+	/* in 64 bits whatever a long holds, so that a value past the range is out of range on
+	 * a 32-bit board too (armhf: 2147483648 for an int option), as on the desktop */
 	errno = 0;
-	long v = strtol(s, NULL, 10);
+	long long v = strtoll(s, NULL, 10);
 	if (errno == ERANGE)
 		return LX_NUMBER_OVERFLOW;
 	if (v < lo || v > hi)
 		return LX_NUMBER_OUT_OF_RANGE;
-	*out = v;
+	*out = (long)v; /* within [lo, hi], longs both */
 	return LX_NUMBER_OK;
 }
 

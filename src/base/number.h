@@ -8,7 +8,7 @@
 enum lx_number_error {
 	LX_NUMBER_OK = 0,
 	LX_NUMBER_NOT_DECIMAL, /* not [-]digits[.digits][e[+-]digits] as a whole */
-	LX_NUMBER_OVERFLOW,    /* more than a double (or a long) can hold */
+	LX_NUMBER_OVERFLOW,    /* more than a double (or a 64-bit whole number) can hold */
 	LX_NUMBER_UNDERFLOW,   /* not zero, yet below the smallest normal double */
 	LX_NUMBER_OUT_OF_RANGE /* a number, outside [lo, hi] */
 };
