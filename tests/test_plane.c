@@ -135,8 +135,48 @@ static void m33_zero_is_solved(void **state)
 	lx_meshes_free(&me);
 }
 
-/* The metrics' pixel points (lx_pixel_on_plane, a row's rays made once) against
- * lx_window_on_plane's two unprojections for each pixel: the same pixels on each plane but
+/* View k of a sweep of the default scene: the standard configurations, then cameras and
+ * lights drawn from seed (every fifth light directional, every seventh a lamp on the eye). */
+static void sweep_view(struct lx_scene *sc, int k, uint64_t *seed)
+{
+	lx_scene_default(sc);
+	if (k < lx_config_count) {
+		lx_config_apply(&lx_configs[k], sc);
+		return;
+	}
+	sc->camera.eye = v3(test_rand(seed) * 12 - 6, 0.05 + test_rand(seed) * 6, test_rand(seed) * 12 - 4.9);
+	sc->camera.at = v3(test_rand(seed) * 6 - 3, test_rand(seed) * 2.5, test_rand(seed) * 6 - 4);
+	sc->camera.fovy_deg = 30 + test_rand(seed) * 70;
+	if (k % 5 == 0) {
+		sc->light.directional = true;
+		assert_true(v3_normalize(v3(test_rand(seed) - 0.5, -0.05 - test_rand(seed), test_rand(seed) - 0.5),
+					 &sc->light.direction));
+	} else if (k % 7 == 0)
+		sc->light.position = v3_add(sc->camera.eye, v3(0, 0.05, 0)); /* a lamp on a helmet */
+	else
+		sc->light.position = v3(test_rand(seed) * 14 - 7, 0.2 + test_rand(seed) * 8, test_rand(seed) * 14 - 4.5);
+}
+
+/* Window point (wx, wy) on the plane eq the plain way, for the row form to answer to: the
+ * near and far points unprojected by inv_view_proj and divided, the ray cut by the plane.
+ * False for a point at infinity or a ray along the plane. */
+static bool unprojected_on_plane(const struct lx_view *v, vec4 eq, double wx, double wy, vec3 *q, double *t)
+{
+	double nx = 2 * wx / v->width - 1, ny = 2 * wy / v->height - 1;
+	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
+	if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
+		return false;
+	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), pn);
+	double den = v3_dot(v3(eq.x, eq.y, eq.z), d);
+	if (!(fabs(den) > 1e-300))
+		return false;
+	*t = -v4_dot_point(eq, pn) / den;
+	*q = v3_add(pn, v3_scale(d, *t));
+	return true;
+}
+
+/* The pixel points of the metrics and the set-up (lx_pixel_on_plane, lx_window_on_plane:
+ * a row's rays made once) against two unprojections for each pixel: the same pixels on each plane but
  * where the ray meets the parallelogram's edge or the view's depth range within rounding,
  * the same points to a billionth of the scene, on the standard views and random ones,
  * among them views looking along a plane (the horizon, the eye on the floor). */
@@ -148,13 +188,9 @@ static void pixel_points_match_the_unprojection(void **state)
 	for (int k = 0; k < 60; k++) {
 		struct setup s;
 		memset(&s, 0, sizeof s);
-		lx_scene_default(&s.scene);
-		if (k < lx_config_count)
-			lx_config_apply(&lx_configs[k], &s.scene);
-		else {
-			s.scene.camera.eye = v3(test_rand(&seed) * 12 - 6, k % 4 ? test_rand(&seed) * 6 : 1e-9, test_rand(&seed) * 12 - 4.9);
-			s.scene.camera.at = v3(test_rand(&seed) * 6 - 3, k % 4 ? test_rand(&seed) * 2.5 : 1e-9, test_rand(&seed) * 6 - 4);
-		}
+		sweep_view(&s.scene, k, &seed);
+		if (k >= lx_config_count && k % 4 == 0) /* the eye on the floor, looking along it */
+			s.scene.camera.eye.y = s.scene.camera.at.y = 1e-9;
 		int w = 97 + k, h = 61 + 2 * k;
 		assert_true(build(&s, "uniform", w, h, 0));
 		for (int p = 0; p < s.scene.plane_count; p++) {
@@ -166,8 +202,15 @@ static void pixel_points_match_the_unprojection(void **state)
 					vec3 a = v3(0, 0, 0), b = v3(0, 0, 0);
 					double t = -1;
 					bool got = lx_pixel_on_plane(&s.frame, p, x, y, &a);
-					bool want = lx_window_on_plane(&s.frame.view, lx_plane_equation(pl), x + 0.5, y + 0.5, &b, &t) &&
+					vec3 c = v3(0, 0, 0);
+					double tc = -1;
+					bool want = unprojected_on_plane(&s.frame.view, lx_plane_equation(pl), x + 0.5, y + 0.5, &b, &t) &&
 						    t >= 0 && t <= 1 && lx_plane_gram_contains(&g, b);
+					/* the set-up's entry point gives the metrics' point, bit for bit */
+					if (got && !(lx_window_on_plane(&s.frame.view, lx_plane_equation(pl), x + 0.5, y + 0.5, &c, &tc) &&
+						     c.x == a.x && c.y == a.y && c.z == a.z))
+						fail_msg("view %d, plane %d, pixel (%d, %d): lx_window_on_plane %g %g %g against %g %g %g", k,
+							 p, x, y, c.x, c.y, c.z, a.x, a.y, a.z);
 					compared++;
 					on += got;
 					if (got != want) { /* only where rounding decides: at the depth range's ends or an edge */
@@ -246,22 +289,7 @@ static void sweep_is_one_affine_map_on_every_plane(void **state)
 	for (int k = 0; k < 320; k++) {
 		struct setup s;
 		memset(&s, 0, sizeof s);
-		lx_scene_default(&s.scene);
-		if (k < lx_config_count)
-			lx_config_apply(&lx_configs[k], &s.scene);
-		else {
-			s.scene.camera.eye = v3(test_rand(&seed) * 12 - 6, 0.05 + test_rand(&seed) * 6, test_rand(&seed) * 12 - 4.9);
-			s.scene.camera.at = v3(test_rand(&seed) * 6 - 3, test_rand(&seed) * 2.5, test_rand(&seed) * 6 - 4);
-			s.scene.camera.fovy_deg = 30 + test_rand(&seed) * 70;
-			if (k % 5 == 0) {
-				s.scene.light.directional = true;
-				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.05 - test_rand(&seed), test_rand(&seed) - 0.5),
-							 &s.scene.light.direction));
-			} else if (k % 7 == 0)
-				s.scene.light.position = v3_add(s.scene.camera.eye, v3(0, 0.05, 0)); /* a lamp on a helmet */
-			else
-				s.scene.light.position = v3(test_rand(&seed) * 14 - 7, 0.2 + test_rand(&seed) * 8, test_rand(&seed) * 14 - 4.5);
-		}
+		sweep_view(&s.scene, k, &seed);
 		int w = k % 6 == 3 ? 1920 : k % 3 == 0 ? 640 : 160, h = k % 6 == 3 ? 1080 : k % 3 == 0 ? 480 : 120;
 		if (!build(&s, "plane", w, h, test_rand(&seed) * 5))
 			continue;

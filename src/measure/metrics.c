@@ -208,51 +208,19 @@ void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_
 	free(r);
 }
 
-/* The eye rays of a row of pixel centres: window pixel (x + 0.5, y + 0.5) unprojects to
- * near point near + nx col and far point far + nx col (homogeneous, nx its x in NDC), as
- * lx_window_on_plane's two products, the row's share made once: the metrics visit every
- * pixel of the window for each plane, and this was most of their time. */
-struct pixel_row {
-	vec4 near, far, col; /* inv_view_proj (0, ny, -1, 1), (0, ny, 1, 1) and its first column */
-	double sx;           /* nx = sx (x + 0.5) - 1 */
-};
-
-static struct pixel_row pixel_row(const struct lx_view *v, int y)
+/* World point of pixel centre x of row r (lx_window_row of its y + 0.5) on plane eq; false
+ * when the pixel's ray misses the parallelogram g or meets it outside the view depth range. */
+static bool on_plane(const struct lx_window_row *r, const struct lx_plane_gram *g, vec4 eq, int x, vec3 *out)
 {
-	const double *m = v->inv_view_proj.m;
-	double ny = 2 * (y + 0.5) / v->height - 1;
-	vec4 c1 = {m[4], m[5], m[6], m[7]}, c2 = {m[8], m[9], m[10], m[11]}, c3 = {m[12], m[13], m[14], m[15]};
-	vec4 mid = v4_lin(ny, c1, 1, c3);
-	return (struct pixel_row){v4_lin(1, mid, -1, c2), v4_lin(1, mid, 1, c2), {m[0], m[1], m[2], m[3]},
-				  2.0 / v->width};
-}
-
-/* World point of pixel centre x of row r on plane eq; false when the pixel's ray misses
- * the parallelogram g or meets it outside the view depth range (t in [0, 1] from the near
- * plane to the far one). The guards are lx_window_on_plane's. */
-static bool on_plane(const struct pixel_row *r, const struct lx_plane_gram *g, vec4 eq, int x, vec3 *out)
-{
-	double nx = r->sx * (x + 0.5) - 1;
-	vec4 a = v4_lin(1, r->near, nx, r->col), b = v4_lin(1, r->far, nx, r->col);
-	if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
-		return false;
-	double ia = 1 / a.w, ib = 1 / b.w;
-	vec3 pn = v3(a.x * ia, a.y * ia, a.z * ia), d = v3_sub(v3(b.x * ib, b.y * ib, b.z * ib), pn);
-	double den = eq.x * d.x + eq.y * d.y + eq.z * d.z;
-	if (!(fabs(den) > 1e-300))
-		return false; /* the ray runs along the plane */
-	double t = -v4_dot_point(eq, pn) / den;
-	if (!(t >= 0 && t <= 1))
-		return false;
-	*out = v3_add(pn, v3_scale(d, t));
-	return lx_plane_gram_contains(g, *out);
+	double t;
+	return lx_window_row_on_plane(r, eq, x + 0.5, out, &t) && t >= 0 && t <= 1 && lx_plane_gram_contains(g, *out);
 }
 
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *out)
 {
 	const struct lx_plane *p = &f->scene->planes[plane];
 	struct lx_plane_gram g = lx_plane_gram(p);
-	struct pixel_row r = pixel_row(&f->view, y);
+	struct lx_window_row r = lx_window_row(&f->view, y + 0.5);
 	return on_plane(&r, &g, lx_plane_equation(p), x, out);
 }
 
@@ -270,7 +238,7 @@ bool lx_plane_points_make(const struct lx_frame *f, const int16_t *ref_object, s
 	for (int k = 0; k < planes; k++)
 		gram[k] = lx_plane_gram(&f->scene->planes[k]), eq[k] = lx_plane_equation(&f->scene->planes[k]);
 	for (int y = 0; y < h; y++) {
-		struct pixel_row r = pixel_row(&f->view, y);
+		struct lx_window_row r = lx_window_row(&f->view, y + 0.5);
 		for (int x = 0; x < w; x++) {
 			long i = (long)y * w + x;
 			int k = ref_object[i];
@@ -318,7 +286,7 @@ static bool sampling(const struct lx_frame *f, const struct lx_atlas *atlas, con
 	out->lpp_min = INFINITY;
 	unsigned reads = lx_shadow_receiver_maps(res, plane); /* once, not per pixel */
 	for (int y = stride / 2; y < hgt; y += stride) {
-		struct pixel_row row = pixel_row(&f->view, y);
+		struct lx_window_row row = lx_window_row(&f->view, y + 0.5);
 		for (int x = stride / 2; x < w; x += stride) {
 			vec3 p;
 			long i = (long)y * w + x;

@@ -15,20 +15,20 @@ vec4 lx_plane_equation(const struct lx_plane *p)
 	return (vec4){n.x, n.y, n.z, -v3_dot(n, p->corner)};
 }
 
+struct lx_window_row lx_window_row(const struct lx_view *v, double wy)
+{
+	const double *m = v->inv_view_proj.m;
+	double ny = 2 * wy / v->height - 1;
+	vec4 c1 = {m[4], m[5], m[6], m[7]}, c2 = {m[8], m[9], m[10], m[11]}, c3 = {m[12], m[13], m[14], m[15]};
+	vec4 mid = v4_lin(ny, c1, 1, c3);
+	return (struct lx_window_row){v4_lin(1, mid, -1, c2), v4_lin(1, mid, 1, c2), {m[0], m[1], m[2], m[3]},
+				      2.0 / v->width};
+}
+
 bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double wy, vec3 *q, double *t)
 {
-	double nx = 2 * wx / v->width - 1, ny = 2 * wy / v->height - 1;
-	vec4 a = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, -1, 1}), b = m4_mul_v4(&v->inv_view_proj, (vec4){nx, ny, 1, 1});
-	if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
-		return false;
-	vec3 pn = v3(a.x / a.w, a.y / a.w, a.z / a.w), d = v3_sub(v3(b.x / b.w, b.y / b.w, b.z / b.w), pn);
-	vec3 n = v3(plane.x, plane.y, plane.z);
-	double den = v3_dot(n, d);
-	if (!(fabs(den) > 1e-300))
-		return false; /* the ray runs along the plane */
-	*t = -(v3_dot(n, pn) + plane.w) / den;
-	*q = v3_add(pn, v3_scale(d, *t));
-	return true;
+	struct lx_window_row r = lx_window_row(v, wy);
+	return lx_window_row_on_plane(&r, plane, wx, q, t);
 }
 
 double lx_plane_near_limit(const struct lx_plane *p) { return 1e-3 * (v3_len(p->edge1) + v3_len(p->edge2)); }

@@ -5,6 +5,7 @@
 #ifndef LX_PLANE_OPTIMAL_H
 #define LX_PLANE_OPTIMAL_H
 #include "frame.h"
+#include <math.h>
 #include "polygon2d.h"
 
 enum lx_plane_camera_status {
@@ -37,9 +38,34 @@ double lx_plane_near_limit(const struct lx_plane *p);
 enum lx_plane_camera_status lx_plane_camera_solve(const struct lx_view *v, vec4 light, vec4 plane, vec4 inside,
 						   struct lx_plane_camera *out);
 
-/* Where the eye ray through window point (wx, wy) meets the plane (n . x + d = 0): the
+/* The eye rays of one row of the window, wy: window point (wx, wy) unprojects to the
+ * homogeneous near point near + nx col and far point far + nx col, nx = sx wx - 1 its x
+ * in NDC. Made once a row, so that what visits every pixel (the metrics) pays per pixel
+ * only for its x. */
+struct lx_window_row {
+	vec4 near, far, col; /* inv_view_proj (0, ny, -1, 1), (0, ny, 1, 1) and its first column */
+	double sx;           /* 2 / width */
+};
+struct lx_window_row lx_window_row(const struct lx_view *v, double wy);
+/* Where the eye ray through window point (wx, row r) meets the plane (n . x + d = 0): the
  * point, and t, its place on the ray from the near plane (0) to the far plane (1). False
- * when the ray runs along the plane. */
+ * when the ray runs along the plane (or a point is at infinity). */
+static inline bool lx_window_row_on_plane(const struct lx_window_row *r, vec4 plane, double wx, vec3 *q, double *t)
+{
+	double nx = r->sx * wx - 1;
+	vec4 a = v4_lin(1, r->near, nx, r->col), b = v4_lin(1, r->far, nx, r->col);
+	if (!(fabs(a.w) > 1e-300) || !(fabs(b.w) > 1e-300))
+		return false;
+	double ia = 1 / a.w, ib = 1 / b.w; /* finite: |w| > 1e-300 */
+	vec3 pn = v3(a.x * ia, a.y * ia, a.z * ia), d = v3_sub(v3(b.x * ib, b.y * ib, b.z * ib), pn);
+	double den = plane.x * d.x + plane.y * d.y + plane.z * d.z;
+	if (!(fabs(den) > 1e-300))
+		return false; /* the ray runs along the plane */
+	*t = -v4_dot_point(plane, pn) / den;
+	*q = v3_add(pn, v3_scale(d, *t));
+	return true;
+}
+/* The same for window point (wx, wy) alone. */
 bool lx_window_on_plane(const struct lx_view *v, vec4 plane, double wx, double wy, vec3 *q, double *t);
 /* Whether point q of the plane lies on its parallelogram (corner + s edge1 + u edge2,
  * s, u in [0, 1]). */
