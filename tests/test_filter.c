@@ -22,14 +22,6 @@
 
 enum { GW = 256, GH = 192 };
 
-/* 64-bit FNV-1a over n bytes, continued from h */
-static uint64_t fnv1a(uint64_t h, const uint8_t *p, size_t n)
-{
-	for (size_t i = 0; i < n; i++)
-		h = (h ^ p[i]) * 0x100000001b3ull;
-	return h;
-}
-
 /* One golden line: the scene, the depth path, the method, the configuration, and the
  * hashes of the shaded image and of the decision image (every byte of both). */
 static void golden_line(struct lx_method_run *run, const struct lx_frame *frame, uint8_t *rgba, int16_t *obj, uint8_t *sh,
@@ -38,13 +30,13 @@ static void golden_line(struct lx_method_run *run, const struct lx_frame *frame,
 	struct lx_frame_times t;
 	lx_method_run_frame(run, frame, NULL, &t);
 	lx_renderer_read(run->renderer, rgba);
-	uint64_t shaded = fnv1a(0xcbf29ce484222325ull, rgba, (size_t)GW * GH * 4);
+	uint64_t shaded = test_fnv1a(TEST_FNV_BASIS, rgba, (size_t)GW * GH * 4);
 	lx_method_run_decision(run, 0, rgba, obj, sh);
 	/* the decision, the object and the visibility, not whether a lookup was drawn (B):
 	 * where the main pass looks is the lookup regions' to change (test_render) */
 	for (size_t i = 0; i < (size_t)GW * GH; i++)
 		rgba[4 * i + 2] = 0;
-	uint64_t decision = fnv1a(0xcbf29ce484222325ull, rgba, (size_t)GW * GH * 4);
+	uint64_t decision = test_fnv1a(TEST_FNV_BASIS, rgba, (size_t)GW * GH * 4);
 	snprintf(line, len, "%s %016llx %016llx\n", what, (unsigned long long)shaded, (unsigned long long)decision);
 }
 

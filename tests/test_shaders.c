@@ -17,7 +17,7 @@ struct batch {
 	char dir[64];
 	int files, variants; /* texts written (each different), variants built */
 	char list[1048576];
-	uint64_t seen[SEEN_SLOTS]; /* the texts written, by their FNV-1a hash with the stage (0: empty) */
+	uint64_t seen[SEEN_SLOTS]; /* the texts written, by test_fnv1a of the stage and the text (0: empty) */
 };
 
 /* Whether a text of this stage (its file extension) was written before; else it is noted.
@@ -26,12 +26,7 @@ struct batch {
  * texts of the ten thousand share one with a chance of about 3e-12. */
 static bool seen_before(struct batch *b, const char *ext, const char *text)
 {
-	uint64_t h = 1469598103934665603u;
-	for (const char *c = ext; *c; c++)
-		h = (h ^ (unsigned char)*c) * 1099511628211u;
-	for (const char *c = text; *c; c++)
-		h = (h ^ (unsigned char)*c) * 1099511628211u;
-	h |= 1; /* never 0, the empty slot */
+	uint64_t h = test_fnv1a(test_fnv1a(TEST_FNV_BASIS, ext, strlen(ext)), text, strlen(text)) | 1; /* never 0, the empty slot */
 	for (size_t i = h % SEEN_SLOTS;; i = (i + 1) % SEEN_SLOTS) {
 		if (b->seen[i] == h)
 			return true;

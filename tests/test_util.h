@@ -31,6 +31,17 @@ static inline double test_rand(uint64_t *s)
 	return (double)(*s >> 11) / 9007199254740992.0;
 }
 
+/* 64-bit FNV-1a over n bytes, continued from h (TEST_FNV_BASIS to begin): the golden
+ * images' hashes, the shader texts' identities. */
+#define TEST_FNV_BASIS 0xcbf29ce484222325ull
+static inline uint64_t test_fnv1a(uint64_t h, const void *bytes, size_t n)
+{
+	const unsigned char *p = bytes;
+	for (size_t i = 0; i < n; i++)
+		h = (h ^ p[i]) * 0x100000001b3ull;
+	return h;
+}
+
 /* Scene file `name` of LX_TEST_DATA into *s; the test fails with the parser's line. */
 static inline void test_scene_load(const char *name, struct lx_scene *s)
 {
