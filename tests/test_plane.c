@@ -687,16 +687,8 @@ static void every_shadow_is_covered(void **state)
 			lx_scene_default(&s.scene);
 		if (k < lx_config_count)
 			lx_config_apply(&lx_configs[k], &s.scene);
-		else {
-			s.scene.camera.eye = v3(test_rand(&seed) * 10 - 5, 0.3 + test_rand(&seed) * 5, test_rand(&seed) * 10 - 3);
-			s.scene.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 1.5, test_rand(&seed) * 4 - 3);
-			if (k % 5 == 0) {
-				s.scene.light.directional = true;
-				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.1 - test_rand(&seed), test_rand(&seed) - 0.5),
-							 &s.scene.light.direction));
-			} else
-				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
-		}
+		else
+			test_random_view(&s.scene, &seed, k % 5 == 0, 0.1);
 		if (!build(&s, "plane", 320, 240, test_rand(&seed) * 5))
 			continue;
 		bool wide = false;

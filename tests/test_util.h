@@ -31,6 +31,21 @@ static inline double test_rand(uint64_t *s)
 	return (double)(*s >> 11) / 9007199254740992.0;
 }
 
+/* A random view of the built-in scenes' room for the sweeps, drawn from *seed in a fixed
+ * order: the eye, the target, then a point light above the room, or when directional a
+ * light travelling down by at least min_down (and sideways at most 0.5 each way). */
+static inline void test_random_view(struct lx_scene *s, uint64_t *seed, bool directional, double min_down)
+{
+	s->camera.eye = v3(test_rand(seed) * 10 - 5, 0.3 + test_rand(seed) * 5, test_rand(seed) * 10 - 3);
+	s->camera.at = v3(test_rand(seed) * 4 - 2, test_rand(seed) * 1.5, test_rand(seed) * 4 - 3);
+	if (directional) {
+		s->light.directional = true;
+		assert_true(v3_normalize(v3(test_rand(seed) - 0.5, -min_down - test_rand(seed), test_rand(seed) - 0.5),
+					 &s->light.direction));
+	} else
+		s->light.position = v3(test_rand(seed) * 12 - 6, 3.5 + test_rand(seed) * 5, test_rand(seed) * 12 - 4);
+}
+
 /* 64-bit FNV-1a over n bytes, continued from h (TEST_FNV_BASIS to begin): the golden
  * images' hashes, the shader texts' identities. */
 #define TEST_FNV_BASIS 0xcbf29ce484222325ull

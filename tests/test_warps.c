@@ -84,16 +84,8 @@ static void covered(const char *method)
 		lx_scene_default(&s.scene);
 		if (k < lx_config_count)
 			lx_config_apply(&lx_configs[k], &s.scene);
-		else {
-			s.scene.camera.eye = v3(test_rand(&seed) * 10 - 5, 0.3 + test_rand(&seed) * 5, test_rand(&seed) * 10 - 3);
-			s.scene.camera.at = v3(test_rand(&seed) * 4 - 2, test_rand(&seed) * 1.5, test_rand(&seed) * 4 - 3);
-			if (k % 3 == 0) {
-				s.scene.light.directional = true;
-				assert_true(v3_normalize(v3(test_rand(&seed) - 0.5, -0.05 - test_rand(&seed), test_rand(&seed) - 0.5),
-							 &s.scene.light.direction));
-			} else
-				s.scene.light.position = v3(test_rand(&seed) * 12 - 6, 3.5 + test_rand(&seed) * 5, test_rand(&seed) * 12 - 4);
-		}
+		else
+			test_random_view(&s.scene, &seed, k % 3 == 0, 0.05);
 		u = s;
 		assert_true(build(&s, method, 320, 240, 0.3));
 		assert_true(build(&u, "uniform", 320, 240, 0.3));
