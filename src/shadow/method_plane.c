@@ -141,6 +141,7 @@ struct plane_chart {
 	bool on_grid;      /* the twist is a multiple of a quarter turn: pixel centres stay on a grid */
 	double x0, y0, x1, y1; /* the turned wanted rays' bounds, in pixels */
 	bool needs_fallback;   /* no map for the plane, yet shadows may fall on it: the fallback serves it */
+	bool bounded;          /* every caster's footprint is known: the feet hold every shadow */
 	struct lx_poly wanted; /* window coordinates: the visible plane where casters may shadow it */
 	struct lx_poly covered; /* window coordinates: where the cover test shadows it (covered_part) */
 	int plane;              /* the plane of interest charted */
@@ -209,18 +210,35 @@ static bool in_chart(const struct plane_chart *ch, const vec3 *x, int n, vec2 *p
 	return in_front;
 }
 
-/* The casters' outlines in the light image (lx_frame_object_outline's points, caster c's
- * from first[c], first[c + 1] - first[c] of them, in object order; whole[c] false for one
- * that reaches behind the light image, its points then meaningless: casters_bound takes
- * its clipped footprint instead). */
-static void caster_outlines(const struct lx_frame *f, const struct plane_chart *ch, vec2 *pts, bool *whole, int *ids,
-			    int *first, int *nc)
+/* Whether object id lies wholly on the far side of plane i from the light, or in it (its
+ * box's corners all at or behind the plane, whose front the light faces: chart_usable):
+ * every ray from the light meets the plane before it, so it shadows nothing there. Its
+ * image in the light's view of the plane still covers part of the plane (the ray's point
+ * where it meets the plane, in front of it), and would be wanted: the table's legs and
+ * slab under its top. */
+static bool behind_plane(const struct lx_frame *f, int i, int id)
+{
+	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
+	for (int k = 0; k < 8; k++)
+		if (!(v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) <= 0))
+			return false;
+	return true;
+}
+
+/* The casters' outlines in plane i's light image (lx_frame_object_outline's points,
+ * caster c's from first[c], first[c + 1] - first[c] of them, in object order; whole[c]
+ * false for one that reaches behind the light image, its points then meaningless:
+ * casters_bound takes its clipped footprint instead). */
+static void caster_outlines(const struct lx_frame *f, int i, const struct plane_chart *ch, vec2 *pts, bool *whole,
+			    int *ids, int *first, int *nc)
 {
 	int np = 0;
 	*nc = 0;
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id) || ch->unmapped[id])
 			continue; /* none of it in the maps: the fronts' tests decide its shadow */
+		if (behind_plane(f, i, id))
+			continue;
 		vec3 x[LX_OUTLINE_POINTS];
 		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
@@ -751,9 +769,10 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	bool whole[LX_MAX_PLANES + LX_MAX_CASTERS];
 	int nc, ids[LX_MAX_PLANES + LX_MAX_CASTERS], first[LX_MAX_PLANES + LX_MAX_CASTERS + 1];
 	struct reach reach[LX_MAX_PLANES + LX_MAX_CASTERS];
-	caster_outlines(f, ch, pts, whole, ids, first, &nc);
+	caster_outlines(f, i, ch, pts, whole, ids, first, &nc);
 	outline_hulls(pts, whole, first, nc);
 	bool bounded = casters_bound(f, i, pts, whole, ids, first, nc, reach, &cast);
+	ch->bounded = bounded;
 	if (bounded)
 		lx_poly_intersect(&ch->win, &cast, &wanted);
 	if (wanted.n < 3 || !(fabs(lx_poly_area(&wanted)) > 1e-9))
@@ -922,6 +941,20 @@ static double least_area(const struct plane_splits *sp)
 		if (sp->by[k].n > 0)
 			least = lx_fmin(least, pieces_area(&sp->by[k]));
 	return least;
+}
+
+/* A plane served by one rectangle over its budget: the rectangle shrinks to its feet's
+ * bounds where they hold every shadow (ch->bounded). The wanted rays are the visible
+ * plane within the hull of all the casters' outlines, which also holds the space between
+ * footprints: one caster's shadow off the plane drew the rectangle across it (on a view of
+ * the table, the top's map at 0.40 lixels per pixel around the ball's shadow alone). The
+ * pieces' choices keep the hull's rectangle as the one to beat; within the budget a
+ * smaller one would only raise the map past a lixel per pixel, for its fill. */
+static void one_piece_to_feet(struct plane_chart *ch, struct plane_pieces *pc, long budget)
+{
+	if (pc->n != 1 || !ch->bounded || !(rect_area(pc->r[0]) > (double)budget) || !feet_bound(ch))
+		return;
+	pc->r[0][0] = ch->x0, pc->r[0][1] = ch->y0, pc->r[0][2] = ch->x1, pc->r[0][3] = ch->y1;
 }
 
 /* What more pieces gain: the lixels per pixel the budget gives, up to one (past one,
@@ -1830,6 +1863,34 @@ static void lower_to_readers(const struct lx_frame *f, const struct lx_atlas *at
 	}
 }
 
+/* Plane i charted (chart_plane) and its choices of rectangles made (plane_splits), with
+ * `spare` pieces to take and its own budget of lixels; false when it gets no map. */
+static bool chart_and_split(const struct lx_frame *f, const struct lx_light_space *ls, int i, int np,
+			    const struct lx_method_options *o, struct lx_shadow_result *out, struct caster_images *images,
+			    int spare, struct plane_chart *ch, struct plane_splits *sp)
+{
+	long own = (long)o->plane_lixels * o->plane_lixels;
+	struct foot_parts parts;
+	covered_part(f, &out->covers, i, &ch->covered);
+	if (!chart_plane(f, ls, i, i + 1 < np ? i + 1 : -1, o, out, ch, &parts))
+		return false;
+	plane_splits(ch, spare > 0, own, sp); /* share_pieces keeps within the spare ones */
+	/* Where its pieces still hold more pixels than the budget has lixels, the feet leave
+	 * out what casters hide from the eye (take_hidden): a shadow there is never seen. Not
+	 * before: within the budget it buys no density, and a smaller rectangle would only
+	 * take the pieces' place with more area (on the default view at 1024x1024 one 586x205
+	 * against two of 76,000 lixels together, 0.13 ms more shadow pass in interleaved
+	 * runs). */
+	if (!(least_area(sp) > (double)own))
+		return true;
+	bool hid_some = false;
+	if (!hidden_feet(f, ch, &parts, images, &hid_some))
+		return false;
+	if (hid_some) /* else the same feet: the same splits */
+		plane_splits(ch, spare > 0, own, sp);
+	return true;
+}
+
 static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_method_options *o,
 			struct lx_shadow_result *out)
 {
@@ -1854,29 +1915,13 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	pl.np = np;
 	struct caster_images images;
 	memset(images.state, 0, sizeof images.state);
-	struct foot_parts parts; /* one plane's at a time */
 	/* the atlas's spare pieces (plane_regions), for planes whose footprints cluster */
 	int spare = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece ? atlas->count - np - 1 : 0;
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	struct plane_splits sp[PLANE_MAPS];
 	for (int i = 0; i < np; i++) {
 		pl.ch[i].unmapped = out->slab_out;
-		covered_part(f, &out->covers, i, &pl.ch[i].covered);
-		pl.ok[i] = chart_plane(f, &ls, i, i + 1 < np ? i + 1 : -1, o, out, &pl.ch[i], &parts);
-		if (pl.ok[i])
-			plane_splits(&pl.ch[i], spare > 0, own, &sp[i]); /* share_pieces keeps within the spare ones */
-		/* Where its pieces still hold more pixels than the budget has lixels, the feet
-		 * leave out what casters hide from the eye (take_hidden): a shadow there is never
-		 * seen. Not before: within the budget it buys no density, and a smaller rectangle
-		 * would only take the pieces' place with more area (on the default view at
-		 * 1024x1024 one 586x205 against two of 76,000 lixels together, 0.13 ms more shadow
-		 * pass in interleaved runs). */
-		bool hid_some = false;
-		if (pl.ok[i] && least_area(&sp[i]) > (double)own) {
-			pl.ok[i] = hidden_feet(f, &pl.ch[i], &parts, &images, &hid_some);
-			if (pl.ok[i] && hid_some) /* else the same feet: the same splits */
-				plane_splits(&pl.ch[i], spare > 0, own, &sp[i]);
-		}
+		pl.ok[i] = chart_and_split(f, &ls, i, np, o, out, &images, spare, &pl.ch[i], &sp[i]);
 	}
 	int take[PLANE_MAPS];
 	share_pieces(sp, pl.ok, np, spare, own, take);
@@ -1884,6 +1929,7 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		if (!pl.ok[i])
 			continue;
 		pl.pc[i] = sp[i].by[take[i]];
+		one_piece_to_feet(&pl.ch[i], &pl.pc[i], own);
 		/* no caster in front of a receiver there: no map (its pieces stay unused) */
 		pl.ok[i] = plane_depth(f, &ls, &pl.ch[i], &pl.pc[i], out, &f->scene->planes[i], &pl.depth[i]);
 	}
