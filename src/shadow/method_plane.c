@@ -225,6 +225,21 @@ static bool behind_plane(const struct lx_frame *f, int i, int id)
 	return true;
 }
 
+/* Whether object id's box reaches through plane i, beyond it from the light by more than
+ * rounding (a caster standing on the plane does not): only its part on the light's side
+ * shadows the plane, and its outline's image would also hold the rest's (under the low
+ * table top, the cylinder). */
+static bool through_plane(const struct lx_frame *f, int i, int id)
+{
+	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
+	double lo = INFINITY, hi = -INFINITY;
+	for (int k = 0; k < 8; k++) {
+		double d = v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k));
+		lo = lx_fmin(lo, d), hi = lx_fmax(hi, d);
+	}
+	return hi > 0 && lo < -1e-9 * (hi - lo);
+}
+
 /* The casters' outlines in plane i's light image (lx_frame_object_outline's points,
  * caster c's from first[c], first[c + 1] - first[c] of them, in object order; whole[c]
  * false for one that reaches behind the light image, its points then meaningless:
@@ -242,7 +257,10 @@ static void caster_outlines(const struct lx_frame *f, int i, const struct plane_
 		vec3 x[LX_OUTLINE_POINTS];
 		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
-		whole[(*nc)++] = in_chart(ch, x, n, pts + np); /* room: LX_OUTLINE_POINTS an object */
+		/* room: LX_OUTLINE_POINTS an object; one through the plane takes its box's part
+		 * on the light's side (casters_bound) */
+		whole[*nc] = in_chart(ch, x, n, pts + np) && !through_plane(f, i, id);
+		(*nc)++;
 		np += n;
 	}
 	first[*nc] = np;
@@ -334,7 +352,7 @@ static void to_chart(const struct plane_chart *ch, struct lx_poly *p)
  * nothing, caster_reach tells which), FOOT_EMPTY when nothing is left in front, FOOT_OPEN
  * when rounding leaves no bound. */
 enum foot { FOOT_POLYGON, FOOT_EMPTY, FOOT_OPEN, FOOT_LEVEL };
-#define FOOT_POINTS 35 /* a box's 8 corners, or a box cut by a plane: one vertex per triple of its 7 planes */
+#define FOOT_POINTS 56 /* a box's 8 corners, or a box cut by two planes: one vertex per triple of its 8 planes */
 /* footprint_clipped for the hull of any points (at most FOOT_POINTS). */
 static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, int np, struct lx_poly *out)
 {
@@ -381,15 +399,43 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 			return FOOT_OPEN; /* in front of the near plane w > 0: rounding, and no bound */
 		out->v[out->n++] = (vec2){(h[v].x / h[v].w + 1) * 0.5 * f->view.width, (h[v].y / h[v].w + 1) * 0.5 * f->view.height};
 	}
+	/* counter-clockwise in the plane's own axes, clockwise on the screen where the eye sees
+	 * its other side (the table's top from under it): turned, as polygon2d.h's polygons
+	 * are, else its intersection with the visible plane came out empty and its part was
+	 * lost to the pieces */
+	if (lx_poly_area(out) < 0)
+		for (int a = 0, b = out->n - 1; a < b; a++, b--) {
+			vec2 tmp = out->v[a];
+			out->v[a] = out->v[b], out->v[b] = tmp;
+		}
 	return out->n >= 3 ? FOOT_POLYGON : FOOT_EMPTY;
+}
+
+/* footprint_of object id's box cut by the half-spaces cut[0..n-1] (a x + b y + c z + d >= 0
+ * kept) and, where it reaches through plane i (through_plane), by the plane. */
+static enum foot box_part_footprint(const struct lx_frame *f, int i, int id, const vec4 *cut, int n,
+				    struct lx_poly *out)
+{
+	vec4 h[8];
+	int nh = 6;
+	lx_box_halfspaces(f->bmin[id], f->bmax[id], h);
+	for (int k = 0; k < n && nh < 7; k++)
+		h[nh++] = cut[k];
+	if (through_plane(f, i, id))
+		h[nh++] = lx_plane_equation(&f->scene->planes[i]); /* >= 0 on the light's side (chart_usable) */
+	vec3 pts[FOOT_POINTS];
+	int np = 8;
+	if (nh == 6)
+		for (int k = 0; k < 8; k++)
+			pts[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
+	else
+		np = lx_halfspace_vertices(h, nh, NULL, 0, pts, FOOT_POINTS);
+	return np > 0 ? footprint_of(f, i, pts, np, out) : FOOT_EMPTY;
 }
 
 static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out)
 {
-	vec3 c[8];
-	for (int k = 0; k < 8; k++)
-		c[k] = v3_box_corner(f->bmin[id], f->bmax[id], k);
-	return footprint_of(f, i, c, 8, out);
+	return box_part_footprint(f, i, id, NULL, 0, out);
 }
 
 /* The distance from the origin to the convex polygon p (lx_poly_hull's winding; 0 inside
@@ -442,13 +488,8 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 	if (!(r_min > 1e-9 * (R + r_min)) || !(R > 0))
 		return FOOT_OPEN;
 	double level = dl - 0.5 * r_min * dl / R; /* < dl: r_min, dl, R > 0 */
-	/* the box's six faces' half-spaces and pi . x <= level */
-	vec4 cut_box[7];
-	lx_box_halfspaces(lo, hi, cut_box);
-	cut_box[6] = (vec4){-pi.x, -pi.y, -pi.z, level - pi.w};
-	vec3 pts[FOOT_POINTS];
-	int n = lx_halfspace_vertices(cut_box, 7, NULL, 0, pts, FOOT_POINTS);
-	enum foot r = n > 0 ? footprint_of(f, i, pts, n, out) : FOOT_EMPTY;
+	vec4 below = {-pi.x, -pi.y, -pi.z, level - pi.w}; /* pi . x <= level */
+	enum foot r = box_part_footprint(f, i, id, &below, 1, out);
 	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
 }
 
@@ -811,6 +852,8 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
+	if (bounded && ch->feet == 0)
+		return false; /* no caster's own footprint on the visible plane: the hull only spans between them */
 	if (bounded && ch->covered.n >= 3 && !feet_bound(ch))
 		return false; /* every shadow falls in the cover's: the test serves the plane */
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
