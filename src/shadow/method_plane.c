@@ -210,34 +210,27 @@ static bool in_chart(const struct plane_chart *ch, const vec3 *x, int n, vec2 *p
 	return in_front;
 }
 
-/* Whether object id lies wholly on the far side of plane i from the light, or in it (its
- * box's corners all at or behind the plane, whose front the light faces: chart_usable):
- * every ray from the light meets the plane before it, so it shadows nothing there. Its
- * image in the light's view of the plane still covers part of the plane (the ray's point
- * where it meets the plane, in front of it), and would be wanted: the table's legs and
- * slab under its top. */
-static bool behind_plane(const struct lx_frame *f, int i, int id)
-{
-	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
-	for (int k = 0; k < 8; k++)
-		if (!(v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k)) <= 0))
-			return false;
-	return true;
-}
-
-/* Whether object id's box reaches through plane i, beyond it from the light by more than
- * rounding (a caster standing on the plane does not): only its part on the light's side
- * shadows the plane, and its outline's image would also hold the rest's (under the low
- * table top, the cylinder). */
-static bool through_plane(const struct lx_frame *f, int i, int id)
+/* Where object id's box lies against plane i, whose front the light faces (chart_usable).
+ * BEHIND: wholly on the far side or in it (every corner at or behind the plane): each ray
+ * from the light meets the plane before it, so it shadows nothing there, yet its image in
+ * the plane's light view still covers part of the plane (the table's legs and slab under
+ * its top). THROUGH: reaching beyond the plane by more than rounding (a caster standing
+ * on it does not): only its part on the light's side shadows the plane, and its outline's
+ * image would also hold the rest's (the cylinder beside the low table top). */
+enum side { SIDE_FRONT, SIDE_THROUGH, SIDE_BEHIND };
+static enum side plane_side(const struct lx_frame *f, int i, int id)
 {
 	vec4 pi = lx_plane_equation(&f->scene->planes[i]);
 	double lo = INFINITY, hi = -INFINITY;
+	int behind = 0;
 	for (int k = 0; k < 8; k++) {
 		double d = v4_dot_point(pi, v3_box_corner(f->bmin[id], f->bmax[id], k));
-		lo = lx_fmin(lo, d), hi = lx_fmax(hi, d);
+		behind += d <= 0;
+		lo = d < lo ? d : lo, hi = d > hi ? d : hi;
 	}
-	return hi > 0 && lo < -1e-9 * (hi - lo);
+	if (behind == 8)
+		return SIDE_BEHIND;
+	return hi > 0 && lo < -1e-9 * (hi - lo) ? SIDE_THROUGH : SIDE_FRONT;
 }
 
 /* The casters' outlines in plane i's light image (lx_frame_object_outline's points,
@@ -252,14 +245,15 @@ static void caster_outlines(const struct lx_frame *f, int i, const struct plane_
 	for (int id = 0; id < f->object_count; id++) {
 		if (!lx_object_can_cast(f, id) || ch->unmapped[id])
 			continue; /* none of it in the maps: the fronts' tests decide its shadow */
-		if (behind_plane(f, i, id))
+		enum side sd = plane_side(f, i, id);
+		if (sd == SIDE_BEHIND)
 			continue;
 		vec3 x[LX_OUTLINE_POINTS];
 		int n = lx_frame_object_outline(f, id, true, x);
 		ids[*nc] = id, first[*nc] = np;
 		/* room: LX_OUTLINE_POINTS an object; one through the plane takes its box's part
 		 * on the light's side (casters_bound) */
-		whole[*nc] = in_chart(ch, x, n, pts + np) && !through_plane(f, i, id);
+		whole[*nc] = in_chart(ch, x, n, pts + np) && sd != SIDE_THROUGH;
 		(*nc)++;
 		np += n;
 	}
@@ -411,17 +405,16 @@ static enum foot footprint_of(const struct lx_frame *f, int i, const vec3 *pts, 
 	return out->n >= 3 ? FOOT_POLYGON : FOOT_EMPTY;
 }
 
-/* footprint_of object id's box cut by the half-spaces cut[0..n-1] (a x + b y + c z + d >= 0
- * kept) and, where it reaches through plane i (through_plane), by the plane. */
-static enum foot box_part_footprint(const struct lx_frame *f, int i, int id, const vec4 *cut, int n,
-				    struct lx_poly *out)
+/* footprint_of object id's box cut by the half-space `cut` (a x + b y + c z + d >= 0 kept;
+ * NULL: none) and, where it reaches through plane i (plane_side), by the plane. */
+static enum foot box_part_footprint(const struct lx_frame *f, int i, int id, const vec4 *cut, struct lx_poly *out)
 {
 	vec4 h[8];
 	int nh = 6;
 	lx_box_halfspaces(f->bmin[id], f->bmax[id], h);
-	for (int k = 0; k < n && nh < 7; k++)
-		h[nh++] = cut[k];
-	if (through_plane(f, i, id))
+	if (cut)
+		h[nh++] = *cut;
+	if (plane_side(f, i, id) == SIDE_THROUGH)
 		h[nh++] = lx_plane_equation(&f->scene->planes[i]); /* >= 0 on the light's side (chart_usable) */
 	vec3 pts[FOOT_POINTS];
 	int np = 8;
@@ -435,7 +428,7 @@ static enum foot box_part_footprint(const struct lx_frame *f, int i, int id, con
 
 static enum foot footprint_clipped(const struct lx_frame *f, int i, int id, struct lx_poly *out)
 {
-	return box_part_footprint(f, i, id, NULL, 0, out);
+	return box_part_footprint(f, i, id, NULL, out);
 }
 
 /* The distance from the origin to the convex polygon p (lx_poly_hull's winding; 0 inside
@@ -489,7 +482,7 @@ static enum foot straddling_reach(const struct lx_frame *f, int i, int id, struc
 		return FOOT_OPEN;
 	double level = dl - 0.5 * r_min * dl / R; /* < dl: r_min, dl, R > 0 */
 	vec4 below = {-pi.x, -pi.y, -pi.z, level - pi.w}; /* pi . x <= level */
-	enum foot r = box_part_footprint(f, i, id, &below, 1, out);
+	enum foot r = box_part_footprint(f, i, id, &below, out);
 	return r == FOOT_LEVEL ? FOOT_OPEN : r; /* rounding at the cut: no bound */
 }
 
