@@ -756,8 +756,8 @@ static void covered_part(const struct lx_frame *f, const struct lx_plane_covers 
 		out->n = 0; /* thinner than the inset: nothing to leave out */
 }
 
-/* With a cover over the plane, the wanted rectangle shrinks to the footprints' bounds
- * (each less the cover's shadow, add_foot); false when none is left. */
+/* The wanted rectangle shrunk to the footprints' bounds (with a cover, each less the
+ * cover's shadow, add_foot); false when none is left. */
 static bool feet_bound(struct plane_chart *ch)
 {
 	if (ch->feet == 0)
@@ -845,10 +845,10 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 		along_x += dx, along_y += dy;
 	}
 	ch->along_x = along_x, ch->along_y = along_y;
-	if (bounded && ch->feet == 0)
-		return false; /* no caster's own footprint on the visible plane: the hull only spans between them */
-	if (bounded && ch->covered.n >= 3 && !feet_bound(ch))
-		return false; /* every shadow falls in the cover's: the test serves the plane */
+	/* no caster's own footprint on the visible plane, or (with a cover) every shadow falls
+	 * in the cover's and the test serves it: the hull of the outlines only spans between */
+	if (bounded && !(ch->covered.n >= 3 ? feet_bound(ch) : ch->feet > 0))
+		return false;
 	return ch->x1 - ch->x0 > 1e-9 && ch->y1 - ch->y0 > 1e-9;
 }
 
