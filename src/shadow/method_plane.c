@@ -817,26 +817,29 @@ static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *l
 	to_chart(ch, &rot);
 	lx_poly_bounds(&rot, &ch->x0, &ch->y0, &ch->x1, &ch->y1);
 	/* each caster's own footprint: where its shadow can fall, for pieces (plane_pieces,
-	 * when every caster has one); its outline inside the visible plane, for the lixels'
-	 * aspect (chart_stretch: from those that have one) */
+	 * when every caster has one); its outline, or its clipped footprint where its shadow
+	 * passes the eye, inside the visible plane, for the lixels' aspect (chart_stretch) */
 	ch->feet = 0, ch->plane = i, parts->n = 0;
 	double along_x = 0, along_y = 0;
 	struct lx_poly win = ch->win;
 	to_chart(ch, &win);
 	for (int c = 0; c < nc; c++) {
 		struct lx_poly one, on;
-		if (!whole[c]) {
-			if (reach[c].kind == FOOT_POLYGON && bounded)
+		if (!whole[c]) { /* a clipped footprint's edges run along its shadow's too */
+			if (reach[c].kind != FOOT_POLYGON)
+				continue;
+			if (bounded)
 				reach_foot(ch, &reach[c], parts);
-			continue;
+			one = reach_poly(&reach[c]);
+		} else {
+			one.n = first[c + 1] - first[c]; /* its outline's hull (outline_hulls) */
+			memcpy(one.v, pts + first[c], (size_t)one.n * sizeof(vec2));
+			lx_poly_intersect(&ch->win, &one, &on);
+			if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
+				continue;
+			if (bounded)
+				add_foot(ch, on, parts);
 		}
-		one.n = first[c + 1] - first[c]; /* its outline's hull (outline_hulls) */
-		memcpy(one.v, pts + first[c], (size_t)one.n * sizeof(vec2));
-		lx_poly_intersect(&ch->win, &one, &on);
-		if (on.n < 3 || !(fabs(lx_poly_area(&on)) > 1e-9))
-			continue;
-		if (bounded)
-			add_foot(ch, on, parts);
 		if (similar)
 			continue; /* square lixels: no outlines wanted */
 		double dx, dy;
