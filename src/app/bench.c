@@ -129,6 +129,8 @@ static void usage(FILE *f)
 		   "                   paper's twist, not screen-aligned), plane/onepiece (one rectangle\n"
 		   "                   per plane), plane/similar (square lixels even short of a lixel\n"
 		   "                   per pixel, not stretched along the shadows' edges),\n"
+		   "                   plane/unslabbed (no footprint cut in slabs where a plane is\n"
+		   "                   short of its budget),\n"
 		   "                   plane/casterfallback (casters read the fallback alone, not\n"
 		   "                   first the plane maps denser on them, --caster-maps fallback),\n"
 		   "                   plane/budget (as dense as the budget allows past a lixel per\n"

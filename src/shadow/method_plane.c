@@ -788,6 +788,59 @@ static bool hidden_feet(const struct lx_frame *f, struct plane_chart *ch, const 
 	return !hd.some || feet_bound(ch);
 }
 
+/* Footprints cut in slabs. A plane whose pieces still hold more pixels than its budget
+ * has lixels gets them thinner where a footprint fills little of its bounding rectangle:
+ * a long shadow seen in perspective is a wedge, and a rectangle around it holds a
+ * triangle's worth of pixels no shadow falls on. Each such footprint is cut across the
+ * chart's x or y axis, whichever leaves less, in SLABS equal bands, where the bands'
+ * own bounds hold a fifth less area (or more) than the footprint's; the slabs are feet of
+ * their own, which the pieces' choices may take apart or merge again (plane_splits). */
+#define SLABS 3
+static double slab_area(const struct plane_chart *ch, const struct lx_poly *on, vec2 e, double lo, double hi,
+			struct lx_poly *slab)
+{
+	double area = 0;
+	for (int j = 0; j < SLABS; j++) {
+		double a = lo + (hi - lo) * j / SLABS, b = lo + (hi - lo) * (j + 1) / SLABS, r[4];
+		lx_poly_clip_halfplane(on, e.x, e.y, -a, &slab[j]);
+		lx_poly_clip_halfplane(&slab[j], -e.x, -e.y, b, &slab[j]);
+		if (slab[j].n < 3)
+			continue;
+		chart_bounds(ch, &slab[j], r);
+		area += (r[2] - r[0]) * (r[3] - r[1]);
+	}
+	return area;
+}
+
+static bool slab_feet(const struct plane_chart *ch, struct foot_parts *parts)
+{
+	vec2 axis[2] = {{ch->mx * ch->cs, -ch->mx * ch->sn}, {ch->sn, ch->cs}}; /* chart_point's */
+	bool cut = false;
+	for (int k = 0, n = parts->n; k < n; k++) {
+		double r[4];
+		chart_bounds(ch, &parts->on[k], r);
+		double whole = (r[2] - r[0]) * (r[3] - r[1]), least = 0.8 * whole;
+		struct lx_poly slab[2][SLABS];
+		int best = -1;
+		for (int a = 0; a < 2; a++) {
+			double area = slab_area(ch, &parts->on[k], axis[a], r[a], r[a + 2], slab[a]);
+			if (area < least)
+				least = area, best = a;
+		}
+		if (best < 0 || parts->n + SLABS - 1 > LX_MAX_PLANES + LX_MAX_CASTERS)
+			continue;
+		bool first = true;
+		for (int j = 0; j < SLABS; j++) {
+			if (slab[best][j].n < 3)
+				continue;
+			parts->on[first ? k : parts->n++] = slab[best][j];
+			first = false;
+		}
+		cut = true;
+	}
+	return cut;
+}
+
 static bool chart_plane(const struct lx_frame *f, const struct lx_light_space *ls, int i, int next,
 			const struct lx_method_options *o, struct lx_shadow_result *out, struct plane_chart *ch,
 			struct foot_parts *parts)
@@ -1906,12 +1959,11 @@ static void lower_to_readers(const struct lx_frame *f, const struct lx_atlas *at
  * `spare` pieces to take and its own budget of lixels; false when it gets no map. */
 static bool chart_and_split(const struct lx_frame *f, const struct lx_light_space *ls, int i, int np,
 			    const struct lx_method_options *o, struct lx_shadow_result *out, struct caster_images *images,
-			    int spare, struct plane_chart *ch, struct plane_splits *sp)
+			    int spare, struct plane_chart *ch, struct plane_splits *sp, struct foot_parts *parts)
 {
 	long own = (long)o->plane_lixels * o->plane_lixels;
-	struct foot_parts parts;
 	covered_part(f, &out->covers, i, &ch->covered);
-	if (!chart_plane(f, ls, i, i + 1 < np ? i + 1 : -1, o, out, ch, &parts))
+	if (!chart_plane(f, ls, i, i + 1 < np ? i + 1 : -1, o, out, ch, parts))
 		return false;
 	plane_splits(ch, spare > 0, own, sp); /* share_pieces keeps within the spare ones */
 	/* Where its pieces still hold more pixels than the budget has lixels, the feet leave
@@ -1923,10 +1975,28 @@ static bool chart_and_split(const struct lx_frame *f, const struct lx_light_spac
 	if (!(least_area(sp) > (double)own))
 		return true;
 	bool hid_some = false;
-	if (!hidden_feet(f, ch, &parts, images, &hid_some))
+	if (!hidden_feet(f, ch, parts, images, &hid_some))
 		return false;
 	if (hid_some) /* else the same feet: the same splits */
 		plane_splits(ch, spare > 0, own, sp);
+	return true;
+}
+
+/* A plane whose pieces hold more pixels than the most lixels it can get this frame (its
+ * own budget and those of the planes without a map: plane_budgets) gets its footprints cut
+ * in slabs (slab_feet) and its choices made again; false when then no foot is left. Not
+ * against its own budget alone: under the table's low light at 1920x1080 the floor, with
+ * the top's idle budget, is at a lixel per pixel in three pieces, and slabs cut it in
+ * four for nothing. */
+static bool slab_and_split(const struct lx_frame *f, int spare, long most, struct caster_images *images,
+			   struct plane_chart *ch, struct plane_splits *sp, struct foot_parts *parts)
+{
+	if (!(least_area(sp) > (double)most) || !slab_feet(ch, parts))
+		return true;
+	bool hid_some = false;
+	if (!hidden_feet(f, ch, parts, images, &hid_some))
+		return false;
+	plane_splits(ch, spare > 0, most, sp);
 	return true;
 }
 
@@ -1958,10 +2028,16 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 	int spare = atlas->count > np + 1 && atlas->regions[0].variable && !o->plane_one_piece ? atlas->count - np - 1 : 0;
 	long own = (long)o->plane_lixels * o->plane_lixels;
 	struct plane_splits sp[PLANE_MAPS];
+	struct foot_parts parts[PLANE_MAPS];
+	long most = own;
 	for (int i = 0; i < np; i++) {
 		pl.ch[i].unmapped = out->slab_out;
-		pl.ok[i] = chart_and_split(f, &ls, i, np, o, out, &images, spare, &pl.ch[i], &sp[i]);
+		pl.ok[i] = chart_and_split(f, &ls, i, np, o, out, &images, spare, &pl.ch[i], &sp[i], &parts[i]);
+		most += pl.ok[i] ? 0 : own;
 	}
+	for (int i = 0; i < np && !o->plane_unslabbed; i++)
+		if (pl.ok[i])
+			pl.ok[i] = slab_and_split(f, spare, most, &images, &pl.ch[i], &sp[i], &parts[i]);
 	int take[PLANE_MAPS];
 	share_pieces(sp, pl.ok, np, spare, own, take);
 	for (int i = 0; i < np; i++) {

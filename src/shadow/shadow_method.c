@@ -91,10 +91,12 @@ const struct lx_shadow_method *lx_shadow_method_spec(const char *spec, struct lx
 			o->plane_one_piece = true;
 		else if (!strcmp(opt, "similar") || !strcmp(opt, "stretch"))
 			o->plane_similar = opt[1] == 'i';
+		else if (!strcmp(opt, "unslabbed") || !strcmp(opt, "slabbed"))
+			o->plane_unslabbed = opt[0] == 'u';
 		else if (!strncmp(opt, "lpp", 3) && !lx_number_real(opt + 3, 0, 1e4, &lpp) && lpp > 0)
 			o->plane_max_lpp = lpp;
 		else {
-			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, budget, readers, casterdense, casterfallback, uncapped, onepiece, similar, stretch, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
+			snprintf(err, errlen, "method '%s': option '%s', expected square, fitted, shared, fixed, twist, aligned, budget, readers, casterdense, casterfallback, uncapped, onepiece, similar, stretch, unslabbed, slabbed, lppX (0 < X <= 10000), all, footprint, pointdepth, facedepth, lightsN (1 <= N <= %d) or slotsN (1 <= N <= %d)",
 				 spec, opt, LX_MAX_LIGHTS, LX_DEPTH_SLOTS_MAX);
 			return NULL;
 		}

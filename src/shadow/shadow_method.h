@@ -89,6 +89,7 @@ struct lx_method_options {
 	bool plane_one_piece; /* plane maps: one rectangle per plane, never two pieces */
 	bool plane_similar;   /* plane maps: square lixels (an exact similarity) even short of a
 			       * lixel per pixel, never stretched along a plane's shadow edges */
+	bool plane_unslabbed; /* plane maps: a footprint is never cut in slabs (method_plane.c) */
 	/* The main pass (every method): every receiver pixel reads its maps, not only where a
 	 * shadow can fall (--lookup-region all, for comparison; the decisions are the same). */
 	bool lookup_everywhere;
