@@ -788,13 +788,14 @@ static bool hidden_feet(const struct lx_frame *f, struct plane_chart *ch, const 
 	return !hd.some || feet_bound(ch);
 }
 
-/* Footprints cut in slabs. A plane whose pieces still hold more pixels than its budget
- * has lixels gets them thinner where a footprint fills little of its bounding rectangle:
- * a long shadow seen in perspective is a wedge, and a rectangle around it holds a
- * triangle's worth of pixels no shadow falls on. Each such footprint is cut across the
- * chart's x or y axis, whichever leaves less, in SLABS equal bands, where the bands'
- * own bounds hold a fifth less area (or more) than the footprint's; the slabs are feet of
- * their own, which the pieces' choices may take apart or merge again (plane_splits). */
+/* Footprints cut in slabs. A plane whose pieces still hold more pixels than it can get
+ * lixels (slab_and_split) gets them thinner where a footprint fills little of its
+ * bounding rectangle: a long shadow seen in perspective is a wedge, and a rectangle
+ * around it holds a triangle's worth of pixels no shadow falls on. Each such footprint
+ * is cut across the chart's x or y axis, whichever leaves less, in SLABS equal bands,
+ * where the bands' own bounds hold a fifth less area (or more) than the footprint's; the
+ * slabs are feet of their own, which the pieces' choices may take apart or merge again
+ * (plane_splits). */
 #define SLABS 3
 static double slab_area(const struct plane_chart *ch, const struct lx_poly *on, vec2 e, double lo, double hi,
 			struct lx_poly *slab)
