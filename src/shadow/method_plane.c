@@ -1451,48 +1451,112 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 			budget[i] += (long)lx_fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
-/* A map that took another's budget (plane_budgets) may hold more lixels than its
- * region: with fixed budgets each region holds its own plane's budget alone. A piece
- * whose lixels could overflow its region is cut in two across its long side into one
- * of the `free` spare pieces; with none left (or PIECES_MAX), the map's budget shrinks
- * until its largest piece fits. "Could": fit_plane's lixels for a piece W x H pixels
- * wide at lpp s^2 are at most s^2 W H + 3 s (W + H) + 1, its axes rounded up and
- * stretched at most 3 to 1 (chart_stretch). The pieces' lixels together never pass the
- * plane budgets' total, so the frame still packs (lx_atlas_layout's bound). */
+/* At most fit_plane's lixels for a piece W x H pixels wide at lpp s^2: s^2 W H + 3 s
+ * (W + H) + 1, its axes rounded up and stretched at most 3 to 1 (chart_stretch). */
 static double piece_lixels_most(const double *r, double s2)
 {
 	double w = scale_one_width(r), h = scale_one_height(r);
 	return s2 * w * h + 3 * sqrt(s2) * (w + h) + 1;
 }
 
-static void cut_to_regions(const struct lx_atlas *atlas, int np, const bool *ok, int free, struct plane_pieces *pc,
-			   long *budget)
+/* The piece holding the most lixels at lpp s2 (piece_lixels_most), cut in two across its
+ * long side into a new last piece. */
+static void cut_biggest(struct plane_pieces *pc, double s2)
+{
+	double most = 0;
+	int big = 0;
+	for (int k = 0; k < pc->n; k++) {
+		double l = piece_lixels_most(pc->r[k], s2);
+		if (l > most)
+			most = l, big = k;
+	}
+	double *r = pc->r[big], *cut = pc->r[pc->n++];
+	memcpy(cut, r, 4 * sizeof *r);
+	bool wide = r[2] - r[0] >= r[3] - r[1];
+	double mid = floor(0.5 * (r[wide ? 0 : 1] + r[wide ? 2 : 3]));
+	r[wide ? 2 : 3] = mid, cut[wide ? 0 : 1] = mid;
+}
+
+/* The two pieces whose bounding rectangle adds the least area to theirs, made one. */
+static void merge_closest(struct plane_pieces *pc)
+{
+	int bi = 0, bj = 1;
+	double least = INFINITY;
+	for (int i = 0; i < pc->n; i++)
+		for (int j = i + 1; j < pc->n; j++) {
+			double u[4];
+			rect_union(pc->r[i], pc->r[j], u);
+			double added = rect_area(u) - rect_area(pc->r[i]) - rect_area(pc->r[j]);
+			if (added < least)
+				least = added, bi = i, bj = j;
+		}
+	rect_union(pc->r[bi], pc->r[bj], pc->r[bi]);
+	memcpy(pc->r[bj], pc->r[pc->n - 1], sizeof pc->r[bj]);
+	pc->n--;
+}
+
+/* The most lixels, from `fits` (which fit) up to `asked`, at which each of plane i's
+ * pieces as fit_plane makes them holds at most `room`, found to 256 lixels by halving;
+ * *lpp: the density the fit then gives. piece_lixels_most bounds a piece's lixels for any
+ * stretch: a map held back by that bound took 1-3% fewer lixels than its fit allows (24
+ * random views at 1920x1080 of tools/random-views.py; its view 147 of --seed 2026, the
+ * floor at 0.977 lixels per pixel by the bound, at 1 by the fit). */
+static long room_budget(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
+			int i, double max_lpp, long room, long fits, long asked, double *lpp)
+{
+	struct plane_fit fit[PIECES_MAX];
+	long lo = fits, hi = asked + 1; /* lo fits, hi does not */
+	while (hi - lo > 256) {
+		long mid = lo + (hi - lo) / 2;
+		bool ok = true;
+		fit_plane(ch, pc, &atlas->regions[i], atlas, mid, max_lpp, fit);
+		for (int k = 0; k < pc->n; k++)
+			ok &= (long)fit[k].w * fit[k].h <= room;
+		*(ok ? &lo : &hi) = mid;
+	}
+	fit_plane(ch, pc, &atlas->regions[i], atlas, lo, max_lpp, fit);
+	*lpp = fit[0].sx * fit[0].sy;
+	return lo;
+}
+
+/* A map that took another's budget (plane_budgets) may hold more lixels than its
+ * region: with fixed budgets each region holds its own plane's budget alone. A piece
+ * whose lixels could overflow its region is cut in two across its long side into one
+ * of the `free` spare pieces; with none left (or PIECES_MAX), the map's budget shrinks
+ * until its largest piece fits, and where two pieces made one free a piece to cut the
+ * largest in, at a higher density than the shrunk budget gives, they are. The pieces'
+ * lixels together never pass the plane budgets' total, so the frame still packs
+ * (lx_atlas_layout's bound). */
+static void cut_to_regions(const struct lx_atlas *atlas, const struct plane_chart *ch, const double *max_lpp, int np,
+			   const bool *ok, int free, struct plane_pieces *pc, long *budget)
 {
 	for (int i = 0; i < np; i++) {
-		long room = atlas->regions[i].budget; /* the spare pieces' are the same (plane_regions) */
+		long room = atlas->regions[i].budget, asked = budget[i]; /* the spare pieces' rooms are the same */
 		for (int tries = 0; ok[i] && budget[i] > room && tries < 64; tries++) {
 			double most = 0;
-			int big = 0;
 			/* lixels per pixel; the scale-1 count >= 1 */
 			double s2 = lx_fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
-			for (int k = 0; k < pc[i].n; k++) {
-				double l = piece_lixels_most(pc[i].r[k], s2);
-				if (l > most)
-					most = l, big = k;
-			}
+			for (int k = 0; k < pc[i].n; k++)
+				most = lx_fmax(most, piece_lixels_most(pc[i].r[k], s2));
 			if (most <= room)
 				break;
-			if (free == 0 || pc[i].n == PIECES_MAX) { /* fewer lixels: most falls with them */
+			if (free == 0 || pc[i].n == PIECES_MAX) /* fewer lixels: most falls with them */
 				budget[i] = (long)(0.99 * (double)budget[i] * room / most);
-				continue;
-			}
-			double *r = pc[i].r[big], *cut = pc[i].r[pc[i].n++];
-			memcpy(cut, r, 4 * sizeof *r);
-			bool wide = r[2] - r[0] >= r[3] - r[1];
-			double mid = floor(0.5 * (r[wide ? 0 : 1] + r[wide ? 2 : 3]));
-			r[wide ? 2 : 3] = mid, cut[wide ? 0 : 1] = mid;
-			free--;
+			else
+				cut_biggest(&pc[i], s2), free--;
 		}
+		if (!ok[i] || budget[i] >= asked)
+			continue;
+		double lpp, lpp_merged;
+		budget[i] = room_budget(atlas, &ch[i], &pc[i], i, max_lpp[i], room, budget[i], asked, &lpp);
+		if (budget[i] >= asked || pc[i].n < 2)
+			continue;
+		struct plane_pieces merged = pc[i];
+		merge_closest(&merged);
+		cut_biggest(&merged, lx_fmin(1, (double)asked / scale_one_lixels(&merged)));
+		long b = room_budget(atlas, &ch[i], &merged, i, max_lpp[i], room, 1, asked, &lpp_merged);
+		if (lpp_merged > lpp)
+			pc[i] = merged, budget[i] = b;
 	}
 }
 
@@ -2053,17 +2117,17 @@ static void plane_build(const struct lx_frame *f, const struct lx_atlas *atlas, 
 		pl.ok[i] = plane_depth(f, &ls, &pl.ch[i], &pl.pc[i], out, &f->scene->planes[i], &pl.depth[i]);
 	}
 	plane_budgets(atlas, o, pl.ch, pl.pc, pl.ok, np, pl.budget);
-	if (!o->shared_budget) { /* the regions hold their own budgets: shared ones hold all */
-		int free = spare;
-		for (int i = 0; i < np; i++)
-			free -= pl.ok[i] ? pl.pc[i].n - 1 : 0;
-		cut_to_regions(atlas, np, pl.ok, free, pl.pc, pl.budget);
-	}
 	/* where no caster reads a plane map (--caster-maps fallback), the readers' density is
 	 * a lixel per pixel from the first fit, which lower_to_readers would build again */
 	bool unread = o->caster_fallback_only && !o->plane_dense_budget && !o->filtered;
 	for (int i = 0; i < np; i++)
 		pl.max_lpp[i] = unread ? (o->plane_max_lpp > 0 ? lx_fmin(o->plane_max_lpp, 1) : 1) : o->plane_max_lpp;
+	if (!o->shared_budget) { /* the regions hold their own budgets: shared ones hold all */
+		int free = spare;
+		for (int i = 0; i < np; i++)
+			free -= pl.ok[i] ? pl.pc[i].n - 1 : 0;
+		cut_to_regions(atlas, pl.ch, pl.max_lpp, np, pl.ok, free, pl.pc, pl.budget);
+	}
 	build_plane_maps(atlas, &pl, ~0u, out);
 	bool in_view[LX_MAX_PLANES + LX_MAX_CASTERS];
 	struct caster_density cd[LX_MAX_PLANES + LX_MAX_CASTERS];
