@@ -979,6 +979,25 @@ static void split_along_axes(const struct plane_chart *ch, struct plane_splits *
 	}
 }
 
+/* Of the n >= 2 rectangles g, the two whose bounding rectangle adds the least area to
+ * theirs made one (the last moved into the freed place): n - 1 left. */
+static void merge_closest(double (*g)[4], int *n)
+{
+	int bi = 0, bj = 1;
+	double least = INFINITY;
+	for (int i = 0; i < *n; i++)
+		for (int j = i + 1; j < *n; j++) {
+			double u[4];
+			rect_union(g[i], g[j], u);
+			double added = rect_area(u) - rect_area(g[i]) - rect_area(g[j]);
+			if (added < least)
+				least = added, bi = i, bj = j;
+		}
+	rect_union(g[bi], g[bj], g[bi]);
+	memcpy(g[bj], g[*n - 1], sizeof g[bj]);
+	(*n)--;
+}
+
 /* The footprints merged pair by pair, least added area first; each stage of PIECES_MAX
  * rectangles or fewer is a choice. */
 static void merge_feet(const struct plane_chart *ch, struct plane_splits *sp)
@@ -988,19 +1007,7 @@ static void merge_feet(const struct plane_chart *ch, struct plane_splits *sp)
 	memcpy(g, ch->foot, (size_t)n * sizeof g[0]);
 	while (n > 1) {
 		offer_pieces(sp, (const double(*)[4])g, n);
-		int bi = 0, bj = 1;
-		double least = INFINITY;
-		for (int i = 0; i < n; i++)
-			for (int j = i + 1; j < n; j++) {
-				double u[4];
-				rect_union(g[i], g[j], u);
-				double added = rect_area(u) - rect_area(g[i]) - rect_area(g[j]);
-				if (added < least)
-					least = added, bi = i, bj = j;
-			}
-		rect_union(g[bi], g[bj], g[bi]);
-		memcpy(g[bj], g[n - 1], sizeof g[bj]);
-		n--;
+		merge_closest(g, &n);
 	}
 }
 
@@ -1477,24 +1484,6 @@ static void cut_biggest(struct plane_pieces *pc, double s2)
 	r[wide ? 2 : 3] = mid, cut[wide ? 0 : 1] = mid;
 }
 
-/* The two pieces whose bounding rectangle adds the least area to theirs, made one. */
-static void merge_closest(struct plane_pieces *pc)
-{
-	int bi = 0, bj = 1;
-	double least = INFINITY;
-	for (int i = 0; i < pc->n; i++)
-		for (int j = i + 1; j < pc->n; j++) {
-			double u[4];
-			rect_union(pc->r[i], pc->r[j], u);
-			double added = rect_area(u) - rect_area(pc->r[i]) - rect_area(pc->r[j]);
-			if (added < least)
-				least = added, bi = i, bj = j;
-		}
-	rect_union(pc->r[bi], pc->r[bj], pc->r[bi]);
-	memcpy(pc->r[bj], pc->r[pc->n - 1], sizeof pc->r[bj]);
-	pc->n--;
-}
-
 /* The most lixels, from `fits` (which fit) up to `asked`, at which each of plane i's
  * pieces as fit_plane makes them holds at most `room`, found to 256 lixels by halving;
  * *lpp: the density the fit then gives. piece_lixels_most bounds a piece's lixels for any
@@ -1552,7 +1541,7 @@ static void cut_to_regions(const struct lx_atlas *atlas, const struct plane_char
 		if (budget[i] >= asked || pc[i].n < 2)
 			continue;
 		struct plane_pieces merged = pc[i];
-		merge_closest(&merged);
+		merge_closest(merged.r, &merged.n);
 		cut_biggest(&merged, lx_fmin(1, (double)asked / scale_one_lixels(&merged)));
 		long b = room_budget(atlas, &ch[i], &merged, i, max_lpp[i], room, 1, asked, &lpp_merged);
 		if (lpp_merged > lpp)
