@@ -1484,26 +1484,35 @@ static void cut_biggest(struct plane_pieces *pc, double s2)
 	r[wide ? 2 : 3] = mid, cut[wide ? 0 : 1] = mid;
 }
 
+/* Whether each of plane i's pieces, as fit_plane makes them for `budget`, holds at most
+ * `room` lixels (fit: that fit). */
+static bool pieces_in_room(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
+			   int i, long budget, double max_lpp, long room, struct plane_fit *fit)
+{
+	fit_plane(ch, pc, &atlas->regions[i], atlas, budget, max_lpp, fit);
+	for (int k = 0; k < pc->n; k++)
+		if ((long)fit[k].w * fit[k].h > room)
+			return false;
+	return true;
+}
+
 /* The most lixels, from `fits` (which fit) up to `asked`, at which each of plane i's
- * pieces as fit_plane makes them holds at most `room`, found to 256 lixels by halving;
- * *lpp: the density the fit then gives. piece_lixels_most bounds a piece's lixels for any
- * stretch: a map held back by that bound took 1-3% fewer lixels than its fit allows (24
- * random views at 1920x1080 of tools/random-views.py; its view 147 of --seed 2026, the
- * floor at 0.977 lixels per pixel by the bound, at 1 by the fit). */
+ * pieces as fit_plane makes them holds at most `room`, found to 256 lixels by halving
+ * (so up to 256 short of `asked` where that fits, a thousandth of such a map); *lpp: the
+ * density the fit then gives. piece_lixels_most bounds a piece's lixels for any stretch:
+ * a map held back by that bound took 1-3% fewer lixels than its fit allows (24 random
+ * views at 1920x1080 of tools/random-views.py; its view 147 of --seed 2026, the floor at
+ * 0.977 lixels per pixel by the bound, at 1 by the fit). */
 static long room_budget(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
 			int i, double max_lpp, long room, long fits, long asked, double *lpp)
 {
 	struct plane_fit fit[PIECES_MAX];
-	long lo = fits, hi = asked + 1; /* lo fits, hi does not */
+	long lo = fits, hi = asked + 1; /* lo fits; hi is past what may be taken */
 	while (hi - lo > 256) {
 		long mid = lo + (hi - lo) / 2;
-		bool ok = true;
-		fit_plane(ch, pc, &atlas->regions[i], atlas, mid, max_lpp, fit);
-		for (int k = 0; k < pc->n; k++)
-			ok &= (long)fit[k].w * fit[k].h <= room;
-		*(ok ? &lo : &hi) = mid;
+		*(pieces_in_room(atlas, ch, pc, i, mid, max_lpp, room, fit) ? &lo : &hi) = mid;
 	}
-	fit_plane(ch, pc, &atlas->regions[i], atlas, lo, max_lpp, fit);
+	pieces_in_room(atlas, ch, pc, i, lo, max_lpp, room, fit);
 	*lpp = fit[0].sx * fit[0].sy;
 	return lo;
 }
