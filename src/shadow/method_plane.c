@@ -1536,8 +1536,9 @@ static void cut_to_regions(const struct lx_atlas *atlas, const struct plane_char
 			double s2 = lx_fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
 			for (int k = 0; k < pc[i].n; k++)
 				most = lx_fmax(most, piece_lixels_most(pc[i].r[k], s2));
-			if (most <= room)
-				break;
+			struct plane_fit fit[PIECES_MAX];
+			if (most <= room || pieces_in_room(atlas, &ch[i], &pc[i], i, budget[i], max_lpp[i], room, fit))
+				break; /* the bound is loose (room_budget): no cut where the fit itself is in room */
 			if (free == 0 || pc[i].n == PIECES_MAX) /* fewer lixels: most falls with them */
 				budget[i] = (long)(0.99 * (double)budget[i] * room / most);
 			else
