@@ -1458,26 +1458,10 @@ static void plane_budgets(const struct lx_atlas *atlas, const struct lx_method_o
 			budget[i] += (long)lx_fmin((double)spare * (need[i] - budget[i]) / short_by, need[i] - budget[i]);
 }
 
-/* At most fit_plane's lixels for a piece W x H pixels wide at lpp s^2: s^2 W H + 3 s
- * (W + H) + 1, its axes rounded up and stretched at most 3 to 1 (chart_stretch). */
-static double piece_lixels_most(const double *r, double s2)
+/* Piece k cut in two across its long side into a new last piece. */
+static void cut_piece(struct plane_pieces *pc, int k)
 {
-	double w = scale_one_width(r), h = scale_one_height(r);
-	return s2 * w * h + 3 * sqrt(s2) * (w + h) + 1;
-}
-
-/* The piece holding the most lixels at lpp s2 (piece_lixels_most), cut in two across its
- * long side into a new last piece. */
-static void cut_biggest(struct plane_pieces *pc, double s2)
-{
-	double most = 0;
-	int big = 0;
-	for (int k = 0; k < pc->n; k++) {
-		double l = piece_lixels_most(pc->r[k], s2);
-		if (l > most)
-			most = l, big = k;
-	}
-	double *r = pc->r[big], *cut = pc->r[pc->n++];
+	double *r = pc->r[k], *cut = pc->r[pc->n++];
 	memcpy(cut, r, 4 * sizeof *r);
 	bool wide = r[2] - r[0] >= r[3] - r[1];
 	double mid = floor(0.5 * (r[wide ? 0 : 1] + r[wide ? 2 : 3]));
@@ -1485,75 +1469,73 @@ static void cut_biggest(struct plane_pieces *pc, double s2)
 }
 
 /* Whether each of plane i's pieces, as fit_plane makes them for `budget`, holds at most
- * `room` lixels (fit: that fit). */
+ * `room` lixels; *big: the piece that holds the most (fit: the fit). */
 static bool pieces_in_room(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
-			   int i, long budget, double max_lpp, long room, struct plane_fit *fit)
+			   int i, long budget, double max_lpp, long room, int *big, struct plane_fit *fit)
 {
 	fit_plane(ch, pc, &atlas->regions[i], atlas, budget, max_lpp, fit);
-	for (int k = 0; k < pc->n; k++)
-		if ((long)fit[k].w * fit[k].h > room)
-			return false;
-	return true;
+	*big = 0;
+	for (int k = 1; k < pc->n; k++)
+		if ((long)fit[k].w * fit[k].h > (long)fit[*big].w * fit[*big].h)
+			*big = k;
+	return (long)fit[*big].w * fit[*big].h <= room;
 }
 
-/* The most lixels, from `fits` (which fit) up to `asked`, at which each of plane i's
- * pieces as fit_plane makes them holds at most `room`, found to 256 lixels by halving
- * (so up to 256 short of `asked` where that fits, a thousandth of such a map); *lpp: the
- * density the fit then gives. piece_lixels_most bounds a piece's lixels for any stretch:
- * a map held back by that bound took 1-3% fewer lixels than its fit allows (24 random
- * views at 1920x1080 of tools/random-views.py; its view 147 of --seed 2026, the floor at
- * 0.977 lixels per pixel by the bound, at 1 by the fit). */
+/* The most lixels up to `asked` at which each of plane i's pieces as fit_plane makes them
+ * holds at most `room`, found to 256 lixels by halving (one lixel always fits); *lpp: the
+ * density the fit then gives. Not a bound on a piece's lixels under any stretch, as
+ * before 7fb3acd: held back by one, maps took 1-3% fewer lixels than their fit allows
+ * (24 random views at 1920x1080 of tools/random-views.py; its view 147 of --seed 2026,
+ * the floor at 0.977 lixels per pixel by the bound, at 1 by the fit). */
 static long room_budget(const struct lx_atlas *atlas, const struct plane_chart *ch, const struct plane_pieces *pc,
-			int i, double max_lpp, long room, long fits, long asked, double *lpp)
+			int i, double max_lpp, long room, long asked, double *lpp)
 {
 	struct plane_fit fit[PIECES_MAX];
-	long lo = fits, hi = asked + 1; /* lo fits; hi is past what may be taken */
+	int big;
+	long lo = 1, hi = asked + 1; /* lo fits; hi is past what may be taken */
 	while (hi - lo > 256) {
 		long mid = lo + (hi - lo) / 2;
-		*(pieces_in_room(atlas, ch, pc, i, mid, max_lpp, room, fit) ? &lo : &hi) = mid;
+		*(pieces_in_room(atlas, ch, pc, i, mid, max_lpp, room, &big, fit) ? &lo : &hi) = mid;
 	}
-	pieces_in_room(atlas, ch, pc, i, lo, max_lpp, room, fit);
+	pieces_in_room(atlas, ch, pc, i, lo, max_lpp, room, &big, fit);
 	*lpp = fit[0].sx * fit[0].sy;
 	return lo;
 }
 
 /* A map that took another's budget (plane_budgets) may hold more lixels than its
- * region: with fixed budgets each region holds its own plane's budget alone. A piece
- * whose lixels could overflow its region is cut in two across its long side into one
- * of the `free` spare pieces; with none left (or PIECES_MAX), the map's budget shrinks
- * until its largest piece fits, and where two pieces made one free a piece to cut the
- * largest in, at a higher density than the shrunk budget gives, they are. The pieces'
- * lixels together never pass the plane budgets' total, so the frame still packs
- * (lx_atlas_layout's bound). */
+ * region: with fixed budgets each region holds its own plane's budget alone. Where a
+ * piece as fit_plane makes it would overflow its region, the largest is cut in two across
+ * its long side into one of the `free` spare pieces; with none left (or PIECES_MAX), the
+ * map's budget shrinks until its largest piece fits, and where two pieces made one free a
+ * piece to cut the largest in, at a higher density than the shrunk budget gives, they
+ * are. (Until d715bd3 a bound on a piece's lixels under any stretch decided the cuts: on
+ * random view 14 of --seed 909 at 1920x1080 the floor took four pieces where two hold it.)
+ * The pieces' lixels together never pass the plane budgets' total, so the frame still
+ * packs (lx_atlas_layout's bound). */
 static void cut_to_regions(const struct lx_atlas *atlas, const struct plane_chart *ch, const double *max_lpp, int np,
 			   const bool *ok, int free, struct plane_pieces *pc, long *budget)
 {
 	for (int i = 0; i < np; i++) {
 		long room = atlas->regions[i].budget, asked = budget[i]; /* the spare pieces' rooms are the same */
-		for (int tries = 0; ok[i] && budget[i] > room && tries < 64; tries++) {
-			double most = 0;
-			/* lixels per pixel; the scale-1 count >= 1 */
-			double s2 = lx_fmin(1, (double)budget[i] / scale_one_lixels(&pc[i]));
-			for (int k = 0; k < pc[i].n; k++)
-				most = lx_fmax(most, piece_lixels_most(pc[i].r[k], s2));
-			struct plane_fit fit[PIECES_MAX];
-			if (most <= room || pieces_in_room(atlas, &ch[i], &pc[i], i, budget[i], max_lpp[i], room, fit))
-				break; /* the bound is loose (room_budget): no cut where the fit itself is in room */
-			if (free == 0 || pc[i].n == PIECES_MAX) /* fewer lixels: most falls with them */
-				budget[i] = (long)(0.99 * (double)budget[i] * room / most);
-			else
-				cut_biggest(&pc[i], s2), free--;
-		}
-		if (!ok[i] || budget[i] >= asked)
+		struct plane_fit fit[PIECES_MAX];
+		int big;
+		if (!ok[i] || asked <= room) /* a fit's pieces hold at most its budget */
+			continue;
+		bool in_room;
+		while (!(in_room = pieces_in_room(atlas, &ch[i], &pc[i], i, asked, max_lpp[i], room, &big, fit)) &&
+		       free > 0 && pc[i].n < PIECES_MAX)
+			cut_piece(&pc[i], big), free--;
+		if (in_room)
 			continue;
 		double lpp, lpp_merged;
-		budget[i] = room_budget(atlas, &ch[i], &pc[i], i, max_lpp[i], room, budget[i], asked, &lpp);
-		if (budget[i] >= asked || pc[i].n < 2)
+		budget[i] = room_budget(atlas, &ch[i], &pc[i], i, max_lpp[i], room, asked, &lpp);
+		if (pc[i].n < 2)
 			continue;
 		struct plane_pieces merged = pc[i];
 		merge_closest(merged.r, &merged.n);
-		cut_biggest(&merged, lx_fmin(1, (double)asked / scale_one_lixels(&merged)));
-		long b = room_budget(atlas, &ch[i], &merged, i, max_lpp[i], room, 1, asked, &lpp_merged);
+		pieces_in_room(atlas, &ch[i], &merged, i, asked, max_lpp[i], room, &big, fit);
+		cut_piece(&merged, big);
+		long b = room_budget(atlas, &ch[i], &merged, i, max_lpp[i], room, asked, &lpp_merged);
 		if (lpp_merged > lpp)
 			pc[i] = merged, budget[i] = b;
 	}
