@@ -1280,14 +1280,21 @@ static void shadows_past_the_eye_stretch_the_map(void **state)
  * --seed 3031 at 1024x768: 0.1256% of the pixels wrong, uniform 0.0820%). Cut in slabs
  * (slab_feet), the footprints leave the pieces less area: the floor denser, the top at a
  * lixel per pixel, and every shadow still in a map that serves it. */
-static int plane_pieces_of(const struct setup *s, int plane, double *lpp)
+/* How many pieces plane `plane`'s map is in, their lixels (*lixels, where asked) and
+ * their density (*lpp); each piece checked to fit its region's budget (cut_to_regions). */
+static int plane_pieces_of(const struct setup *s, int plane, double *lpp, long *lixels)
 {
 	int n = 0;
+	long total = 0;
 	for (int m = 0; m < s->res.map_count; m++) {
 		const struct lx_shadow_map *mp = &s->res.maps[m];
-		if (mp->rendered && mp->plane == plane) /* a plane's pieces carry its index */
-			n++, *lpp = mp->lixel_scale * mp->lixel_scale; /* one scale for all its pieces */
+		if (!mp->rendered || mp->plane != plane) /* a plane's pieces carry its index */
+			continue;
+		assert_true((long)mp->w * mp->h <= s->atlas.regions[mp->region].budget);
+		n++, total += (long)mp->w * mp->h, *lpp = mp->lixel_scale * mp->lixel_scale; /* one scale for all */
 	}
+	if (lixels)
+		*lixels = total;
 	return n;
 }
 
@@ -1304,8 +1311,8 @@ static void wedge_footprints_cut_in_slabs(void **state)
 		struct lx_method_options o = LX_METHOD_OPTIONS_DEFAULT;
 		o.plane_unslabbed = !slabbed;
 		assert_true(build_with(&s, "plane", 1024, 768, v39.time, &o));
-		pieces[slabbed][0] = plane_pieces_of(&s, 1, &lpp[slabbed][0]); /* the floor */
-		pieces[slabbed][1] = plane_pieces_of(&s, 0, &lpp[slabbed][1]); /* the table top */
+		pieces[slabbed][0] = plane_pieces_of(&s, 1, &lpp[slabbed][0], NULL); /* the floor */
+		pieces[slabbed][1] = plane_pieces_of(&s, 0, &lpp[slabbed][1], NULL); /* the table top */
 		printf("%s: floor %d pieces at %.3f lixels per pixel, top %d at %.3f\n", slabbed ? "slabbed" : "unslabbed",
 		       pieces[slabbed][0], lpp[slabbed][0], pieces[slabbed][1], lpp[slabbed][1]);
 		if (slabbed) {
@@ -1327,20 +1334,6 @@ static void wedge_footprints_cut_in_slabs(void **state)
  * two pieces made one and the largest cut in two: 214,603, 0.76, 0.0144%). And the
  * bound cut pieces the fit did not need: random view 14 of --seed 909 (the default scene)
  * took four pieces where two hold its lixels within their regions, for the same density. */
-static long floor_pieces_in_rooms(const struct setup *s, int floor, double *lpp, int *pieces)
-{
-	long total = 0;
-	*pieces = 0;
-	for (int m = 0; m < s->res.map_count; m++) {
-		const struct lx_shadow_map *mp = &s->res.maps[m];
-		if (!mp->rendered || mp->plane != floor) /* a plane's pieces carry its index */
-			continue;
-		assert_true((long)mp->w * mp->h <= s->atlas.regions[mp->region].budget);
-		total += (long)mp->w * mp->h, *lpp = mp->lixel_scale * mp->lixel_scale, (*pieces)++;
-	}
-	return total;
-}
-
 static void pieces_spend_the_budget_within_their_regions(void **state)
 {
 	(void)state;
@@ -1353,8 +1346,8 @@ static void pieces_spend_the_budget_within_their_regions(void **state)
 		random_view_scene(&s, &views[k]);
 		assert_true(build(&s, "plane", 1920, 1080, views[k].time));
 		double lpp = 0;
-		int pieces;
-		long lixels = floor_pieces_in_rooms(&s, views[k].table ? 1 : 0, &lpp, &pieces); /* the floor */
+		long lixels;
+		int pieces = plane_pieces_of(&s, views[k].table ? 1 : 0, &lpp, &lixels); /* the floor */
 		printf("view %d: the floor's %d pieces hold %ld lixels at %.3f lixels per pixel\n", k, pieces, lixels, lpp);
 		if (k == 0)
 			assert_true(lpp >= 1 - 1e-9);
