@@ -13,9 +13,15 @@ cache miss or a wide vector costs more than one), but two methods' counts on one
 taken the same way, say which does more work and where: on the facing view at 1024x1024
 they give plane-optimal's frame about 7% more than uniform's, as the bench's timed ratio
 does on a quiet day (docs/results.md, "Instructions, not time").
-Usage: frame-instructions.py LIXEL [RENDER OPTIONS...]
+With --sending (before the render options) two more runs count only what the application
+does inside lx_renderer_shadow_passes and lx_renderer_main_pass, the sending of the draws
+(the GL's vertex work, triangle set-up and binning, state changes): on one llvmpipe thread
+the rasterizer starts a pass only once it is sent, so that part lies on the frame's path,
+where the planning made while the GL draws does not (docs/results.md, "A quiet day's
+rounds, and what facing's frame waits for").
+Usage: frame-instructions.py [--sending] LIXEL [RENDER OPTIONS...]
   e.g. tools/frame-instructions.py build/lixel --config facing --method plane --size 1024x1024
-Needs valgrind; takes one to two minutes a view at 1024x1024."""
+Needs valgrind; takes one to two minutes a view at 1024x1024, twice that with --sending."""
 import collections
 import os
 import re
@@ -26,6 +32,7 @@ import tempfile
 
 FIRST, SPAN = 10, 8  # timed frames of the two runs: SPAN a whole cycle of depth slots
 KINDS = ("lixel", "GL in C", "shader JIT", "LLVM compile", "libc, other")
+SENDING = ("lx_renderer_shadow_passes", "lx_renderer_main_pass")  # the passes' draws sent
 
 
 def kind(name):
@@ -60,13 +67,15 @@ def counts(path):
     return c
 
 
-def run(lixel, args, frames, tmp):
-    """Thread number -> its counts by kind, for `lixel render ARGS --frames FRAMES`."""
-    out = os.path.join(tmp, "cg-%d" % frames)
+def run(lixel, args, frames, tmp, only=()):
+    """Thread number -> its counts by kind, for `lixel render ARGS --frames FRAMES`; with
+    `only`, of what runs inside those functions alone."""
+    tag = "cg-%s%d" % ("sending-" if only else "", frames)
+    out = os.path.join(tmp, tag)
     env = dict(os.environ, LP_NUM_THREADS="1", MESA_SHADER_CACHE_DISABLE="true")
     cmd = ["valgrind", "--tool=callgrind", "--smc-check=all", "--separate-threads=yes",
-           "--callgrind-out-file=" + out, lixel, "render"] + args + \
-          ["--frames", str(frames), "--out", os.path.join(tmp, "frame.png")]
+           "--callgrind-out-file=" + out] + ["--toggle-collect=" + f for f in only] + \
+          [lixel, "render"] + args + ["--frames", str(frames), "--out", os.path.join(tmp, "frame.png")]
     r = subprocess.run(cmd, capture_output=True, text=True, env=env)
     if r.returncode != 0:  # lixel's own message, without valgrind's lines
         sys.stderr.write("".join(l + "\n" for l in r.stderr.splitlines() if not l.startswith("==")))
@@ -74,25 +83,30 @@ def run(lixel, args, frames, tmp):
         sys.exit(r.returncode)
     threads = {}
     for name in os.listdir(tmp):
-        m = re.fullmatch(r"cg-%d-(\d+)" % frames, name)
+        m = re.fullmatch(re.escape(tag) + r"-(\d+)", name)
         if m:
             threads[int(m.group(1))] = counts(os.path.join(tmp, name))
     return threads
 
 
 def main():
-    if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
+    argv = sys.argv[1:]
+    sending = bool(argv) and argv[0] == "--sending"
+    argv = argv[1:] if sending else argv
+    if not argv or argv[0] in ("-h", "--help"):
         print(__doc__)
-        return 0 if len(sys.argv) >= 2 else 2
-    if any(a in ("--frames", "--out") for a in sys.argv[2:]):
+        return 0 if argv else 2
+    if any(a in ("--frames", "--out") for a in argv[1:]):
         sys.stderr.write("frame-instructions: --frames and --out are the tool's own; expected the other render options\n")
         return 2
     if not shutil.which("valgrind") or not shutil.which("callgrind_annotate"):
         sys.exit("frame-instructions: valgrind (its callgrind) is needed: apt-get install valgrind")
-    lixel, args = sys.argv[1], sys.argv[2:]
+    lixel, args = argv[0], argv[1:]
     tmp = tempfile.mkdtemp(prefix="lixel-instructions-")
     try:
         a, b = run(lixel, args, FIRST, tmp), run(lixel, args, FIRST + SPAN, tmp)
+        if sending:
+            sa, sb = run(lixel, args, FIRST, tmp, SENDING), run(lixel, args, FIRST + SPAN, tmp, SENDING)
     finally:
         shutil.rmtree(tmp)
     print("frame-instructions: lixel render %s: instructions a frame, millions ((%d frames - %d frames) / %d)"
@@ -109,6 +123,10 @@ def main():
         name = "application (thread 1)" if t == 1 else "GL (thread %d)" % t
         print("%-26s %10.2f" % (name, work(d)) + "".join(" %12.2f" % d[k] for k in KINDS))
     print("%-26s %10.2f" % ("all", work(total)) + "".join(" %12.2f" % total[k] for k in KINDS))
+    if sending:
+        d = {k: (sb.get(1, {}).get(k, 0) - sa.get(1, {}).get(k, 0)) / (SPAN * 1e6) for k in KINDS}
+        print("%-26s %10.2f" % ("application, sending", work(d)) + "".join(" %12.2f" % d[k] for k in KINDS))
+        print("(application, sending: its instructions inside %s, which the rasterizer waits for)" % " and ".join(SENDING))
     return 0
 
 
