@@ -45,7 +45,7 @@ def kind(name):
         return "LLVM compile"
     if "OSMesa" in obj or "gallium" in obj or "_dri" in obj or "GL" in obj or "glapi" in obj:
         return "GL in C"
-    if obj.startswith("lixel") or "/src/" in name:
+    if obj.startswith("lixel") or "/src/" in name or name.startswith("src/"):  # a lixel built here: paths relative
         return "lixel"
     return "libc, other"
 
@@ -89,6 +89,16 @@ def run(lixel, args, frames, tmp, only=()):
     return threads
 
 
+def per_frame(a, b, t):
+    """Thread t's millions of instructions a frame by kind: runs a (FIRST frames) and b
+    (FIRST + SPAN) apart, over SPAN."""
+    return {k: (b.get(t, {}).get(k, 0) - a.get(t, {}).get(k, 0)) / (SPAN * 1e6) for k in KINDS}
+
+
+def row(name, d):
+    print("%-26s %10.2f" % (name, work(d)) + "".join(" %12.2f" % d[k] for k in KINDS))
+
+
 def main():
     argv = sys.argv[1:]
     sending = bool(argv) and argv[0] == "--sending"
@@ -116,16 +126,14 @@ def main():
     print("%-26s %10s" % ("thread", "all") + "".join(" %12s" % k for k in KINDS))
     total = collections.Counter()
     for t in sorted(set(a) | set(b)):
-        d = {k: (b.get(t, {}).get(k, 0) - a.get(t, {}).get(k, 0)) / (SPAN * 1e6) for k in KINDS}
+        d = per_frame(a, b, t)
         if all(abs(v) < 0.005 for v in d.values()):
             continue  # a thread that did nothing in the frames (Mesa's queue threads)
         total.update(d)
-        name = "application (thread 1)" if t == 1 else "GL (thread %d)" % t
-        print("%-26s %10.2f" % (name, work(d)) + "".join(" %12.2f" % d[k] for k in KINDS))
-    print("%-26s %10.2f" % ("all", work(total)) + "".join(" %12.2f" % total[k] for k in KINDS))
+        row("application (thread 1)" if t == 1 else "GL (thread %d)" % t, d)
+    row("all", total)
     if sending:
-        d = {k: (sb.get(1, {}).get(k, 0) - sa.get(1, {}).get(k, 0)) / (SPAN * 1e6) for k in KINDS}
-        print("%-26s %10.2f" % ("application, sending", work(d)) + "".join(" %12.2f" % d[k] for k in KINDS))
+        row("application, sending", per_frame(sa, sb, 1))
         print("(application, sending: its instructions inside %s, which the rasterizer waits for)" % " and ".join(SENDING))
     return 0
 
