@@ -182,7 +182,12 @@ static void same_as_highp(const char *texture, const char *now)
  * code that ends a box caster's lookup volume at its lit faces, whose spans cut the
  * table's floor seen from close to it into other pieces: one pixel on the floor's far
  * edge (uniform, PSM and TSM at both precisions, plane-optimal at highp) now shows the
- * background, as the exact reference does). A method or configuration
+ * background, as the exact reference does; 4 of plane-optimal's by the code that puts
+ * the cuts at its maps' screen rectangles on whole blocks too, whose spans cut the floor
+ * into other pieces: one pixel of the default view (highp) and of the table's low light
+ * (mediump) one level of lighting, and on the default scene's floor-close view at both
+ * precisions one pixel on the floor's edge the floor, as the exact reference has it,
+ * where it showed the background). A method or configuration
  * the file does not hold is new and not compared; one it holds must draw the same. llvmpipe's images depend on
  * its version and the CPU's vector width: on another renderer the test says so and skips. */
 static void filter_none_draws_as_before(void **state)

@@ -1371,6 +1371,58 @@ static void no_sure_shadow_where_a_caster_touches_or_passes_the_plane(void **sta
 	lx_meshes_free(&s.meshes);
 }
 
+/* A plane map's screen rectangle as the main pass cuts the plane at it: every pixel whose
+ * centre lies in the map's rectangle inside, a pixel of margin, and edges on whole blocks
+ * (LX_SPAN_ALIGN) but at the window's own edges, no more than a block out. */
+static void check_map_rect(const struct lx_shadow_map *map, int width, int height, const char *what)
+{
+	struct lx_rect r = lx_map_screen_rect(map, width, height);
+	double want[4] = {fmax(0, floor(map->screen[0]) - 1), fmax(0, floor(map->screen[1]) - 1),
+			  fmin(width, ceil(map->screen[2]) + 1), fmin(height, ceil(map->screen[3]) + 1)};
+	int got[4] = {r.x0, r.y0, r.x1, r.y1}, lim[4] = {0, 0, width, height};
+	for (int k = 0; k < 4; k++) {
+		bool out = k < 2 ? got[k] <= want[k] : got[k] >= want[k];
+		bool near = fabs(got[k] - want[k]) < LX_SPAN_ALIGN;
+		bool whole = got[k] % LX_SPAN_ALIGN == 0 || got[k] == lim[k];
+		if (!out || !near || !whole)
+			fail_msg("%s: the map's rectangle %.2f %.2f %.2f %.2f in a %dx%d window cut at %d %d %d %d", what,
+				 map->screen[0], map->screen[1], map->screen[2], map->screen[3], width, height, r.x0, r.y0,
+				 r.x1, r.y1);
+	}
+}
+
+static void check_map_rects(struct setup *s, const char *what, void *ctx)
+{
+	long *n = ctx;
+	for (int m = 0; m < s->res.map_count; m++) {
+		const struct lx_shadow_map *map = &s->res.maps[m];
+		if (!map->rendered || map->plane < 0 || !map->has_screen || !(map->screen[2] >= map->screen[0]) ||
+		    !(map->screen[3] >= map->screen[1]))
+			continue; /* the main pass cuts a plane only at these (plane_spans) */
+		check_map_rect(map, W, H, what);
+		check_map_rect(map, W + 3, H + 1, what); /* a window whose sides are not whole blocks */
+		(*n)++;
+	}
+}
+
+static void map_rects_end_on_whole_blocks(void **state)
+{
+	(void)state;
+	long n = 0;
+	each_standard_setup(check_map_rects, &n);
+	/* by hand: 5.5 -> 4 (the margin's 4), 7.2 -> 6 -> 4, 100.1 -> 102 -> 104, past the
+	 * window's 102, 50 -> 51 -> 52 */
+	struct lx_shadow_map map = {.has_screen = true, .screen = {5.5, 7.2, 100.1, 50.0}};
+	struct lx_rect r = lx_map_screen_rect(&map, 102, 60);
+	assert_int_equal(r.x0, 4), assert_int_equal(r.y0, 4), assert_int_equal(r.x1, 102), assert_int_equal(r.y1, 52);
+	/* a rectangle reaching off the window on every side: the window */
+	map = (struct lx_shadow_map){.has_screen = true, .screen = {-1e30, -3.5, 1e30, 1e9}};
+	r = lx_map_screen_rect(&map, 102, 60);
+	assert_int_equal(r.x0, 0), assert_int_equal(r.y0, 0), assert_int_equal(r.x1, 102), assert_int_equal(r.y1, 60);
+	print_message("%ld plane maps' screen rectangles cut the plane on whole blocks\n", n);
+	assert_true(n >= 20);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -1389,6 +1441,7 @@ int main(void)
 		cmocka_unit_test(a_flat_box_pair_is_its_box),
 		cmocka_unit_test(sure_shadows_lie_in_the_casters_shadows),
 		cmocka_unit_test(no_sure_shadow_where_a_caster_touches_or_passes_the_plane),
+		cmocka_unit_test(map_rects_end_on_whole_blocks),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1577,11 +1577,7 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 			nr = -1; /* a map that does not say where it reaches: no cut */
 			break;
 		}
-		/* a pixel of margin: pixel centres on the rectangle's edge are inside it */
-		double lim[4] = {0, 0, r->d.width, r->d.height}, v[4];
-		for (int k = 0; k < 4; k++)
-			v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
-		rect[nr] = (struct lx_rect){(int)v[0], (int)v[1], (int)v[2], (int)v[3]};
+		rect[nr] = lx_map_screen_rect(map, r->d.width, r->d.height);
 		of[nr] = map;
 		bit[nr++] = 1u << m;
 	}
