@@ -126,9 +126,9 @@ setup-hash: $(BUILD)/setup-hash
 $(BUILD)/setup-hash: tools/setup_hash.c $(CORE_LIB) | $(BUILD)
 	$(CC) $(CPPFLAGS_ALL) $(WARN) $(CFLAGS) $< $(CORE_LIB) $(PKG_PNG_LIBS) -lm -o $@
 
-# The set-up timed without a GL, warm and after work that wears the CPU's caches and
-# branch predictor (tools/setup_time.c): figures, no verdict (SETUP_TIME_ARGS: -n, -s,
-# methods).
+# The set-up timed without a GL, warm, after work that wears the CPU's caches and
+# branch predictor, and after a sleep (tools/setup_time.c): figures, no verdict
+# (SETUP_TIME_ARGS: -n, -s, methods).
 setup-time: $(BUILD)/setup-time
 	$(BUILD)/setup-time $(SETUP_TIME_ARGS)
 

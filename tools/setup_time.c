@@ -9,7 +9,10 @@
  *              pointer per comparison and 1.6 MB of memory, nearer what a GL driver's
  *              work does between two frames (the bench's `setup us` is a frame's first
  *              set-up, made after the driver has taken the main pass; its `again us` the
- *              same work repeated once the frame's shadow passes are planned).
+ *              same work repeated once the frame's shadow passes are planned);
+ *   sleep      after 3 ms asleep (nanosleep), the thread off the CPU as a frame loop's
+ *              wait for the GL or the display leaves it: what the set-up pays for state
+ *              it did not wear out itself.
  * What it prints are figures, not a verdict: they move with the machine.
  * Usage: setup-time [-n REPEATS] [-s WxH] [METHOD...]   (default: 101 repeats, 1024x1024,
  * the methods plane and uniform) */
@@ -31,8 +34,8 @@ static double now_us(void)
 	return t.tv_sec * 1e6 + t.tv_nsec * 1e-3;
 }
 
-enum { WARM, CACHES, BRANCHES, SORT, STATES };
-static const char *const state_names[STATES] = {"warm", "caches", "branches", "sort"};
+enum { WARM, CACHES, BRANCHES, SORT, SLEEP, STATES };
+static const char *const state_names[STATES] = {"warm", "caches", "branches", "sort", "sleep"};
 
 static unsigned char *junk; /* 8 MB, written a byte a cache line */
 static unsigned *numbers;   /* SORT_COUNT, sorted by `wear` */
@@ -64,6 +67,10 @@ static void wear(int s)
 			}
 		}
 		sink += acc;
+	} else if (s == SLEEP) {
+		struct timespec d = {0, 3000000};
+		while (nanosleep(&d, &d) != 0) /* a signal: the rest of it */
+			;
 	} else if (s == SORT) {
 		unsigned x = 12345;
 		for (int i = 0; i < SORT_COUNT; i++)
