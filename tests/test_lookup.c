@@ -1376,7 +1376,8 @@ static void no_sure_shadow_where_a_caster_touches_or_passes_the_plane(void **sta
  * (LX_SPAN_ALIGN) but at the window's own edges, no more than a block out. */
 static void check_map_rect(const struct lx_shadow_map *map, int width, int height, const char *what)
 {
-	struct lx_rect r = lx_map_screen_rect(map, width, height);
+	struct lx_rect r;
+	assert_true(lx_map_screen_rect(map, width, height, &r));
 	double want[4] = {fmax(0, floor(map->screen[0]) - 1), fmax(0, floor(map->screen[1]) - 1),
 			  fmin(width, ceil(map->screen[2]) + 1), fmin(height, ceil(map->screen[3]) + 1)};
 	int got[4] = {r.x0, r.y0, r.x1, r.y1}, lim[4] = {0, 0, width, height};
@@ -1396,8 +1397,8 @@ static void check_map_rects(struct setup *s, const char *what, void *ctx)
 	long *n = ctx;
 	for (int m = 0; m < s->res.map_count; m++) {
 		const struct lx_shadow_map *map = &s->res.maps[m];
-		if (!map->rendered || map->plane < 0 || !map->has_screen || !(map->screen[2] >= map->screen[0]) ||
-		    !(map->screen[3] >= map->screen[1]))
+		struct lx_rect r;
+		if (!map->rendered || map->plane < 0 || !lx_map_screen_rect(map, W, H, &r))
 			continue; /* the main pass cuts a plane only at these (plane_spans) */
 		check_map_rect(map, W, H, what);
 		check_map_rect(map, W + 3, H + 1, what); /* a window whose sides are not whole blocks */
@@ -1413,12 +1414,20 @@ static void map_rects_end_on_whole_blocks(void **state)
 	/* by hand: 5.5 -> 4 (the margin's 4), 7.2 -> 6 -> 4, 100.1 -> 102 -> 104, past the
 	 * window's 102, 50 -> 51 -> 52 */
 	struct lx_shadow_map map = {.has_screen = true, .screen = {5.5, 7.2, 100.1, 50.0}};
-	struct lx_rect r = lx_map_screen_rect(&map, 102, 60);
+	struct lx_rect r;
+	assert_true(lx_map_screen_rect(&map, 102, 60, &r));
 	assert_int_equal(r.x0, 4), assert_int_equal(r.y0, 4), assert_int_equal(r.x1, 102), assert_int_equal(r.y1, 52);
 	/* a rectangle reaching off the window on every side: the window */
 	map = (struct lx_shadow_map){.has_screen = true, .screen = {-1e30, -3.5, 1e30, 1e9}};
-	r = lx_map_screen_rect(&map, 102, 60);
+	assert_true(lx_map_screen_rect(&map, 102, 60, &r));
 	assert_int_equal(r.x0, 0), assert_int_equal(r.y0, 0), assert_int_equal(r.x1, 102), assert_int_equal(r.y1, 60);
+	/* one that does not say where it reaches: no rectangle */
+	map.screen[2] = NAN;
+	assert_false(lx_map_screen_rect(&map, 102, 60, &r));
+	map = (struct lx_shadow_map){.has_screen = true, .screen = {10, 20, 5, 30}};
+	assert_false(lx_map_screen_rect(&map, 102, 60, &r));
+	map.screen[2] = 15, map.has_screen = false;
+	assert_false(lx_map_screen_rect(&map, 102, 60, &r));
 	print_message("%ld plane maps' screen rectangles cut the plane on whole blocks\n", n);
 	assert_true(n >= 20);
 }

@@ -22,6 +22,7 @@
 #include "mesh.h"
 #include "metrics.h"
 #include "shadow_method.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,7 +70,7 @@ static void wear(int s)
 		sink += acc;
 	} else if (s == SLEEP) {
 		struct timespec d = {0, 3000000};
-		while (nanosleep(&d, &d) != 0) /* a signal: the rest of it */
+		while (nanosleep(&d, &d) != 0 && errno == EINTR) /* a signal: the rest of it */
 			;
 	} else if (s == SORT) {
 		unsigned x = 12345;

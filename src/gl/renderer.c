@@ -1572,12 +1572,10 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		const struct lx_shadow_map *map = &res->maps[m];
 		if (!(mask & 1u << m))
 			continue;
-		if (map->plane != id || !map->has_screen || !(map->screen[2] >= map->screen[0]) ||
-		    !(map->screen[3] >= map->screen[1])) {
+		if (map->plane != id || !lx_map_screen_rect(map, r->d.width, r->d.height, &rect[nr])) {
 			nr = -1; /* a map that does not say where it reaches: no cut */
 			break;
 		}
-		rect[nr] = lx_map_screen_rect(map, r->d.width, r->d.height);
 		of[nr] = map;
 		bit[nr++] = 1u << m;
 	}

@@ -630,14 +630,17 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 /* On whole blocks: a cut inside a block leaves a part-covered block on each side along
  * the whole cut (on the default scene's facing view at 1920x1080, 0.7 of the
  * rasterizer's 85 million instructions a frame). */
-struct lx_rect lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height)
+bool lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height, struct lx_rect *out)
 {
+	if (!map->has_screen || !(map->screen[2] >= map->screen[0]) || !(map->screen[3] >= map->screen[1]))
+		return false;
 	double lim[4] = {0, 0, width, height}, v[4];
 	for (int k = 0; k < 4; k++) /* NaN-free: fmin and fmax take the number */
 		v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
 	int x1 = lx_align_up((int)v[2]), y1 = lx_align_up((int)v[3]);
-	return (struct lx_rect){lx_align_down((int)v[0]), lx_align_down((int)v[1]), x1 < width ? x1 : width,
+	*out = (struct lx_rect){lx_align_down((int)v[0]), lx_align_down((int)v[1]), x1 < width ? x1 : width,
 				y1 < height ? y1 : height};
+	return true;
 }
 
 int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,

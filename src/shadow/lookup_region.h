@@ -93,11 +93,12 @@ struct lx_lookup_volumes {
 void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, const struct lx_shadow_result *res,
 		       double margin_lixels, struct lx_lookup_volumes *v);
 
-/* The window pixels that may read plane map `map` (has_screen, its rectangle ordered): its
- * screen rectangle and a pixel of margin (a pixel centre on its edge is inside it), out
- * to whole blocks (LX_SPAN_ALIGN) and within the width x height window. Where its map
- * does not reach, a pixel inside reads it as unserved, lit, as in the margin. */
-struct lx_rect lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height);
+/* The window pixels that may read plane map `map`, into *out: its screen rectangle and a
+ * pixel of margin (a pixel centre on its edge is inside it), out to whole blocks
+ * (LX_SPAN_ALIGN) and within the width x height window. Where its map does not reach, a
+ * pixel inside reads it as unserved, lit, as in the margin. False when the map does not
+ * say where it reaches (no has_screen, or its rectangle not ordered: NaN or inverted). */
+bool lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height, struct lx_rect *out);
 /* `within` cut into spans: with a lookup where one of the maps in `mask` could shadow a
  * pixel of receiver object `receiver`, without elsewhere. Per band of LX_LOOKUP_BAND rows,
  * the x-ranges of the casters' regions; bands cut alike are one. Returns the count (at
