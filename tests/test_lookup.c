@@ -1394,7 +1394,7 @@ static void check_map_rect(const struct lx_shadow_map *map, int width, int heigh
 
 static void check_map_rects(struct setup *s, const char *what, void *ctx)
 {
-	long *n = ctx;
+	long *n = ctx, *sure = n + 1;
 	for (int m = 0; m < s->res.map_count; m++) {
 		const struct lx_shadow_map *map = &s->res.maps[m];
 		struct lx_rect r;
@@ -1402,6 +1402,17 @@ static void check_map_rects(struct setup *s, const char *what, void *ctx)
 			continue; /* the main pass cuts a plane only at these (plane_spans) */
 		check_map_rect(map, W, H, what);
 		check_map_rect(map, W + 3, H + 1, what); /* a window whose sides are not whole blocks */
+		/* its sure part: on whole blocks, inside the rectangle a pixel and two lixels in */
+		struct lx_rect q = lx_map_sure_rect(map, W, H);
+		if (q.x1 > q.x0 && q.y1 > q.y0) {
+			int got[4] = {q.x0, q.y0, q.x1, q.y1};
+			for (int k = 0; k < 4; k++)
+				if (got[k] % LX_SPAN_ALIGN != 0 || (k < 2 ? got[k] < map->screen[k] + 2 : got[k] > map->screen[k] - 2))
+					fail_msg("%s: the map's sure rectangle %d %d %d %d of %.2f %.2f %.2f %.2f", what, q.x0,
+						 q.y0, q.x1, q.y1, map->screen[0], map->screen[1], map->screen[2],
+						 map->screen[3]);
+			(*sure)++;
+		}
 		(*n)++;
 	}
 }
@@ -1409,8 +1420,8 @@ static void check_map_rects(struct setup *s, const char *what, void *ctx)
 static void map_rects_end_on_whole_blocks(void **state)
 {
 	(void)state;
-	long n = 0;
-	each_standard_setup(check_map_rects, &n);
+	long n[2] = {0, 0}; /* maps, and those with a sure part */
+	each_standard_setup(check_map_rects, n);
 	/* by hand: 5.5 -> 4 (the margin's 4), 7.2 -> 6 -> 4, 100.1 -> 102 -> 104, past the
 	 * window's 102, 50 -> 51 -> 52 */
 	struct lx_shadow_map map = {.has_screen = true, .screen = {5.5, 7.2, 100.1, 50.0}};
@@ -1428,8 +1439,18 @@ static void map_rects_end_on_whole_blocks(void **state)
 	assert_false(lx_map_screen_rect(&map, 102, 60, &r));
 	map.screen[2] = 15, map.has_screen = false;
 	assert_false(lx_map_screen_rect(&map, 102, 60, &r));
-	print_message("%ld plane maps' screen rectangles cut the plane on whole blocks\n", n);
-	assert_true(n >= 20);
+	print_message("%ld plane maps' screen rectangles cut the plane on whole blocks, %ld sure parts inside them\n",
+		      n[0], n[1]);
+	assert_true(n[0] >= 20);
+	assert_true(n[1] >= 10);
+	/* not served where its screen rectangle lies: no sure part */
+	map = (struct lx_shadow_map){.has_screen = true, .screen = {0, 0, 100, 50}, .lixel_scale = 1, .lixel_stretch = 1};
+	r = lx_map_sure_rect(&map, 102, 60);
+	assert_true(r.x1 <= r.x0 || r.y1 <= r.y0);
+	/* served at a lixel per pixel: 4 pixels in (two and two lixels), then blocks */
+	map.screen_served = true;
+	r = lx_map_sure_rect(&map, 102, 60);
+	assert_int_equal(r.x0, 4), assert_int_equal(r.y0, 4), assert_int_equal(r.x1, 96), assert_int_equal(r.y1, 44);
 }
 
 int main(void)

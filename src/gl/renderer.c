@@ -1537,27 +1537,6 @@ static int slab_spans(struct lx_rect box, const struct lx_rect *rect, const stru
 	return n;
 }
 
-/* The pixels a plane map surely serves: its screen rectangle where that is what it
- * serves (screen_served), less two pixels and two lixels for the rounding of a lookup's
- * coordinates (mediump: about a quarter of a lixel), in to whole blocks; else none. */
-static struct lx_rect sure_rect(const struct lx_shadow_map *map, int width, int height)
-{
-	/* lixels per pixel along the map's axes (positive wherever a map is built) */
-	double s = fmin(map->lixel_scale / map->lixel_stretch, map->lixel_scale * map->lixel_stretch);
-	if (!map->screen_served || !(map->lixel_stretch > 0) || !(s > 0))
-		return (struct lx_rect){0, 0, 0, 0};
-	double g = 2 + 2 / s;
-	double v[4] = {ceil(map->screen[0] + g), ceil(map->screen[1] + g), floor(map->screen[2] - g),
-		       floor(map->screen[3] - g)};
-	double lim[4] = {width, height, width, height};
-	for (int k = 0; k < 4; k++)
-		v[k] = fmax(0, fmin(lim[k], v[k])); /* NaN-free too: fmin and fmax take the number */
-	/* in to whole blocks: a span's edge inside a block costs a part-covered block each
-	 * side (LX_SPAN_ALIGN) */
-	return (struct lx_rect){lx_align_up((int)v[0]), lx_align_up((int)v[1]), lx_align_down((int)v[2]),
-				lx_align_down((int)v[3])};
-}
-
 /* A plane's spans: the window cut at its own maps' screen rectangles (one map per
  * rectangle), then each part with maps cut where they can shadow it (lookup_region.h). */
 static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res, int id, unsigned mask,
@@ -1585,7 +1564,7 @@ static int plane_spans(struct lx_renderer *r, const struct lx_shadow_result *res
 		for (int j = 0; j < nr && !meets; j++)
 			meets = j != k && rect[k].x0 < rect[j].x1 && rect[j].x0 < rect[k].x1 && rect[k].y0 < rect[j].y1 &&
 				rect[j].y0 < rect[k].y1;
-		sure[k] = meets ? sure_rect(of[k], r->d.width, r->d.height) : (struct lx_rect){0, 0, 0, 0};
+		sure[k] = meets ? lx_map_sure_rect(of[k], r->d.width, r->d.height) : (struct lx_rect){0, 0, 0, 0};
 	}
 	if (nr >= 0)
 		nf = slab_spans(screen, rect, sure, bit, nr, first, 0);

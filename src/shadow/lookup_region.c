@@ -627,20 +627,43 @@ unsigned lx_lookup_caster_maps(const struct lx_lookup_volumes *v, int c, bool ev
 	return out;
 }
 
-/* On whole blocks: a cut inside a block leaves a part-covered block on each side along
- * the whole cut (on the default scene's facing view at 1920x1080, 0.7 of the
- * rasterizer's 85 million instructions a frame). */
+/* Window rectangle v (x0, y0, x1, y1 in pixels) within the width x height window, its
+ * edges on whole blocks (LX_SPAN_ALIGN), outwards or inwards: a cut inside a block
+ * leaves a part-covered block on each side along the whole cut (on the default scene's
+ * facing view at 1920x1080, 0.7 of the rasterizer's 85 million instructions a frame). */
+static struct lx_rect window_blocks(const double v[4], int width, int height, bool outwards)
+{
+	double lim[4] = {width, height, width, height};
+	int e[4];
+	for (int k = 0; k < 4; k++) /* NaN-free: fmin and fmax take the number */
+		e[k] = (int)fmax(0, fmin(lim[k], v[k]));
+	if (!outwards)
+		return (struct lx_rect){lx_align_up(e[0]), lx_align_up(e[1]), lx_align_down(e[2]), lx_align_down(e[3])};
+	int x1 = lx_align_up(e[2]), y1 = lx_align_up(e[3]); /* past the window's edge when it is not whole blocks */
+	return (struct lx_rect){lx_align_down(e[0]), lx_align_down(e[1]), x1 < width ? x1 : width,
+				y1 < height ? y1 : height};
+}
+
 bool lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height, struct lx_rect *out)
 {
 	if (!map->has_screen || !(map->screen[2] >= map->screen[0]) || !(map->screen[3] >= map->screen[1]))
 		return false;
-	double lim[4] = {0, 0, width, height}, v[4];
-	for (int k = 0; k < 4; k++) /* NaN-free: fmin and fmax take the number */
-		v[k] = fmax(lim[k & 1], fmin(lim[2 + (k & 1)], k < 2 ? floor(map->screen[k]) - 1 : ceil(map->screen[k]) + 1));
-	int x1 = lx_align_up((int)v[2]), y1 = lx_align_up((int)v[3]);
-	*out = (struct lx_rect){lx_align_down((int)v[0]), lx_align_down((int)v[1]), x1 < width ? x1 : width,
-				y1 < height ? y1 : height};
+	double v[4] = {floor(map->screen[0]) - 1, floor(map->screen[1]) - 1, ceil(map->screen[2]) + 1,
+		       ceil(map->screen[3]) + 1};
+	*out = window_blocks(v, width, height, true);
 	return true;
+}
+
+struct lx_rect lx_map_sure_rect(const struct lx_shadow_map *map, int width, int height)
+{
+	/* lixels per pixel along the map's axes (positive wherever a map is built) */
+	double s = fmin(map->lixel_scale / map->lixel_stretch, map->lixel_scale * map->lixel_stretch);
+	if (!map->screen_served || !(map->lixel_stretch > 0) || !(s > 0))
+		return (struct lx_rect){0, 0, 0, 0};
+	double g = 2 + 2 / s;
+	double v[4] = {ceil(map->screen[0] + g), ceil(map->screen[1] + g), floor(map->screen[2] - g),
+		       floor(map->screen[3] - g)};
+	return window_blocks(v, width, height, false);
 }
 
 int lx_lookup_spans(const struct lx_lookup_volumes *v, int receiver, unsigned mask, struct lx_rect within,

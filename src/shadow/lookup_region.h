@@ -99,6 +99,11 @@ void lx_lookup_prepare(const struct lx_frame *f, const struct lx_atlas *atlas, c
  * pixel inside reads it as unserved, lit, as in the margin. False when the map does not
  * say where it reaches (no has_screen, or its rectangle not ordered: NaN or inverted). */
 bool lx_map_screen_rect(const struct lx_shadow_map *map, int width, int height, struct lx_rect *out);
+/* The window pixels plane map `map` surely serves: its screen rectangle where that is
+ * what it serves (screen_served), less two pixels and two lixels for the rounding of a
+ * lookup's coordinates (mediump: about a quarter of a lixel), in to whole blocks and
+ * within the window; else an empty rectangle. */
+struct lx_rect lx_map_sure_rect(const struct lx_shadow_map *map, int width, int height);
 /* `within` cut into spans: with a lookup where one of the maps in `mask` could shadow a
  * pixel of receiver object `receiver`, without elsewhere. Per band of LX_LOOKUP_BAND rows,
  * the x-ranges of the casters' regions; bands cut alike are one. Returns the count (at
