@@ -164,14 +164,19 @@ wait_gone() {
   return 1
 }
 # waits for the kiosk's start line in $tmp/out (the loop is running)
+# The caller empties $tmp/out before it starts the kiosk: the shell truncates a background
+# command's output only once the child runs, so an old run's start line could otherwise be
+# read as this one's (seen in CI under AddressSanitizer, whose start is slow).
 wait_started() {
   for i in $(seq 1 200); do grep -q '^lixel kiosk: GL_VENDOR' "$tmp/out" 2>/dev/null && return; sleep 0.1; done
+  no "the kiosk printed no start line in 20 s: $(cat "$tmp/out" "$tmp/err" 2>/dev/null)"
 }
 helper=$(dirname "$lixel")/tests/destroy_window
 
 # 8. N key presses sent at once (one xdotool call, no delay between them) make N method
 #    changes: the loop reads every pending key each frame, not one per frame
 presses=30
+rm -f "$tmp/out" "$tmp/err"
 "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
 pid=$!
 wid=$(find_window)
@@ -193,6 +198,7 @@ awk '/^method: /{ if (prev != "" && $2 != prev) bad = 1; prev = $4; if (first ==
 # 9. the window destroyed by another client (XDestroyWindow): one line, status 0, and the
 #    kiosk does not touch the window again (Xlib's default handler would end it with 1)
 if [ -x "$helper" ]; then
+  rm -f "$tmp/out" "$tmp/err"
   "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wid=$(find_window)
@@ -209,6 +215,7 @@ if [ -x "$helper" ]; then
     no "could not destroy the kiosk's window '$wid': $(cat "$tmp/helper")"
   fi
   # the window manager's close (WM_DELETE_WINDOW): the same, in its own words
+  rm -f "$tmp/out" "$tmp/err"
   "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
   pid=$!
   wid=$(find_window)
@@ -231,6 +238,7 @@ fi
 start_xvfb 81
 xvfb2_pid=$started_pid
 if [ -n "$started_display" ]; then
+  rm -f "$tmp/out" "$tmp/err"
   DISPLAY=$started_display "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>"$tmp/err" &
   pid=$!
   wait_started

@@ -340,13 +340,15 @@ static void kiosk_inputs(struct kiosk *k)
 	k->start = k->window_start = now_ns();
 	lx_button_init(&k->button, k->gpio && !lx_gpio_button_kernel_debounce() ? b->debounce_ms : 0, b->long_press_ms,
 		       b->active_low, k->gpio ? lx_gpio_button_level(k->gpio) : !b->active_low, k->start);
-	fflush(stdout);
 	signal(SIGINT, on_signal);
 	signal(SIGTERM, on_signal);
 	signal(SIGHUP, on_signal); /* a closed terminal or session: the same clean stop */
 	/* A write to a display server that has died (X11's socket) must come back as an error, which
 	 * the platform reports as a lost display, not end the kiosk silently with SIGPIPE. */
 	signal(SIGPIPE, SIG_IGN);
+	/* Only now the start line reaches a file or pipe: whoever waits for it (a supervisor, the
+	 * tests) may stop the kiosk or kill its display from then on. */
+	fflush(stdout);
 	k->ov = lx_overlay_create(err, sizeof err);
 	if (!k->ov)
 		printf("lixel kiosk: warning: no overlay: %s\n", err);
