@@ -98,7 +98,9 @@ steps=$(grep '^method: ' "$tmp/out" | tr '\n' ' ')
 [ "$st" -eq 0 ] && [ "$steps" = "method: plane -> plane+pcf3x3 method: plane+pcf3x3 -> none method: none -> uniform method: uniform -> uniform+pcf3x3 " ] &&
   ok || no "kiosk --filters: status $st, steps '$steps': $(cat "$tmp/out")"
 
-# 2b. SIGHUP (a closed session) stops it as SIGTERM does: status 0
+# 2b. SIGHUP (a closed session) stops it as SIGTERM does: status 0 (the old output removed
+#     first, as for wait_started below)
+rm -f "$tmp/out"
 "$lixel" kiosk --platform x11 --size 320x240 --frames 100000 --max-fps 30 >"$tmp/out" 2>&1 &
 pid=$!
 for i in $(seq 1 100); do grep -q 'frames in\|^lixel kiosk: GL_VENDOR' "$tmp/out" 2>/dev/null && break; sleep 0.1; done
