@@ -184,6 +184,19 @@ static bool split(char *list, const char **out, int max, int *n)
 	}
 }
 
+/* A name given twice in a list: its rows and its ratios would be two runs under one name
+ * (the view-by-view table took one for the other). 0, or 2 after the one line. */
+static int named_twice(const char *opt, const char *what, const char *const *names, int n)
+{
+	for (int i = 1; i < n; i++)
+		for (int j = 0; j < i; j++)
+			if (!strcmp(names[i], names[j])) {
+				fprintf(stderr, "lixel bench: %s: '%s' is named twice; expected each %s once\n", opt, names[i], what);
+				return 2;
+			}
+	return 0;
+}
+
 static bool is_animation(const char *c) { return !strcmp(c, "animation"); }
 
 static double median_of(const double *v, int n)
@@ -777,7 +790,7 @@ static int filter_list(struct bench *b, struct bench_args *ba)
 	for (int k = 0; k < b->nf; k++)
 		if (!lx_filter_parse(names[k], &b->filter_list[k]))
 			return bad("--filters", lx_filter_names(), names[k]);
-	return 0;
+	return named_twice("--filters", "filter", names, b->nf);
 }
 
 /* The runs: each method with each filter (none reads no map: it runs once, unfiltered),
@@ -816,6 +829,8 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 	for (int m = 0; m < ns; m++)
 		if ((st = lx_arg_method_spec("bench", "--methods", specs[m], &b->options, expected)))
 			return st;
+	if ((st = named_twice("--methods", "method", specs, ns)))
+		return st;
 	expand_runs(b, specs, ns);
 	if (!ba->configs[0]) {
 		for (int c = 0; c < lx_config_count; c++)
@@ -829,7 +844,7 @@ static int bench_lists(struct bench *b, struct bench_args *ba)
 	for (int c = 0; c < b->nc; c++)
 		if (!is_animation(b->configs[c]) && !lx_config_find(b->configs[c]))
 			return bad("--configs", "configurations named in lixel render --help, or animation", b->configs[c]);
-	return 0;
+	return named_twice("--configs", "configuration", b->configs, b->nc);
 }
 
 /* The command line into *b (ba keeps the lists' text, which b points into), the scene
