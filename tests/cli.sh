@@ -227,7 +227,7 @@ if "$lixel" bench --size 64x48 --frames 1 --warmup 0 --json --csv "$tmp/b.csv" -
       '"frame_ms_min"' '"frame_ms_max"' '"shadow_ms_median"' '"main_ms_median"' '"setup_us"' \
       '"setup_again_us": [0-9.e+-]*, "lookup_pct"' '"mismatch_pct"' '"m_max": {' \
       '"summary": \[{"method": "none", "filter": "none", "frame_ms_median": [0-9.e-]*, "frame_ms_mean": [0-9.e-]*, "depth_slots": 8, "ratio_none": 1, "ratio_uniform"' \
-      '"ratio_uniform_by_view_median"' '"ratio_uniform_by_view_most"' '"ratio_uniform_most_on": "' '"views_at_most_uniform": [0-9]' \
+      '"ratio_uniform_by_view_median"' '"ratio_uniform_by_view_most"' '"ratio_uniform_most_on": "' '"views_at_most_uniform": [0-9]' '"views_slower_every_round": [0-9]*, "views_faster_every_round": [0-9]' \
       '"mismatch_median"' '"mismatch_worst"' '"soft_error_pct"' '"soft_error_median"' '"light_size_deg": 0.5'; do
     grep -q "$key" "$tmp/bench.json" && ok || no "bench JSON lacks $key"
   done
@@ -254,10 +254,12 @@ fi
 grep -q '^method .*shadow ms *main ms' "$tmp/bench.txt" && grep -q '^\[uniform\] config=low: .* shadow: [0-9.]* ms main: [0-9.]* ms' "$tmp/bench.txt" && ok ||
   no "bench text lacks the pass columns: $(cat "$tmp/bench.txt")"
 # the frame against uniform's view by view: the median ratio, its range, how many views at
-# most uniform's, the view of the most (uniform itself not listed)
-"$lixel" bench --size 48x32 --frames 2 --warmup 0 --methods uniform,plane --configs low,overhead >"$tmp/bv.txt" 2>&1 &&
+# most uniform's, the view of the most, the views slower and faster in every round (four
+# rounds of a frame each here) and the slower ones' names (uniform itself not listed)
+"$lixel" bench --size 48x32 --frames 4 --warmup 0 --methods uniform,plane --configs low,overhead >"$tmp/bv.txt" 2>&1 &&
   sed -n "/^frame \/ uniform's, view by view/,\$p" "$tmp/bv.txt" >"$tmp/bv-table.txt" &&
-  grep -Eq '^plane +[0-9.]+ +\([0-9.]+-[0-9.]+\) +[0-2]/2  (low|overhead)$' "$tmp/bv-table.txt" &&
+  grep -q '^4 rounds, a difference the rounds resolve' "$tmp/bv-table.txt" &&
+  grep -Eq '^plane +[0-9.]+ +\([0-9.]+-[0-9.]+\) +[0-2]/2  (low|overhead) +[0-2]/2 +[0-2]/2  (-|low|overhead|low,overhead)$' "$tmp/bv-table.txt" &&
   ! grep -q '^uniform ' "$tmp/bv-table.txt" && ok || no "bench text lacks the view-by-view ratios: $(cat "$tmp/bv.txt")"
 # where the main pass looks the maps up: footprint (the default) or everywhere, the
 # same decisions; a lookup share in the JSON, smaller for footprint

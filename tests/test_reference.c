@@ -436,6 +436,26 @@ static void paired_ratios_view_by_view(void **state)
 	assert_int_equal(p.count, 0);
 }
 
+/* A view's difference resolved by its rounds: slower (or faster) in every round, not in
+ * most of them; a tie, a missing time or a single round resolves nothing. */
+static void rounds_sign_every_round(void **state)
+{
+	(void)state;
+	const double a[] = {4.2, 4.4, 4.1, 4.3, 4.25}, b[] = {4.0, 4.3, 4.0, 4.2, 4.2};
+	assert_int_equal(lx_rounds_sign(a, b, 5), 1);
+	assert_int_equal(lx_rounds_sign(b, a, 5), -1);
+	const double c[] = {4.2, 4.4, 3.9, 4.3, 4.25}; /* faster in one round of five */
+	assert_int_equal(lx_rounds_sign(c, b, 5), 0);
+	const double d[] = {4.2, 4.3, 4.1, 4.3, 4.25}; /* the same in one round */
+	assert_int_equal(lx_rounds_sign(d, b, 5), 0);
+	const double e[] = {4.2, 4.4, NAN, 4.3, 4.25}, z[] = {4.0, 4.3, 4.0, 0.0, 4.2};
+	assert_int_equal(lx_rounds_sign(e, b, 5), 0);
+	assert_int_equal(lx_rounds_sign(a, z, 5), 0);
+	assert_int_equal(lx_rounds_sign(a, b, 1), 0);
+	assert_int_equal(lx_rounds_sign(a, b, 0), 0);
+	assert_int_equal(lx_rounds_sign(a, b, 2), 1);
+}
+
 /* A thin sheet 1 m above the floor covering x < 0: its edge along z at x = 0 casts a
  * straight penumbra. */
 static void edge_scene(struct lx_scene *s, struct lx_light light, struct lx_scene_meshes *m, struct lx_frame *f)
@@ -744,6 +764,7 @@ int main(void)
 		cmocka_unit_test(soft_error_counts_compared_pixels),
 		cmocka_unit_test(median_equals_sorted_middle),
 		cmocka_unit_test(paired_ratios_view_by_view),
+		cmocka_unit_test(rounds_sign_every_round),
 		cmocka_unit_test(shaded_reference_needs_the_light_image),
 		cmocka_unit_test(one_light_is_the_single_reference),
 		cmocka_unit_test(two_lights_add_as_the_passes_do),

@@ -34,7 +34,18 @@ _Static_assert(MAX_RUNS <= LX_RUN_ORDER_MAX, "lx_run_order orders every run");
 /* the timed figures of a frame, kept per method over every configuration */
 enum { T_FRAME, T_SETUP, T_SHADOW, T_MAIN, T_SETUP_AGAIN, T_KINDS };
 
+/* Rounds in which every method is timed alone, each round with GL objects made anew: on
+ * llvmpipe under a virtual machine one allocation of an atlas can read 20% slower than
+ * another for the same method, so a median over rounds outvotes an unlucky one. */
+#define TIME_ROUNDS 5
+
+/* The rounds a run of `frames` timed frames takes, and how many frames round r takes
+ * when `done` went to the rounds before it: shared out as evenly as they go. */
+static int rounds_for(int frames) { return frames < TIME_ROUNDS ? frames : TIME_ROUNDS; }
+static int round_length(int frames, int rounds, int r, int done) { return (frames - done) / (rounds - r); }
+
 struct row {
+	double round_ms[TIME_ROUNDS]; /* the median frame of each round (rounds_for), in turn */
 	double frame_ms_median, frame_ms_min, frame_ms_max, setup_us, setup_again_us, shadow_ms, main_ms;
 	double mismatch_pct, false_pct, missing_pct; /* the animation: the median of its samples */
 	double soft_pct; /* soft_error_pct, the same */
@@ -115,8 +126,10 @@ static void usage(FILE *f)
 		   "light. Prints a line per method, filter and configuration, then a summary per run:\n"
 		   "medians of the frame, its shadow passes and its main pass, with ratios to no shadows\n"
 		   "and to uniform; then each run's frame over uniform's view by view (per configuration,\n"
-		   "the median of those ratios, their range, how many are at most 1 and where the most\n"
-		   "is). Run with LP_NUM_THREADS=1 to stand in for a fill-limited board GPU.\n"
+		   "the median of those ratios, their range, how many are at most 1, where the most\n"
+		   "is, and on how many views the method was slower, and faster, than uniform in every\n"
+		   "round: the differences the rounds resolve). Run with LP_NUM_THREADS=1 to stand in\n"
+		   "for a fill-limited board GPU.\n"
 		   "\n"
 		   "  --size WxH       view size (default 1024x1024)\n"
 		   "  --frames N       timed frames per method and configuration (default 30)\n"
@@ -235,11 +248,6 @@ struct pixels {
 	/* ref_sh and ref_vis: every light's, light after light (light k's from k * width * height) */
 };
 
-/* Rounds in which every method is timed alone, each round with GL objects made anew: on
- * llvmpipe under a virtual machine one allocation of an atlas can read 20% slower than
- * another for the same method, so a median over rounds outvotes an unlucky one. */
-#define TIME_ROUNDS 5
-
 /* Run m of the bench (its method and filter) on the depth path `path`: the measuring
  * runs with the one asked, each timing run with the one the first measuring run took.
  * 0, or 1 or 2 after err, nothing left to free. */
@@ -277,7 +285,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 	const char *names[MAX_RUNS];
 	for (int m = 0; m < b->nm; m++)
 		names[m] = b->labels[m];
-	int rounds = b->frames < TIME_ROUNDS ? b->frames : TIME_ROUNDS, warm = (b->warmup + rounds - 1) / rounds;
+	int rounds = rounds_for(b->frames), warm = (b->warmup + rounds - 1) / rounds;
 	enum lx_depth_precision path = b->depth.taken;
 	/* a still configuration's one frame, set up once; the animation's, frame by frame,
 	 * each one's next set up ahead (lx_method_run_frame's `next`) */
@@ -287,7 +295,7 @@ static int time_frames(struct bench *b, const struct lx_scene *scene, bool anim,
 	struct lx_frame *after = anim ? &next : frame;
 	int st = 0;
 	for (int r = 0, done = 0; r < rounds; r++) {
-		int n = (b->frames - done) / (rounds - r), order[MAX_RUNS];
+		int n = round_length(b->frames, rounds, r, done), order[MAX_RUNS];
 		lx_run_order(names, b->nm, &seq, order); /* the same schedule for any order of --methods */
 		for (int k = 0; k < b->nm && !st; k++) {
 			int m = order[k];
@@ -364,6 +372,11 @@ static void time_rows(struct bench *b, int ci, const double *times)
 		}
 		b->nframes[m] += b->frames;
 		r->frame_ms_median = median_of(own[T_FRAME], b->frames);
+		for (int k = 0, rounds = rounds_for(b->frames), done = 0; k < rounds; k++) {
+			int n = round_length(b->frames, rounds, k, done);
+			r->round_ms[k] = median_of(own[T_FRAME] + done, n);
+			done += n;
+		}
 		r->frame_ms_min = INFINITY, r->frame_ms_max = 0;
 		for (int k = 0; k < b->frames; k++) {
 			r->frame_ms_min = fmin(r->frame_ms_min, own[T_FRAME][k]);
@@ -524,6 +537,8 @@ static void print_rows(const struct bench *b)
 struct summary {
 	double frame_ms, lo, hi, mismatch, worst, lookups, soft, beyond, m_max[2];
 	struct lx_paired_ratios by_view; /* its configurations' median frames over uniform's */
+	int over_every_round, under_every_round; /* views slower, faster than uniform in each round */
+	char over_views[160];                    /* the first, comma-separated */
 };
 
 static void summarize(const struct bench *b, int m, int uni, struct summary *s)
@@ -538,6 +553,11 @@ static void summarize(const struct bench *b, int m, int uni, struct summary *s)
 		mis[c] = r->mismatch_pct, s->worst = fmax(s->worst, r->mismatch_worst);
 		looked[c] = r->lookup_pct, soft[c] = r->soft_pct;
 		own[c] = r->frame_ms_median, uni_own[c] = uni >= 0 ? b->rows[uni][c].frame_ms_median : NAN;
+		int sign = uni >= 0 && m != uni ? lx_rounds_sign(r->round_ms, b->rows[uni][c].round_ms, rounds_for(b->frames)) : 0;
+		s->under_every_round += sign < 0;
+		if (sign > 0 && s->over_every_round++ < 4) /* four names fit */
+			snprintf(s->over_views + strlen(s->over_views), sizeof s->over_views - strlen(s->over_views), "%s%s",
+				 s->over_views[0] ? "," : "", b->configs[c]);
 		/* the most this run's mismatch exceeds uniform's on one configuration */
 		if (uni >= 0)
 			s->beyond = fmax(s->beyond, r->mismatch_pct - b->rows[uni][c].mismatch_pct);
@@ -555,17 +575,27 @@ static void print_by_view(const struct bench *b, int uni, const struct summary *
 {
 	if (uni < 0)
 		return;
-	printf("\nframe / uniform's, view by view (each configuration's median frame over uniform's, the same run):\n"
-	       "%-14s %8s %15s %8s  %s\n",
-	       "method", "median", "(min-max)", "<= 1", "the most on");
+	int rounds = rounds_for(b->frames);
+	printf("\nframe / uniform's, view by view (each configuration's median frame over uniform's, the same run;\n"
+	       "slower, faster: the views where the method's median frame was over, under uniform's in each of the\n"
+	       "%d rounds, a difference the rounds resolve; two methods that cost the same are slower by chance on\n"
+	       "one view in %d):\n"
+	       "%-14s %8s %15s %8s  %-12s %6s %6s  %s\n",
+	       rounds, 1 << rounds, "method", "median", "(min-max)", "<= 1", "the most on", "slower", "faster",
+	       "slower on");
 	for (int m = 0; m < b->nm; m++) {
-		const struct lx_paired_ratios *p = &sum[m].by_view;
+		const struct summary *s = &sum[m];
+		const struct lx_paired_ratios *p = &s->by_view;
 		if (p->count == 0)
 			continue;
-		char range[40], under[24];
+		char range[40], under[24], over[24], faster[24];
 		snprintf(range, sizeof range, "(%.3f-%.3f)", p->least, p->most);
 		snprintf(under, sizeof under, "%d/%d", p->at_most_one, p->count);
-		printf("%-14s %8.3f %15s %8s  %s\n", b->labels[m], p->median, range, under, b->configs[p->most_at]);
+		snprintf(over, sizeof over, "%d/%d", s->over_every_round, b->nc);
+		snprintf(faster, sizeof faster, "%d/%d", s->under_every_round, b->nc);
+		printf("%-14s %8.3f %15s %8s  %-12s %6s %6s  %s%s\n", b->labels[m], p->median, range, under,
+		       b->configs[p->most_at], over, faster, s->over_every_round ? s->over_views : "-",
+		       s->over_every_round > 4 ? ",..." : "");
 	}
 }
 
@@ -675,6 +705,11 @@ static void print_json(const struct bench *b)
 			lx_json_number(&j, NAN); /* null: uniform itself, or no uniform run */
 		lx_json_key(&j, "views_at_most_uniform");
 		lx_json_number(&j, s.by_view.count > 0 ? s.by_view.at_most_one : NAN);
+		/* the views its rounds resolve: slower, faster than uniform in every round */
+		lx_json_key(&j, "views_slower_every_round");
+		lx_json_number(&j, s.by_view.count > 0 ? s.over_every_round : NAN);
+		lx_json_key(&j, "views_faster_every_round");
+		lx_json_number(&j, s.by_view.count > 0 ? s.under_every_round : NAN);
 		lx_json_key(&j, "shadow_ms_median"), lx_json_number(&j, median_of(b->all[m][T_SHADOW], b->nframes[m]));
 		lx_json_key(&j, "main_ms_median"), lx_json_number(&j, median_of(b->all[m][T_MAIN], b->nframes[m]));
 		lx_json_key(&j, "lookup_pct_median"), lx_json_number(&j, s.lookups);

@@ -208,6 +208,17 @@ void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_
 	free(r);
 }
 
+int lx_rounds_sign(const double *a, const double *b, int n)
+{
+	int over = 0, under = 0;
+	for (int r = 0; r < n; r++) {
+		if (!(isfinite(a[r]) && isfinite(b[r]) && a[r] > 0 && b[r] > 0))
+			return 0;
+		over += a[r] > b[r], under += a[r] < b[r];
+	}
+	return n < 2 ? 0 : over == n ? 1 : under == n ? -1 : 0;
+}
+
 /* World point of pixel centre x of row r (lx_window_row of its y + 0.5) on plane eq; false
  * when the pixel's ray misses the parallelogram g or meets it outside the view depth range. */
 static bool on_plane(const struct lx_window_row *r, const struct lx_plane_gram *g, vec4 eq, int x, vec3 *out)

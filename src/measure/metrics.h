@@ -98,6 +98,14 @@ struct lx_paired_ratios {
  * memory: the figures are NaN). */
 void lx_paired_ratios(const double *a, const double *b, int n, struct lx_paired_ratios *out);
 
+/* Whether a view's difference is one its rounds resolve: a[r] and b[r] are two methods'
+ * median times in each of n rounds of one view (the same frames, the machine's noise
+ * shared within a round). +1 when a is the slower in every round, -1 when the faster in
+ * every round, 0 otherwise, also for n < 2 or a round without two positive finite times.
+ * A sign test: where the two cost the same, each round is a coin toss, so +1 comes by
+ * chance once in 2^n views (once in 32 with 5 rounds). */
+int lx_rounds_sign(const double *a, const double *b, int n);
+
 /* World point of window pixel centre (x + 0.5, y + 0.5) on a plane; false when the
  * pixel's ray misses the plane's parallelogram or meets it outside the view depth range. */
 bool lx_pixel_on_plane(const struct lx_frame *f, int plane, int x, int y, vec3 *p);
