@@ -191,9 +191,9 @@ expect_says "\\x0a" "line break shown escaped" render --fov "$(printf '5\nx')" $
 expect_bad "bench empty method" bench --methods uniform,,plane --frames 1
 expect_bad "bench trailing comma" bench --methods uniform, --frames 1
 # a name given twice would be two runs under one name (the ratios took one for the other)
-expect_says "--methods: 'plane/lpp1' is named twice; expected each method once" "bench method twice" bench --methods plane/lpp1,uniform,plane/lpp1 --frames 1
-expect_says "--configs: 'low' is named twice" "bench configuration twice" bench --methods uniform --configs low,default,low --frames 1
-expect_says "--filters: 'pcf2x2' is named twice" "bench filter twice" bench --methods uniform --filters pcf2x2,none,pcf2x2 --frames 1
+expect_says "--methods: expected each method once, got 'plane/lpp1' twice" "bench method twice" bench --methods plane/lpp1,uniform,plane/lpp1 --frames 1
+expect_says "--configs: expected each configuration once, got 'low' twice" "bench configuration twice" bench --methods uniform --configs low,default,low --frames 1
+expect_says "--filters: expected each filter once, got 'pcf2x2' twice" "bench filter twice" bench --methods uniform --filters pcf2x2,none,pcf2x2 --frames 1
 expect_bad "bench empty config" bench --configs default, --frames 1
 expect_says "too large to hold" "bench frames overflow" bench --frames 99999999999999999999 --methods none
 expect_bad "kiosk frames overflow" kiosk --frames 99999999999999999999999

@@ -204,7 +204,7 @@ static int named_twice(const char *opt, const char *what, const char *const *nam
 	for (int i = 1; i < n; i++)
 		for (int j = 0; j < i; j++)
 			if (!strcmp(names[i], names[j])) {
-				fprintf(stderr, "lixel bench: %s: '%s' is named twice; expected each %s once\n", opt, names[i], what);
+				fprintf(stderr, "lixel bench: %s: expected each %s once, got '%s' twice\n", opt, what, names[i]);
 				return 2;
 			}
 	return 0;
@@ -591,8 +591,8 @@ static void print_by_view(const struct bench *b, int uni, const struct summary *
 		char range[40], under[24], over[24], faster[24];
 		snprintf(range, sizeof range, "(%.3f-%.3f)", p->least, p->most);
 		snprintf(under, sizeof under, "%d/%d", p->at_most_one, p->count);
-		snprintf(over, sizeof over, "%d/%d", s->over_every_round, b->nc);
-		snprintf(faster, sizeof faster, "%d/%d", s->under_every_round, b->nc);
+		snprintf(over, sizeof over, "%d/%d", s->over_every_round, p->count);
+		snprintf(faster, sizeof faster, "%d/%d", s->under_every_round, p->count);
 		printf("%-14s %8.3f %15s %8s  %-12s %6s %6s  %s%s\n", b->labels[m], p->median, range, under,
 		       b->configs[p->most_at], over, faster, s->over_every_round ? s->over_views : "-",
 		       s->over_every_round > 4 ? ",..." : "");
